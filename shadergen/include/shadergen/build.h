@@ -1,0 +1,48 @@
+// shadergen/build.h - `shadergen build`: a domain spec to validated SPIR-V, a manifest and
+// generated C++, written atomically into an output folder.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "shadergen/diagnostic.h"
+
+namespace shadergen {
+
+struct BuildOptions {
+    std::filesystem::path spec_path;
+    std::filesystem::path out_dir;
+    unsigned jobs = 0;                // 0 = one per hardware thread
+    bool use_cache = true;            // false: compile everything (a cold build)
+    std::filesystem::path cache_dir;  // empty: default_cache_directory()
+    std::filesystem::path depfile;    // empty: none. Make syntax, target = the generated header
+    std::string cpp_name;             // base name of the generated .h/.cpp; empty: the domain name
+    std::string cpp_namespace;        // C++ namespace of the generated code; empty: the domain name
+    bool write_stats = false;         // also write <out>/stats.json (timings: not deterministic)
+    bool verbose = false;             // one progress line per compiled source
+    // Receives progress lines (the CLI prints them on stderr). May be empty.
+    std::function<void(const std::string&)> log;
+    // Polled between jobs; when it returns true the build stops and fails, output untouched.
+    std::function<bool()> cancelled;
+};
+
+struct BuildSummary {
+    std::uint32_t raw = 0;             // raw permutations in the domain
+    std::uint32_t pruned = 0;          // of which impossible
+    std::uint32_t optimised = 0;
+    std::uint32_t companions = 0;
+    std::uint32_t unique_sources = 0;  // distinct preprocessed texts
+    std::uint32_t compiled = 0;        // of which compiled now (cache misses)
+    std::uint32_t cache_hits = 0;
+    std::uint32_t unique_blobs = 0;    // distinct SPIR-V blobs written
+    std::uint32_t optimiser_fallbacks = 0;
+    bool output_changed = false;       // false when every output file already had these bytes
+    double seconds = 0.0;
+};
+
+// Runs the whole build. On failure nothing under out_dir (or the depfile) has changed.
+Result<BuildSummary> build(const BuildOptions& options);
+
+}  // namespace shadergen

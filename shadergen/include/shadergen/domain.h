@@ -1,0 +1,96 @@
+// shadergen/domain.h - the domain spec: what a permutation domain is, read from JSON.
+//
+// A domain is one uber-shader plus N raw features (each a bit of the raw ID and a GLSL define),
+// rules that mark impossible raw IDs, and M optimised bits whose rules collapse the 2^N raw IDs
+// to 2^M optimised IDs (the lookup table). Each optimised ID is compiled with the defines of a
+// set of raw features chosen by "variants" rules, so every optimised permutation is also a raw
+// one. Nothing about any particular renderer is built into shadergen; docs/spec-format.md
+// describes the file.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "shadergen/diagnostic.h"
+#include "shadergen/expression.h"
+#include "shadergen/registry.h"
+
+namespace shadergen {
+
+inline constexpr std::uint32_t kMaxRawFeatures = 12;     // 4096 raw permutations
+inline constexpr std::uint32_t kMaxOptimisedBits = 8;       // the LUT stores optimised IDs as bytes
+inline constexpr std::size_t kMaxCompanions = 64;
+
+// A rule as written in the spec, with where it was written (for messages).
+struct Rule {
+    Expression expression;
+    std::string text;
+    int line = 0;
+};
+
+struct RawFeature {
+    std::string name;    // e.g. SHADOW_SOLID; the name rules use
+    std::uint32_t bit;   // bit in the raw ID
+    std::string define;  // GLSL define the uber-shader tests, e.g. SOLID_SHADOW
+    std::string description;
+};
+
+struct ImpossibleSet {
+    Rule when;           // over raw feature names
+    std::string why;
+};
+
+struct OptimisedBit {
+    std::string name;    // e.g. SUN_0
+    std::uint32_t bit;
+    Rule when;           // over raw feature names: set in the optimised ID when true
+    std::string description;
+};
+
+// "When these optimised bits hold, compile with these raw features' defines."
+struct OptimisedVariant {
+    Rule when;                       // over optimised bit names
+    std::vector<std::uint32_t> raw_features;  // raw bit indices
+};
+
+struct ShaderFile {
+    std::filesystem::path path;  // resolved against the spec's folder
+    Stage stage = Stage::fragment;
+};
+
+struct CompanionSpec {
+    std::string name;
+    ShaderFile file;
+    std::vector<std::string> defines;
+};
+
+struct DomainSpec {
+    std::filesystem::path spec_path;   // as given by the user
+    std::string name;
+    std::string description;
+    ShaderFile uber;
+    std::vector<std::filesystem::path> include_dirs;
+    std::vector<CompanionSpec> companions;
+    std::vector<RawFeature> raw_features;      // indexed by bit
+    std::vector<ImpossibleSet> impossible;
+    std::vector<OptimisedBit> optimised_bits;  // indexed by bit
+    std::vector<OptimisedVariant> variants;
+
+    std::uint32_t raw_count() const { return 1u << raw_features.size(); }
+    std::uint32_t optimised_count() const { return 1u << optimised_bits.size(); }
+    std::vector<std::string> raw_feature_names() const;
+    std::vector<std::string> optimised_bit_names() const;
+};
+
+// Reads and checks a spec. Diagnostics name the spec path and the line of the offending value.
+Result<DomainSpec> load_domain(const std::filesystem::path& spec_path);
+
+// Same, from text already read; `spec_path` locates relative paths and names the file in errors.
+Result<DomainSpec> parse_domain(std::string_view text, const std::filesystem::path& spec_path);
+
+std::string_view stage_name(Stage stage);
+
+}  // namespace shadergen

@@ -1,0 +1,118 @@
+// shadergen/registry.h - the types that shadergen's generated C++ registries are made of.
+//
+// A registry is generated per domain spec (see shadergen_add_permutations() in CMake). Its
+// header declares, inside the namespace chosen at generation time:
+//
+//   inline constexpr std::uint32_t kRawCount;            // 1 << raw bits (128 for Split/Second)
+//   inline constexpr std::uint32_t kOptimisedCount;      // 1 << optimised bits (32)
+//   inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised;  // the lookup table
+//   inline constexpr std::array<bool, kRawCount> kRawPruned;               // impossible raw IDs
+//   namespace raw_bit       { inline constexpr std::uint32_t <FEATURE> = 1u << n; ... }
+//   namespace optimised_bit { inline constexpr std::uint32_t <BIT> = 1u << n; ... }
+//   const shadergen::Registry& registry();
+//
+// This header has no dependencies beyond the standard library so that runtimes can include it
+// without linking shadergen itself.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace shadergen {
+
+// Pipeline stage of a compiled blob. Values match VkShaderStageFlagBits so a runtime can cast.
+enum class Stage : std::uint32_t {
+    vertex = 0x01,
+    fragment = 0x10,
+    compute = 0x20,
+};
+
+// Descriptor kinds found by reflection. Values match VkDescriptorType so a runtime can cast.
+enum class DescriptorKind : std::uint32_t {
+    sampler = 0,
+    combined_image_sampler = 1,
+    sampled_image = 2,
+    storage_image = 3,
+    uniform_texel_buffer = 4,
+    storage_texel_buffer = 5,
+    uniform_buffer = 6,
+    storage_buffer = 7,
+};
+
+// One descriptor binding of the merged pipeline layout: the union over every blob of the
+// registry. `stages` is a VkShaderStageFlags-compatible mask of the stages that use it.
+struct DescriptorBinding {
+    std::uint32_t set;
+    std::uint32_t binding;
+    DescriptorKind kind;
+    std::uint32_t count;  // array size; 1 for a scalar binding
+    std::uint32_t stages;
+    std::string_view name;
+};
+
+// A push-constant block: byte size and the VkShaderStageFlags-compatible stages using it.
+struct PushConstantRange {
+    std::uint32_t size;
+    std::uint32_t stages;
+};
+
+// A stage input or output variable (vertex inputs, fragment outputs, varyings).
+struct InterfaceVariable {
+    std::uint32_t location;
+    std::uint32_t components;  // vector width: 1..4
+    std::string_view name;
+};
+
+// Reflection of one blob.
+struct Reflection {
+    std::span<const DescriptorBinding> bindings;
+    std::uint32_t push_constant_size;  // 0 when the blob has no push constants
+    std::span<const InterfaceVariable> inputs;
+    std::span<const InterfaceVariable> outputs;
+    std::uint32_t local_size[3];  // compute work-group size; {0,0,0} for graphics stages
+};
+
+// One compiled permutation (or one non-permuted companion shader).
+struct Permutation {
+    std::uint32_t id;                          // raw or optimised ID; index for companions
+    std::span<const std::string_view> defines; // GLSL defines it was compiled with
+    bool pruned;                               // impossible raw ID: no SPIR-V (spirv is empty)
+    std::span<const std::uint32_t> spirv;      // SPIR-V words, validated
+    std::string_view hash;                     // content hash of the SPIR-V (hex)
+    Reflection reflection;
+};
+
+// A non-permuted shader compiled alongside the uber-shader (tile vertex shader, compute passes).
+struct CompanionShader {
+    std::string_view name;
+    Stage stage;
+    Permutation shader;
+};
+
+// Everything one domain spec produced.
+struct Registry {
+    std::string_view name;        // domain name from the spec
+    Stage uber_stage;             // stage of the permuted uber-shader
+    std::span<const std::string_view> raw_feature_names;        // indexed by raw bit
+    std::span<const std::string_view> optimised_bit_names;      // indexed by optimised bit
+    std::span<const std::uint8_t> raw_to_optimised;             // the LUT, one entry per raw ID
+    std::span<const Permutation> raw;                           // indexed by raw ID
+    std::span<const Permutation> optimised;                     // indexed by optimised ID
+    std::span<const CompanionShader> companions;
+    std::span<const DescriptorBinding> pipeline_layout;         // merged over every blob
+    std::span<const PushConstantRange> push_constants;          // merged over every blob
+
+    // Precondition: raw_id < raw.size(). Returns the optimised permutation for a raw ID.
+    const Permutation& optimised_for_raw(std::uint32_t raw_id) const {
+        return optimised[raw_to_optimised[raw_id]];
+    }
+    // Returns the companion called `name`, or nullptr.
+    const CompanionShader* companion(std::string_view wanted) const {
+        for (const CompanionShader& c : companions)
+            if (c.name == wanted) return &c;
+        return nullptr;
+    }
+};
+
+}  // namespace shadergen

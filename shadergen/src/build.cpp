@@ -1,0 +1,98 @@
+#include "shadergen/build.h"
+
+#include <chrono>
+
+#include "cache.h"
+#include "codegen.h"
+#include "compiled_domain.h"
+#include "file_io.h"
+#include "manifest.h"
+#include "output_dir.h"
+#include "shadergen/domain.h"
+#include "shadergen/permutations.h"
+
+namespace shadergen {
+namespace {
+
+Status check_names(const BuildOptions& options, const std::string& cpp_name, const std::string& ns) {
+    if (!is_valid_namespace(ns))
+        return make_error("--namespace: \"" + ns + "\" is not a C++ namespace (identifiers joined by ::)");
+    if (cpp_name.empty() || cpp_name.find('/') != std::string::npos || cpp_name.find('\\') != std::string::npos ||
+        cpp_name.front() == '.')
+        return make_error("--cpp-name: \"" + cpp_name + "\" is not a plain file name");
+    if (options.out_dir.empty()) return make_error("--out: no output folder given");
+    return Ok{};
+}
+
+StagedOutput outputs_for(const BuildOptions& options, const CompiledDomain& domain, const std::string& cpp_name,
+                         const std::string& ns, double seconds) {
+    StagedOutput staged(options.out_dir);
+    staged.add("manifest.json", write_manifest(domain));
+    for (const Blob& blob : domain.blobs) {
+        const auto* bytes = reinterpret_cast<const char*>(blob.words.data());
+        staged.add(blob_relative_path(blob), std::string(bytes, blob.words.size() * sizeof(std::uint32_t)));
+    }
+    GeneratedCpp cpp = generate_cpp(domain, cpp_name + ".h", ns);
+    staged.add(cpp_name + ".h", std::move(cpp.header));
+    staged.add(cpp_name + ".cpp", std::move(cpp.source));
+    if (options.write_stats) staged.add("stats.json", write_stats(domain, seconds));
+    return staged;
+}
+
+BuildSummary summarise(const CompiledDomain& d) {
+    BuildSummary s;
+    s.raw = static_cast<std::uint32_t>(d.plan.raw.size());
+    for (const RawPermutation& raw : d.plan.raw) s.pruned += raw.pruned;
+    s.optimised = static_cast<std::uint32_t>(d.plan.optimised.size());
+    s.companions = static_cast<std::uint32_t>(d.spec.companions.size());
+    s.unique_sources = static_cast<std::uint32_t>(d.sources.size());
+    for (const SourceRecord& source : d.sources) (source.cache_hit ? s.cache_hits : s.compiled)++;
+    s.unique_blobs = static_cast<std::uint32_t>(d.blobs.size());
+    for (const Blob& b : d.blobs) s.optimiser_fallbacks += b.fell_back;
+    return s;
+}
+
+}  // namespace
+
+Result<BuildSummary> build(const BuildOptions& options) {
+    auto start = std::chrono::steady_clock::now();
+    auto spec = load_domain(options.spec_path);
+    if (!spec) return std::move(spec).take_errors();
+    std::string cpp_name = options.cpp_name.empty() ? spec->name : options.cpp_name;
+    std::string ns = options.cpp_namespace.empty() ? spec->name : options.cpp_namespace;
+    if (Status ok = check_names(options, cpp_name, ns); !ok) return std::move(ok).take_errors();
+    auto plan = expand(*spec);
+    if (!plan) return std::move(plan).take_errors();
+
+    ContentCache cache;
+    if (options.use_cache) {
+        std::filesystem::path dir = options.cache_dir.empty() ? default_cache_directory() : options.cache_dir;
+        if (!dir.empty()) cache = ContentCache(dir);
+    }
+    CompileOptions compile_options{options.jobs, cache.enabled() ? &cache : nullptr, options.verbose, options.log,
+                                   options.cancelled};
+    auto domain = compile_domain(std::move(spec).value(), std::move(plan).value(), compile_options);
+    if (!domain) return std::move(domain).take_errors();
+
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (const Blob& blob : domain->blobs)
+        if (blob.fell_back && options.log) options.log("warning: optimiser fallback for blob " + blob.hash.substr(0, 16) +
+                                                       ": " + blob.fallback_reason);
+    if (options.cancelled && options.cancelled()) return make_error("build interrupted");
+    StagedOutput staged = outputs_for(options, *domain, cpp_name, ns, seconds);
+    auto changed = staged.commit();
+    if (!changed) return std::move(changed).take_errors();
+    if (!options.depfile.empty()) {
+        std::string target = (options.out_dir / (cpp_name + ".h")).string();
+        std::string text = write_depfile(target, *domain);
+        if (!file_has_bytes(options.depfile, text))
+            if (Status written = write_file_atomic(options.depfile, text); !written)
+                return std::move(written).take_errors();
+    }
+    BuildSummary summary = summarise(*domain);
+    summary.output_changed = *changed;
+    summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return summary;
+}
+
+}  // namespace shadergen

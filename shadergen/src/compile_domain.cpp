@@ -1,0 +1,259 @@
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <set>
+
+#include "cache.h"
+#include "compiled_domain.h"
+#include "error_grouping.h"
+#include "glsl_compiler.h"
+#include "sha256.h"
+#include "spirv_passes.h"
+#include "thread_pool.h"
+
+namespace shadergen {
+
+std::string CompileJob::label() const {
+    switch (kind) {
+        case JobKind::raw: return "raw " + std::to_string(id);
+        case JobKind::optimised: return "optimised " + std::to_string(id);
+        case JobKind::companion: return "companion " + name;
+    }
+    return {};
+}
+
+const Blob* CompiledDomain::raw_blob(std::uint32_t id) const {
+    for (const CompileJob& job : jobs)
+        if (job.kind == JobKind::raw && job.id == id) return &blobs[static_cast<std::size_t>(job.blob)];
+    return nullptr;
+}
+
+const Blob* CompiledDomain::optimised_blob(std::uint32_t id) const {
+    for (const CompileJob& job : jobs)
+        if (job.kind == JobKind::optimised && job.id == id) return &blobs[static_cast<std::size_t>(job.blob)];
+    return nullptr;
+}
+
+const Blob* CompiledDomain::companion_blob(std::size_t index) const {
+    for (const CompileJob& job : jobs)
+        if (job.kind == JobKind::companion && job.id == index) return &blobs[static_cast<std::size_t>(job.blob)];
+    return nullptr;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan& plan) {
+    std::vector<CompileJob> jobs;
+    for (const RawPermutation& raw : plan.raw)
+        if (!raw.pruned)
+            jobs.push_back({JobKind::raw, raw.id, raw.defines, spec.uber.stage, spec.uber.path, {}});
+    for (const OptimisedPermutation& optimised : plan.optimised)
+        jobs.push_back({JobKind::optimised, optimised.id, optimised.defines, spec.uber.stage, spec.uber.path, {}});
+    for (std::size_t i = 0; i < spec.companions.size(); ++i) {
+        const CompanionSpec& companion = spec.companions[i];
+        jobs.push_back({JobKind::companion, static_cast<std::uint32_t>(i), companion.defines, companion.file.stage,
+                        companion.file.path, companion.name});
+    }
+    return jobs;
+}
+
+GlslSource source_of(const DomainSpec& spec, const CompileJob& job) {
+    return GlslSource{job.path, job.stage, spec.include_dirs, job.defines};
+}
+
+class DomainCompiler {
+public:
+    DomainCompiler(CompiledDomain& domain, const CompileOptions& options) : d_(domain), options_(options) {}
+
+    Status run() {
+        d_.jobs = make_jobs(d_.spec, d_.plan);
+        if (Status s = preprocess_all(); !s) return s;
+        if (Status s = compile_sources(); !s) return s;
+        if (Status s = reflect_blobs(); !s) return s;
+        return merge();
+    }
+
+private:
+    bool cancelled() const { return options_.cancelled && options_.cancelled(); }
+
+    Status cancelled_error() const { return make_error("build interrupted"); }
+
+    void log(const std::string& line) const {
+        if (options_.log) options_.log(line);
+    }
+
+    Status preprocess_all() {
+        std::vector<Result<Preprocessed>> results(d_.jobs.size(), Result<Preprocessed>(Preprocessed{}));
+        parallel_for(
+            d_.jobs.size(), options_.jobs,
+            [&](std::size_t i) {
+                auto start = Clock::now();
+                results[i] = preprocess(source_of(d_.spec, d_.jobs[i]));
+                d_.jobs[i].preprocess_ms = milliseconds_since(start);
+            },
+            options_.cancelled);
+        if (cancelled()) return cancelled_error();
+        std::vector<JobFailure> failures;
+        std::map<std::string, int> by_key;
+        std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
+        for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
+            dependencies.insert(d_.jobs[i].path.lexically_normal());
+            if (!results[i]) {
+                failures.push_back({i, results[i].errors()});
+                continue;
+            }
+            for (const auto& include : results[i]->includes) dependencies.insert(include);
+            std::string key = cache_key(stage_name(d_.jobs[i].stage), results[i]->text);
+            auto [it, fresh] = by_key.try_emplace(key, static_cast<int>(d_.sources.size()));
+            if (fresh) d_.sources.push_back({key, i, false, 0.0, -1});
+            d_.jobs[i].source = it->second;
+        }
+        d_.dependencies.assign(dependencies.begin(), dependencies.end());
+        if (!failures.empty()) return group_failures(d_.jobs, failures);
+        return Ok{};
+    }
+
+    Result<CachedBlob> compile_one(SourceRecord& record) {
+        if (options_.cache)
+            if (auto hit = options_.cache->load(record.key)) {
+                record.cache_hit = true;
+                return std::move(*hit);
+            }
+        auto start = Clock::now();
+        auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
+        if (!words) return std::move(words).take_errors();
+        auto optimised = optimise_and_validate(std::move(words).value());
+        if (!optimised) return std::move(optimised).take_errors();
+        record.compile_ms = milliseconds_since(start);
+        CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
+        if (options_.cache) {
+            // A cache that cannot be written only costs time later; the build itself is fine.
+            if (Status stored = options_.cache->store(record.key, blob); !stored)
+                log("warning: " + stored.errors().front().to_string());
+        }
+        return blob;
+    }
+
+    Status compile_sources() {
+        std::vector<Result<CachedBlob>> results(d_.sources.size(), Result<CachedBlob>(CachedBlob{}));
+        std::atomic<std::size_t> done{0};
+        std::mutex log_mutex;
+        std::size_t total = d_.sources.size();
+        parallel_for(
+            total, options_.jobs,
+            [&](std::size_t i) {
+                results[i] = compile_one(d_.sources[i]);
+                std::size_t finished = ++done;
+                report_progress(finished, total, i, log_mutex);
+            },
+            options_.cancelled);
+        if (cancelled()) return cancelled_error();
+        std::vector<JobFailure> failures;
+        for (std::size_t s = 0; s < results.size(); ++s) {
+            if (results[s]) continue;
+            // Every job with this source has the same errors.
+            for (std::size_t j = 0; j < d_.jobs.size(); ++j)
+                if (d_.jobs[j].source == static_cast<int>(s)) failures.push_back({j, results[s].errors()});
+        }
+        if (!failures.empty()) return group_failures(d_.jobs, failures);
+        store_blobs(results);
+        return Ok{};
+    }
+
+    void report_progress(std::size_t finished, std::size_t total, std::size_t source, std::mutex& mutex) {
+        std::lock_guard lock(mutex);
+        const SourceRecord& record = d_.sources[source];
+        if (options_.verbose) {
+            const CompileJob& job = d_.jobs[record.first_job];
+            std::string defines;
+            for (const std::string& d : job.defines) defines += " " + d;
+            log("[" + std::to_string(finished) + "/" + std::to_string(total) + "] " +
+                (record.cache_hit ? "cached   " : "compiled ") + job.label() + (defines.empty() ? "" : ":" + defines));
+        } else if (total >= 8 && finished % (total / 4) == 0 && finished != total) {
+            log("compiled " + std::to_string(finished) + "/" + std::to_string(total) + " sources");
+        }
+    }
+
+    // Distinct sources can still give equal SPIR-V (a define that changes no code path that
+    // survives optimisation); those share one blob.
+    void store_blobs(std::vector<Result<CachedBlob>>& results) {
+        std::map<std::string, int> by_hash;
+        for (std::size_t s = 0; s < d_.sources.size(); ++s) {
+            CachedBlob& compiled = results[s].value();
+            std::string hash = sha256_hex(compiled.words);
+            auto [it, fresh] = by_hash.try_emplace(hash, static_cast<int>(d_.blobs.size()));
+            if (fresh)
+                d_.blobs.push_back(Blob{std::move(compiled.words), hash, {}, compiled.fell_back,
+                                        std::move(compiled.fallback_reason)});
+            d_.sources[s].blob = it->second;
+        }
+        for (CompileJob& job : d_.jobs) job.blob = d_.sources[static_cast<std::size_t>(job.source)].blob;
+    }
+
+    Stage stage_of_blob(std::size_t blob) const {
+        for (const CompileJob& job : d_.jobs)
+            if (job.blob == static_cast<int>(blob)) return job.stage;
+        return Stage::fragment;
+    }
+
+    Status reflect_blobs() {
+        Diagnostics errors;
+        for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
+            auto info = reflect(d_.blobs[b].words, stage_of_blob(b));
+            if (!info) {
+                for (Diagnostic error : info.errors()) errors.push_back(std::move(error));
+                continue;
+            }
+            d_.blobs[b].reflection = std::move(info).value();
+        }
+        if (!errors.empty()) return errors;
+        return Ok{};
+    }
+
+    Status merge() {
+        std::vector<LabelledReflection> labelled;
+        std::set<int> seen;
+        for (const CompileJob& job : d_.jobs) {
+            if (!seen.insert(job.blob).second) continue;
+            std::string label = job.label();
+            if (job.kind != JobKind::companion && !job.defines.empty()) {
+                label += " (";
+                for (std::size_t i = 0; i < job.defines.size(); ++i) label += (i ? " " : "") + job.defines[i];
+                label += ")";
+            }
+            labelled.push_back({label, job.stage, job.kind != JobKind::companion,
+                                &d_.blobs[static_cast<std::size_t>(job.blob)].reflection});
+        }
+        auto layout = merge_layouts(labelled);
+        if (!layout) {
+            Diagnostics errors = std::move(layout).take_errors();
+            for (Diagnostic& e : errors) e.file = d_.spec.spec_path.string();
+            return errors;
+        }
+        d_.layout = std::move(layout).value();
+        return Ok{};
+    }
+
+    CompiledDomain& d_;
+    const CompileOptions& options_;
+};
+
+}  // namespace
+
+Result<CompiledDomain> compile_domain(DomainSpec spec, PermutationPlan plan, const CompileOptions& options) {
+    CompiledDomain domain;
+    domain.spec = std::move(spec);
+    domain.plan = std::move(plan);
+    if (Status status = DomainCompiler(domain, options).run(); !status) return std::move(status).take_errors();
+    return domain;
+}
+
+}  // namespace shadergen

@@ -1,0 +1,82 @@
+// compiled_domain.h - the in-memory result of compiling a domain, before anything is written.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "layout_check.h"
+#include "reflection.h"
+#include "shadergen/diagnostic.h"
+#include "shadergen/domain.h"
+#include "shadergen/permutations.h"
+
+namespace shadergen {
+
+class ContentCache;
+
+// One distinct SPIR-V blob; permutations with equal words share it.
+struct Blob {
+    std::vector<std::uint32_t> words;
+    std::string hash;  // SHA-256 of the words, hex
+    ReflectionInfo reflection;
+    bool fell_back = false;
+    std::string fallback_reason;
+};
+
+enum class JobKind { raw, optimised, companion };
+
+// One thing to compile: a raw or optimised permutation or a companion shader.
+struct CompileJob {
+    JobKind kind = JobKind::raw;
+    std::uint32_t id = 0;          // raw/optimised ID, or companion index
+    std::vector<std::string> defines;
+    Stage stage = Stage::fragment;
+    std::filesystem::path path;
+    std::string label() const;     // "raw 37", "optimised 5", "companion tile" needs the name:
+    std::string name;              // companion name (empty otherwise)
+    // Filled while compiling:
+    int source = -1;               // index of its distinct preprocessed source
+    int blob = -1;                 // index into CompiledDomain::blobs
+    double preprocess_ms = 0.0;
+};
+
+struct SourceRecord {
+    std::string key;        // cache key
+    std::size_t first_job = 0;
+    bool cache_hit = false;
+    double compile_ms = 0.0;
+    int blob = -1;
+};
+
+struct CompiledDomain {
+    DomainSpec spec;
+    PermutationPlan plan;
+    std::vector<CompileJob> jobs;
+    std::vector<SourceRecord> sources;
+    std::vector<Blob> blobs;
+    MergedLayout layout;
+    std::vector<std::filesystem::path> dependencies;  // spec, shaders, includes; sorted, unique
+
+    // Blob of raw ID `id`, or nullptr when pruned. Likewise for optimised IDs and companions.
+    const Blob* raw_blob(std::uint32_t id) const;
+    const Blob* optimised_blob(std::uint32_t id) const;
+    const Blob* companion_blob(std::size_t index) const;
+};
+
+struct CompileOptions {
+    unsigned jobs = 0;
+    const ContentCache* cache = nullptr;  // nullptr: no cache
+    bool verbose = false;
+    std::function<void(const std::string&)> log;
+    std::function<bool()> cancelled;
+};
+
+// Preprocesses, deduplicates, compiles (or loads from the cache), optimises, validates and
+// reflects every permutation, then checks the merged layout. Diagnostics about GLSL errors are
+// grouped: one per distinct message, naming the permutations it occurs in.
+Result<CompiledDomain> compile_domain(DomainSpec spec, PermutationPlan plan, const CompileOptions& options);
+
+}  // namespace shadergen

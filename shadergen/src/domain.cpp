@@ -1,0 +1,446 @@
+#include "shadergen/domain.h"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "json.h"
+
+namespace shadergen {
+
+std::string_view stage_name(Stage stage) {
+    switch (stage) {
+        case Stage::vertex: return "vertex";
+        case Stage::fragment: return "fragment";
+        case Stage::compute: return "compute";
+    }
+    return "?";
+}
+
+std::vector<std::string> DomainSpec::raw_feature_names() const {
+    std::vector<std::string> names;
+    for (const RawFeature& feature : raw_features) names.push_back(feature.name);
+    return names;
+}
+
+std::vector<std::string> DomainSpec::optimised_bit_names() const {
+    std::vector<std::string> names;
+    for (const OptimisedBit& bit : optimised_bits) names.push_back(bit.name);
+    return names;
+}
+
+namespace {
+
+using json::Type;
+using json::Value;
+
+bool is_identifier(std::string_view text) {
+    if (text.empty() || text.size() > 64) return false;
+    if (!(std::isalpha(static_cast<unsigned char>(text[0])) || text[0] == '_')) return false;
+    return std::all_of(text.begin(), text.end(),
+                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+// Walks the JSON tree, checking shapes and collecting every problem with its line.
+class SpecReader {
+public:
+    explicit SpecReader(std::string file) : file_(std::move(file)) {}
+
+    Diagnostics& errors() { return errors_; }
+
+    void error(const Value& at, std::string_view where, std::string message) {
+        errors_.push_back(Diagnostic{Severity::error, file_, at.line, at.column,
+                                     std::string(where) + ": " + std::move(message)});
+    }
+
+    // The member `key` of `object` with type `type`; records an error and returns nullptr if
+    // a required member is missing or any member has the wrong type.
+    const Value* member(const Value& object, std::string_view where, std::string_view key, Type type,
+                        bool required = true) {
+        const Value* found = object.find(key);
+        if (!found) {
+            if (required) error(object, where, "missing \"" + std::string(key) + "\"");
+            return nullptr;
+        }
+        if (found->type != type) {
+            error(*found, join(where, key),
+                  std::string("expected ") + json::type_name(type) + ", found " + json::type_name(found->type));
+            return nullptr;
+        }
+        return found;
+    }
+
+    std::string string_member(const Value& object, std::string_view where, std::string_view key,
+                              bool required = true) {
+        const Value* found = member(object, where, key, Type::string, required);
+        return found ? found->string : std::string();
+    }
+
+    // Rejects keys the format does not know: a misspelt key would otherwise be ignored silently.
+    void only_keys(const Value& object, std::string_view where, std::initializer_list<std::string_view> known) {
+        for (const json::Member& m : object.object) {
+            if (std::find(known.begin(), known.end(), m.first) != known.end()) continue;
+            std::string list;
+            for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+            error(m.second, where, "unknown key \"" + m.first + "\" (expected one of: " + list + ")");
+        }
+    }
+
+    std::optional<std::uint32_t> bit_member(const Value& object, std::string_view where, std::uint32_t limit) {
+        const Value* found = member(object, where, "bit", Type::number);
+        if (!found) return std::nullopt;
+        double v = found->number;
+        if (v < 0 || v != static_cast<double>(static_cast<std::int64_t>(v)) || v >= limit) {
+            error(*found, join(where, "bit"),
+                  "bit must be an integer from 0 to " + std::to_string(limit - 1) + ", found " + json_number(v));
+            return std::nullopt;
+        }
+        return static_cast<std::uint32_t>(v);
+    }
+
+    std::optional<Rule> rule_member(const Value& object, std::string_view where, std::string_view key,
+                                    const std::vector<std::string>& symbols, std::string_view symbol_kind) {
+        const Value* found = member(object, where, key, Type::string);
+        if (!found) return std::nullopt;
+        auto parsed = parse_expression(found->string, symbols);
+        if (!parsed) {
+            Diagnostic d = parsed.errors().front();
+            // The value's column points at its opening quote; expression columns are 1-based.
+            error(*found, join(where, key),
+                  d.message + " in \"" + found->string + "\" at column " + std::to_string(d.column) +
+                      " (rules here name " + std::string(symbol_kind) + ")");
+            return std::nullopt;
+        }
+        return Rule{std::move(parsed).value(), found->string, found->line};
+    }
+
+    static std::string join(std::string_view where, std::string_view key) {
+        return std::string(where) + "." + std::string(key);
+    }
+    static std::string index(std::string_view where, std::size_t i) {
+        return std::string(where) + "[" + std::to_string(i) + "]";
+    }
+    static std::string json_number(double v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    }
+
+private:
+    std::string file_;
+    Diagnostics errors_;
+};
+
+std::optional<Stage> parse_stage(std::string_view name) {
+    if (name == "vertex" || name == "vert") return Stage::vertex;
+    if (name == "fragment" || name == "frag") return Stage::fragment;
+    if (name == "compute" || name == "comp") return Stage::compute;
+    return std::nullopt;
+}
+
+class DomainBuilder {
+public:
+    DomainBuilder(const std::filesystem::path& spec_path, SpecReader& reader)
+        : reader_(reader), base_(spec_path.parent_path()) {
+        spec_.spec_path = spec_path;
+    }
+
+    DomainSpec build(const Value& root) {
+        if (root.type != Type::object) {
+            reader_.error(root, "spec", "the spec must be a JSON object");
+            return std::move(spec_);
+        }
+        reader_.only_keys(root, "spec",
+                          {"format", "name", "description", "uber_shader", "include_dirs", "companions", "raw",
+                           "optimised"});
+        read_header(root);
+        if (const Value* uber = reader_.member(root, "spec", "uber_shader", Type::object))
+            spec_.uber = read_shader_file(*uber, "uber_shader");
+        read_include_dirs(root);
+        read_companions(root);
+        if (const Value* raw = reader_.member(root, "spec", "raw", Type::object)) read_raw(*raw);
+        if (const Value* optimised = reader_.member(root, "spec", "optimised", Type::object))
+            read_optimised(*optimised);
+        return std::move(spec_);
+    }
+
+private:
+    void read_header(const Value& root) {
+        if (const Value* format = reader_.member(root, "spec", "format", Type::number, false)) {
+            if (format->number != 1) reader_.error(*format, "spec.format", "unsupported format version (this shadergen reads 1)");
+        }
+        spec_.name = reader_.string_member(root, "spec", "name");
+        if (root.find("name") && !spec_.name.empty() && !is_identifier(spec_.name))
+            reader_.error(*root.find("name"), "spec.name", "\"" + spec_.name + "\" is not an identifier ([A-Za-z_][A-Za-z0-9_]*, at most 64)");
+        spec_.description = reader_.string_member(root, "spec", "description", false);
+    }
+
+    ShaderFile read_shader_file(const Value& object, const std::string& where) {
+        ShaderFile file;
+        std::string path = reader_.string_member(object, where, "path");
+        if (!path.empty()) file.path = (base_ / path).lexically_normal();
+        std::string stage = reader_.string_member(object, where, "stage");
+        if (auto parsed = parse_stage(stage)) {
+            file.stage = *parsed;
+        } else if (object.find("stage") && object.find("stage")->type == Type::string) {
+            reader_.error(*object.find("stage"), where + ".stage",
+                          "unknown stage \"" + stage + "\" (expected vertex, fragment or compute)");
+        }
+        return file;
+    }
+
+    void read_include_dirs(const Value& root) {
+        const Value* dirs = reader_.member(root, "spec", "include_dirs", Type::array, false);
+        if (!dirs) return;
+        for (std::size_t i = 0; i < dirs->array.size(); ++i) {
+            const Value& dir = dirs->array[i];
+            if (dir.type != Type::string) {
+                reader_.error(dir, SpecReader::index("include_dirs", i), "expected a string");
+                continue;
+            }
+            spec_.include_dirs.push_back((base_ / dir.string).lexically_normal());
+        }
+    }
+
+    void read_companions(const Value& root) {
+        const Value* list = reader_.member(root, "spec", "companions", Type::array, false);
+        if (!list) return;
+        if (list->array.size() > kMaxCompanions)
+            reader_.error(*list, "companions", "more than " + std::to_string(kMaxCompanions) + " companions");
+        std::set<std::string> names;
+        for (std::size_t i = 0; i < list->array.size() && i < kMaxCompanions; ++i) {
+            const Value& item = list->array[i];
+            std::string where = SpecReader::index("companions", i);
+            if (item.type != Type::object) {
+                reader_.error(item, where, "expected an object");
+                continue;
+            }
+            reader_.only_keys(item, where, {"name", "path", "stage", "defines"});
+            CompanionSpec companion;
+            companion.name = reader_.string_member(item, where, "name");
+            if (item.find("name") && !is_identifier(companion.name))
+                reader_.error(*item.find("name"), where + ".name", "\"" + companion.name + "\" is not an identifier");
+            else if (!companion.name.empty() && !names.insert(companion.name).second)
+                reader_.error(*item.find("name"), where + ".name", "companion \"" + companion.name + "\" is declared twice");
+            companion.file = read_shader_file(item, where);
+            if (const Value* defines = reader_.member(item, where, "defines", Type::array, false))
+                companion.defines = read_identifier_list(*defines, where + ".defines");
+            spec_.companions.push_back(std::move(companion));
+        }
+    }
+
+    std::vector<std::string> read_identifier_list(const Value& list, const std::string& where) {
+        std::vector<std::string> out;
+        for (std::size_t i = 0; i < list.array.size(); ++i) {
+            const Value& item = list.array[i];
+            if (item.type != Type::string || !is_identifier(item.string)) {
+                reader_.error(item, SpecReader::index(where, i), "expected an identifier string");
+                continue;
+            }
+            out.push_back(item.string);
+        }
+        return out;
+    }
+
+    void read_raw(const Value& raw) {
+        reader_.only_keys(raw, "raw", {"features", "impossible"});
+        const Value* features = reader_.member(raw, "raw", "features", Type::array);
+        if (!features) return;
+        if (features->array.empty() || features->array.size() > kMaxRawFeatures) {
+            reader_.error(*features, "raw.features",
+                          "expected 1 to " + std::to_string(kMaxRawFeatures) + " features, found " +
+                              std::to_string(features->array.size()));
+            return;
+        }
+        std::uint32_t count = static_cast<std::uint32_t>(features->array.size());
+        std::vector<std::optional<RawFeature>> by_bit(count);
+        std::map<std::string, std::string> defines_seen;
+        std::set<std::string> names_seen;
+        for (std::size_t i = 0; i < features->array.size(); ++i) {
+            const Value& item = features->array[i];
+            std::string where = SpecReader::index("raw.features", i);
+            if (item.type != Type::object) {
+                reader_.error(item, where, "expected an object");
+                continue;
+            }
+            reader_.only_keys(item, where, {"name", "bit", "define", "description"});
+            RawFeature feature;
+            feature.name = reader_.string_member(item, where, "name");
+            feature.define = reader_.string_member(item, where, "define");
+            feature.description = reader_.string_member(item, where, "description", false);
+            auto bit = reader_.bit_member(item, where, count);
+            if (item.find("name") && !is_identifier(feature.name)) {
+                reader_.error(*item.find("name"), where + ".name", "\"" + feature.name + "\" is not an identifier");
+                continue;
+            }
+            if (item.find("define") && !is_identifier(feature.define)) {
+                reader_.error(*item.find("define"), where + ".define", "\"" + feature.define + "\" is not a GLSL identifier");
+                continue;
+            }
+            if (!feature.name.empty() && !names_seen.insert(feature.name).second)
+                reader_.error(*item.find("name"), where + ".name", "feature \"" + feature.name + "\" is declared twice");
+            if (!feature.define.empty()) {
+                auto [it, fresh] = defines_seen.emplace(feature.define, feature.name);
+                if (!fresh)
+                    reader_.error(*item.find("define"), where + ".define",
+                                  "define " + feature.define + " is already used by feature " + it->second);
+            }
+            if (!bit) continue;
+            if (by_bit[*bit]) {
+                reader_.error(*item.find("bit"), where + ".bit",
+                              "bit " + std::to_string(*bit) + " of " + feature.name + " collides with feature " +
+                                  by_bit[*bit]->name);
+                continue;
+            }
+            feature.bit = *bit;
+            by_bit[*bit] = std::move(feature);
+        }
+        if (!reader_.errors().empty()) return;
+        for (auto& feature : by_bit) spec_.raw_features.push_back(std::move(*feature));
+        read_impossible(raw);
+    }
+
+    void read_impossible(const Value& raw) {
+        const Value* list = reader_.member(raw, "raw", "impossible", Type::array, false);
+        if (!list) return;
+        auto symbols = spec_.raw_feature_names();
+        for (std::size_t i = 0; i < list->array.size(); ++i) {
+            const Value& item = list->array[i];
+            std::string where = SpecReader::index("raw.impossible", i);
+            if (item.type != Type::object) {
+                reader_.error(item, where, "expected an object with \"when\" and \"why\"");
+                continue;
+            }
+            reader_.only_keys(item, where, {"when", "why"});
+            auto rule = reader_.rule_member(item, where, "when", symbols, "raw features");
+            std::string why = reader_.string_member(item, where, "why", false);
+            if (rule) spec_.impossible.push_back(ImpossibleSet{std::move(*rule), std::move(why)});
+        }
+    }
+
+    void read_optimised(const Value& optimised) {
+        reader_.only_keys(optimised, "optimised", {"bits", "variants"});
+        if (spec_.raw_features.empty()) return;  // raw section already reported
+        const Value* bits = reader_.member(optimised, "optimised", "bits", Type::array);
+        if (!bits) return;
+        if (bits->array.empty() || bits->array.size() > kMaxOptimisedBits) {
+            reader_.error(*bits, "optimised.bits",
+                          "expected 1 to " + std::to_string(kMaxOptimisedBits) + " bits, found " +
+                              std::to_string(bits->array.size()));
+            return;
+        }
+        std::uint32_t count = static_cast<std::uint32_t>(bits->array.size());
+        std::vector<std::optional<OptimisedBit>> by_bit(count);
+        std::set<std::string> names_seen;
+        auto raw_symbols = spec_.raw_feature_names();
+        for (std::size_t i = 0; i < bits->array.size(); ++i) {
+            const Value& item = bits->array[i];
+            std::string where = SpecReader::index("optimised.bits", i);
+            if (item.type != Type::object) {
+                reader_.error(item, where, "expected an object");
+                continue;
+            }
+            reader_.only_keys(item, where, {"name", "bit", "when", "description"});
+            OptimisedBit bit;
+            bit.name = reader_.string_member(item, where, "name");
+            bit.description = reader_.string_member(item, where, "description", false);
+            auto index = reader_.bit_member(item, where, count);
+            auto rule = reader_.rule_member(item, where, "when", raw_symbols, "raw features");
+            if (item.find("name") && !is_identifier(bit.name)) {
+                reader_.error(*item.find("name"), where + ".name", "\"" + bit.name + "\" is not an identifier");
+                continue;
+            }
+            if (!bit.name.empty() && !names_seen.insert(bit.name).second)
+                reader_.error(*item.find("name"), where + ".name", "optimised bit \"" + bit.name + "\" is declared twice");
+            if (!index || !rule) continue;
+            if (by_bit[*index]) {
+                reader_.error(*item.find("bit"), where + ".bit",
+                              "bit " + std::to_string(*index) + " of " + bit.name + " collides with optimised bit " +
+                                  by_bit[*index]->name);
+                continue;
+            }
+            bit.bit = *index;
+            bit.when = std::move(*rule);
+            by_bit[*index] = std::move(bit);
+        }
+        if (!reader_.errors().empty()) return;
+        for (auto& bit : by_bit) spec_.optimised_bits.push_back(std::move(*bit));
+        read_variants(optimised);
+    }
+
+    void read_variants(const Value& optimised) {
+        const Value* list = reader_.member(optimised, "optimised", "variants", Type::array);
+        if (!list) return;
+        auto symbols = spec_.optimised_bit_names();
+        for (std::size_t i = 0; i < list->array.size(); ++i) {
+            const Value& item = list->array[i];
+            std::string where = SpecReader::index("optimised.variants", i);
+            if (item.type != Type::object) {
+                reader_.error(item, where, "expected an object with \"when\" and \"raw_features\"");
+                continue;
+            }
+            reader_.only_keys(item, where, {"when", "raw_features", "description"});
+            auto rule = reader_.rule_member(item, where, "when", symbols, "optimised bits");
+            const Value* features = reader_.member(item, where, "raw_features", Type::array);
+            if (!rule || !features) continue;
+            OptimisedVariant variant{std::move(*rule), {}};
+            for (std::size_t j = 0; j < features->array.size(); ++j) {
+                const Value& name = features->array[j];
+                auto found = std::find_if(spec_.raw_features.begin(), spec_.raw_features.end(),
+                                          [&](const RawFeature& f) { return f.name == name.string; });
+                if (name.type != Type::string || found == spec_.raw_features.end()) {
+                    std::string known;
+                    for (const RawFeature& f : spec_.raw_features) known += (known.empty() ? "" : ", ") + f.name;
+                    reader_.error(name, SpecReader::index(where + ".raw_features", j),
+                                  (name.type == Type::string ? "unknown raw feature \"" + name.string + "\""
+                                                             : std::string("expected a raw feature name")) +
+                                      " (known: " + known + ")");
+                    continue;
+                }
+                variant.raw_features.push_back(found->bit);
+            }
+            spec_.variants.push_back(std::move(variant));
+        }
+    }
+
+    SpecReader& reader_;
+    std::filesystem::path base_;
+    DomainSpec spec_;
+};
+
+}  // namespace
+
+Result<DomainSpec> parse_domain(std::string_view text, const std::filesystem::path& spec_path) {
+    std::string file = spec_path.string();
+    auto root = json::parse(text, file);
+    if (!root) return std::move(root).take_errors();
+    SpecReader reader(file);
+    DomainSpec spec = DomainBuilder(spec_path, reader).build(*root);
+    if (!reader.errors().empty()) return std::move(reader.errors());
+    return spec;
+}
+
+Result<DomainSpec> load_domain(const std::filesystem::path& spec_path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(spec_path, ec))
+        return make_error(spec_path.string(), 0, "spec file does not exist");
+    if (std::filesystem::is_directory(spec_path, ec))
+        return make_error(spec_path.string(), 0, "spec path is a directory, not a file");
+    std::ifstream in(spec_path, std::ios::binary);
+    if (!in) return make_error(spec_path.string(), 0, "cannot open spec file for reading");
+    std::string text;
+    char buffer[65536];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        text.append(buffer, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > json::kMaxJsonBytes)
+            return make_error(spec_path.string(), 0,
+                              "spec is larger than " + std::to_string(json::kMaxJsonBytes) + " bytes");
+    }
+    return parse_domain(text, spec_path);
+}
+
+}  // namespace shadergen

@@ -1,0 +1,39 @@
+// glsl_compiler.h - GLSL to SPIR-V through the glslang library, in process.
+//
+// Two steps, because deduplication needs the first alone: preprocess() expands #include and
+// the feature #defines to the exact text the compiler will see (permutations whose text is
+// equal produce equal SPIR-V, so they are compiled once), and compile() turns a permutation
+// into unoptimised SPIR-V. Both record every file glslang opened, for the depfile.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shadergen/diagnostic.h"
+#include "shadergen/registry.h"
+
+namespace shadergen {
+
+struct GlslSource {
+    std::filesystem::path path;                      // the shader file
+    Stage stage = Stage::fragment;
+    std::vector<std::filesystem::path> include_dirs; // searched after the including file's folder
+    std::vector<std::string> defines;                // each becomes `#define NAME 1`
+};
+
+struct Preprocessed {
+    std::string text;                            // what the parser will see; the dedup key
+    std::vector<std::filesystem::path> includes; // every file #include opened, in order
+};
+
+// Target: Vulkan 1.2, SPIR-V 1.5, GLSL 450 unless the shader says otherwise.
+inline constexpr const char* kTargetDescription = "vulkan1.2/spv1.5";
+
+// Thread-safe (each call owns its glslang objects). Diagnostics carry the original file
+// (the shader or the include it occurred in) and line.
+Result<Preprocessed> preprocess(const GlslSource& source);
+Result<std::vector<std::uint32_t>> compile(const GlslSource& source);
+
+}  // namespace shadergen

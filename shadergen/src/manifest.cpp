@@ -1,0 +1,200 @@
+#include "manifest.h"
+
+#include "json.h"
+
+namespace shadergen {
+
+std::string blob_relative_path(const Blob& blob) {
+    return "spirv/" + blob.hash.substr(0, 16) + ".spv";
+}
+
+namespace {
+
+void write_stage_list(json::Writer& w, std::uint32_t stages) {
+    std::vector<std::string> names;
+    for (Stage s : {Stage::vertex, Stage::fragment, Stage::compute})
+        if (stages & static_cast<std::uint32_t>(s)) names.emplace_back(stage_name(s));
+    w.inline_string_array(names);
+}
+
+void write_blob_fields(json::Writer& w, const Blob* blob) {
+    if (!blob) return;
+    w.key("spirv");
+    w.value(blob_relative_path(*blob));
+    w.key("hash");
+    w.value(blob->hash);
+}
+
+void write_features(json::Writer& w, const DomainSpec& spec) {
+    w.key("raw_features");
+    w.begin_array();
+    for (const RawFeature& f : spec.raw_features) {
+        w.begin_object();
+        w.key("name"), w.value(f.name);
+        w.key("bit"), w.value(f.bit);
+        w.key("define"), w.value(f.define);
+        w.end_object();
+    }
+    w.end_array();
+    w.key("optimised_bits");
+    w.begin_array();
+    for (const OptimisedBit& b : spec.optimised_bits) {
+        w.begin_object();
+        w.key("name"), w.value(b.name);
+        w.key("bit"), w.value(b.bit);
+        w.key("when"), w.value(b.when.text);
+        w.end_object();
+    }
+    w.end_array();
+}
+
+void write_permutations(json::Writer& w, const CompiledDomain& d) {
+    w.key("raw");
+    w.begin_array();
+    for (const RawPermutation& raw : d.plan.raw) {
+        w.begin_object();
+        w.key("id"), w.value(raw.id);
+        w.key("defines"), w.inline_string_array(raw.defines);
+        w.key("pruned"), w.value(raw.pruned);
+        w.key("optimised"), w.value(raw.optimised);
+        write_blob_fields(w, raw.pruned ? nullptr : d.raw_blob(raw.id));
+        w.end_object();
+    }
+    w.end_array();
+    w.key("optimised");
+    w.begin_array();
+    for (const OptimisedPermutation& optimised : d.plan.optimised) {
+        w.begin_object();
+        w.key("id"), w.value(optimised.id);
+        w.key("defines"), w.inline_string_array(optimised.defines);
+        w.key("raw_equivalent"), w.value(optimised.raw_equivalent);
+        w.key("raw_mapped"), w.value(optimised.raw_mapped);
+        write_blob_fields(w, d.optimised_blob(optimised.id));
+        w.end_object();
+    }
+    w.end_array();
+}
+
+void write_companions(json::Writer& w, const CompiledDomain& d) {
+    w.key("companions");
+    w.begin_array();
+    for (std::size_t i = 0; i < d.spec.companions.size(); ++i) {
+        const CompanionSpec& c = d.spec.companions[i];
+        w.begin_object();
+        w.key("name"), w.value(c.name);
+        w.key("stage"), w.value(stage_name(c.file.stage));
+        w.key("defines"), w.inline_string_array(c.defines);
+        write_blob_fields(w, d.companion_blob(i));
+        w.end_object();
+    }
+    w.end_array();
+}
+
+void write_layout(json::Writer& w, const MergedLayout& layout) {
+    w.key("pipeline_layout");
+    w.begin_object();
+    w.key("bindings");
+    w.begin_array();
+    for (const BindingInfo& b : layout.bindings) {
+        w.begin_object();
+        w.key("set"), w.value(b.set);
+        w.key("binding"), w.value(b.binding);
+        w.key("kind"), w.value(descriptor_kind_name(b.kind));
+        w.key("count"), w.value(b.count);
+        w.key("stages"), write_stage_list(w, b.stages);
+        w.key("name"), w.value(b.name);
+        w.end_object();
+    }
+    w.end_array();
+    w.key("push_constants");
+    w.begin_array();
+    for (const PushConstantInfo& p : layout.push_constants) {
+        w.begin_object();
+        w.key("size"), w.value(p.size);
+        w.key("stages"), write_stage_list(w, p.stages);
+        w.end_object();
+    }
+    w.end_array();
+    w.end_object();
+}
+
+}  // namespace
+
+std::string write_manifest(const CompiledDomain& d) {
+    json::Writer w;
+    w.begin_object();
+    w.key("format"), w.value(1);
+    w.key("generator"), w.value("shadergen " SHADERGEN_VERSION);
+    w.key("domain"), w.value(d.spec.name);
+    w.key("uber_shader"), w.value(d.spec.uber.path.filename().string());
+    w.key("stage"), w.value(stage_name(d.spec.uber.stage));
+    write_features(w, d.spec);
+    write_permutations(w, d);
+    write_companions(w, d);
+    write_layout(w, d.layout);
+    w.end_object();
+    return w.take();
+}
+
+std::string write_stats(const CompiledDomain& d, double seconds) {
+    std::uint32_t pruned = 0, hits = 0, fallbacks = 0;
+    for (const RawPermutation& raw : d.plan.raw) pruned += raw.pruned;
+    for (const SourceRecord& s : d.sources) hits += s.cache_hit;
+    for (const Blob& b : d.blobs) fallbacks += b.fell_back;
+    json::Writer w;
+    w.begin_object();
+    w.key("stages");
+    w.begin_object();
+    w.key("raw"), w.value(static_cast<std::uint32_t>(d.plan.raw.size()));
+    w.key("pruned"), w.value(pruned);
+    w.key("canonical"), w.value(static_cast<std::uint32_t>(d.jobs.size()));
+    w.key("unique_sources"), w.value(static_cast<std::uint32_t>(d.sources.size()));
+    w.key("cache_hits"), w.value(hits);
+    w.key("unique_blobs"), w.value(static_cast<std::uint32_t>(d.blobs.size()));
+    w.key("optimiser_fallbacks"), w.value(fallbacks);
+    w.end_object();
+    w.key("seconds"), w.value(seconds);
+    w.key("permutations");
+    w.begin_array();
+    for (const CompileJob& job : d.jobs) {
+        const SourceRecord& source = d.sources[static_cast<std::size_t>(job.source)];
+        const Blob& blob = d.blobs[static_cast<std::size_t>(job.blob)];
+        w.begin_object();
+        w.key("permutation"), w.value(job.label());
+        w.key("source"), w.value(job.source);
+        w.key("compiled_here"), w.value(source.first_job == static_cast<std::size_t>(&job - d.jobs.data()));
+        w.key("cache_hit"), w.value(source.cache_hit);
+        w.key("preprocess_ms"), w.value(job.preprocess_ms);
+        w.key("compile_ms"), w.value(source.compile_ms);
+        w.key("spirv_bytes"), w.value(static_cast<std::int64_t>(blob.words.size() * 4));
+        if (blob.fell_back) w.key("optimiser_fallback"), w.value(blob.fallback_reason);
+        w.end_object();
+    }
+    w.end_array();
+    w.end_object();
+    return w.take();
+}
+
+namespace {
+std::string escape_make(const std::string& path) {
+    std::string out;
+    for (char c : path) {
+        if (c == ' ' || c == '#') out += '\\';
+        if (c == '$') out += '$';
+        out += c;
+    }
+    return out;
+}
+}  // namespace
+
+std::string write_depfile(const std::string& target, const CompiledDomain& d) {
+    std::string out = escape_make(target) + ":";
+    for (const auto& dep : d.dependencies) {
+        std::error_code ec;
+        auto absolute = std::filesystem::absolute(dep, ec);
+        out += " \\\n  " + escape_make((ec ? dep : absolute).lexically_normal().string());
+    }
+    return out + "\n";
+}
+
+}  // namespace shadergen

@@ -1,0 +1,40 @@
+// output_dir.h - replacing an output folder all at once.
+//
+// Files are staged in a sibling folder; commit() then swaps it in with two renames, so a
+// failed or interrupted build never leaves a half-written output behind, and the previous
+// output stays exactly as it was until the new one is complete. Files whose bytes did not
+// change are hard-linked from the previous output, keeping their timestamps, so a build
+// system that watches them (Ninja's restat) rebuilds nothing downstream.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "shadergen/diagnostic.h"
+
+namespace shadergen {
+
+class StagedOutput {
+public:
+    explicit StagedOutput(std::filesystem::path out_dir) : out_dir_(std::move(out_dir)) {}
+
+    // `relative` uses '/' separators and stays inside the folder.
+    void add(const std::string& relative, std::string bytes) { files_[relative] = std::move(bytes); }
+
+    // True when the folder already holds exactly these files with exactly these bytes.
+    bool unchanged() const;
+
+    // Writes the new folder and swaps it in. Does nothing if unchanged(). On failure the old
+    // folder is intact and no staging folder is left behind.
+    Result<bool> commit();
+
+private:
+    Status stage(const std::filesystem::path& staging) const;
+    Status swap_in(const std::filesystem::path& staging);
+
+    std::filesystem::path out_dir_;
+    std::map<std::string, std::string> files_;
+};
+
+}  // namespace shadergen

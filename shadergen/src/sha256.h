@@ -1,0 +1,38 @@
+// sha256.h - SHA-256 (FIPS 180-4), used for content addressing: cache keys, blob names and the
+// hashes in the manifest. Collisions must be practically impossible because a cache hit skips
+// compilation entirely, so a cheap non-cryptographic hash is not enough.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace shadergen {
+
+class Sha256 {
+public:
+    Sha256();
+    Sha256& update(std::span<const std::uint8_t> bytes);
+    Sha256& update(std::string_view text);
+    // A length-prefixed field, so ("ab","c") and ("a","bc") hash differently.
+    Sha256& field(std::string_view text);
+    std::array<std::uint8_t, 32> finish();
+    std::string finish_hex();
+
+private:
+    void compress(const std::uint8_t* block);
+
+    std::array<std::uint32_t, 8> state_;
+    std::array<std::uint8_t, 64> buffer_{};
+    std::size_t buffered_ = 0;
+    std::uint64_t total_bytes_ = 0;
+};
+
+std::string sha256_hex(std::string_view text);
+std::string sha256_hex(std::span<const std::uint32_t> words);
+std::string to_hex(std::span<const std::uint8_t> bytes);
+
+}  // namespace shadergen
