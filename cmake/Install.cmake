@@ -1,1 +1,20 @@
+# `cmake --install`: the CLI, the registry header, the CMake function and the package config,
+# so another project's find_package(shadergen CONFIG REQUIRED) gets all three.
+include(CMakePackageConfigHelpers)
 
+set(SHADERGEN_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/shadergen)
+install(TARGETS shadergen shadergen_registry EXPORT shadergenTargets
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/shadergen/include/shadergen/registry.h
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadergen)
+install(EXPORT shadergenTargets NAMESPACE shadergen:: DESTINATION ${SHADERGEN_CMAKE_DIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/shadergenConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/shadergenConfig.cmake
+  INSTALL_DESTINATION ${SHADERGEN_CMAKE_DIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/shadergenConfigVersion.cmake
+  COMPATIBILITY SameMajorVersion)
+install(FILES
+  ${PROJECT_BINARY_DIR}/shadergenConfig.cmake
+  ${PROJECT_BINARY_DIR}/shadergenConfigVersion.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/ShadergenFunctions.cmake
+  DESTINATION ${SHADERGEN_CMAKE_DIR})

@@ -1,1 +1,56 @@
+# shadergen_add_permutations(<target> DOMAIN <spec> [NAMESPACE <ns>] [CACHE_DIR <dir>] [JOBS <n>])
+#
+# Creates a static library <target> holding every permutation of the domain <spec> as SPIR-V,
+# the raw -> optimised lookup table and a registry, with the header <target>.h on its include
+# path (namespace <ns>, default: the target name). shadergen runs at build time and writes only
+# into the build tree; its depfile lists the spec and every GLSL file it read, so editing any
+# of them reruns it and nothing else does. Files whose bytes did not change keep their
+# timestamps, so nothing downstream recompiles after an edit that changes no SPIR-V.
+#
+# Needs SHADERGEN_EXECUTABLE to name the shadergen executable target (the project sets it; the
+# package config sets it to the imported shadergen::shadergen).
+function(shadergen_add_permutations target)
+  cmake_parse_arguments(PARSE_ARGV 1 SG "" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS" "")
+  if(SG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "shadergen_add_permutations(${target}): unknown arguments: ${SG_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT SG_DOMAIN)
+    message(FATAL_ERROR "shadergen_add_permutations(${target}): DOMAIN <spec> is required")
+  endif()
+  if(NOT SHADERGEN_EXECUTABLE OR NOT TARGET ${SHADERGEN_EXECUTABLE})
+    message(FATAL_ERROR "shadergen_add_permutations(${target}): SHADERGEN_EXECUTABLE does not name the shadergen "
+                        "executable target; use find_package(shadergen CONFIG REQUIRED) or add_subdirectory()")
+  endif()
+  cmake_path(ABSOLUTE_PATH SG_DOMAIN BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}" NORMALIZE OUTPUT_VARIABLE spec)
+  if(NOT EXISTS "${spec}")
+    message(FATAL_ERROR "shadergen_add_permutations(${target}): DOMAIN ${SG_DOMAIN} does not exist (looked for ${spec})")
+  endif()
+  if(NOT SG_NAMESPACE)
+    set(SG_NAMESPACE ${target})
+  endif()
 
+  set(out "${CMAKE_CURRENT_BINARY_DIR}/${target}.shadergen")
+  set(depfile "${CMAKE_CURRENT_BINARY_DIR}/${target}.shadergen.d")
+  set(extra)
+  if(SG_CACHE_DIR)
+    list(APPEND extra --cache-dir "${SG_CACHE_DIR}")
+  endif()
+  if(SG_JOBS)
+    list(APPEND extra -j "${SG_JOBS}")
+  endif()
+  add_custom_command(
+    OUTPUT "${out}/${target}.h" "${out}/${target}.cpp" "${out}/manifest.json"
+    COMMAND "$<TARGET_FILE:${SHADERGEN_EXECUTABLE}>" build "${spec}" --out "${out}" --cpp-name "${target}"
+            --namespace "${SG_NAMESPACE}" --depfile "${depfile}" ${extra}
+    DEPENDS "${spec}" ${SHADERGEN_EXECUTABLE}
+    DEPFILE "${depfile}"
+    COMMENT "shadergen: compiling the permutations of ${SG_DOMAIN} into ${target}"
+    VERBATIM)
+  add_library(${target} STATIC "${out}/${target}.cpp" "${out}/${target}.h")
+  target_include_directories(${target} PUBLIC "$<BUILD_INTERFACE:${out}>")
+  target_link_libraries(${target} PUBLIC shadergen::registry)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  set_target_properties(${target} PROPERTIES
+    SHADERGEN_MANIFEST "${out}/manifest.json"
+    SHADERGEN_OUTPUT_DIR "${out}")
+endfunction()

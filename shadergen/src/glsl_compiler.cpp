@@ -119,9 +119,10 @@ struct ShaderJob {
         auto loaded = read_file(source.path);
         if (!loaded) return std::move(loaded).take_errors();
         text = std::move(loaded).value();
-        const char* strings[] = {text.c_str()};
-        const int lengths[] = {static_cast<int>(text.size())};
-        const char* names[] = {name.c_str()};
+        // glslang keeps these pointers (not copies) until it is done, so they are members.
+        strings[0] = text.c_str();
+        lengths[0] = static_cast<int>(text.size());
+        names[0] = name.c_str();
         shader->setStringsWithLengthsAndNames(strings, lengths, names, 1);
         shader->setPreamble(preamble.c_str());
         EShLanguage stage = to_glslang(source.stage);
@@ -135,6 +136,9 @@ struct ShaderJob {
     std::string name;
     std::string preamble;
     std::string text;
+    const char* strings[1] = {};
+    int lengths[1] = {};
+    const char* names[1] = {};
     RecordingIncluder includer;
     std::unique_ptr<glslang::TShader> shader;
 };
