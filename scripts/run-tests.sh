@@ -1,0 +1,13 @@
+#!/bin/sh
+# Every test: install what is missing, build with tests, run the whole CTest suite.
+set -eu
+cd "$(dirname "$0")/.."
+
+./scripts/install-deps.sh
+cmake -S . -B build/tests -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADERGEN_BUILD_TESTS=ON
+# Tests pass their own scratch cache folders; this keeps the build-time shadergen runs of the
+# test targets (and the outside-consumer project) out of the user's cache as well.
+SHADERGEN_CACHE_DIR="$PWD/build/tests/shadergen-cache"
+export SHADERGEN_CACHE_DIR
+cmake --build build/tests
+ctest --test-dir build/tests --output-on-failure --timeout 900 -j 2
