@@ -5,6 +5,10 @@
 #include <cstring>
 #include <set>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include "file_io.h"
 
 namespace shadergen {
@@ -25,6 +29,30 @@ fs::path sibling(const fs::path& out_dir, std::string_view what) {
     fs::path name = out_dir.filename();
     return out_dir.parent_path() / temporary_name(name.string() + "." + std::string(what));
 }
+
+// Holds an exclusive flock() on the folder that contains the output, so that two builds
+// writing the same output take turns at the swap. Locking the folder itself (rather than a
+// lock file) leaves nothing behind. Released by the destructor, or by the kernel if the
+// process dies.
+class ParentLock {
+public:
+    explicit ParentLock(const fs::path& dir) {
+        fd_ = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
+            ::close(fd_);
+            fd_ = -1;
+        }
+    }
+    ~ParentLock() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    ParentLock(const ParentLock&) = delete;
+    ParentLock& operator=(const ParentLock&) = delete;
+    bool locked() const { return fd_ >= 0; }
+
+private:
+    int fd_ = -1;
+};
 
 }  // namespace
 
@@ -76,12 +104,15 @@ Status StagedOutput::swap_in(const fs::path& staging) {
 }
 
 Result<bool> StagedOutput::commit() {
-    if (unchanged()) return false;
     std::error_code ec;
     if (!out_dir_.parent_path().empty()) {
         fs::create_directories(out_dir_.parent_path(), ec);
         if (ec) return make_error(out_dir_.parent_path().string(), 0, "cannot create folder: " + ec.message());
     }
+    ParentLock lock(out_dir_.parent_path());
+    if (!lock.locked())
+        return make_error(out_dir_.parent_path().string(), 0, std::string("cannot lock folder: ") + std::strerror(errno));
+    if (unchanged()) return false;
     fs::path staging = sibling(out_dir_, "staging");
     fs::create_directory(staging, ec);
     if (ec) return make_error(staging.string(), 0, "cannot create staging folder: " + ec.message());
