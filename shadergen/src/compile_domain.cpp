@@ -222,6 +222,7 @@ private:
         std::vector<LabelledReflection> labelled;
         std::set<int> seen;
         for (const CompileJob& job : d_.jobs) {
+            if (job.kind == JobKind::companion && !d_.spec.companions[job.id].shared_layout) continue;
             if (!seen.insert(job.blob).second) continue;
             std::string label = job.label();
             if (job.kind != JobKind::companion && !job.defines.empty()) {

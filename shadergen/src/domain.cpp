@@ -219,7 +219,7 @@ private:
                 reader_.error(item, where, "expected an object");
                 continue;
             }
-            reader_.only_keys(item, where, {"name", "path", "stage", "defines"});
+            reader_.only_keys(item, where, {"name", "path", "stage", "defines", "shared_layout"});
             CompanionSpec companion;
             companion.name = reader_.string_member(item, where, "name");
             if (item.find("name") && !is_identifier(companion.name))
@@ -229,6 +229,8 @@ private:
             companion.file = read_shader_file(item, where);
             if (const Value* defines = reader_.member(item, where, "defines", Type::array, false))
                 companion.defines = read_identifier_list(*defines, where + ".defines");
+            if (const Value* shared = reader_.member(item, where, "shared_layout", Type::boolean, false))
+                companion.shared_layout = shared->boolean;
             spec_.companions.push_back(std::move(companion));
         }
     }

@@ -9,7 +9,10 @@ namespace {
 
 std::string join(const std::vector<std::string>& items, std::string_view separator) {
     std::string text;
-    for (const std::string& item : items) text += (text.empty() ? "" : std::string(separator)) + item;
+    for (const std::string& item : items) {
+        if (!text.empty()) text.append(separator);
+        text.append(item);
+    }
     return text;
 }
 

@@ -84,6 +84,7 @@ void write_companions(json::Writer& w, const CompiledDomain& d) {
         w.key("name"), w.value(c.name);
         w.key("stage"), w.value(stage_name(c.file.stage));
         w.key("defines"), w.inline_string_array(c.defines);
+        w.key("shared_layout"), w.value(c.shared_layout);
         write_blob_fields(w, d.companion_blob(i));
         w.end_object();
     }

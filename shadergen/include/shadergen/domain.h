@@ -65,6 +65,10 @@ struct CompanionSpec {
     std::string name;
     ShaderFile file;
     std::vector<std::string> defines;
+    // True: the companion runs in the uber-shader's pipeline layout (a tile vertex shader), so
+    // it takes part in the cross-permutation layout check and the merged layout. False: it
+    // has a layout of its own (a compute pass), described only by its own reflection.
+    bool shared_layout = true;
 };
 
 struct DomainSpec {
