@@ -1,0 +1,161 @@
+// gbuffer.glsl -- the G-buffer layout (Split/Second, Table 4.1), behind accessors.
+//
+// Following Tabula Rasa (GPU Gems 3, Listing 19-4), this is the ONLY file that
+// knows which channel of which render target holds what. Material shaders write
+// through the gbuffer_encode_* functions, the lighting and classification
+// shaders read through gbuffer_load()/gbuffer_decode(); the layout can change
+// here without touching either side.
+//
+//   target  format       r         g         b         a
+//   RT0     RGBA8 unorm  albedo.r  albedo.g  albedo.b  specular amount
+//   RT1     RGBA16F      normal.x  normal.y  normal.z  motion byte / 255
+//   RT2     RGBA16F      prelit.r  prelit.g  prelit.b  specular power
+//   depth   D32 (hardware depth, 0..1), multisampled like the colour targets
+//
+// Motion byte: bits 0..6 are the motion ID (0 = sky), bit 7 is Split/Second's
+// per-pixel MSAA-edge bit. The runtime may leave the edge bit clear; the
+// classifier then relies on comparing samples (gbuffer_samples_equal).
+//
+// Per-pixel depth: a non-edge pixel must have bit-identical samples, because
+// the lighting shades only sample 0 of it. Colour targets are written once per
+// pixel, but hardware depth is interpolated per sample, so a sloped surface
+// would give every sample a different depth. Scene material shaders should
+// therefore write `gl_FragDepth = gl_FragCoord.z;` (the pixel-centre depth),
+// which stores one depth for all covered samples of the pixel.
+//
+// Define GBUFFER_ENCODE_ONLY before including this file in a material shader:
+// it then declares no descriptors (the lighting bindings would collide with the
+// material's own), only the layout and the encode/decode functions.
+
+#ifndef UBER_GBUFFER_GLSL
+#define UBER_GBUFFER_GLSL
+
+// Motion byte layout.
+const uint GBUFFER_MOTION_ID_MASK = 0x7Fu; // motion IDs 0..127
+const uint GBUFFER_MSAA_EDGE_BIT  = 0x80u; // the 128 bit
+const uint GBUFFER_SKY_MOTION_ID  = 0u;
+
+// One decoded G-buffer sample: everything the lighting needs, and nothing about
+// how it is stored.
+struct GSample {
+    vec3  albedo;
+    float spec_amount;
+    vec3  normal;      // as stored (signed, normalised by the material shader)
+    uint  motion_id;   // 0..127, edge bit removed
+    bool  is_sky;      // motion_id == 0: colour is prelit, no lighting at all
+    vec3  prelit;
+    float spec_power;
+    float depth;       // hardware depth, 0..1
+};
+
+// ---------------------------------------------------------------------------
+// Encoding (material shaders).
+
+// The motion byte is stored as byte/255 in a 16F channel: half precision keeps
+// 11 significant bits, so byte/255 * 255 is within 0.125 of the byte and the
+// rounding in gbuffer_unpack_motion_byte() recovers it exactly.
+float gbuffer_pack_motion_byte(uint motion_id, bool msaa_edge)
+{
+    uint byte_value = (motion_id & GBUFFER_MOTION_ID_MASK) | (msaa_edge ? GBUFFER_MSAA_EDGE_BIT : 0u);
+    return float(byte_value) / 255.0;
+}
+
+// RT0: the target is unorm, so the clamp only makes explicit what the hardware
+// would do on write.
+vec4 gbuffer_encode_rt0(vec3 albedo, float spec_amount)
+{
+    return vec4(clamp(albedo, 0.0, 1.0), clamp(spec_amount, 0.0, 1.0));
+}
+
+vec4 gbuffer_encode_rt1(vec3 normal, uint motion_id, bool msaa_edge)
+{
+    return vec4(normal, gbuffer_pack_motion_byte(motion_id, msaa_edge));
+}
+
+vec4 gbuffer_encode_rt1(vec3 normal, uint motion_id)
+{
+    return gbuffer_encode_rt1(normal, motion_id, false);
+}
+
+// Sky: prelit carries the final sky colour; motion ID 0 marks it.
+vec4 gbuffer_encode_sky_rt1()
+{
+    return gbuffer_encode_rt1(vec3(0.0), GBUFFER_SKY_MOTION_ID, false);
+}
+
+vec4 gbuffer_encode_rt2(vec3 prelit, float spec_power)
+{
+    return vec4(prelit, spec_power);
+}
+
+// ---------------------------------------------------------------------------
+// Decoding (pure: usable on values from any source, e.g. in round-trip tests).
+
+uint gbuffer_unpack_motion_byte(float stored)
+{
+    return uint(clamp(round(stored * 255.0), 0.0, 255.0));
+}
+
+bool gbuffer_decode_msaa_edge_bit(vec4 rt1)
+{
+    return (gbuffer_unpack_motion_byte(rt1.a) & GBUFFER_MSAA_EDGE_BIT) != 0u;
+}
+
+GSample gbuffer_decode(vec4 rt0, vec4 rt1, vec4 rt2, float depth)
+{
+    GSample g;
+    g.albedo      = rt0.rgb;
+    g.spec_amount = rt0.a;
+    g.normal      = rt1.xyz;
+    g.motion_id   = gbuffer_unpack_motion_byte(rt1.a) & GBUFFER_MOTION_ID_MASK;
+    g.is_sky      = g.motion_id == GBUFFER_SKY_MOTION_ID;
+    g.prelit      = rt2.rgb;
+    g.spec_power  = rt2.a;
+    g.depth       = depth;
+    return g;
+}
+
+// ---------------------------------------------------------------------------
+// Loading from the bound multisampled G-buffer (lighting and classification).
+
+#ifndef GBUFFER_ENCODE_ONLY
+
+#include "lighting_params.glsl"
+
+int gbuffer_sample_count()
+{
+    return textureSamples(gbuffer_normal_motion);
+}
+
+GSample gbuffer_load(ivec2 pixel, int sample_index)
+{
+    return gbuffer_decode(texelFetch(gbuffer_albedo_spec, pixel, sample_index),
+                          texelFetch(gbuffer_normal_motion, pixel, sample_index),
+                          texelFetch(gbuffer_prelit_power, pixel, sample_index),
+                          texelFetch(gbuffer_depth, pixel, sample_index).r);
+}
+
+bool gbuffer_load_msaa_edge_bit(ivec2 pixel, int sample_index)
+{
+    return gbuffer_decode_msaa_edge_bit(texelFetch(gbuffer_normal_motion, pixel, sample_index));
+}
+
+// True when two samples of a pixel hold identical stored values in every
+// target. Shading is a function of the stored values and the pixel centre
+// only, so equal samples shade equally: this is the precise meaning of
+// "not an MSAA edge" that lets lighting.frag shade sample 0 alone. A NaN never
+// compares equal, which errs on the safe (edge) side.
+bool gbuffer_samples_equal(ivec2 pixel, int sample_a, int sample_b)
+{
+    return all(equal(texelFetch(gbuffer_albedo_spec, pixel, sample_a),
+                     texelFetch(gbuffer_albedo_spec, pixel, sample_b)))
+        && all(equal(texelFetch(gbuffer_normal_motion, pixel, sample_a),
+                     texelFetch(gbuffer_normal_motion, pixel, sample_b)))
+        && all(equal(texelFetch(gbuffer_prelit_power, pixel, sample_a),
+                     texelFetch(gbuffer_prelit_power, pixel, sample_b)))
+        && texelFetch(gbuffer_depth, pixel, sample_a).r == texelFetch(gbuffer_depth, pixel, sample_b).r;
+}
+
+#endif // GBUFFER_ENCODE_ONLY
+
+#endif // UBER_GBUFFER_GLSL

@@ -1,0 +1,108 @@
+#version 450
+// lighting.frag -- the deferred global-light pass as one uber-shader.
+//
+// Seven switches, each a raw tile property (DESIGN.md §1). A permutation is the full shader
+// restricted to the pixels its tile class admits, so on those pixels it computes the same
+// value as the all-features shader:
+//   SKY              sky pixels exist; without it every pixel is assumed to be geometry.
+//   SUN_LIGHT        some pixel faces the sun; without it the sun term is exactly zero.
+//   SOLID_SHADOW     every non-sky pixel is fully shadowed: shadow factor 0, no lookups.
+//   SOFT_SHADOW      shadow edge: 8-tap PCF. With neither shadow define: fully lit, factor 1.
+//   SHADOW_FADE      some pixel lies beyond the fade start; before it the fade is the identity.
+//   LIGHT_SCATTERING some pixel lies beyond the scattering start; before it, the identity.
+//   MSAA_EDGE        some pixel's samples differ: shade every sample and average; otherwise
+//                    all samples are equal and sample 0 alone gives the same average.
+// Each feature is one call into the include library with the same arguments in every
+// permutation, so the arithmetic that does run is identical to the full shader's.
+
+#include "gbuffer.glsl"
+#include "light_scattering.glsl"
+#include "shadow_fade.glsl"
+#include "sun_lighting.glsl"
+#include "sun_shadow.glsl"
+#include "world_position.glsl"
+
+layout(location = 0) out vec4 out_color;
+
+#if defined(SOLID_SHADOW) && defined(SOFT_SHADOW)
+#error "SOLID_SHADOW and SOFT_SHADOW are mutually exclusive: such a tile is impossible"
+#endif
+
+// Sun visibility at a surface point, 0 (shadowed) .. 1 (lit), after the distance fade.
+float sun_visibility(vec3 world_pos, float view_depth)
+{
+#if defined(SOLID_SHADOW)
+    float shadow = 0.0;
+#elif defined(SOFT_SHADOW)
+    float shadow = sun_shadow_pcf(world_pos);
+#else
+    float shadow = 1.0;
+#endif
+#ifdef SHADOW_FADE
+    shadow = shadow_fade_apply(shadow, view_depth);
+#endif
+    return shadow;
+}
+
+vec3 shade_geometry(GSample g, ivec2 pixel)
+{
+    vec3 world_pos = world_position_from_depth(pixel, g.depth);
+    float view_depth = linear_view_depth(world_pos);
+    vec3 colour = g.prelit;
+#ifdef SUN_LIGHT
+    vec3 sun = sun_surface_radiance(g.albedo, g.normal, world_pos, g.spec_amount, g.spec_power);
+    colour += sun * sun_visibility(world_pos, view_depth);
+#endif
+#ifdef LIGHT_SCATTERING
+    colour = light_scattering_apply(colour, view_depth);
+#endif
+    return colour;
+}
+
+vec3 shade_sample(ivec2 pixel, int sample_index)
+{
+    GSample g = gbuffer_load(pixel, sample_index);
+#ifdef SKY
+    // The sky is prelit (the scene wrote its final colour) and lies beyond every distance.
+    if (g.is_sky) {
+        return g.prelit;
+    }
+#endif
+    return shade_geometry(g, pixel);
+}
+
+// The average of every sample. Summed as a balanced tree so that N equal values average to
+// exactly that value for N = 2, 4 and 8 (v + v = 2v, 2v + 2v = 4v, ... and the scale by a power
+// of two are exact), which makes a non-edge pixel's sample 0 equal the average bit for bit.
+vec3 shade_all_samples(ivec2 pixel)
+{
+    int samples = gbuffer_sample_count();
+    if (samples == 2) {
+        return (shade_sample(pixel, 0) + shade_sample(pixel, 1)) * 0.5;
+    }
+    if (samples == 4) {
+        return ((shade_sample(pixel, 0) + shade_sample(pixel, 1)) +
+                (shade_sample(pixel, 2) + shade_sample(pixel, 3))) * 0.25;
+    }
+    if (samples == 8) {
+        vec3 a = (shade_sample(pixel, 0) + shade_sample(pixel, 1)) + (shade_sample(pixel, 2) + shade_sample(pixel, 3));
+        vec3 b = (shade_sample(pixel, 4) + shade_sample(pixel, 5)) + (shade_sample(pixel, 6) + shade_sample(pixel, 7));
+        return (a + b) * 0.125;
+    }
+    vec3 sum = vec3(0.0);
+    for (int s = 0; s < samples; ++s) {
+        sum += shade_sample(pixel, s);
+    }
+    return sum / float(samples);
+}
+
+void main()
+{
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+#ifdef MSAA_EDGE
+    vec3 colour = shade_all_samples(pixel);
+#else
+    vec3 colour = shade_sample(pixel, 0);
+#endif
+    out_color = vec4(colour, 1.0);
+}
