@@ -36,6 +36,8 @@ bool take(std::string_view& in, std::size_t count, std::string_view& out) {
 
 }  // namespace
 
+std::string entry_checksum(std::string_view key, const CachedBlob& blob);
+
 std::string cache_key(std::string_view stage_name, std::string_view preprocessed) {
     return Sha256()
         .field("shadergen-cache-entry")
@@ -54,6 +56,19 @@ std::filesystem::path default_cache_directory() {
     return {};
 }
 
+// Covers every field after the checksum's own position, so no bit of an entry can change
+// unnoticed (the fallback flag included).
+std::string entry_checksum(std::string_view key, const CachedBlob& blob) {
+    Sha256 hash;
+    hash.field(key).field(blob.fell_back ? "1" : "0").field(blob.fallback_reason);
+    for (std::uint32_t word : blob.words) {
+        const std::uint8_t bytes[4] = {static_cast<std::uint8_t>(word), static_cast<std::uint8_t>(word >> 8),
+                                       static_cast<std::uint8_t>(word >> 16), static_cast<std::uint8_t>(word >> 24)};
+        hash.update(std::span<const std::uint8_t>(bytes, 4));
+    }
+    return hash.finish_hex();
+}
+
 std::string encode_cache_entry(std::string_view key, const CachedBlob& blob) {
     std::string out(kMagic);
     out += key;
@@ -61,7 +76,7 @@ std::string encode_cache_entry(std::string_view key, const CachedBlob& blob) {
     put_u32(out, static_cast<std::uint32_t>(blob.fallback_reason.size()));
     out += blob.fallback_reason;
     put_u32(out, static_cast<std::uint32_t>(blob.words.size()));
-    out += sha256_hex(blob.words);
+    out += entry_checksum(key, blob);
     for (std::uint32_t word : blob.words) put_u32(out, word);
     return out;
 }
@@ -80,7 +95,7 @@ std::optional<CachedBlob> decode_cache_entry(std::string_view key, std::string_v
     blob.fallback_reason = std::string(reason);
     blob.words.resize(word_count);
     for (std::uint32_t& word : blob.words) get_u32(in, word);
-    if (sha256_hex(blob.words) != checksum) return std::nullopt;
+    if (entry_checksum(key, blob) != checksum) return std::nullopt;
     return blob;
 }
 

@@ -101,6 +101,15 @@ Diagnostics parse_log(const std::string& log, const std::string& fallback_file) 
             out.push_back(make_error(fallback_file, 0, text));
         }
     }
+    // After a real error glslang adds follow-on noise: "compilation terminated" and, because
+    // it stopped inside an #ifdef, "missing #endif". Keep those only if nothing else was said.
+    Diagnostics real;
+    for (Diagnostic& d : out) {
+        while (!d.message.empty() && d.message.back() == ' ') d.message.pop_back();
+        bool noise = d.message == "'' : compilation terminated" || d.message == "'' : missing #endif";
+        if (!noise) real.push_back(d);
+    }
+    if (!real.empty()) return real;
     if (out.empty()) out.push_back(make_error(fallback_file, 0, "glslang failed without a message"));
     return out;
 }

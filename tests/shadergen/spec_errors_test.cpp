@@ -1,0 +1,147 @@
+// Malformed specs: each case breaks one thing in a small valid spec and asserts the exact
+// diagnostic, which must name the file, the line and column, the key path and the problem.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "json.h"
+#include "shadergen/domain.h"
+#include "shadergen/permutations.h"
+#include "test_helpers.h"
+
+namespace shadergen {
+namespace {
+
+// Line numbers in the expectations below refer to this text.
+const std::string kBase = R"({
+  "format": 1,
+  "name": "tiny",
+  "uber_shader": { "path": "tiny.frag", "stage": "fragment" },
+  "raw": {
+    "features": [
+      { "name": "A", "bit": 0, "define": "HAS_A" },
+      { "name": "B", "bit": 1, "define": "HAS_B" },
+      { "name": "C", "bit": 2, "define": "HAS_C" }
+    ],
+    "impossible": [ { "when": "A && B", "why": "never both" } ]
+  },
+  "optimised": {
+    "bits": [ { "name": "X", "bit": 0, "when": "A || C" } ],
+    "variants": [ { "when": "X", "raw_features": ["A", "C"] } ]
+  }
+}
+)";
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+    auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base spec";
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+std::string first_error(const std::string& text) {
+    auto result = parse_domain(text, "spec.json");
+    if (result.ok()) return "(no error)";
+    return result.errors().front().to_string();
+}
+
+TEST(SpecErrors, BaseSpecIsValid) {
+    auto result = parse_domain(kBase, "dir/spec.json");
+    ASSERT_TRUE(result.ok()) << result.errors().front().to_string();
+    EXPECT_EQ(result->uber.path, std::filesystem::path("dir/tiny.frag"));
+    EXPECT_EQ(result->raw_count(), 8u);
+}
+
+struct ErrorCase {
+    const char* name;
+    std::string text;
+    std::string expected;
+};
+
+class SpecErrorTable : public ::testing::TestWithParam<ErrorCase> {};
+
+TEST_P(SpecErrorTable, ExactDiagnostic) {
+    EXPECT_EQ(first_error(GetParam().text), GetParam().expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, SpecErrorTable,
+    ::testing::Values(
+        ErrorCase{"truncated", kBase.substr(0, kBase.find("\"impossible\"")),
+                  "spec.json:11:5: error: unexpected end of file inside an object (the spec is truncated?)"},
+        ErrorCase{"unknown_name_in_rule", replace(kBase, "\"A && B\"", "\"A && D\""),
+                  "spec.json:11:31: error: raw.impossible[0].when: unknown name 'D' (known: A, B, C) in \"A && D\" "
+                  "at column 6 (rules here name raw features)"},
+        ErrorCase{"bit_collision", replace(kBase, "\"C\", \"bit\": 2", "\"C\", \"bit\": 1"),
+                  "spec.json:9:29: error: raw.features[2].bit: bit 1 of C collides with feature B"},
+        ErrorCase{"duplicate_define", replace(kBase, "\"HAS_C\"", "\"HAS_A\""),
+                  "spec.json:9:42: error: raw.features[2].define: define HAS_A is already used by feature A"},
+        ErrorCase{"unknown_key", replace(kBase, "\"format\": 1", "\"formats\": 1"),
+                  "spec.json:2:14: error: spec: unknown key \"formats\" (expected one of: format, name, description, "
+                  "uber_shader, include_dirs, companions, raw, optimised)"},
+        ErrorCase{"bit_out_of_range", replace(kBase, "\"C\", \"bit\": 2", "\"C\", \"bit\": 3"),
+                  "spec.json:9:29: error: raw.features[2].bit: bit must be an integer from 0 to 2, found 3"},
+        ErrorCase{"wrong_type", replace(kBase, "\"bit\": 0, \"define\"", "\"bit\": \"0\", \"define\""),
+                  "spec.json:7:29: error: raw.features[0].bit: expected a number, found a string"},
+        ErrorCase{"rule_syntax", replace(kBase, "\"A || C\"", "\"A || || C\""),
+                  "spec.json:14:48: error: optimised.bits[0].when: expected a feature name, '!' or '(' but found "
+                  "'|' in \"A || || C\" at column 6 (rules here name raw features)"},
+        ErrorCase{"optimised_rule_names_raw_bits", replace(kBase, "{ \"when\": \"X\"", "{ \"when\": \"A\""),
+                  "spec.json:15:29: error: optimised.variants[0].when: unknown name 'A' (known: X) in \"A\" at "
+                  "column 1 (rules here name optimised bits)"},
+        ErrorCase{"unknown_stage", replace(kBase, "\"fragment\"", "\"pixel\""),
+                  "spec.json:4:50: error: uber_shader.stage: unknown stage \"pixel\" (expected vertex, fragment or "
+                  "compute)"},
+        ErrorCase{"missing_name", replace(kBase, "\"name\": \"tiny\",", ""),
+                  "spec.json:1:1: error: spec: missing \"name\""},
+        ErrorCase{"not_an_object", "[1, 2]\n", "spec.json:1:1: error: spec: the spec must be a JSON object"},
+        ErrorCase{"trailing_comma", replace(kBase, "\"never both\" }", "\"never both\", }"),
+                  "spec.json:11:62: error: expected a quoted key"},
+        ErrorCase{"nesting_limit", std::string(40, '[') + std::string(40, ']'),
+                  "spec.json:1:33: error: nesting deeper than 32 levels"},
+        ErrorCase{"impossible_optimised_variant",
+                  replace(kBase, "\"raw_features\": [\"A\", \"C\"]", "\"raw_features\": [\"A\", \"B\"]"),
+                  "(no error)"}),
+    [](const ::testing::TestParamInfo<ErrorCase>& param) { return std::string(param.param.name); });
+
+TEST(SpecErrors, OptimisedPermutationThatIsImpossibleFailsExpansion) {
+    auto spec = parse_domain(replace(kBase, "\"raw_features\": [\"A\", \"C\"]", "\"raw_features\": [\"A\", \"B\"]"),
+                             "spec.json");
+    ASSERT_TRUE(spec.ok());
+    // Parsing accepts it; expansion proves every optimised permutation compilable and refuses.
+    auto plan = expand(*spec);
+    ASSERT_FALSE(plan.ok());
+    EXPECT_EQ(plan.errors().front().to_string(),
+              "spec.json:11: error: optimised ID 1 (X) is compiled with raw features A | B, which the impossible rule "
+              "\"A && B\" prunes");
+}
+
+TEST(SpecErrors, MissingFileNamesThePath) {
+    auto result = load_domain("/nonexistent/folder/spec.json");
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.errors().front().to_string(), "/nonexistent/folder/spec.json: error: spec file does not exist");
+}
+
+TEST(SpecErrors, DirectoryIsNotASpec) {
+    auto result = load_domain(test::source_dir());
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.errors().front().message, "spec path is a directory, not a file");
+}
+
+TEST(SpecErrors, OversizedSpecIsRejectedBeforeParsing) {
+    std::filesystem::path big = test::scratch("big") / "big.json";
+    test::write_text(big, "\"" + std::string(json::kMaxJsonBytes + 10, 'x') + "\"");
+    auto result = load_domain(big);
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.errors().front().message, "spec is larger than 1048576 bytes");
+}
+
+TEST(SpecErrors, EveryProblemIsReportedNotJustTheFirst) {
+    std::string text = replace(replace(kBase, "\"HAS_C\"", "\"HAS_A\""), "\"format\": 1", "\"formats\": 1");
+    auto result = parse_domain(text, "spec.json");
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.errors().size(), 2u);
+}
+
+}  // namespace
+}  // namespace shadergen
