@@ -17,6 +17,10 @@ function(shadergen_add_permutations target)
   if(NOT SG_DOMAIN)
     message(FATAL_ERROR "shadergen_add_permutations(${target}): DOMAIN <spec> is required")
   endif()
+  if(NOT SHADERGEN_EXECUTABLE AND TARGET shadergen::shadergen)
+    # Reached through add_subdirectory(): the variable was set in the subproject's scope only.
+    set(SHADERGEN_EXECUTABLE shadergen::shadergen)
+  endif()
   if(NOT SHADERGEN_EXECUTABLE OR NOT TARGET ${SHADERGEN_EXECUTABLE})
     message(FATAL_ERROR "shadergen_add_permutations(${target}): SHADERGEN_EXECUTABLE does not name the shadergen "
                         "executable target; use find_package(shadergen CONFIG REQUIRED) or add_subdirectory()")

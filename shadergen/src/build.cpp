@@ -52,9 +52,19 @@ BuildSummary summarise(const CompiledDomain& d) {
     return s;
 }
 
+// "out/" and "out" are the same folder; the staging logic needs the form with a file name.
+BuildOptions normalised(BuildOptions options) {
+    std::filesystem::path out = options.out_dir.lexically_normal();
+    while (!out.empty() && !out.has_filename() && out.has_parent_path() && out != out.root_path())
+        out = out.parent_path();
+    options.out_dir = out;
+    return options;
+}
+
 }  // namespace
 
-Result<BuildSummary> build(const BuildOptions& options) {
+Result<BuildSummary> build(const BuildOptions& given) {
+    const BuildOptions options = normalised(given);
     auto start = std::chrono::steady_clock::now();
     auto spec = load_domain(options.spec_path);
     if (!spec) return std::move(spec).take_errors();

@@ -1,5 +1,8 @@
 #include "cache.h"
 
+#include <glslang/build_info.h>
+#include <spirv-tools/libspirv.h>
+
 #include <cstdlib>
 #include <cstring>
 
@@ -42,6 +45,10 @@ std::string cache_key(std::string_view stage_name, std::string_view preprocessed
     return Sha256()
         .field("shadergen-cache-entry")
         .field(SHADERGEN_VERSION)
+        // A package upgrade of either compiler library may change the blobs: new keys.
+        .field(std::to_string(GLSLANG_VERSION_MAJOR) + "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
+               std::to_string(GLSLANG_VERSION_PATCH) + GLSLANG_VERSION_FLAVOR)
+        .field(spvSoftwareVersionString())
         .field(kTargetDescription)
         .field(kOptimiserRecipe)
         .field(stage_name)

@@ -174,11 +174,14 @@ private:
         if (options_.verbose) {
             const CompileJob& job = d_.jobs[record.first_job];
             std::string defines;
-            for (const std::string& d : job.defines) defines += " " + d;
+            for (const std::string& d : job.defines) {
+                defines += ' ';
+                defines += d;
+            }
             log("[" + std::to_string(finished) + "/" + std::to_string(total) + "] " +
                 (record.cache_hit ? "cached   " : "compiled ") + job.label() + (defines.empty() ? "" : ":" + defines));
         } else if (total >= 8 && finished % (total / 4) == 0 && finished != total) {
-            log("compiled " + std::to_string(finished) + "/" + std::to_string(total) + " sources");
+            log(std::to_string(finished) + "/" + std::to_string(total) + " sources done");
         }
     }
 
@@ -227,7 +230,10 @@ private:
             std::string label = job.label();
             if (job.kind != JobKind::companion && !job.defines.empty()) {
                 label += " (";
-                for (std::size_t i = 0; i < job.defines.size(); ++i) label += (i ? " " : "") + job.defines[i];
+                for (std::size_t i = 0; i < job.defines.size(); ++i) {
+                    if (i) label += ' ';
+                    label += job.defines[i];
+                }
                 label += ")";
             }
             labelled.push_back({label, job.stage, job.kind != JobKind::companion,

@@ -183,6 +183,8 @@ private:
         ShaderFile file;
         std::string path = reader_.string_member(object, where, "path");
         if (!path.empty()) file.path = (base_ / path).lexically_normal();
+        else if (object.find("path") && object.find("path")->type == Type::string)
+            reader_.error(*object.find("path"), where + ".path", "the path is empty");
         std::string stage = reader_.string_member(object, where, "stage");
         if (auto parsed = parse_stage(stage)) {
             file.stage = *parsed;

@@ -180,7 +180,7 @@ std::string format_explanation(const DomainSpec& spec, const PermutationPlan& pl
         << "\n   compiled with: ";
     for (const std::string& d : o.defines) out << d << ' ';
     if (o.defines.empty()) out << "(no defines)";
-    out << "\n   (" << o.raw_mapped << " raw IDs share this shader)\n";
+    out << "\n   (" << o.raw_mapped << (o.raw_mapped == 1 ? " raw ID uses" : " raw IDs share") << " this shader)\n";
     return out.str();
 }
 
