@@ -22,6 +22,9 @@ struct TruthCase {
     std::uint32_t true_for;  // bit i set = true for the bit pattern i (3 symbols: patterns 0..7)
 };
 
+// Show the rule text in test names and messages, not the bytes of the struct.
+void PrintTo(const TruthCase& c, std::ostream* os) { *os << '"' << c.text << '"'; }
+
 class TruthTable : public ::testing::TestWithParam<TruthCase> {};
 
 TEST_P(TruthTable, MatchesForAllAssignments) {
@@ -45,6 +48,8 @@ struct ErrorCase {
     int column;
     const char* message;
 };
+
+void PrintTo(const ErrorCase& c, std::ostream* os) { *os << '"' << c.text << '"'; }
 
 class ExpressionErrors : public ::testing::TestWithParam<ErrorCase> {};
 

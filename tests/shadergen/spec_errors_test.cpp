@@ -58,6 +58,9 @@ struct ErrorCase {
     std::string expected;
 };
 
+// Show the case's name in test names and messages, not the bytes of the struct.
+void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
+
 class SpecErrorTable : public ::testing::TestWithParam<ErrorCase> {};
 
 TEST_P(SpecErrorTable, ExactDiagnostic) {
