@@ -15,6 +15,10 @@
 // Each feature is one call into the include library with the same arguments in every
 // permutation, so the arithmetic that does run is identical to the full shader's.
 
+// shadergen enables #include itself; naming it here keeps the file compilable by plain
+// glslangValidator -I<include dir> as well.
+#extension GL_GOOGLE_include_directive : require
+
 #include "gbuffer.glsl"
 #include "light_scattering.glsl"
 #include "shadow_fade.glsl"
@@ -63,7 +67,8 @@ vec3 shade_sample(ivec2 pixel, int sample_index)
 {
     GSample g = gbuffer_load(pixel, sample_index);
 #ifdef SKY
-    // The sky is prelit (the scene wrote its final colour) and lies beyond every distance.
+    // The scene wrote the sky's final colour (atmosphere included): no sun, no scattering, so
+    // nothing here depends on the sky's depth and its distance bits are harmless.
     if (g.is_sky) {
         return g.prelit;
     }
@@ -71,29 +76,19 @@ vec3 shade_sample(ivec2 pixel, int sample_index)
     return shade_geometry(g, pixel);
 }
 
-// The average of every sample. Summed as a balanced tree so that N equal values average to
-// exactly that value for N = 2, 4 and 8 (v + v = 2v, 2v + 2v = 4v, ... and the scale by a power
-// of two are exact), which makes a non-edge pixel's sample 0 equal the average bit for bit.
+// The average of every sample, as a running mean. A component equal to the mean so far is kept
+// as it is (a select, no arithmetic), so a pixel whose samples all shade alike averages to
+// exactly its sample-0 colour for any sample count, Inf included; a plain sum would not
+// (v + v + v rounds, Inf - Inf is NaN). That is what lets a non-edge tile shade sample 0 alone.
 vec3 shade_all_samples(ivec2 pixel)
 {
     int samples = gbuffer_sample_count();
-    if (samples == 2) {
-        return (shade_sample(pixel, 0) + shade_sample(pixel, 1)) * 0.5;
+    vec3 mean = shade_sample(pixel, 0);
+    for (int s = 1; s < samples; ++s) {
+        vec3 colour = shade_sample(pixel, s);
+        mean = mix(mean + (colour - mean) / float(s + 1), mean, equal(colour, mean));
     }
-    if (samples == 4) {
-        return ((shade_sample(pixel, 0) + shade_sample(pixel, 1)) +
-                (shade_sample(pixel, 2) + shade_sample(pixel, 3))) * 0.25;
-    }
-    if (samples == 8) {
-        vec3 a = (shade_sample(pixel, 0) + shade_sample(pixel, 1)) + (shade_sample(pixel, 2) + shade_sample(pixel, 3));
-        vec3 b = (shade_sample(pixel, 4) + shade_sample(pixel, 5)) + (shade_sample(pixel, 6) + shade_sample(pixel, 7));
-        return (a + b) * 0.125;
-    }
-    vec3 sum = vec3(0.0);
-    for (int s = 0; s < samples; ++s) {
-        sum += shade_sample(pixel, s);
-    }
-    return sum / float(samples);
+    return mean;
 }
 
 void main()

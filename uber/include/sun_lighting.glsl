@@ -1,10 +1,17 @@
 // sun_lighting.glsl -- direct sunlight: Lambert diffuse + Blinn-Phong specular.
 //
+//     radiance = sun_color * N.L * (albedo + spec_amount * max(N.H, 0)^spec_power)
+//
 // Exactness contract: where N.L <= 0 the sun term (diffuse AND specular) is
 // exactly vec3(0), by an early return rather than a smooth falloff. A tile
 // whose non-sky pixels all face away from the sun (SUN_LIGHT bit clear) then
 // gets exactly prelit from the full shader too, so its permutation may drop
 // the sun code without changing a single pixel.
+//
+// The specular lobe is scaled by N.L like the diffuse one, so the whole term
+// also goes to 0 continuously at the terminator: where a classifier and the
+// lighting could round N.L differently (N.L ~ 0), the two disagree by noise,
+// not by a highlight popping in or out.
 //
 // The classifier must decide "faces the sun" with sun_faces() below, so that
 // it and the lighting test the same value.
@@ -13,6 +20,13 @@
 #define UBER_SUN_LIGHTING_GLSL
 
 #include "lighting_params.glsl"
+#include "precise_math.glsl"
+
+// Largest finite half float: RT2 is 16F, so no meaningful power exceeds it.
+const float SUN_MAX_SPEC_POWER = 65504.0;
+// Lower bound for N.H inside pow(): keeps log2() finite (pow is exp2(p * log2(x))),
+// and x^p for x below it is 0 for any useful power anyway.
+const float SUN_MIN_N_DOT_H = 1e-20;
 
 struct SunTerm {
     vec3 diffuse;   // multiplied by albedo by the caller
@@ -21,10 +35,11 @@ struct SunTerm {
 
 // N.L with the stored normal renormalised (16F storage drifts from unit
 // length). Normalising does not change the sign, and a zero or broken normal
-// yields NaN, which sun_faces() reports as not facing.
+// yields NaN, which sun_faces() reports as not facing. Its sign decides a
+// classification bit, hence precise_dot().
 float sun_n_dot_l(vec3 normal)
 {
-    return dot(normalize(normal), params.sun_direction.xyz);
+    return precise_dot(normalize(normal), params.sun_direction.xyz);
 }
 
 // The one "faces the sun" test. x > 0 is false for NaN, so a broken normal
@@ -34,6 +49,9 @@ bool sun_faces(vec3 normal)
     return sun_n_dot_l(normal) > 0.0;
 }
 
+// Every value returned is finite whatever the G-buffer holds (spec_amount is
+// unorm; NaN/Inf powers and degenerate half vectors are caught), so that
+// "sun term * shadow factor 0" is exactly 0, as the solid-shadow class assumes.
 SunTerm sun_lighting(vec3 normal, vec3 world_pos, float spec_amount, float spec_power)
 {
     SunTerm term;
@@ -51,17 +69,17 @@ SunTerm sun_lighting(vec3 normal, vec3 world_pos, float spec_amount, float spec_
     vec3 h = normalize(l + v);
     float n_dot_h = dot(n, h);
 
-    // pow(0, 0) is undefined and a negative power blows up near 0; both could
-    // turn into Inf/NaN, and 0 * NaN would break "shadow 0 means prelit". So
-    // the power is clamped to >= 0 and N.H <= 0 (or NaN from a degenerate
-    // half vector) gives no highlight.
+    // NaN power (comparison false) -> 0, +Inf -> the cap: pow() then cannot
+    // produce Inf or NaN. N.H <= 0, or NaN from a degenerate half vector
+    // (camera at the point, or looking straight into the sun), gives no highlight.
+    float power = spec_power > 0.0 ? min(spec_power, SUN_MAX_SPEC_POWER) : 0.0;
     float highlight = 0.0;
     if (n_dot_h > 0.0) {
-        highlight = pow(min(n_dot_h, 1.0), max(spec_power, 0.0));
+        highlight = pow(clamp(n_dot_h, SUN_MIN_N_DOT_H, 1.0), power);
     }
 
     term.diffuse = params.sun_color.rgb * n_dot_l;
-    term.specular = spec_amount * params.sun_color.rgb * highlight;
+    term.specular = params.sun_color.rgb * (spec_amount * highlight * n_dot_l);
     return term;
 }
 

@@ -35,8 +35,11 @@ const float SUN_SHADOW_TAP_REACH = 4.0;
 
 uint sun_shadow_lit_taps(vec3 world_pos)
 {
-    vec4 clip = params.sun_view_proj * vec4(world_pos, 1.0);
-    vec3 ndc = clip.xyz / clip.w; // w == 1 for the orthographic sun; kept general
+    // `precise` on the projection: each tap's lit/occluded verdict is a
+    // threshold, so the classifier and every permutation must round it alike
+    // (see precise_math.glsl).
+    precise vec4 clip = params.sun_view_proj * vec4(world_pos, 1.0);
+    precise vec3 ndc = clip.xyz / clip.w; // w == 1 for the orthographic sun; kept general
 
     // A receiver in front of the near or beyond the far plane of the sun's
     // volume cannot be compared against the map: it counts as lit (all taps).
@@ -49,7 +52,7 @@ uint sun_shadow_lit_taps(vec3 world_pos)
     // is rendered with the same Vulkan convention as the camera (NDC y = -1 is
     // row 0), so no flip.
     vec2 map_size = params.shadow_map_size.xy;
-    vec2 texel_pos = (ndc.xy * 0.5 + 0.5) * map_size;
+    precise vec2 texel_pos = (ndc.xy * 0.5 + 0.5) * map_size;
 
     // Far outside the map every tap is outside, and it still is after this
     // clamp, so the clamp changes no result; it only keeps int() defined for
@@ -58,7 +61,7 @@ uint sun_shadow_lit_taps(vec3 world_pos)
     ivec2 base = ivec2(floor(texel_pos - 0.5));
     ivec2 texel_count = ivec2(map_size);
 
-    float receiver_depth = ndc.z - params.distances.w; // bias against self-shadowing acne
+    precise float receiver_depth = ndc.z - params.distances.w; // bias against self-shadowing acne
 
     uint lit = 0u;
     for (int i = 0; i < int(SUN_SHADOW_TAP_COUNT); ++i) {
