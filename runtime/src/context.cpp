@@ -1,11 +1,12 @@
 #include "tilelight/context.h"
 
 #include "tilelight/error.h"
+#include "tilelight/msaa.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
+#include <cstdio>
 #include <cstring>
 
 namespace tilelight {
@@ -13,175 +14,250 @@ namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
-std::string lower(std::string_view text) {
-  std::string out(text);
-  std::transform(out.begin(), out.end(), out.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
-
-std::string describe(const std::vector<DeviceInfo>& devices) {
-  std::string text;
-  for (const DeviceInfo& d : devices) text += fmt::format("\n  {}: {}", d.index, d.name);
-  return text;
-}
-
 bool layer_available(const char* name) {
   std::uint32_t count = 0;
-  check(vkEnumerateInstanceLayerProperties(&count, nullptr), "vkEnumerateInstanceLayerProperties");
+  check(vkEnumerateInstanceLayerProperties(&count, nullptr), "vkEnumerateInstanceLayerProperties",
+        "the layer list");
   std::vector<VkLayerProperties> layers(count);
-  check(vkEnumerateInstanceLayerProperties(&count, layers.data()), "vkEnumerateInstanceLayerProperties");
-  return std::any_of(layers.begin(), layers.end(),
-                     [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+  check(vkEnumerateInstanceLayerProperties(&count, layers.data()),
+        "vkEnumerateInstanceLayerProperties", "the layer list");
+  return std::any_of(layers.begin(), layers.begin() + count, [&](const VkLayerProperties& layer) {
+    return std::strcmp(layer.layerName, name) == 0;
+  });
 }
 
-UniqueInstance create_instance(ValidationLog* log) {
-  VkApplicationInfo app{};
-  app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
-  app.pApplicationName = "tilelight";
-  app.apiVersion = VK_API_VERSION_1_2;
-  VkInstanceCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
-  info.pApplicationInfo = &app;
-  const char* layers[] = {kValidationLayer};
-  const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
-  VkDebugUtilsMessengerCreateInfoEXT messenger{};
-  if (log != nullptr) {
-    if (!layer_available(kValidationLayer))
-      throw Error(fmt::format("--validation: the layer {} is not installed (Debian package: vulkan-validationlayers)",
-                              kValidationLayer));
-    info.enabledLayerCount = 1;
-    info.ppEnabledLayerNames = layers;
-    info.enabledExtensionCount = 1;
-    info.ppEnabledExtensionNames = extensions;
-    // Chained so that instance creation and destruction are validated too.
-    messenger = make_messenger_info(*log);
-    info.pNext = &messenger;
-  }
-  VkInstance instance = VK_NULL_HANDLE;
-  check(vkCreateInstance(&info, nullptr, &instance), "vkCreateInstance", "creating the Vulkan instance");
-  return UniqueInstance(instance, InstanceDeleter{});
-}
-
-UniqueDebugMessenger create_messenger(VkInstance instance, ValidationLog& log) {
-  auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-      vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-  auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-      vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
-  if (create == nullptr || destroy == nullptr) throw Error("VK_EXT_debug_utils entry points are missing");
-  VkDebugUtilsMessengerCreateInfoEXT info = make_messenger_info(log);
-  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-  check(create(instance, &info, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT", "enabling validation");
-  return UniqueDebugMessenger(messenger, DebugMessengerDeleter{instance, destroy});
-}
-
-std::uint32_t find_queue_family(VkPhysicalDevice device, const std::string& name) {
+// Instance extensions offered by the loader and drivers (layer == nullptr) or by one layer.
+bool instance_extension_available(const char* layer, const char* name) {
   std::uint32_t count = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
-  std::vector<VkQueueFamilyProperties> families(count);
-  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
-  constexpr VkQueueFlags wanted = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
-  for (std::uint32_t i = 0; i < count; ++i)
-    if ((families[i].queueFlags & wanted) == wanted && families[i].timestampValidBits > 0) return i;
-  throw Error(fmt::format("device \"{}\" has no queue with graphics, compute and timestamps", name));
+  check(vkEnumerateInstanceExtensionProperties(layer, &count, nullptr),
+        "vkEnumerateInstanceExtensionProperties", "the instance extension list");
+  std::vector<VkExtensionProperties> extensions(count);
+  check(vkEnumerateInstanceExtensionProperties(layer, &count, extensions.data()),
+        "vkEnumerateInstanceExtensionProperties", "the instance extension list");
+  return std::any_of(
+      extensions.begin(), extensions.begin() + count,
+      [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
 }  // namespace
 
-std::vector<DeviceInfo> list_devices(VkInstance instance) {
-  std::uint32_t count = 0;
-  check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices");
-  std::vector<VkPhysicalDevice> handles(count);
-  check(vkEnumeratePhysicalDevices(instance, &count, handles.data()), "vkEnumeratePhysicalDevices");
-  std::vector<DeviceInfo> devices;
-  for (std::uint32_t i = 0; i < count; ++i) {
-    VkPhysicalDeviceProperties p;
-    vkGetPhysicalDeviceProperties(handles[i], &p);
-    devices.push_back({i, p.deviceName, p.deviceType, p.apiVersion});
-  }
-  return devices;
-}
-
-const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices, std::string_view request) {
-  if (request.empty()) {
-    for (const DeviceInfo& d : devices)
-      if (d.type == VK_PHYSICAL_DEVICE_TYPE_CPU) return d;
-    return devices.front();
-  }
-  bool numeric = std::all_of(request.begin(), request.end(), [](unsigned char c) { return std::isdigit(c); });
-  if (numeric) {
-    unsigned long index = std::stoul(std::string(request));
-    if (index < devices.size()) return devices[index];
-    throw Error(fmt::format("--device {}: no device with that index; devices:{}", request, describe(devices)));
-  }
-  std::string wanted = lower(request);
-  for (const DeviceInfo& d : devices)
-    if (lower(d.name).find(wanted) != std::string::npos) return d;
-  throw Error(fmt::format("--device {}: no device name contains \"{}\"; devices:{}", request, request,
-                          describe(devices)));
-}
-
-VkSampleCountFlagBits choose_msaa(VkSampleCountFlags supported, std::uint32_t requested) {
-  if (requested == 0) {
-    if (supported & VK_SAMPLE_COUNT_2_BIT) return VK_SAMPLE_COUNT_2_BIT;
-    if (supported & VK_SAMPLE_COUNT_4_BIT) return VK_SAMPLE_COUNT_4_BIT;
-    throw Error("the device supports neither 2x nor 4x MSAA for the G-buffer");
-  }
-  bool power_of_two = requested <= 64 && (requested & (requested - 1)) == 0;
-  if (power_of_two && (supported & requested)) return static_cast<VkSampleCountFlagBits>(requested);
-  std::string counts;
-  for (std::uint32_t n = 1; n <= 64; n *= 2)
-    if (supported & n) counts += fmt::format("{}{}", counts.empty() ? "" : ", ", n);
-  throw Error(fmt::format("--msaa {}: the device does not support {} samples for the G-buffer (supported: {})",
-                          requested, requested, counts));
-}
-
-Context::Context(const ContextOptions& options) {
-  if (options.validation) log_ = std::make_unique<ValidationLog>();
-  instance_ = create_instance(log_.get());
-  if (log_) messenger_ = create_messenger(instance_.get(), *log_);
-  std::vector<DeviceInfo> devices = list_devices(instance_.get());
-  if (devices.empty()) throw Error("no Vulkan device found (is mesa-vulkan-drivers installed for lavapipe?)");
-  info_ = select_device(devices, options.device);
-  std::uint32_t count = static_cast<std::uint32_t>(devices.size());
-  std::vector<VkPhysicalDevice> handles(count);
-  check(vkEnumeratePhysicalDevices(instance_.get(), &count, handles.data()), "vkEnumeratePhysicalDevices");
-  physical_device_ = handles[info_.index];
-  vkGetPhysicalDeviceProperties(physical_device_, &properties_);
-  if (properties_.apiVersion < VK_API_VERSION_1_2)
-    throw Error(fmt::format("device \"{}\" supports Vulkan {}.{}; tilelight needs 1.2", info_.name,
-                            VK_API_VERSION_MAJOR(properties_.apiVersion), VK_API_VERSION_MINOR(properties_.apiVersion)));
-  queue_family_ = find_queue_family(physical_device_, info_.name);
-
-  float priority = 1.0f;
-  VkDeviceQueueCreateInfo queue{};
-  queue.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
-  queue.queueFamilyIndex = queue_family_;
-  queue.queueCount = 1;
-  queue.pQueuePriorities = &priority;
-  VkPhysicalDeviceVulkan12Features features12{};
-  features12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
-  features12.timelineSemaphore = VK_TRUE;
-  VkDeviceCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
-  info.pNext = &features12;
-  info.queueCreateInfoCount = 1;
-  info.pQueueCreateInfos = &queue;
-  VkDevice device = VK_NULL_HANDLE;
-  check(vkCreateDevice(physical_device_, &info, nullptr, &device), "vkCreateDevice",
-        fmt::format("creating the device on \"{}\"", info_.name));
-  device_ = UniqueDevice(device, DeviceDeleter{});
-  vkGetDeviceQueue(device, queue_family_, 0, &queue_);
+Context::Context(const ContextOptions& options) : log_(std::make_shared<ValidationLog>()) {
+  create_instance(options);
+  pick_device(options);
+  create_device();
 }
 
 Context::~Context() {
-  if (device_) vkDeviceWaitIdle(device_.get());  // nothing may be in flight when handles go
+  if (!device_) {
+    return;
+  }
+  try {
+    wait_idle("the last submitted work before destroying the Vulkan device", Seconds{10.0});
+  } catch (const std::exception& e) {
+    // Destroying a device whose queue still runs is undefined behaviour and vkDeviceWaitIdle
+    // could block forever, so leak instead; the process is about to report a failure anyway.
+    std::fprintf(stderr,
+                 "tilelight: %s; leaking the Vulkan device and instance instead of destroying "
+                 "them while in use\n",
+                 e.what());
+    (void)device_.release();
+    (void)messenger_.release();
+    (void)instance_.release();
+    // The layer may still call back into the log: keep it alive for good.
+    [[maybe_unused]] auto* leaked = new std::shared_ptr<ValidationLog>(log_);
+  }
 }
 
-VkSampleCountFlags Context::msaa_counts() const {
-  const VkPhysicalDeviceLimits& l = properties_.limits;
-  return l.framebufferColorSampleCounts & l.framebufferDepthSampleCounts & l.sampledImageColorSampleCounts &
-         l.sampledImageDepthSampleCounts;
+void Context::create_instance(const ContextOptions& options) {
+  if (options.synchronization_validation && !options.validation) {
+    throw Error("synchronization validation needs validation enabled as well");
+  }
+  std::uint32_t loader_version = VK_API_VERSION_1_0;
+  check(vkEnumerateInstanceVersion(&loader_version), "vkEnumerateInstanceVersion");
+  if (loader_version < VK_API_VERSION_1_2) {
+    throw Error(fmt::format("the Vulkan loader supports only Vulkan {}; the runtime needs 1.2",
+                            api_version_text(loader_version)));
+  }
+
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions;
+  validation_ = options.validation;
+  if (validation_) {
+    if (!layer_available(kValidationLayer)) {
+      throw Error(fmt::format(
+          "validation was requested but the Khronos validation layer ({}) is not installed "
+          "(Debian: vulkan-validationlayers)",
+          kValidationLayer));
+    }
+    layers.push_back(kValidationLayer);
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    if (options.synchronization_validation) {
+      if (!instance_extension_available(kValidationLayer,
+                                        VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME)) {
+        throw Error(fmt::format(
+            "the installed validation layer does not offer {}, needed for synchronization "
+            "validation",
+            VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME));
+      }
+      extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+    }
+  }
+
+  VkApplicationInfo app{};
+  app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
+  app.pApplicationName = options.application_name.c_str();
+  app.applicationVersion = 1;
+  app.pEngineName = "tilelight";
+  app.engineVersion = 1;
+  app.apiVersion = VK_API_VERSION_1_2;
+
+  // Chained into the create info, the messenger also sees messages from vkCreateInstance and
+  // vkDestroyInstance, which the separate messenger below cannot.
+  VkDebugUtilsMessengerCreateInfoEXT messenger_info = make_messenger_info(*log_);
+  const VkValidationFeatureEnableEXT sync_validation =
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+  VkValidationFeaturesEXT validation_features{};
+  validation_features.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT;
+  validation_features.enabledValidationFeatureCount = 1;
+  validation_features.pEnabledValidationFeatures = &sync_validation;
+  if (options.synchronization_validation) {
+    messenger_info.pNext = &validation_features;
+  }
+
+  VkInstanceCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+  info.pNext = validation_ ? &messenger_info : nullptr;
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+
+  VkInstance instance = VK_NULL_HANDLE;
+  check(vkCreateInstance(&info, nullptr, &instance), "vkCreateInstance", "the Vulkan instance");
+  instance_ = UniqueInstance(instance, InstanceDeleter{});
+
+  if (validation_) {
+    // Extension entry points are not exported by the loader; fetch them from the instance.
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+    set_object_name_fn_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
+    if (create == nullptr || destroy == nullptr) {
+      throw Error("VK_EXT_debug_utils is enabled but its entry points are missing");
+    }
+    VkDebugUtilsMessengerCreateInfoEXT standalone = make_messenger_info(*log_);
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    check(create(instance, &standalone, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT",
+          "the validation messenger");
+    messenger_ = UniqueDebugMessenger(messenger, DebugMessengerDeleter{instance, destroy});
+  }
+}
+
+void Context::pick_device(const ContextOptions& options) {
+  std::vector<PhysicalDevice> devices = enumerate_devices(instance_.get());
+  available_devices_.clear();
+  for (const PhysicalDevice& d : devices) {
+    available_devices_.push_back(d.info);
+  }
+  const std::size_t chosen = select_device(std::span<const DeviceInfo>(available_devices_),
+                                           DeviceRequest::parse(options.device));
+  physical_device_ = devices[chosen].handle;
+  device_info_ = devices[chosen].info;
+  queue_family_ = devices[chosen].queue_family;
+  vkGetPhysicalDeviceProperties(physical_device_, &properties_);
+  limits_ = query_device_limits(physical_device_, queue_family_);
+  vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
+}
+
+void Context::create_device() {
+  // What the device offers...
+  VkPhysicalDeviceVulkan12Features supported12{};
+  supported12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+  VkPhysicalDeviceFeatures2 supported{};
+  supported.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  supported.pNext = &supported12;
+  vkGetPhysicalDeviceFeatures2(physical_device_, &supported);
+
+  // ... and what the runtime turns on: only what it uses, so that validation still flags a
+  // pass that relies on a feature nobody enabled.
+  VkPhysicalDeviceVulkan12Features enable12{};
+  enable12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+  enable12.timelineSemaphore = VK_TRUE;  // checked by enumerate_devices()
+  enable12.drawIndirectCount = supported12.drawIndirectCount;
+  enable12.hostQueryReset = supported12.hostQueryReset;
+  VkPhysicalDeviceFeatures2 enable{};
+  enable.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  enable.pNext = &enable12;
+  enable.features.multiDrawIndirect = supported.features.multiDrawIndirect;
+  enable.features.sampleRateShading = supported.features.sampleRateShading;
+  enable.features.depthClamp = supported.features.depthClamp;
+  enable.features.fragmentStoresAndAtomics = supported.features.fragmentStoresAndAtomics;
+
+  features_.draw_indirect_count = enable12.drawIndirectCount == VK_TRUE;
+  features_.host_query_reset = enable12.hostQueryReset == VK_TRUE;
+  features_.multi_draw_indirect = enable.features.multiDrawIndirect == VK_TRUE;
+  features_.sample_rate_shading = enable.features.sampleRateShading == VK_TRUE;
+  features_.depth_clamp = enable.features.depthClamp == VK_TRUE;
+  features_.fragment_stores_and_atomics = enable.features.fragmentStoresAndAtomics == VK_TRUE;
+
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queue_info{};
+  queue_info.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+  queue_info.queueFamilyIndex = queue_family_;
+  queue_info.queueCount = 1;
+  queue_info.pQueuePriorities = &priority;
+
+  VkDeviceCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+  info.pNext = &enable;  // features go through pNext, so pEnabledFeatures stays null
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queue_info;
+
+  VkDevice device = VK_NULL_HANDLE;
+  check(vkCreateDevice(physical_device_, &info, nullptr, &device), "vkCreateDevice",
+        fmt::format("the logical device on {}", device_info_.name));
+  device_ = UniqueDevice(device, DeviceDeleter{});
+  vkGetDeviceQueue(device, queue_family_, 0, &queue_);
+  name_object(queue_, "main queue");
+}
+
+VkSampleCountFlags Context::msaa_counts() const { return msaa_supported_counts(limits_); }
+
+VkSampleCountFlagBits Context::choose_msaa(std::uint32_t requested) const {
+  return tilelight::choose_msaa(msaa_counts(), requested);
+}
+
+void Context::set_object_name(VkObjectType type, std::uint64_t handle,
+                              std::string_view name) const {
+  if (set_object_name_fn_ == nullptr || !device_ || name.empty()) {
+    return;
+  }
+  const std::string copy(name);  // the API wants a NUL-terminated string
+  VkDebugUtilsObjectNameInfoEXT info{};
+  info.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT;
+  info.objectType = type;
+  info.objectHandle = handle;
+  info.pObjectName = copy.c_str();
+  check(set_object_name_fn_(device_.get(), &info), "vkSetDebugUtilsObjectNameEXT", copy);
+}
+
+void Context::wait_idle(std::string_view stage, Seconds timeout) const {
+  VkFenceCreateInfo fence_info{};
+  fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  VkFence raw = VK_NULL_HANDLE;
+  check(vkCreateFence(device_.get(), &fence_info, nullptr, &raw), "vkCreateFence", stage);
+  UniqueFence fence(raw, {device_.get()});
+  // A submit with no batches signals its fence once all earlier submissions have completed.
+  check(vkQueueSubmit(queue_, 0, nullptr, fence.get()), "vkQueueSubmit", stage);
+  const VkResult result = vkWaitForFences(device_.get(), 1, &raw, VK_TRUE, timeout_ns(timeout));
+  if (result == VK_TIMEOUT) {
+    (void)fence.release();  // still pending on the queue; destroying it would be invalid
+    throw_timeout(stage, timeout);
+  }
+  check(result, "vkWaitForFences", stage);
 }
 
 }  // namespace tilelight

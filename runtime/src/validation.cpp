@@ -43,8 +43,8 @@ std::string ValidationLog::summary() const {
 void ValidationLog::require_empty(std::string_view stage) const {
   const std::size_t n = count();
   if (n != 0) {
-    throw Error(fmt::format("{}: the validation layer reported {} message(s):\n{}", stage, n,
-                            summary()));
+    throw Error(
+        fmt::format("{}: the validation layer reported {} message(s):\n{}", stage, n, summary()));
   }
 }
 
@@ -82,8 +82,8 @@ void ValidationLog::add(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
 VkDebugUtilsMessengerCreateInfoEXT make_messenger_info(ValidationLog& log) {
   VkDebugUtilsMessengerCreateInfoEXT info{};
   info.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT;
-  info.messageSeverity =
-      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                         VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
   info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
                      VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;

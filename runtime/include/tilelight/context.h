@@ -1,8 +1,11 @@
 #pragma once
-// The headless Vulkan context: instance (optionally with the Khronos validation layer), one
-// physical device chosen by name, index or default, and one device with a graphics+compute
-// queue. Vulkan 1.2 with timeline semaphores, which the deferred draw patching relies on.
+// The Vulkan context: instance (+ validation), the chosen physical device, the logical device
+// and its one queue. Headless: no surface, no swapchain; everything is read back.
 
+#include "tilelight/device_limits.h"
+#include "tilelight/device_selection.h"
+#include "tilelight/object_type.h"
+#include "tilelight/timeout.h"
 #include "tilelight/validation.h"
 #include "tilelight/vk_handles.h"
 
@@ -16,66 +19,118 @@
 
 namespace tilelight {
 
-struct DeviceInfo {
-  std::uint32_t index = 0;  // position in vkEnumeratePhysicalDevices order
-  std::string name;
-  VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
-  std::uint32_t api_version = 0;
+struct ContextOptions {
+  // "" = default (lavapipe, "llvmpipe", if present; see select_device()), all digits = device
+  // index, anything else = case-insensitive substring of the device name.
+  std::string device;
+  // Enables VK_LAYER_KHRONOS_validation with a messenger that records every warning and error
+  // (see validation_log()). Throws if the layer is not installed.
+  bool validation = false;
+  // Also enables the layer's synchronization validation (hazards between commands). Requires
+  // `validation`. Slow; for tests of the synchronisation code.
+  bool synchronization_validation = false;
+  std::string application_name = "tilelight";
 };
 
-// Picks a device. `request` empty: the CPU device (lavapipe) if there is one, else the first.
-// A request made only of digits is an index; anything else is a case-insensitive substring of
-// the name. Throws Error naming the request and listing the devices when nothing matches.
-// Precondition: `devices` is not empty.
-const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices, std::string_view request);
-
-// MSAA sample count for the G-buffer. `requested` 0 means "2x where the device offers it for
-// colour, depth and sampled images, else 4x" (lavapipe offers only 1x and 4x). An explicit
-// count the device lacks throws Error naming the value and the supported counts.
-VkSampleCountFlagBits choose_msaa(VkSampleCountFlags supported, std::uint32_t requested);
-
-struct ContextOptions {
-  std::string device;       // see select_device
-  bool validation = false;  // VK_LAYER_KHRONOS_validation + a messenger counting messages
+// Optional device features, enabled when the device supports them. Timeline semaphores are
+// required and therefore not listed.
+struct EnabledFeatures {
+  bool draw_indirect_count = false;  // vkCmdDrawIndexedIndirectCount
+  bool multi_draw_indirect = false;  // drawCount > 1 in one indirect call
+  bool host_query_reset = false;     // vkResetQueryPool from the host
+  bool sample_rate_shading = false;
+  bool depth_clamp = false;  // shadow-map rendering
+  bool fragment_stores_and_atomics = false;
 };
 
 class Context {
  public:
-  explicit Context(const ContextOptions& options);
+  // Creates everything; throws tilelight::Error / VulkanError with what failed.
+  explicit Context(const ContextOptions& options = {});
+  // Waits (bounded, 10 s) for the queue to drain, then destroys the device and instance. If the
+  // queue does not drain (a submit waiting on a host signal that never came), it reports that
+  // on stderr and leaks the device rather than destroying objects the GPU still uses or
+  // blocking forever. Precondition: every object created from this context is destroyed first.
   ~Context();
+
+  // Not movable: the validation layer holds a pointer to the log, and resources keep the raw
+  // VkDevice. Hold a Context in a std::unique_ptr where it must move.
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
+  Context(Context&&) = delete;
+  Context& operator=(Context&&) = delete;
 
   VkInstance instance() const { return instance_.get(); }
   VkPhysicalDevice physical_device() const { return physical_device_; }
   VkDevice device() const { return device_.get(); }
+  // The one queue (graphics + compute + transfer). Vulkan requires external synchronisation:
+  // submit from one thread at a time.
   VkQueue queue() const { return queue_; }
   std::uint32_t queue_family() const { return queue_family_; }
-  const DeviceInfo& device_info() const { return info_; }
+
+  const DeviceInfo& device_info() const { return device_info_; }
+  const std::string& device_name() const { return device_info_.name; }
+  // Every device the instance enumerated, as selection saw them.
+  const std::vector<DeviceInfo>& available_devices() const { return available_devices_; }
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  const DeviceLimits& limits() const { return limits_; }
+  const EnabledFeatures& features() const { return features_; }
+  const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_properties_; }
 
-  // Sample counts usable for colour and depth attachments and sampled images alike.
+  // Sample counts usable for the G-buffer (msaa_supported_counts() of limits()).
   VkSampleCountFlags msaa_counts() const;
+  // choose_msaa() (msaa.h) on this device's sample counts.
+  VkSampleCountFlagBits choose_msaa(std::uint32_t requested) const;
 
-  // The validation log, or nullptr when validation is off.
-  const ValidationLog* validation() const { return log_.get(); }
-  ValidationLog* validation() { return log_.get(); }
+  bool validation_enabled() const { return validation_; }
+  // Warnings and errors from the validation layer (always empty when validation is off). The
+  // shared form outlives the context, so messages emitted while it is destroyed (leaked
+  // objects) can still be checked.
+  ValidationLog& validation_log() const { return *log_; }
+  // The log, or nullptr when validation is off.
+  const ValidationLog* validation() const { return validation_ ? log_.get() : nullptr; }
+  ValidationLog* validation() { return validation_ ? log_.get() : nullptr; }
+  std::shared_ptr<const ValidationLog> shared_validation_log() const { return log_; }
+  // Throws tilelight::Error listing the messages if the layer reported any.
+  void require_no_validation_messages(std::string_view stage) const { log_->require_empty(stage); }
+
+  // Gives a Vulkan object a debug name that validation messages quote. No-op without
+  // validation.
+  void set_object_name(VkObjectType type, std::uint64_t handle, std::string_view name) const;
+  template <typename T>
+  void name_object(T handle, std::string_view name) const {
+    // Every handle is a pointer on the (64-bit) targets object_type.h admits.
+    set_object_name(ObjectType<T>::value, reinterpret_cast<std::uint64_t>(handle), name);
+  }
+
+  // Waits until everything submitted to the queue so far has finished, with a timeout (an
+  // empty submit with a fence; vkQueueWaitIdle has no timeout). Never call this while a
+  // submitted batch waits on a host signal that the calling thread has yet to give: it would
+  // wait on itself until the timeout.
+  void wait_idle(std::string_view stage, Seconds timeout = kDefaultGpuTimeout) const;
 
  private:
-  // Declared in destruction order's reverse: the device goes before the messenger and the
-  // instance; the log outlives them all because the layer may report during their destruction.
-  std::unique_ptr<ValidationLog> log_;
+  void create_instance(const ContextOptions& options);
+  void pick_device(const ContextOptions& options);
+  void create_device();
+
+  std::shared_ptr<ValidationLog> log_;
+  bool validation_ = false;
   UniqueInstance instance_;
   UniqueDebugMessenger messenger_;
+  PFN_vkSetDebugUtilsObjectNameEXT set_object_name_fn_ = nullptr;
+
   VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
-  DeviceInfo info_;
+  DeviceInfo device_info_;
   VkPhysicalDeviceProperties properties_{};
+  std::vector<DeviceInfo> available_devices_;
   std::uint32_t queue_family_ = 0;
+  DeviceLimits limits_;
+  EnabledFeatures features_;
+  VkPhysicalDeviceMemoryProperties memory_properties_{};
+
   UniqueDevice device_;
   VkQueue queue_ = VK_NULL_HANDLE;
 };
-
-// Every physical device the instance sees.
-std::vector<DeviceInfo> list_devices(VkInstance instance);
 
 }  // namespace tilelight
