@@ -1,0 +1,55 @@
+#pragma once
+// The frame report: the figures report.json holds and the Table-4.2-style summary on stdout.
+
+#include "tilelight/tile_renderer.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tilelight::app {
+
+struct RunDescription {
+  std::string device;
+  std::uint32_t width = 0, height = 0, msaa_samples = 0, tile_size = 0, frames = 0;
+  std::string path;          // "cpu" | "gpu"
+  std::string permutations;  // "optimised" | "raw"
+  std::string camera;
+  bool coalesce = true;
+  std::string lavapipe_threads;  // LP_NUM_THREADS as set, or "" (driver default)
+};
+
+struct MedianTimings {  // milliseconds, medians over the frames
+  double gbuffer = 0, shadow_map = 0, classification = 0, index_build_cpu = 0, index_build_gpu = 0;
+  double tiled_light = 0, naive_light = 0;
+};
+
+struct Equivalence {
+  double max_abs_difference = 0;       // over every channel of every pixel
+  std::uint64_t pixels_different = 0;  // pixels with any channel differing
+};
+
+struct FrameReport {
+  RunDescription run;
+  std::uint32_t tiles = 0;
+  std::vector<std::pair<std::string, std::uint32_t>> raw_property_tiles;  // in the order
+  std::vector<std::uint32_t> optimised_tiles;                             // 32 counts
+  std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0;
+  MedianTimings timings;
+  Equivalence equivalence;
+};
+
+// Counts per raw property and per optimised ID from the row-major raw tile IDs (through the
+// generated LUT), whatever path or permutation set drew the frame.
+void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids);
+
+MedianTimings median_timings(const std::vector<FrameTimings>& frames);
+
+Equivalence compare_frames(const RgbaImage& classified, const RgbaImage& naive);
+
+std::string report_json(const FrameReport& report);
+
+// The chapter's Table 4.2 layout: per-stage milliseconds, naive vs classified.
+std::string timing_table(const FrameReport& report);
+
+}  // namespace tilelight::app

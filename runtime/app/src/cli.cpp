@@ -1,0 +1,184 @@
+#include "tilelight_app/cli.h"
+
+#include "output_files.h"
+#include "tilelight/context.h"
+#include "tilelight/error.h"
+#include "tilelight/png.h"
+#include "tilelight/scene.h"
+#include "tilelight/tile_class_image.h"
+#include "tilelight/tile_renderer.h"
+#include "tilelight_app/report.h"
+
+#include <split_second_shaders.h>
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <optional>
+
+namespace tilelight::app {
+namespace {
+
+constexpr int kExitError = 1;
+
+struct Arguments {
+  std::uint32_t width = 1280, height = 720, frames = 1, tile_size = 4;
+  std::string msaa = "auto";
+  std::string path = "cpu";
+  std::string permutations = "optimised";
+  std::string camera = "default";
+  std::string device;
+  std::string out = "tilelight-out";
+  bool validation = false;
+  bool no_coalesce = false;
+  bool list_devices = false;
+  bool list_cameras = false;
+  double timeout_s = 60.0;
+};
+
+std::uint32_t parse_msaa(const std::string& text) {
+  if (text == "auto") return 0;
+  for (const char* valid : {"1", "2", "4", "8", "16"}) {
+    if (text == valid) return static_cast<std::uint32_t>(std::stoul(text));
+  }
+  throw Error("--msaa " + text + ": expected auto, 1, 2, 4, 8 or 16");
+}
+
+// The light targets hold linear radiance; the PNGs get the usual display encoding (gamma 2.2
+// after clamping to 0..1), so they look as a renderer's output would.
+RgbaImage display_encoded(const RgbaImage& linear) {
+  RgbaImage out = linear;
+  for (std::size_t i = 0; i < out.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const float v = std::isnan(out.pixels[i]) ? 0.0f : std::clamp(out.pixels[i], 0.0f, 1.0f);
+    out.pixels[i] = std::pow(v, 1.0f / 2.2f);
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> optimised_ids(const std::vector<std::uint8_t>& raw_ids) {
+  std::vector<std::uint8_t> out(raw_ids.size());
+  for (std::size_t i = 0; i < raw_ids.size(); ++i) {
+    out[i] = raw_ids[i] < split_second::kRawCount ? split_second::kRawToOptimised[raw_ids[i]] : std::uint8_t{0};
+  }
+  return out;
+}
+
+void add_options(CLI::App& cli, Arguments& a) {
+  cli.add_option("--width", a.width, "frame width in pixels")->capture_default_str();
+  cli.add_option("--height", a.height, "frame height in pixels")->capture_default_str();
+  cli.add_option("--msaa", a.msaa, "G-buffer samples: auto (2 where offered, else 4), 1, 2, 4, 8")
+      ->capture_default_str();
+  cli.add_option("--path", a.path, "index build: cpu (host patches pre-recorded draws) or gpu (compute)")
+      ->check(CLI::IsMember({"cpu", "gpu"}))
+      ->capture_default_str();
+  cli.add_option("--permutations", a.permutations, "lighting shaders: optimised (32) or raw (96 of 128)")
+      ->check(CLI::IsMember({"optimised", "raw"}))
+      ->capture_default_str();
+  cli.add_option("--camera", a.camera, "camera: default, sky, shadow, low (--list-cameras)")->capture_default_str();
+  cli.add_option("--frames", a.frames, "frames to render; timings are medians over them")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cli.add_option("--tile-size", a.tile_size, "tile size in pixels: 4, 8 or 16")->capture_default_str();
+  cli.add_flag("--no-coalesce", a.no_coalesce, "one rectangle per tile (no tile coalescing)");
+  cli.add_option("--device", a.device, "Vulkan device: index or name substring (default: the CPU device, lavapipe)");
+  cli.add_flag("--validation", a.validation, "enable the Khronos validation layer; any message fails the run");
+  cli.add_option("--out", a.out, "output folder")->capture_default_str();
+  cli.add_option("--timeout", a.timeout_s, "seconds to wait for the GPU at any one point")->capture_default_str();
+  cli.add_flag("--list-devices", a.list_devices, "list the Vulkan devices and exit");
+  cli.add_flag("--list-cameras", a.list_cameras, "list the cameras and exit");
+}
+
+int render(const Arguments& a, std::ostream& out) {
+  const Scene scene = make_demo_scene();
+  if (a.list_cameras) {
+    for (const Camera& c : scene.cameras) out << c.name << ": " << c.description << '\n';
+    return 0;
+  }
+  RendererOptions options;
+  options.width = a.width;
+  options.height = a.height;
+  options.msaa = parse_msaa(a.msaa);
+  options.tile_size = a.tile_size;
+  options.path = a.path == "gpu" ? IndexPath::gpu : IndexPath::cpu;
+  options.raw_permutations = a.permutations == "raw";
+  options.coalesce = !a.no_coalesce;
+  options.camera = a.camera;
+  options.timeout = Seconds(a.timeout_s);
+  (void)scene.camera(a.camera);  // an unknown camera fails before any Vulkan work
+
+  ContextOptions context_options;
+  context_options.device = a.device;
+  context_options.validation = a.validation;
+  const Context context(context_options);
+  if (a.list_devices) {
+    for (std::size_t i = 0; i < context.available_devices().size(); ++i) {
+      out << i << ": " << context.available_devices()[i].name << '\n';
+    }
+    return 0;
+  }
+  OutputFiles files(a.out);  // proves --out writable before the long part
+  TileRenderer renderer(context, scene, options);
+
+  std::vector<FrameTimings> timings;
+  FrameResult last;
+  for (std::uint32_t f = 0; f < a.frames; ++f) {
+    last = renderer.render_frame();
+    timings.push_back(last.timings);
+  }
+  const RgbaImage classified = renderer.read_classified();
+  const RgbaImage naive = renderer.read_naive();
+  const std::vector<std::uint8_t> raw_ids = renderer.raw_tile_ids();
+  if (a.validation) context.require_no_validation_messages("tilelight");
+
+  FrameReport report;
+  const char* threads = std::getenv("LP_NUM_THREADS");
+  report.run = {context.device_name(), a.width, a.height, renderer.msaa_samples(), a.tile_size, a.frames, a.path,
+                a.permutations, a.camera, options.coalesce, threads != nullptr ? threads : ""};
+  count_tiles(report, raw_ids);
+  report.primitives_uncoalesced = last.stats.primitives_uncoalesced;
+  report.primitives_coalesced = last.stats.primitives_coalesced;
+  report.timings = median_timings(timings);
+  report.equivalence = compare_frames(classified, naive);
+
+  const RgbaImage shown = display_encoded(classified);
+  files.stage("frame_classified.png", [&](const std::filesystem::path& p) { write_png(p, shown); });
+  files.stage("frame_naive.png", [&](const std::filesystem::path& p) { write_png(p, display_encoded(naive)); });
+  files.stage("tile_classes.png", [&](const std::filesystem::path& p) {
+    const Rgba8Canvas canvas = compose_tile_class_image(shown, a.tile_size, optimised_ids(raw_ids));
+    write_png_rgba8(p, canvas.width, canvas.height, canvas.pixels);
+  });
+  files.stage_text("report.json", report_json(report));
+  files.commit();
+
+  out << timing_table(report);
+  out << "wrote " << (files.folder() / "frame_classified.png").string() << ", frame_naive.png, tile_classes.png, "
+      << "report.json\n";
+  return 0;
+}
+
+}  // namespace
+
+int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App cli("tilelight: tile-classified deferred lighting (Split/Second, GPU Pro 2 ch. 4) on Vulkan.\n"
+               "Renders a procedural scene, classifies 4x4 tiles on the GPU, draws each class with its\n"
+               "own uber-shader permutation and compares the result with the naive full-screen pass.",
+               "tilelight");
+  Arguments arguments;
+  add_options(cli, arguments);
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return cli.exit(e, out, err);
+  }
+  try {
+    return render(arguments, out);
+  } catch (const std::exception& e) {
+    err << "tilelight: error: " << e.what() << '\n';
+    return kExitError;
+  }
+}
+
+}  // namespace tilelight::app

@@ -1,0 +1,144 @@
+#include "tilelight_app/report.h"
+
+#include <split_second_shaders.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tilelight::app {
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t mid = values.size() / 2;
+  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+double round3(double value) { return std::round(value * 1000.0) / 1000.0; }
+
+}  // namespace
+
+void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids) {
+  namespace bit = split_second::raw_bit;
+  const std::vector<std::pair<std::string, std::uint32_t>> properties{
+      {"SKY", bit::SKY},
+      {"SUN_LIGHT", bit::SUN_LIGHT},
+      {"SOLID_SHADOW", bit::SHADOW_SOLID},
+      {"SOFT_SHADOW", bit::SHADOW_SOFT},
+      {"SHADOW_FADE", bit::SHADOW_FADE},
+      {"LIGHT_SCATTERING", bit::LIGHT_SCATTERING},
+      {"MSAA_EDGE", bit::MSAA_EDGE}};
+  report.tiles = static_cast<std::uint32_t>(raw_ids.size());
+  report.raw_property_tiles.clear();
+  for (const auto& [name, mask] : properties) {
+    const auto count = std::count_if(raw_ids.begin(), raw_ids.end(), [&](std::uint8_t id) { return (id & mask) != 0; });
+    report.raw_property_tiles.emplace_back(name, static_cast<std::uint32_t>(count));
+  }
+  report.optimised_tiles.assign(split_second::kOptimisedCount, 0);
+  for (std::uint8_t id : raw_ids) {
+    if (id < split_second::kRawCount) ++report.optimised_tiles[split_second::kRawToOptimised[id]];
+  }
+}
+
+MedianTimings median_timings(const std::vector<FrameTimings>& frames) {
+  auto pick = [&](double FrameTimings::*field) {
+    std::vector<double> values;
+    for (const FrameTimings& f : frames) values.push_back(f.*field);
+    return median(values);
+  };
+  MedianTimings m;
+  m.gbuffer = pick(&FrameTimings::gbuffer);
+  m.shadow_map = pick(&FrameTimings::shadow_map);
+  m.classification = pick(&FrameTimings::classification);
+  m.index_build_cpu = pick(&FrameTimings::index_build_cpu);
+  m.index_build_gpu = pick(&FrameTimings::index_build_gpu);
+  m.tiled_light = pick(&FrameTimings::tiled_light);
+  m.naive_light = pick(&FrameTimings::naive_light);
+  return m;
+}
+
+Equivalence compare_frames(const RgbaImage& classified, const RgbaImage& naive) {
+  Equivalence e;
+  const std::size_t pixels = static_cast<std::size_t>(classified.width) * classified.height;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    bool differs = false;
+    for (std::size_t c = 0; c < 4; ++c) {
+      const float a = classified.pixels[p * 4 + c];
+      const float b = naive.pixels[p * 4 + c];
+      if (a == b || (std::isnan(a) && std::isnan(b))) continue;
+      differs = true;
+      const double d = std::fabs(static_cast<double>(a) - static_cast<double>(b));
+      e.max_abs_difference = std::max(e.max_abs_difference, std::isnan(d) ? INFINITY : d);
+    }
+    if (differs) ++e.pixels_different;
+  }
+  return e;
+}
+
+std::string report_json(const FrameReport& r) {
+  nlohmann::ordered_json j;
+  j["device"] = r.run.device;
+  j["width"] = r.run.width;
+  j["height"] = r.run.height;
+  j["msaa_samples"] = r.run.msaa_samples;
+  j["tile_size"] = r.run.tile_size;
+  j["path"] = r.run.path;
+  j["permutations"] = r.run.permutations;
+  j["camera"] = r.run.camera;
+  j["coalesce"] = r.run.coalesce;
+  j["frames"] = r.run.frames;
+  j["lavapipe_threads"] = r.run.lavapipe_threads.empty() ? nlohmann::ordered_json(nullptr)
+                                                         : nlohmann::ordered_json(r.run.lavapipe_threads);
+  j["tiles"] = r.tiles;
+  nlohmann::ordered_json properties = nlohmann::ordered_json::object();
+  for (const auto& [name, count] : r.raw_property_tiles) properties[name] = count;
+  j["raw_property_tiles"] = properties;
+  j["optimised_tiles"] = r.optimised_tiles;
+  j["primitives"] = {{"uncoalesced", r.primitives_uncoalesced}, {"coalesced", r.primitives_coalesced}};
+  nlohmann::ordered_json timings;
+  timings["gbuffer"] = round3(r.timings.gbuffer);
+  timings["shadow_map"] = round3(r.timings.shadow_map);
+  timings["classification"] = round3(r.timings.classification);
+  timings["index_build_cpu"] = round3(r.timings.index_build_cpu);
+  timings["index_build_gpu"] = round3(r.timings.index_build_gpu);
+  timings["tiled_light"] = round3(r.timings.tiled_light);
+  timings["naive_light"] = round3(r.timings.naive_light);
+  j["timings_ms"] = timings;
+  j["equivalence"] = {{"max_abs_difference", r.equivalence.max_abs_difference},
+                      {"pixels_different", r.equivalence.pixels_different}};
+  return j.dump(2) + "\n";
+}
+
+std::string timing_table(const FrameReport& r) {
+  const MedianTimings& t = r.timings;
+  const double classified_light = t.classification + t.index_build_cpu + t.index_build_gpu + t.tiled_light;
+  std::string out;
+  out += fmt::format("{}x{}, {}x MSAA, {}, path {}, {} permutations, camera {}, median of {} frame(s)\n",
+                     r.run.width, r.run.height, r.run.msaa_samples, r.run.device, r.run.path, r.run.permutations,
+                     r.run.camera, r.run.frames);
+  out += fmt::format("{:<28}{:>12}{:>16}\n", "stage (ms)", "naive", "classified");
+  auto row = [&](const char* name, double naive, double classified, bool in_naive) {
+    out += fmt::format("{:<28}{:>12}{:>16.3f}\n", name, in_naive ? fmt::format("{:.3f}", naive) : std::string("-"),
+                       classified);
+  };
+  row("shadow map", t.shadow_map, t.shadow_map, true);
+  row("G-buffer", t.gbuffer, t.gbuffer, true);
+  row("classification (GPU)", 0, t.classification, false);
+  if (r.run.path == "cpu") row("index build (CPU)", 0, t.index_build_cpu, false);
+  else row("index build (GPU)", 0, t.index_build_gpu, false);
+  row("global light", t.naive_light, t.tiled_light, true);
+  out += fmt::format("{:<28}{:>12.3f}{:>16.3f}\n", "light total", t.naive_light, classified_light);
+  const double speedup = classified_light > 0 ? t.naive_light / classified_light : 0.0;
+  out += fmt::format("speed-up of the light pass: {:.2f}x (naive / classification + index build + tiled light)\n",
+                     speedup);
+  out += fmt::format("tiles {}, primitives {} -> {} coalesced; classified vs naive: {} pixels differ (max {:.3g})\n",
+                     r.tiles, r.primitives_uncoalesced, r.primitives_coalesced, r.equivalence.pixels_different,
+                     r.equivalence.max_abs_difference);
+  return out;
+}
+
+}  // namespace tilelight::app

@@ -1,0 +1,39 @@
+#pragma once
+// The CPU reference classifier: the tile classification of uber/classify/classify_tiles.comp
+// recomputed on the host from the read-back G-buffer and shadow map, for tests.
+//
+// The GPU decides every threshold with `precise` arithmetic, but the driver's normalize(),
+// matrix products and divisions may still round differently from the host's. So for each
+// decision the reference also reports whether the value lies within a small margin of its
+// threshold; a tile bit that depends on such a decision is "uncertain" and may legitimately
+// differ. Everything else must match exactly. Margins: view depth 1e-4 relative (at least
+// 1e-4 m); N.L 1e-5; shadow-map texel position 1e-3 texel; shadow depth compare 2e-6.
+
+#include "tilelight/tile_grid.h"
+#include "tilelight/tile_renderer.h"
+#include "tilelight/uniform_blocks.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace tilelight {
+
+// Raw bit values (from the generated registry, split_second::raw_bit).
+struct RawBitLayout {
+  std::uint32_t shadow_solid, shadow_soft, shadow_fade, light_scattering, msaa_edge, sky, sun_light;
+};
+RawBitLayout registry_raw_bits();
+
+struct ReferenceClassification {
+  std::vector<std::uint8_t> raw_ids;        // row-major per tile
+  std::vector<std::uint8_t> uncertain_bits; // row-major per tile: bits that may differ from the GPU
+};
+
+// Preconditions: gbuffer covers grid.width x grid.height; shadow_map holds size^2 depths with
+// size = params.shadow_map_size.x.
+ReferenceClassification classify_on_cpu(const TileGrid& grid, const GBufferSamples& gbuffer,
+                                        std::span<const float> shadow_map, const LightingParamsBlock& params,
+                                        const RawBitLayout& bits);
+
+}  // namespace tilelight

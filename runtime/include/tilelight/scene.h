@@ -1,0 +1,102 @@
+#pragma once
+// The procedural outdoor scene: meshes, instances, cameras and the sun, on the CPU.
+//
+// Everything the frame needs to know about the world, independent of Vulkan: the runtime
+// uploads the meshes and instances once and fills the scene and lighting uniform blocks from
+// a Camera. The layout is deterministic (a fixed seed), so every run and test sees the same
+// frame. Units are metres; y is up.
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tilelight {
+
+struct MeshVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+};
+
+struct Mesh {
+  std::string name;
+  std::vector<MeshVertex> vertices;
+  std::vector<std::uint32_t> indices;  // triangle list
+};
+
+// Per-instance vertex data (binding 1 of the scene pipelines; see uber/scene/scene.vert).
+struct Instance {
+  glm::mat4 model;
+  glm::vec4 albedo_spec;  // rgb albedo, a specular amount (0..1)
+  glm::vec4 material;     // x specular power, y motion ID (1..127; 0 is the sky), z checker scale (0 = none)
+};
+
+// One mesh drawn with a contiguous range of the instance buffer.
+struct MeshBatch {
+  std::uint32_t mesh = 0;            // index into Scene::meshes
+  std::uint32_t first_instance = 0;
+  std::uint32_t instance_count = 0;
+};
+
+struct Camera {
+  std::string name;
+  std::string description;
+  glm::vec3 position{};
+  glm::vec3 target{};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float vertical_fov_degrees = 60.0f;
+  glm::vec3 shadow_focus{};  // ground point the sun's shadow map is centred on
+};
+
+// Lighting constants shared by classification and lighting (distances are view depths).
+struct SunAndAtmosphere {
+  glm::vec3 sun_direction;   // normalised, towards the sun
+  glm::vec3 sun_color;
+  glm::vec3 fog_color;
+  float fog_density = 0.0f;  // per metre
+  float shadow_fade_start = 0.0f;
+  float shadow_fade_length = 0.0f;
+  float scattering_start = 0.0f;
+  float shadow_depth_bias = 0.0f;    // in shadow-map depth units (0..1)
+  float shadow_half_extent = 0.0f;   // metres covered either side of the focus
+  float shadow_depth_range = 0.0f;   // metres from the sun's near to far plane
+  std::uint32_t shadow_map_size = 0; // texels per side
+  glm::vec3 sky_zenith;
+  glm::vec3 sky_horizon;
+  glm::vec3 ambient_sky;
+  glm::vec3 ambient_ground;
+};
+
+struct Scene {
+  std::vector<Mesh> meshes;
+  std::vector<Instance> instances;
+  std::vector<MeshBatch> batches;
+  std::vector<Camera> cameras;  // cameras[0] is the default
+  SunAndAtmosphere sun;
+
+  // Throws tilelight::Error listing the known names when `name` is not a camera.
+  const Camera& camera(std::string_view name) const;
+  std::vector<std::string> camera_names() const;
+};
+
+// The demo scene: ground, rows of boxes and pillars that cast sun shadows, spheres, distant
+// buildings beyond the shadow-fade and scattering distances, a canopy that shades a large
+// area, and sky. Cameras: "default" (all seven tile properties in frame), "sky" (only sky),
+// "shadow" (only ground in solid shadow), "low" (grazing view across the boxes).
+Scene make_demo_scene();
+
+// Camera matrices for a framebuffer of the given aspect ratio (Vulkan clip space: y down,
+// depth 0..1).
+struct CameraMatrices {
+  glm::mat4 view_proj;
+  glm::mat4 inv_view_proj;
+  glm::vec3 forward;
+};
+CameraMatrices camera_matrices(const Camera& camera, float aspect);
+
+// World -> sun shadow clip (orthographic, depth 0..1) centred on camera.shadow_focus.
+glm::mat4 sun_view_proj(const SunAndAtmosphere& sun, const Camera& camera);
+
+}  // namespace tilelight

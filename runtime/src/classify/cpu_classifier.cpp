@@ -1,0 +1,211 @@
+// Mirrors uber/classify/classify_tiles.comp and the include functions it calls; the comments
+// name the GLSL function each part reproduces.
+#include "tilelight/cpu_classifier.h"
+
+#include "tilelight/error.h"
+
+#include <split_second_shaders.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+
+namespace tilelight {
+namespace {
+
+enum Flag : std::uint32_t {
+  kFade = 0x01, kScattering = 0x02, kEdge = 0x04, kSky = 0x08, kSun = 0x10,
+  kShadowed = 0x20, kLit = 0x40, kPartial = 0x80,
+};
+constexpr std::uint32_t kShadowFlags = kShadowed | kLit | kPartial;
+
+struct Flags {
+  std::uint32_t certain = 0;   // set for sure
+  std::uint32_t possible = 0;  // set by some rounding of the near-threshold decisions
+  void add(std::uint32_t flag, bool set, bool uncertain) {
+    if (set && !uncertain) certain |= flag;
+    if (set || uncertain) possible |= flag;
+  }
+  void merge(const Flags& other) {
+    certain |= other.certain;
+    possible |= other.possible;
+  }
+};
+
+struct Sample {
+  const float* v;  // rt0[4], rt1[4], rt2[4], depth
+  bool is_sky() const {
+    const auto byte = static_cast<std::uint32_t>(std::clamp(std::nearbyint(v[7] * 255.0f), 0.0f, 255.0f));
+    return (byte & 0x7Fu) == 0;
+  }
+  bool edge_bit() const {
+    const auto byte = static_cast<std::uint32_t>(std::clamp(std::nearbyint(v[7] * 255.0f), 0.0f, 255.0f));
+    return (byte & 0x80u) != 0;
+  }
+};
+
+// gbuffer_samples_equal(): every stored value equal (a NaN never is).
+bool samples_equal(const Sample& a, const Sample& b) {
+  for (int i = 0; i < 13; ++i) {
+    if (!(a.v[i] == b.v[i])) return false;
+  }
+  return true;
+}
+
+glm::vec4 multiply(const glm::mat4& m, const glm::vec4& v) {
+  glm::vec4 r;
+  for (int row = 0; row < 4; ++row) {
+    r[row] = m[0][row] * v.x + m[1][row] * v.y + m[2][row] * v.z + m[3][row] * v.w;
+  }
+  return r;
+}
+
+bool near_threshold(float value, float threshold, float margin) { return std::fabs(value - threshold) <= margin; }
+
+class SampleClassifier {
+ public:
+  SampleClassifier(const LightingParamsBlock& p, std::span<const float> map) : params_(p), map_(map) {
+    map_size_ = static_cast<int>(p.shadow_map_size.x);
+  }
+
+  Flags classify(std::uint32_t x, std::uint32_t y, const Sample& s) const {
+    Flags f;
+    if (s.is_sky()) {
+      f.add(kSky, true, false);
+      return f;
+    }
+    // world_position_from_depth() and linear_view_depth().
+    const glm::vec2 ndc{(static_cast<float>(x) + 0.5f) * params_.viewport.z * 2.0f - 1.0f,
+                        (static_cast<float>(y) + 0.5f) * params_.viewport.w * 2.0f - 1.0f};
+    const glm::vec4 world = multiply(params_.inv_view_proj, {ndc.x, ndc.y, s.v[12], 1.0f});
+    const glm::vec3 pos = glm::vec3(world) / world.w;
+    const glm::vec3 offset = pos - glm::vec3(params_.camera_pos);
+    const float view_depth = offset.x * params_.camera_forward.x + offset.y * params_.camera_forward.y +
+                             offset.z * params_.camera_forward.z;
+    const float depth_margin = std::max(1e-4f, 1e-4f * std::fabs(view_depth));
+    // shadow_fade_active(), light_scattering_active().
+    f.add(kFade, view_depth > params_.distances.x, near_threshold(view_depth, params_.distances.x, depth_margin));
+    f.add(kScattering, view_depth > params_.distances.z,
+          near_threshold(view_depth, params_.distances.z, depth_margin));
+    // sun_faces().
+    const glm::vec3 normal{s.v[4], s.v[5], s.v[6]};
+    const float length = std::sqrt(glm::dot(normal, normal));
+    const float n_dot_l = glm::dot(normal / length, glm::vec3(params_.sun_direction));
+    const bool faces = n_dot_l > 0.0f;  // NaN: not facing
+    const bool faces_uncertain = std::fabs(n_dot_l) <= 1e-5f;
+    f.add(kSun, faces, faces_uncertain);
+    if (faces || faces_uncertain) add_shadow(pos, f, faces_uncertain);
+    return f;
+  }
+
+ private:
+  // sun_shadow_lit_taps(), with the margins of each decision.
+  void add_shadow(const glm::vec3& pos, Flags& f, bool participation_uncertain) const {
+    static constexpr std::array<std::array<int, 2>, 8> kTaps{
+        {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {-1, 1}, {2, 0}, {0, -1}, {1, 2}}};
+    const glm::vec4 clip = multiply(params_.sun_view_proj, glm::vec4(pos, 1.0f));
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    bool uncertain = participation_uncertain || near_threshold(ndc.z, 0.0f, 2e-6f) || near_threshold(ndc.z, 1.0f, 2e-6f);
+    int lit = 8;
+    if (ndc.z >= 0.0f && ndc.z <= 1.0f) {
+      const float size = params_.shadow_map_size.x;
+      glm::vec2 texel_pos = (glm::vec2(ndc) * 0.5f + 0.5f) * size;
+      texel_pos = glm::clamp(texel_pos, glm::vec2(-4.0f), glm::vec2(size + 4.0f));
+      const glm::vec2 shifted = texel_pos - 0.5f;
+      for (int axis = 0; axis < 2; ++axis) {
+        const float frac = shifted[axis] - std::floor(shifted[axis]);
+        if (frac <= 1e-3f || frac >= 1.0f - 1e-3f) uncertain = true;
+      }
+      const int base_x = static_cast<int>(std::floor(shifted.x));
+      const int base_y = static_cast<int>(std::floor(shifted.y));
+      const float receiver = ndc.z - params_.distances.w;
+      lit = 0;
+      for (const auto& tap : kTaps) {
+        const int tx = base_x + tap[0];
+        const int ty = base_y + tap[1];
+        if (tx < 0 || ty < 0 || tx >= map_size_ || ty >= map_size_) {
+          ++lit;
+          continue;
+        }
+        const float occluder = map_[static_cast<std::size_t>(ty) * static_cast<std::size_t>(map_size_) +
+                                    static_cast<std::size_t>(tx)];
+        if (receiver <= occluder) ++lit;
+        if (near_threshold(receiver, occluder, 2e-6f)) uncertain = true;
+      }
+    }
+    const std::uint32_t state = lit == 0 ? kShadowed : lit == 8 ? kLit : kPartial;
+    // An uncertain sample could be in any shadow state.
+    f.add(state, true, uncertain);
+    if (uncertain) f.possible |= kShadowFlags;
+  }
+
+  const LightingParamsBlock& params_;
+  std::span<const float> map_;
+  int map_size_ = 0;
+};
+
+Flags classify_pixel(const SampleClassifier& classifier, const GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
+  const Sample first{g.at(x, y, 0)};
+  bool edge = first.edge_bit();
+  for (std::uint32_t s = 1; s < g.samples && !edge; ++s) edge = !samples_equal(first, Sample{g.at(x, y, s)});
+  Flags f;
+  f.add(kEdge, edge, false);
+  const std::uint32_t classified = edge ? g.samples : 1;
+  for (std::uint32_t s = 0; s < classified; ++s) f.merge(classifier.classify(x, y, Sample{g.at(x, y, s)}));
+  return f;
+}
+
+// raw_id_from_tile_flags().
+std::uint32_t raw_id(std::uint32_t flags, const RawBitLayout& bits) {
+  const bool shadowed = (flags & kShadowed) != 0, lit = (flags & kLit) != 0, partial = (flags & kPartial) != 0;
+  std::uint32_t raw = 0;
+  if (shadowed && !lit && !partial) raw |= bits.shadow_solid;
+  if (partial || (shadowed && lit)) raw |= bits.shadow_soft;
+  if (flags & kFade) raw |= bits.shadow_fade;
+  if (flags & kScattering) raw |= bits.light_scattering;
+  if (flags & kEdge) raw |= bits.msaa_edge;
+  if (flags & kSky) raw |= bits.sky;
+  if (flags & kSun) raw |= bits.sun_light;
+  return raw;
+}
+
+}  // namespace
+
+RawBitLayout registry_raw_bits() {
+  namespace bit = split_second::raw_bit;
+  return {bit::SHADOW_SOLID, bit::SHADOW_SOFT, bit::SHADOW_FADE, bit::LIGHT_SCATTERING,
+          bit::MSAA_EDGE,    bit::SKY,         bit::SUN_LIGHT};
+}
+
+ReferenceClassification classify_on_cpu(const TileGrid& grid, const GBufferSamples& gbuffer,
+                                        std::span<const float> shadow_map, const LightingParamsBlock& params,
+                                        const RawBitLayout& bits) {
+  if (gbuffer.width != grid.width || gbuffer.height != grid.height) {
+    throw Error("classify_on_cpu: the G-buffer size does not match the tile grid");
+  }
+  const SampleClassifier classifier(params, shadow_map);
+  std::vector<Flags> tiles(grid.tile_count());
+  for (std::uint32_t y = 0; y < grid.height; ++y) {
+    for (std::uint32_t x = 0; x < grid.width; ++x) {
+      tiles[(y / grid.tile_size) * grid.tiles_x + x / grid.tile_size].merge(classify_pixel(classifier, gbuffer, x, y));
+    }
+  }
+  ReferenceClassification out;
+  out.raw_ids.resize(tiles.size());
+  out.uncertain_bits.resize(tiles.size());
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    const std::uint32_t certain_id = raw_id(tiles[i].certain, bits);
+    out.raw_ids[i] = static_cast<std::uint8_t>(certain_id);
+    std::uint32_t uncertain = raw_id(tiles[i].possible, bits) ^ certain_id;
+    // Shadow type is not monotonic in the flags: any doubt about one sample's shadow state
+    // makes both shadow bits uncertain.
+    if ((tiles[i].possible & kShadowFlags) != (tiles[i].certain & kShadowFlags)) {
+      uncertain |= bits.shadow_solid | bits.shadow_soft;
+    }
+    out.uncertain_bits[i] = static_cast<std::uint8_t>(uncertain);
+  }
+  return out;
+}
+
+}  // namespace tilelight

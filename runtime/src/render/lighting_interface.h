@@ -1,0 +1,40 @@
+#pragma once
+// The descriptor interface shared by classification and every lighting permutation
+// (uber/include/lighting_params.glsl): set 0 is built from the registry's merged layout, so the
+// generated code, not this file, says which bindings exist. Set 1 is one storage buffer for the
+// compute passes that write a result (classification, the G-buffer dump).
+
+#include "render_targets.h"
+#include "tilelight/buffer.h"
+#include "tilelight/sampler.h"
+#include "tilelight/uniform_blocks.h"
+#include "tilelight/vk_handles.h"
+
+namespace tilelight {
+
+class Context;
+
+class LightingInterface {
+ public:
+  LightingInterface(const Context& context, const LightingParamsBlock& params, const RenderTargets& targets,
+                    VkDescriptorPool pool);
+
+  VkDescriptorSetLayout set0_layout() const { return set0_layout_.get(); }
+  VkDescriptorSetLayout storage_set_layout() const { return storage_set_layout_.get(); }
+  VkDescriptorSet set0() const { return set0_; }
+  // Lighting pipelines: set 0 + the registry's push-constant range (the tile vertex shader's).
+  VkPipelineLayout lighting_layout() const { return lighting_layout_.get(); }
+  // Compute passes: set 0, set 1 (one storage buffer), 32 bytes of push constants.
+  VkPipelineLayout compute_layout() const { return compute_layout_.get(); }
+  const LightingParamsBlock& params() const { return params_block_; }
+
+ private:
+  LightingParamsBlock params_block_;
+  Buffer params_;
+  Sampler sampler_;
+  UniqueDescriptorSetLayout set0_layout_, storage_set_layout_;
+  UniquePipelineLayout lighting_layout_, compute_layout_;
+  VkDescriptorSet set0_ = VK_NULL_HANDLE;
+};
+
+}  // namespace tilelight

@@ -1,0 +1,126 @@
+#include "lighting_passes.h"
+
+#include "tilelight/barriers.h"
+#include "tilelight/context.h"
+#include "tilelight/error.h"
+#include "tilelight/pipelines.h"
+
+#include <split_second_shaders.h>
+
+#include <array>
+#include <string>
+
+namespace tilelight {
+namespace {
+
+constexpr std::uint32_t kNaiveOptimisedId = 31;  // every feature: the full uber-shader
+constexpr VkDeviceSize kDrawRecordBytes = sizeof(VkDrawIndexedIndirectCommand);
+
+UniquePipeline create_light_pipeline(const Context& context, const RenderTargets& targets,
+                                     const LightingInterface& lighting, std::span<const std::uint32_t> fragment,
+                                     std::string name) {
+  const shadergen::CompanionShader* tile = split_second::registry().companion("tile");
+  if (tile == nullptr) throw Error("the shader registry has no companion shader 'tile'");
+  GraphicsPipelineDesc desc;
+  desc.layout = lighting.lighting_layout();
+  desc.render_pass = targets.light_pass();
+  desc.vertex_spirv = tile->shader.spirv;
+  desc.fragment_spirv = fragment;
+  desc.vertex_bindings = {{0, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
+  desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}};
+  desc.name = std::move(name);
+  return create_graphics_pipeline(context, desc);
+}
+
+}  // namespace
+
+LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
+                               const LightingInterface& lighting, PermutationSet permutations)
+    : lighting_(&lighting), extent_(targets.extent()) {
+  const std::vector<float> corners = grid.corner_vertices();
+  corners_ = Buffer(context, {corners.size() * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                              MemoryUse::HostUpload, "tile corner grid"});
+  corners_.write_values(std::span<const float>(corners));
+  const std::array<std::uint32_t, 6> whole_frame{
+      grid.vertex_index(0, 0),           grid.vertex_index(grid.tiles_x, 0),
+      grid.vertex_index(0, grid.tiles_y), grid.vertex_index(grid.tiles_x, 0),
+      grid.vertex_index(grid.tiles_x, grid.tiles_y), grid.vertex_index(0, grid.tiles_y)};
+  naive_indices_ = Buffer(context, {sizeof(whole_frame), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::HostUpload,
+                                    "naive pass indices"});
+  naive_indices_.write_values(std::span<const std::uint32_t>(whole_frame));
+
+  const shadergen::Registry& registry = split_second::registry();
+  if (permutations == PermutationSet::optimised) {
+    for (const shadergen::Permutation& p : registry.optimised) {
+      pipelines_.push_back(create_light_pipeline(context, targets, lighting, p.spirv,
+                                                 "lighting optimised " + std::to_string(p.id)));
+    }
+  } else {
+    for (const shadergen::Permutation& p : registry.raw) {
+      pipelines_.push_back(p.pruned ? UniquePipeline{}
+                                    : create_light_pipeline(context, targets, lighting, p.spirv,
+                                                            "lighting raw " + std::to_string(p.id)));
+    }
+  }
+  naive_pipeline_ = create_light_pipeline(context, targets, lighting, registry.optimised[kNaiveOptimisedId].spirv,
+                                          "lighting naive (optimised 31)");
+}
+
+std::uint32_t LightingPasses::pipeline_count() const {
+  std::uint32_t count = 0;
+  for (const UniquePipeline& p : pipelines_) count += p ? 1 : 0;
+  return count;
+}
+
+void LightingPasses::begin(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer) const {
+  // Magenta: a pixel the tiled pass failed to cover stands out, and fails the equivalence test.
+  VkClearValue clear{};
+  clear.color = {{1.0f, 0.0f, 1.0f, 1.0f}};
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = targets.light_pass();
+  begin.framebuffer = framebuffer;
+  begin.renderArea = {{0, 0}, extent_};
+  begin.clearValueCount = 1;
+  begin.pClearValues = &clear;
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  set_viewport_and_scissor(cmd, extent_);
+  const VkDescriptorSet set = lighting_->set0();
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lighting_->lighting_layout(), 0, 1, &set, 0, nullptr);
+  const std::array<float, 2> inv_viewport{1.0f / static_cast<float>(extent_.width),
+                                          1.0f / static_cast<float>(extent_.height)};
+  vkCmdPushConstants(cmd, lighting_->lighting_layout(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(inv_viewport),
+                     inv_viewport.data());
+  const VkBuffer corners = corners_.handle();
+  const VkDeviceSize offset = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &corners, &offset);
+}
+
+void LightingPasses::record_tiled(VkCommandBuffer cmd, const RenderTargets& targets, const Buffer& indices,
+                                  const Buffer& draws) const {
+  // The records are written after this command buffer was submitted (host patching) or by an
+  // earlier compute pass (GPU-driven): make both kinds of write visible to the draw stages.
+  memory_barrier(cmd,
+                 {VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT},
+                 {VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
+                  VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT});
+  begin(cmd, targets, targets.classified_framebuffer());
+  vkCmdBindIndexBuffer(cmd, indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+  for (std::uint32_t id = 0; id < pipelines_.size(); ++id) {
+    if (!pipelines_[id]) continue;  // a pruned raw ID: the index build rejects it
+    // One bind and one draw per class; a class without tiles has indexCount 0: no GPU work.
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_[id].get());
+    vkCmdDrawIndexedIndirect(cmd, draws.handle(), id * kDrawRecordBytes, 1, static_cast<std::uint32_t>(kDrawRecordBytes));
+  }
+  vkCmdEndRenderPass(cmd);
+}
+
+void LightingPasses::record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const {
+  begin(cmd, targets, targets.naive_framebuffer());
+  vkCmdBindIndexBuffer(cmd, naive_indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, naive_pipeline_.get());
+  vkCmdDrawIndexed(cmd, 6, 1, 0, 0, 0);
+  vkCmdEndRenderPass(cmd);
+}
+
+}  // namespace tilelight

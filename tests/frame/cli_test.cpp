@@ -1,0 +1,125 @@
+// The tilelight command line, run in-process: its files, its report and its errors.
+#include "test_support.h"
+#include "tilelight_app/cli.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace tilelight::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  int exit_code;
+  std::string out, err;
+};
+
+CliResult run_cli(std::vector<std::string> args) {
+  args.insert(args.begin(), "tilelight");
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  const int code = app::run(static_cast<int>(argv.size()), argv.data(), out, err);
+  return {code, out.str(), err.str()};
+}
+
+const char* const kOutputs[] = {"frame_classified.png", "frame_naive.png", "tile_classes.png", "report.json"};
+
+TEST(TilelightCli, WritesTheFourFilesAndTheReportFields) {
+  const fs::path out = scratch_dir() / "out";
+  const CliResult r = run_cli({"--width", "200", "--height", "120", "--frames", "2", "--validation", "--out",
+                               out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* name : kOutputs) EXPECT_TRUE(fs::exists(out / name)) << name;
+  EXPECT_NE(r.out.find("global light"), std::string::npos) << r.out;
+
+  std::ifstream file(out / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(file);
+  EXPECT_EQ(report["width"], 200);
+  EXPECT_EQ(report["height"], 120);
+  EXPECT_EQ(report["msaa_samples"], 4);  // lavapipe offers 1x and 4x only
+  EXPECT_EQ(report["tiles"], 50 * 30);
+  for (const char* p : {"SKY", "SUN_LIGHT", "SOLID_SHADOW", "SOFT_SHADOW", "SHADOW_FADE", "LIGHT_SCATTERING",
+                        "MSAA_EDGE"}) {
+    ASSERT_TRUE(report["raw_property_tiles"].contains(p)) << p;
+    EXPECT_GT(report["raw_property_tiles"][p].get<int>(), 0) << p;
+  }
+  ASSERT_EQ(report["optimised_tiles"].size(), 32u);
+  int sum = 0;
+  for (const auto& n : report["optimised_tiles"]) sum += n.get<int>();
+  EXPECT_EQ(sum, 50 * 30);
+  EXPECT_EQ(report["primitives"]["uncoalesced"], 50 * 30);
+  EXPECT_LT(report["primitives"]["coalesced"].get<int>(), 50 * 30);
+  for (const char* t : {"gbuffer", "shadow_map", "classification", "index_build_cpu", "tiled_light", "naive_light"}) {
+    ASSERT_TRUE(report["timings_ms"].contains(t)) << t;
+    EXPECT_GE(report["timings_ms"][t].get<double>(), 0.0) << t;
+  }
+  EXPECT_EQ(report["equivalence"]["pixels_different"], 0);
+  // Nothing temporary left beside the results.
+  for (const auto& entry : fs::directory_iterator(out)) {
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
+  }
+}
+
+struct BadInput {
+  const char* name;
+  std::vector<std::string> args;
+  const char* message;
+};
+
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+
+class TilelightBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(TilelightBadInput, FailsWithAClearMessageAndWritesNothing) {
+  const fs::path out = scratch_dir() / "out";
+  std::vector<std::string> args = GetParam().args;
+  args.push_back("--out");
+  args.push_back(out.string());
+  const CliResult r = run_cli(args);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(GetParam().message), std::string::npos) << r.err;
+  if (fs::exists(out)) {
+    EXPECT_TRUE(fs::is_empty(out)) << "partial output left in " << out;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, TilelightBadInput,
+    ::testing::Values(BadInput{"zero_width", {"--width", "0"}, "width 0"},
+                      BadInput{"huge_height", {"--height", "999999"}, "height 999999: exceeds the maximum"},
+                      BadInput{"msaa_lavapipe_lacks", {"--msaa", "2"}, "--msaa 2"},
+                      BadInput{"msaa_not_a_count", {"--msaa", "3"}, "--msaa 3"},
+                      BadInput{"unknown_device", {"--device", "no-such-gpu"}, "no-such-gpu"},
+                      BadInput{"unknown_camera", {"--camera", "moon"}, "unknown camera 'moon'"},
+                      BadInput{"bad_path", {"--path", "fpga"}, "--path"},
+                      BadInput{"bad_tile_size", {"--tile-size", "5"}, "tile_size must be 4, 8 or 16 (got 5)"}),
+    [](const ::testing::TestParamInfo<BadInput>& param_info) { return std::string(param_info.param.name); });
+
+TEST(TilelightCli, UnwritableOutFolderIsNamed) {
+  const fs::path blocker = scratch_dir() / "a-file";
+  std::ofstream(blocker) << "not a folder";
+  const CliResult r = run_cli({"--width", "16", "--height", "16", "--out", (blocker / "out").string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--out " + (blocker / "out").string()), std::string::npos) << r.err;
+}
+
+TEST(TilelightCli, FailedRunKeepsEarlierResults) {
+  const fs::path out = scratch_dir() / "out";
+  ASSERT_EQ(run_cli({"--width", "64", "--height", "48", "--out", out.string()}).exit_code, 0);
+  std::ifstream before_file(out / "report.json");
+  const std::string before((std::istreambuf_iterator<char>(before_file)), {});
+  EXPECT_NE(run_cli({"--width", "64", "--height", "48", "--camera", "moon", "--out", out.string()}).exit_code, 0);
+  std::ifstream after_file(out / "report.json");
+  const std::string after((std::istreambuf_iterator<char>(after_file)), {});
+  EXPECT_EQ(before, after);
+}
+
+}  // namespace
+}  // namespace tilelight::test

@@ -1,0 +1,55 @@
+// The tile pass is submitted before the host signals it. A failure in between must not leave
+// the queue blocked: the renderer empties the draws, signals, waits, then reports the error.
+#include "test_support.h"
+#include "tilelight/error.h"
+#include "tilelight/scene.h"
+#include "tilelight/tile_renderer.h"
+
+namespace tilelight::test {
+namespace {
+
+class FrameFailure : public VulkanTest {};
+
+TEST_F(FrameFailure, ErrorBeforeTheHostSignalStillReleasesTheGpu) {
+  const Scene scene = make_demo_scene();
+  RendererOptions options;
+  options.width = 96;
+  options.height = 64;
+  options.timeout = Seconds(20);
+  TileRenderer renderer(context(), scene, options);
+  renderer.set_before_host_signal([] { throw Error("injected failure in the index build"); });
+  try {
+    renderer.render_frame();
+    FAIL() << "render_frame() did not report the injected failure";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "injected failure in the index build");
+  }
+  // The queue is free again: this would time out if the tile pass were still waiting.
+  EXPECT_NO_THROW(context().wait_idle("after the injected failure", Seconds(20)));
+  // And the renderer still works.
+  renderer.set_before_host_signal({});
+  EXPECT_NO_THROW(renderer.render_frame());
+}
+
+TEST_F(FrameFailure, BadSizesAreRejectedWithTheValue) {
+  const Scene scene = make_demo_scene();
+  RendererOptions options;
+  options.width = 0;
+  try {
+    TileRenderer renderer(context(), scene, options);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("width 0"), std::string::npos) << e.what();
+  }
+  options.width = 64;
+  options.height = 1u << 20;
+  try {
+    TileRenderer renderer(context(), scene, options);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("1048576"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tilelight::test

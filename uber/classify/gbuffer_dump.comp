@@ -1,0 +1,31 @@
+#version 450
+// gbuffer_dump.comp -- copies every sample of the multisampled G-buffer into a buffer, as
+// stored, so the CPU reference classifier and tests can read it (multisampled images cannot be
+// copied to the host directly). Layout per pixel: for each sample, rt0, rt1, rt2, then
+// vec4(depth, 0, 0, 0): 16 floats per sample, pixels row-major.
+#extension GL_GOOGLE_include_directive : require
+#include "lighting_params.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 1, binding = 0, std430) writeonly buffer Dump {
+    vec4 texels[];
+} dump;
+
+void main()
+{
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = ivec2(params.viewport.xy);
+    if (pixel.x >= size.x || pixel.y >= size.y) {
+        return;
+    }
+    int samples = textureSamples(gbuffer_normal_motion);
+    uint base = uint((pixel.y * size.x + pixel.x) * samples) * 4u;
+    for (int s = 0; s < samples; ++s) {
+        uint at = base + uint(s) * 4u;
+        dump.texels[at + 0u] = texelFetch(gbuffer_albedo_spec, pixel, s);
+        dump.texels[at + 1u] = texelFetch(gbuffer_normal_motion, pixel, s);
+        dump.texels[at + 2u] = texelFetch(gbuffer_prelit_power, pixel, s);
+        dump.texels[at + 3u] = vec4(texelFetch(gbuffer_depth, pixel, s).r, 0.0, 0.0, 0.0);
+    }
+}
