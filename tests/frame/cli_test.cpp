@@ -92,9 +92,9 @@ TEST_P(TilelightBadInput, FailsWithAClearMessageAndWritesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, TilelightBadInput,
-    ::testing::Values(BadInput{"zero_width", {"--width", "0"}, "width 0"},
-                      BadInput{"huge_height", {"--height", "999999"}, "height 999999: exceeds the maximum"},
-                      BadInput{"msaa_lavapipe_lacks", {"--msaa", "2"}, "--msaa 2"},
+    ::testing::Values(BadInput{"zero_width", {"--width", "0"}, "--width 0: the frame must be at least 1 pixel"},
+                      BadInput{"huge_height", {"--height", "999999"}, "--height 999999: exceeds the maximum"},
+                      BadInput{"msaa_lavapipe_lacks", {"--msaa", "2"}, "--msaa 2: MSAA 2x is not supported by this device (supported for the G-buffer: 1x, 4x)"},
                       BadInput{"msaa_not_a_count", {"--msaa", "3"}, "--msaa 3"},
                       BadInput{"unknown_device", {"--device", "no-such-gpu"}, "no-such-gpu"},
                       BadInput{"unknown_camera", {"--camera", "moon"}, "unknown camera 'moon'"},

@@ -120,7 +120,21 @@ int render(const Arguments& a, std::ostream& out) {
     return 0;
   }
   OutputFiles files(a.out);  // proves --out writable before the long part
-  TileRenderer renderer(context, scene, options);
+  // Errors about a value name the flag that set it.
+  try {
+    (void)context.choose_msaa(options.msaa);
+  } catch (const Error& e) {
+    throw Error("--msaa " + a.msaa + ": " + e.what());
+  }
+  std::optional<TileRenderer> renderer_storage;
+  try {
+    renderer_storage.emplace(context, scene, options);
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    if (what.rfind("width ", 0) == 0 || what.rfind("height ", 0) == 0) throw Error("--" + what);
+    throw;
+  }
+  TileRenderer& renderer = *renderer_storage;
 
   std::vector<FrameTimings> timings;
   FrameResult last;

@@ -98,6 +98,11 @@ class TileRenderer {
   GBufferSamples read_gbuffer();
   std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major
 
+  // Test hook: later frames take their G-buffer from `samples` (the layout read_gbuffer()
+  // returns) instead of rendering the scene; the shadow map still comes from the scene. Needs
+  // sample-rate shading. Precondition: size and sample count match this renderer.
+  void set_gbuffer_override(const GBufferSamples& samples);
+
   // Test hook for the failure path: called on the host after the tile pass was submitted and
   // before the host signals it; an exception thrown here must still leave the GPU unblocked.
   void set_before_host_signal(std::function<void()> hook);

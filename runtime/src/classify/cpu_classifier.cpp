@@ -102,8 +102,6 @@ class SampleClassifier {
  private:
   // sun_shadow_lit_taps(), with the margins of each decision.
   void add_shadow(const glm::vec3& pos, Flags& f, bool participation_uncertain) const {
-    static constexpr std::array<std::array<int, 2>, 8> kTaps{
-        {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {-1, 1}, {2, 0}, {0, -1}, {1, 2}}};
     const glm::vec4 clip = multiply(params_.sun_view_proj, glm::vec4(pos, 1.0f));
     const glm::vec3 ndc = glm::vec3(clip) / clip.w;
     bool uncertain = participation_uncertain || near_threshold(ndc.z, 0.0f, 2e-6f) || near_threshold(ndc.z, 1.0f, 2e-6f);
@@ -113,31 +111,52 @@ class SampleClassifier {
       glm::vec2 texel_pos = (glm::vec2(ndc) * 0.5f + 0.5f) * size;
       texel_pos = glm::clamp(texel_pos, glm::vec2(-4.0f), glm::vec2(size + 4.0f));
       const glm::vec2 shifted = texel_pos - 0.5f;
-      for (int axis = 0; axis < 2; ++axis) {
-        const float frac = shifted[axis] - std::floor(shifted[axis]);
-        if (frac <= 1e-3f || frac >= 1.0f - 1e-3f) uncertain = true;
-      }
-      const int base_x = static_cast<int>(std::floor(shifted.x));
-      const int base_y = static_cast<int>(std::floor(shifted.y));
+      // Near a texel boundary the GPU may pick the neighbouring base texel: count the taps for
+      // every base it could pick; the verdict is uncertain only if those counts differ.
+      std::array<int, 2> bases_x{static_cast<int>(std::floor(shifted.x)), 0};
+      std::array<int, 2> bases_y{static_cast<int>(std::floor(shifted.y)), 0};
+      const int count_x = neighbour_base(shifted.x, bases_x);
+      const int count_y = neighbour_base(shifted.y, bases_y);
       const float receiver = ndc.z - params_.distances.w;
-      lit = 0;
-      for (const auto& tap : kTaps) {
-        const int tx = base_x + tap[0];
-        const int ty = base_y + tap[1];
-        if (tx < 0 || ty < 0 || tx >= map_size_ || ty >= map_size_) {
-          ++lit;
-          continue;
+      lit = lit_taps(bases_x[0], bases_y[0], receiver, uncertain);
+      for (int ix = 0; ix < count_x; ++ix) {
+        for (int iy = 0; iy < count_y; ++iy) {
+          if (lit_taps(bases_x[ix], bases_y[iy], receiver, uncertain) != lit) uncertain = true;
         }
-        const float occluder = map_[static_cast<std::size_t>(ty) * static_cast<std::size_t>(map_size_) +
-                                    static_cast<std::size_t>(tx)];
-        if (receiver <= occluder) ++lit;
-        if (near_threshold(receiver, occluder, 2e-6f)) uncertain = true;
       }
     }
     const std::uint32_t state = lit == 0 ? kShadowed : lit == 8 ? kLit : kPartial;
     // An uncertain sample could be in any shadow state.
     f.add(state, true, uncertain);
     if (uncertain) f.possible |= kShadowFlags;
+  }
+
+  // The base texel floor(v) and, when v is within 1e-3 texel of an integer, the neighbour the
+  // GPU could pick instead; returns how many candidates there are.
+  static int neighbour_base(float v, std::array<int, 2>& bases) {
+    const float frac = v - std::floor(v);
+    if (frac <= 1e-3f) { bases[1] = bases[0] - 1; return 2; }
+    if (frac >= 1.0f - 1e-3f) { bases[1] = bases[0] + 1; return 2; }
+    return 1;
+  }
+
+  int lit_taps(int base_x, int base_y, float receiver, bool& uncertain) const {
+    static constexpr std::array<std::array<int, 2>, 8> kTaps{
+        {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {-1, 1}, {2, 0}, {0, -1}, {1, 2}}};
+    int lit = 0;
+    for (const auto& tap : kTaps) {
+      const int tx = base_x + tap[0];
+      const int ty = base_y + tap[1];
+      if (tx < 0 || ty < 0 || tx >= map_size_ || ty >= map_size_) {
+        ++lit;
+        continue;
+      }
+      const float occluder = map_[static_cast<std::size_t>(ty) * static_cast<std::size_t>(map_size_) +
+                                  static_cast<std::size_t>(tx)];
+      if (receiver <= occluder) ++lit;
+      if (near_threshold(receiver, occluder, 2e-6f)) uncertain = true;
+    }
+    return lit;
   }
 
   const LightingParamsBlock& params_;

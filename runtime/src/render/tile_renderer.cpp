@@ -1,5 +1,6 @@
 #include "tilelight/tile_renderer.h"
 
+#include "gbuffer_upload.h"
 #include "gpu_index_build.h"
 #include "lighting_interface.h"
 #include "lighting_passes.h"
@@ -40,6 +41,11 @@ void check_size(const Context& context, const RendererOptions& options) {
   check_one("height", options.height, std::min(limits.max_framebuffer_height, limits.max_image_dimension_2d));
 }
 
+TileGrid checked_grid(const Context& context, const RendererOptions& options) {
+  check_size(context, options);
+  return TileGrid::make(options.width, options.height, options.tile_size);
+}
+
 // raw ID -> draw class: the generated LUT, or the identity when drawing raw permutations.
 std::vector<std::uint8_t> draw_classes(bool raw_permutations) {
   const shadergen::Registry& registry = split_second::registry();
@@ -73,6 +79,7 @@ struct TileRenderer::Impl {
   std::unique_ptr<TileClassification> classification;
   std::unique_ptr<LightingPasses> light_passes;
   std::unique_ptr<GpuIndexBuild> gpu_build;
+  std::unique_ptr<GBufferUpload> gbuffer_upload;  // replaces the scene's G-buffer when set
 
   // The CPU path's draw list: one preallocated index buffer and one indirect record per class,
   // host-visible and coherent, written after the tile pass was submitted.
@@ -90,9 +97,8 @@ struct TileRenderer::Impl {
   std::function<void()> before_host_signal;
 
   Impl(const Context& ctx, const Scene& scene, const RendererOptions& opts)
-      : context(ctx), options(opts), grid(TileGrid::make(opts.width, opts.height, opts.tile_size)),
-        samples(ctx.choose_msaa(opts.msaa)), pool(ctx, "tilelight frame") {
-    check_size(ctx, opts);
+      : context(ctx), options(opts), grid(checked_grid(ctx, opts)), samples(ctx.choose_msaa(opts.msaa)),
+        pool(ctx, "tilelight frame") {
     const Camera& camera = scene.camera(opts.camera);
     descriptor_pool = create_descriptor_pool(ctx, 16, "tilelight descriptors");
     targets = std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples,
@@ -152,7 +158,11 @@ struct TileRenderer::Impl {
     frame_queries.write(cmd, "start");
     scene_passes->record_shadow_map(cmd, *targets);
     frame_queries.write(cmd, "shadow");
-    scene_passes->record_gbuffer(cmd, *targets);
+    if (gbuffer_upload) {
+      gbuffer_upload->record(cmd, *targets);
+    } else {
+      scene_passes->record_gbuffer(cmd, *targets);
+    }
     frame_queries.write(cmd, "gbuffer");
     classification->record(cmd);
     frame_queries.write(cmd, "classified");
@@ -311,6 +321,11 @@ std::vector<float> TileRenderer::read_shadow_map() const {
   std::vector<float> depths(bytes.size() / sizeof(float));
   std::memcpy(depths.data(), bytes.data(), depths.size() * sizeof(float));
   return depths;
+}
+
+void TileRenderer::set_gbuffer_override(const GBufferSamples& samples) {
+  impl_->gbuffer_upload = std::make_unique<GBufferUpload>(impl_->context, *impl_->targets, samples,
+                                                          impl_->descriptor_pool.get());
 }
 
 void TileRenderer::set_before_host_signal(std::function<void()> hook) { impl_->before_host_signal = std::move(hook); }

@@ -1,0 +1,72 @@
+#include "gbuffer_upload.h"
+
+#include "descriptors.h"
+#include "tilelight/context.h"
+#include "tilelight/error.h"
+#include "tilelight/pipelines.h"
+
+#include <split_second_shaders.h>
+
+#include <array>
+
+namespace tilelight {
+
+GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& targets, const GBufferSamples& samples,
+                             VkDescriptorPool pool)
+    : sample_count_(samples.samples) {
+  if (!context.features().sample_rate_shading) {
+    throw Error("a synthetic G-buffer needs sample-rate shading, which " + context.device_name() + " lacks");
+  }
+  if (samples.width != targets.extent().width || samples.height != targets.extent().height ||
+      samples.samples != static_cast<std::uint32_t>(targets.samples()) ||
+      samples.values.size() != static_cast<std::size_t>(samples.width) * samples.height * samples.samples * 16) {
+    throw Error("the synthetic G-buffer does not match the frame's size and sample count");
+  }
+  samples_ = Buffer(context, {samples.values.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                              MemoryUse::HostUpload, "synthetic G-buffer samples"});
+  samples_.write_values(std::span<const float>(samples.values));
+
+  const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT,
+                                             nullptr};
+  set_layout_ = create_descriptor_set_layout(context, std::span(&binding, 1), "G-buffer upload set layout");
+  const VkDescriptorSetLayout set_layouts[] = {set_layout_.get()};
+  const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, 16};
+  layout_ = create_pipeline_layout(context, set_layouts, std::span(&push, 1), "G-buffer upload layout");
+  set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "G-buffer upload set");
+  write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, samples_.handle());
+
+  const shadergen::Registry& registry = split_second::registry();
+  GraphicsPipelineDesc desc;
+  desc.layout = layout_.get();
+  desc.render_pass = targets.gbuffer_pass();
+  desc.vertex_spirv = registry.companion("sky_vertex")->shader.spirv;  // a full-screen triangle
+  desc.fragment_spirv = registry.companion("gbuffer_upload")->shader.spirv;
+  desc.samples = targets.samples();
+  desc.color_attachments = 3;
+  desc.depth_test = true;
+  desc.depth_write = true;
+  desc.depth_compare = VK_COMPARE_OP_ALWAYS;
+  desc.name = "G-buffer upload";
+  pipeline_ = create_graphics_pipeline(context, desc);
+}
+
+void GBufferUpload::record(VkCommandBuffer cmd, const RenderTargets& targets) const {
+  std::array<VkClearValue, 4> clears{};
+  clears[3].depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = targets.gbuffer_pass();
+  begin.framebuffer = targets.gbuffer_framebuffer();
+  begin.renderArea = {{0, 0}, targets.extent()};
+  begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
+  begin.pClearValues = clears.data();
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  set_viewport_and_scissor(cmd, targets.extent());
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
+  const std::array<std::uint32_t, 4> size{targets.extent().width, targets.extent().height, sample_count_, 0};
+  vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(size), size.data());
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  vkCmdEndRenderPass(cmd);
+}
+
+}  // namespace tilelight

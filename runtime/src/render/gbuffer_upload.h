@@ -1,0 +1,31 @@
+#pragma once
+// Replaces the scene's G-buffer pass with given sample values (tests: synthetic tiles that
+// reach classes the scene does not produce). Same render pass and targets as the scene pass.
+
+#include "render_targets.h"
+#include "tilelight/buffer.h"
+#include "tilelight/tile_renderer.h"
+#include "tilelight/vk_handles.h"
+
+namespace tilelight {
+
+class Context;
+
+class GBufferUpload {
+ public:
+  // Precondition: `samples` matches the targets' size and sample count, and the device offers
+  // sample-rate shading (checked: tilelight::Error otherwise).
+  GBufferUpload(const Context& context, const RenderTargets& targets, const GBufferSamples& samples,
+                VkDescriptorPool pool);
+  void record(VkCommandBuffer cmd, const RenderTargets& targets) const;
+
+ private:
+  Buffer samples_;
+  std::uint32_t sample_count_;
+  UniqueDescriptorSetLayout set_layout_;
+  UniquePipelineLayout layout_;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  UniquePipeline pipeline_;
+};
+
+}  // namespace tilelight
