@@ -1,5 +1,6 @@
 #include "gbuffer_upload.h"
 
+#include "companion_shaders.h"
 #include "descriptors.h"
 #include "tilelight/context.h"
 #include "tilelight/error.h"
@@ -35,12 +36,11 @@ GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& target
   set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "G-buffer upload set");
   write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, samples_.handle());
 
-  const shadergen::Registry& registry = split_second::registry();
   GraphicsPipelineDesc desc;
   desc.layout = layout_.get();
   desc.render_pass = targets.gbuffer_pass();
-  desc.vertex_spirv = registry.companion("sky_vertex")->shader.spirv;  // a full-screen triangle
-  desc.fragment_spirv = registry.companion("gbuffer_upload")->shader.spirv;
+  desc.vertex_spirv = companion_spirv("sky_vertex");  // a full-screen triangle
+  desc.fragment_spirv = companion_spirv("gbuffer_upload");
   desc.samples = targets.samples();
   desc.color_attachments = 3;
   desc.depth_test = true;
@@ -51,16 +51,7 @@ GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& target
 }
 
 void GBufferUpload::record(VkCommandBuffer cmd, const RenderTargets& targets) const {
-  std::array<VkClearValue, 4> clears{};
-  clears[3].depthStencil = {1.0f, 0};
-  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = targets.gbuffer_pass();
-  begin.framebuffer = targets.gbuffer_framebuffer();
-  begin.renderArea = {{0, 0}, targets.extent()};
-  begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
-  begin.pClearValues = clears.data();
-  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  set_viewport_and_scissor(cmd, targets.extent());
+  targets.begin_gbuffer_pass(cmd);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
   const std::array<std::uint32_t, 4> size{targets.extent().width, targets.extent().height, sample_count_, 0};

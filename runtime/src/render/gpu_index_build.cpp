@@ -1,5 +1,6 @@
 #include "gpu_index_build.h"
 
+#include "companion_shaders.h"
 #include "descriptors.h"
 #include "tilelight/barriers.h"
 #include "tilelight/context.h"
@@ -19,12 +20,6 @@ constexpr std::uint32_t kNoClass = 0xFF;
 constexpr VkDeviceSize kCountersBytes = (3 * kMaxDrawClasses + 1) * sizeof(std::uint32_t);
 constexpr VkDeviceSize kDrawRecordBytes = sizeof(VkDrawIndexedIndirectCommand);
 constexpr std::uint32_t kBlocksPerGroup = 128;  // local_size_x of tile_rects.comp
-
-std::span<const std::uint32_t> companion_spirv(std::string_view name) {
-  const shadergen::CompanionShader* shader = split_second::registry().companion(name);
-  if (shader == nullptr) throw Error("the shader registry has no companion shader '" + std::string(name) + "'");
-  return shader->shader.spirv;
-}
 
 }  // namespace
 

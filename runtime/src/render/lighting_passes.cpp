@@ -1,5 +1,6 @@
 #include "lighting_passes.h"
 
+#include "companion_shaders.h"
 #include "tilelight/barriers.h"
 #include "tilelight/context.h"
 #include "tilelight/error.h"
@@ -19,12 +20,10 @@ constexpr VkDeviceSize kDrawRecordBytes = sizeof(VkDrawIndexedIndirectCommand);
 UniquePipeline create_light_pipeline(const Context& context, const RenderTargets& targets,
                                      const LightingInterface& lighting, std::span<const std::uint32_t> fragment,
                                      std::string name) {
-  const shadergen::CompanionShader* tile = split_second::registry().companion("tile");
-  if (tile == nullptr) throw Error("the shader registry has no companion shader 'tile'");
   GraphicsPipelineDesc desc;
   desc.layout = lighting.lighting_layout();
   desc.render_pass = targets.light_pass();
-  desc.vertex_spirv = tile->shader.spirv;
+  desc.vertex_spirv = companion_spirv("tile");
   desc.fragment_spirv = fragment;
   desc.vertex_bindings = {{0, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
   desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}};

@@ -2,6 +2,7 @@
 
 #include "tilelight/context.h"
 #include "tilelight/error.h"
+#include "tilelight/pipelines.h"
 
 #include <array>
 #include <string>
@@ -136,6 +137,21 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
       create_framebuffer(context, light_pass_.get(), classified_views, extent, "light target (classified)");
   const std::array<VkImageView, 1> naive_views{naive_.view()};
   naive_framebuffer_ = create_framebuffer(context, light_pass_.get(), naive_views, extent, "light target (naive)");
+}
+
+void RenderTargets::begin_gbuffer_pass(VkCommandBuffer cmd) const {
+  // RT1 cleared to motion ID 0 reads as sky; the sky pass (or the upload) overwrites every
+  // pixel anyway, so the colour clear values only matter for debugging.
+  std::array<VkClearValue, 4> clears{};
+  clears[3].depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = gbuffer_pass_.get();
+  begin.framebuffer = gbuffer_framebuffer_.get();
+  begin.renderArea = {{0, 0}, extent_};
+  begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
+  begin.pClearValues = clears.data();
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  set_viewport_and_scissor(cmd, extent_);
 }
 
 }  // namespace tilelight

@@ -50,6 +50,9 @@ class RenderTargets {
   VkFramebuffer naive_framebuffer() const { return naive_framebuffer_.get(); }
   VkExtent2D shadow_extent() const { return {shadow_map_size_, shadow_map_size_}; }
 
+  // Begins the G-buffer render pass (every target cleared; depth to 1) and sets the viewport.
+  void begin_gbuffer_pass(VkCommandBuffer cmd) const;
+
  private:
   VkExtent2D extent_;
   VkSampleCountFlagBits samples_;

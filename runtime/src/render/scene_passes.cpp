@@ -1,5 +1,6 @@
 #include "scene_passes.h"
 
+#include "companion_shaders.h"
 #include "descriptors.h"
 #include "tilelight/context.h"
 #include "tilelight/error.h"
@@ -12,12 +13,6 @@
 
 namespace tilelight {
 namespace {
-
-std::span<const std::uint32_t> companion_spirv(std::string_view name) {
-  const shadergen::CompanionShader* shader = split_second::registry().companion(name);
-  if (shader == nullptr) throw Error("the shader registry has no companion shader '" + std::string(name) + "'");
-  return shader->shader.spirv;
-}
 
 template <typename T>
 Buffer upload_buffer(const Context& context, std::span<const T> data, VkBufferUsageFlags usage, std::string name) {
@@ -143,18 +138,7 @@ void ScenePasses::record_shadow_map(VkCommandBuffer cmd, const RenderTargets& ta
 }
 
 void ScenePasses::record_gbuffer(VkCommandBuffer cmd, const RenderTargets& targets) const {
-  // RT1 cleared to motion ID 0 would read as sky; the sky pass overwrites every uncovered
-  // pixel anyway, so the clear values only matter for debugging.
-  std::array<VkClearValue, 4> clears{};
-  clears[3].depthStencil = {1.0f, 0};
-  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = targets.gbuffer_pass();
-  begin.framebuffer = targets.gbuffer_framebuffer();
-  begin.renderArea = {{0, 0}, targets.extent()};
-  begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
-  begin.pClearValues = clears.data();
-  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  set_viewport_and_scissor(cmd, targets.extent());
+  targets.begin_gbuffer_pass(cmd);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, gbuffer_pipeline_.get());
   draw_batches(cmd);

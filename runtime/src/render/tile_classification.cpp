@@ -1,5 +1,6 @@
 #include "tile_classification.h"
 
+#include "companion_shaders.h"
 #include "descriptors.h"
 #include "tilelight/barriers.h"
 #include "tilelight/context.h"
@@ -12,12 +13,6 @@
 
 namespace tilelight {
 namespace {
-
-std::span<const std::uint32_t> companion_spirv(std::string_view name) {
-  const shadergen::CompanionShader* shader = split_second::registry().companion(name);
-  if (shader == nullptr) throw Error("the shader registry has no companion shader '" + std::string(name) + "'");
-  return shader->shader.spirv;
-}
 
 // The raw bit layout comes from the generated registry (the domain spec), not from the shader.
 SpecConstants classification_constants(std::uint32_t tile_size) {

@@ -254,13 +254,17 @@ struct TileRenderer::Impl {
     }
   }
 
+  // One query-pool read per pool; stamps are in the order they were written.
   void read_timings(FrameTimings& t) const {
-    t.shadow_map = frame_queries.elapsed_ms("start", "shadow");
-    t.gbuffer = frame_queries.elapsed_ms("shadow", "gbuffer");
-    t.classification = frame_queries.elapsed_ms("gbuffer", "classified");
-    if (gpu_build) t.index_build_gpu = frame_queries.elapsed_ms("classified", "built");
-    t.tiled_light = tile_queries.elapsed_ms("start", "tiled");
-    t.naive_light = tile_queries.elapsed_ms("tiled", "naive");
+    const std::vector<Timestamp> frame_stamps = frame_queries.read();  // start shadow gbuffer classified [built]
+    const std::vector<Timestamp> tile_stamps = tile_queries.read();    // start tiled naive
+    auto between = [](const std::vector<Timestamp>& stamps, std::size_t i) { return stamps[i + 1].ms - stamps[i].ms; };
+    t.shadow_map = between(frame_stamps, 0);
+    t.gbuffer = between(frame_stamps, 1);
+    t.classification = between(frame_stamps, 2);
+    if (gpu_build) t.index_build_gpu = between(frame_stamps, 3);
+    t.tiled_light = between(tile_stamps, 0);
+    t.naive_light = between(tile_stamps, 1);
   }
 };
 
