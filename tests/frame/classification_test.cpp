@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace tilelight::test {
 namespace {
 
@@ -60,6 +62,46 @@ TEST_F(Classification, GpuMatchesCpuReferenceOnTheDefaultCamera) {
 TEST_F(Classification, GpuMatchesCpuReferenceWithPartialTiles) {
   auto renderer = render("low", 203, 117);
   expect_matches_reference(*renderer);
+}
+
+// The classifier trusts the materials' MSAA-edge bit instead of comparing samples
+// (gbuffer.glsl). That is sound only if every pixel whose samples differ in any stored value
+// carries the bit on some sample; check it on every pixel of real frames. The converse need not
+// hold (a mesh's inner edges give partial fragments with equal values), which costs only time.
+struct EdgeBitCount {
+  std::size_t differing = 0, flagged = 0, missed = 0;
+  std::string first_missed;
+};
+
+EdgeBitCount count_edge_bits(const GBufferSamples& g) {
+  const auto edge_bit = [](const float* sample) {
+    return (static_cast<std::uint32_t>(std::lround(sample[7] * 255.0f)) & 0x80u) != 0;
+  };
+  EdgeBitCount count;
+  for (std::uint32_t y = 0; y < g.height; ++y) {
+    for (std::uint32_t x = 0; x < g.width; ++x) {
+      bool differ = false, bit = edge_bit(g.at(x, y, 0));
+      for (std::uint32_t s = 1; s < g.samples; ++s) {
+        bit = bit || edge_bit(g.at(x, y, s));
+        for (int i = 0; i < 13; ++i) differ = differ || !(g.at(x, y, 0)[i] == g.at(x, y, s)[i]);
+      }
+      count.differing += differ;
+      count.flagged += bit;
+      if (differ && !bit && count.missed++ == 0) count.first_missed = fmt::format("pixel ({}, {})", x, y);
+    }
+  }
+  return count;
+}
+
+TEST_F(Classification, EdgeBitsCoverEveryPixelWithDifferingSamples) {
+  std::size_t differing = 0;
+  for (const char* camera : {"default", "low", "shadow"}) {
+    const EdgeBitCount count = count_edge_bits(render(camera, 320, 180)->read_gbuffer());
+    EXPECT_EQ(count.missed, 0u) << camera << ": " << count.first_missed
+                                << " has differing samples but no MSAA-edge bit";
+    differing += count.differing;
+  }
+  EXPECT_GT(differing, 0u) << "no frame has an MSAA edge: the check proves nothing";
 }
 
 TEST_F(Classification, DefaultCameraHasAllSevenProperties) {

@@ -65,6 +65,16 @@ std::array<float, 16> sky_pixel() {
   return v;
 }
 
+// What a material does for a partially covered pixel (gbuffer.glsl): the MSAA-edge bit (bit 7 of
+// the motion byte, stored as byte / 255) on every sample.
+void mark_msaa_edge(GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
+  for (std::uint32_t s = 0; s < g.samples; ++s) {
+    float* v = g.values.data() + ((static_cast<std::size_t>(y) * g.width + x) * g.samples + s) * 16;
+    const auto byte = static_cast<std::uint32_t>(std::lround(v[7] * 255.0f)) | 0x80u;
+    v[7] = static_cast<float>(byte) / 255.0f;
+  }
+}
+
 GBufferSamples edit_tiles(const GBufferSamples& source, const TileGrid& grid, const LightingParamsBlock& params,
                           const std::vector<std::uint8_t>& raw_ids) {
   GBufferSamples g = source;
@@ -79,6 +89,7 @@ GBufferSamples edit_tiles(const GBufferSamples& source, const TileGrid& grid, co
       if (edit & kEdge) {  // sample 1 of one pixel gets a different albedo: an MSAA edge
         float* v = g.values.data() + ((static_cast<std::size_t>(y + 1) * g.width + x) * g.samples + 1) * 16;
         v[1] = v[1] >= 0.5f ? v[1] - 40.0f / 255.0f : v[1] + 40.0f / 255.0f;
+        mark_msaa_edge(g, x, y + 1);
       }
     }
   }

@@ -1,12 +1,29 @@
 #version 450
 // classify_tiles.comp -- screen-space tile classification (Split/Second, Sections 4.4-4.6).
 //
-// One work group classifies one block of 4x4 tiles; each invocation covers TILE_SIZE/4 x
-// TILE_SIZE/4 pixels of one tile. Every decision calls the same include functions as
-// lighting.frag (sun_faces, sun_shadow_lit_taps, shadow_fade_active, light_scattering_active,
-// gbuffer_samples_equal), so a tile's ID admits exactly what its pixels need. IDs are written
-// as bytes in the blocked layout of Fig. 4.3: block b holds 16 bytes, one uint32 per block row
-// (byte i = tile i of the row); tiles beyond the frame's partial edge blocks get 0xFF.
+// One invocation classifies one row of a block of 4x4 tiles (Fig. 4.3), tile by tile, and
+// writes the row's four IDs as one uint32. Every decision calls the same include functions as
+// lighting.frag (sun_faces, sun_shadow_lookup / sun_shadow_lit_taps, shadow_fade_active,
+// light_scattering_active), so a tile's ID admits exactly what its pixels need. IDs are bytes
+// in the blocked layout: block b holds 16 bytes, one uint32 per block row (byte i = tile i of
+// the row); tiles beyond the frame's partial edge blocks get 0xFF.
+//
+// The cost is kept far below the lighting's (the point of the technique):
+// - no shared memory, atomics or barriers: on a CPU driver (lavapipe) their bookkeeping alone
+//   costs a third of the full lighting pass; the SIMD lanes are simply rows classified side
+//   by side;
+// - MSAA edges come from the per-sample edge bit the materials write (gbuffer.glsl): one fetch
+//   of one target per sample instead of comparing every target;
+// - the shadow type of a tile is settled, where possible, from bounds instead of 8 taps per
+//   sample. The pass over the tile's pixels collects the rectangle of shadow-map texels that
+//   any tap of any sun-facing sample can touch and the range of the samples' receiver depths;
+//   then the stored depths over that rectangle are read, and
+//     every stored depth >= every receiver depth  -> every tap lit: LIT;
+//     every stored depth <  every receiver depth, rectangle inside the map -> SHADOWED;
+//     otherwise (a shadow boundary, or a rectangle too large to read) -> count the taps of
+//     every sample, as the lighting does.
+//   Both shortcuts are implications of the per-tap comparison, so the IDs are exactly the
+//   ones the taps would give.
 #extension GL_GOOGLE_include_directive : require
 #include "gbuffer.glsl"
 #include "light_scattering.glsl"
@@ -17,7 +34,7 @@
 #include "world_position.glsl"
 
 layout(constant_id = 0) const uint TILE_SIZE = 4u; // pixels; 4, 8 or 16
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = 64) in;
 
 layout(set = 1, binding = 0, std430) writeonly buffer TileIds {
     uint block_rows[]; // 4 per block
@@ -27,9 +44,52 @@ layout(push_constant) uniform ClassifyPush {
     uvec4 grid; // tiles_x, tiles_y, blocks_x, blocks_y
 } push;
 
-shared uint tile_flags[16];
+// A tile whose tap rectangle holds more texels than this counts its taps instead: reading the
+// rectangle would cost about as much as the taps (8 per sample).
+const int MAX_BOUNDED_TEXELS = 48;
 
-uint classify_sample(ivec2 pixel, int sample_index)
+const int INT_MAX = 0x7FFFFFFF;
+const int INT_MIN = -INT_MAX - 1;
+
+// An unsigned key with the order of the float (for every non-NaN value; -0 is keyed as +0,
+// because the float comparison finds them equal).
+uint order_key(float value)
+{
+    uint bits = floatBitsToUint(value);
+    if (bits == 0x80000000u) {
+        bits = 0u;
+    }
+    return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
+}
+
+// What one invocation learns about the sun-facing samples of its pixels.
+struct ShadowBounds {
+    bool  any;            // some sun-facing sample inside the sun's volume
+    ivec2 rect_min;       // tap rectangle, in texels
+    ivec2 rect_max;
+    uint  receiver_min;   // order keys of the biased receiver depths
+    uint  receiver_max;
+};
+
+ShadowBounds no_shadow_bounds()
+{
+    return ShadowBounds(false, ivec2(INT_MAX), ivec2(INT_MIN), 0xFFFFFFFFu, 0u);
+}
+
+void add_to_bounds(inout ShadowBounds bounds, SunShadowLookup lookup)
+{
+    bounds.any = true;
+    bounds.rect_min = min(bounds.rect_min, lookup.base + SUN_SHADOW_TAP_MIN_OFFSET);
+    bounds.rect_max = max(bounds.rect_max, lookup.base + SUN_SHADOW_TAP_MAX_OFFSET);
+    uint key = order_key(lookup.receiver_depth);
+    bounds.receiver_min = min(bounds.receiver_min, key);
+    bounds.receiver_max = max(bounds.receiver_max, key);
+}
+
+// Flags of one sample, except the shadow type: a sun-facing sample inside the sun's volume is
+// added to `bounds` instead; one outside it has every tap lit; one whose shadow is faded out
+// completely has no say in the shadow type.
+uint classify_sample(ivec2 pixel, int sample_index, inout ShadowBounds bounds)
 {
     GSample g = gbuffer_load(pixel, sample_index);
     if (g.is_sky) {
@@ -42,69 +102,150 @@ uint classify_sample(ivec2 pixel, int sample_index)
     if (light_scattering_active(view_depth)) flags |= TILE_FLAG_SCATTERING;
     if (sun_faces(g.normal)) {
         flags |= TILE_FLAG_SUN;
-        uint lit = sun_shadow_lit_taps(world_pos);
-        flags |= lit == 0u ? TILE_FLAG_SHADOWED
-               : lit == SUN_SHADOW_TAP_COUNT ? TILE_FLAG_LIT : TILE_FLAG_PARTIAL;
+        if (shadow_fade_complete(view_depth)) {
+            return flags; // lit alike whatever the tile's shadow type
+        }
+        SunShadowLookup lookup = sun_shadow_lookup(world_pos);
+        if (lookup.in_volume) {
+            add_to_bounds(bounds, lookup);
+        } else {
+            flags |= TILE_FLAG_LIT;
+        }
     }
     return flags;
 }
 
-uint classify_pixel(ivec2 pixel)
+bool pixel_is_edge(ivec2 pixel, int samples)
 {
-    int samples = gbuffer_sample_count();
-    bool edge = gbuffer_load_msaa_edge_bit(pixel, 0);
-    for (int s = 1; s < samples && !edge; ++s) {
-        edge = !gbuffer_samples_equal(pixel, 0, s);
+    bool edge = false;
+    for (int s = 0; s < samples; ++s) {
+        edge = edge || gbuffer_load_msaa_edge_bit(pixel, s);
     }
-    // Equal samples classify alike: sample 0 speaks for a non-edge pixel, exactly as the
-    // lighting shades only sample 0 of it.
-    uint flags = edge ? TILE_FLAG_EDGE : 0u;
-    int classified = edge ? samples : 1;
+    return edge;
+}
+
+// The samples that are shaded: all of an edge pixel, else sample 0, which speaks for its equal
+// siblings exactly as the lighting shades only sample 0 of such a pixel.
+int classified_samples(ivec2 pixel, int samples)
+{
+    return pixel_is_edge(pixel, samples) ? samples : 1;
+}
+
+uint classify_pixel(ivec2 pixel, int samples, inout ShadowBounds bounds)
+{
+    int classified = classified_samples(pixel, samples);
+    uint flags = classified > 1 ? TILE_FLAG_EDGE : 0u;
     for (int s = 0; s < classified; ++s) {
-        flags |= classify_sample(pixel, s);
+        flags |= classify_sample(pixel, s, bounds);
     }
     return flags;
+}
+
+// The exact shadow type of one pixel's sun-facing samples, from their taps.
+uint count_pixel_taps(ivec2 pixel, int samples)
+{
+    int classified = classified_samples(pixel, samples);
+    uint flags = 0u;
+    for (int s = 0; s < classified; ++s) {
+        GSample g = gbuffer_load(pixel, s);
+        if (g.is_sky || !sun_faces(g.normal)) {
+            continue;
+        }
+        vec3 world_pos = world_position_from_depth(pixel, g.depth);
+        if (shadow_fade_complete(linear_view_depth(world_pos))) {
+            continue;
+        }
+        SunShadowLookup lookup = sun_shadow_lookup(world_pos);
+        if (!lookup.in_volume) {
+            continue; // already flagged LIT in phase 1
+        }
+        uint lit = sun_shadow_lit_taps(lookup);
+        flags |= lit == 0u ? TILE_FLAG_SHADOWED : lit == SUN_SHADOW_TAP_COUNT ? TILE_FLAG_LIT : TILE_FLAG_PARTIAL;
+    }
+    return flags;
+}
+
+// The part of the tap rectangle inside the map; empty when lo > hi.
+void clipped_rect(ShadowBounds bounds, out ivec2 lo, out ivec2 hi)
+{
+    lo = max(bounds.rect_min, ivec2(0));
+    hi = min(bounds.rect_max, ivec2(params.shadow_map_size.xy) - 1);
+}
+
+// LIT or SHADOWED when the stored depths under the tap rectangle settle the shadow type of every
+// sample in `bounds`; 0 when only the taps can tell (a shadow boundary, or a large rectangle).
+uint shadow_type_from_bounds(ShadowBounds bounds)
+{
+    ivec2 lo, hi;
+    clipped_rect(bounds, lo, hi);
+    if (any(greaterThan(lo, hi))) {
+        return TILE_FLAG_LIT; // every tap outside the map, where nothing was rendered
+    }
+    ivec2 extent = hi - lo + 1;
+    if (extent.x * extent.y > MAX_BOUNDED_TEXELS) {
+        return 0u;
+    }
+    uint stored_min = 0xFFFFFFFFu;
+    uint stored_max = 0u;
+    for (int y = lo.y; y <= hi.y; ++y) {
+        for (int x = lo.x; x <= hi.x; ++x) {
+            uint key = order_key(sun_shadow_stored_depth(ivec2(x, y)));
+            stored_min = min(stored_min, key);
+            stored_max = max(stored_max, key);
+        }
+    }
+    // Taps outside the map are lit, so they never stop LIT; SHADOWED needs every tap inside.
+    if (bounds.receiver_max <= stored_min) {
+        return TILE_FLAG_LIT;
+    }
+    bool inside_map = all(equal(lo, bounds.rect_min)) && all(equal(hi, bounds.rect_max));
+    if (inside_map && bounds.receiver_min > stored_max) {
+        return TILE_FLAG_SHADOWED;
+    }
+    return 0u;
+}
+
+// The raw ID of `tile`, which lies inside the grid.
+uint classify_tile(uvec2 tile, ivec2 size, int samples)
+{
+    ivec2 first_pixel = ivec2(tile * TILE_SIZE);
+    ivec2 end_pixel = min(first_pixel + int(TILE_SIZE), size);
+    uint flags = 0u;
+    ShadowBounds bounds = no_shadow_bounds();
+    for (int y = first_pixel.y; y < end_pixel.y; ++y) {
+        for (int x = first_pixel.x; x < end_pixel.x; ++x) {
+            flags |= classify_pixel(ivec2(x, y), samples, bounds);
+        }
+    }
+    if (bounds.any) {
+        uint shadow = shadow_type_from_bounds(bounds);
+        if (shadow == 0u) {
+            for (int y = first_pixel.y; y < end_pixel.y; ++y) {
+                for (int x = first_pixel.x; x < end_pixel.x; ++x) {
+                    shadow |= count_pixel_taps(ivec2(x, y), samples);
+                }
+            }
+        }
+        flags |= shadow;
+    }
+    return raw_id_from_tile_flags(flags);
 }
 
 void main()
 {
-    uint local_index = gl_LocalInvocationIndex;
-    if (local_index < 16u) {
-        tile_flags[local_index] = 0u;
+    uint block = gl_GlobalInvocationID.x / 4u;
+    if (block >= push.grid.z * push.grid.w) {
+        return;
     }
-    barrier();
-
-    const uint span = TILE_SIZE / 4u; // pixels per invocation along each axis
-    uvec2 block_origin = gl_WorkGroupID.xy * (4u * TILE_SIZE);
-    uvec2 first_pixel = block_origin + gl_LocalInvocationID.xy * span;
+    uint row = gl_GlobalInvocationID.x % 4u;
+    uvec2 first_tile = uvec2(block % push.grid.z, block / push.grid.z) * 4u + uvec2(0u, row);
     ivec2 size = ivec2(params.viewport.xy);
-    uint flags = 0u;
-    for (uint y = 0u; y < span; ++y) {
-        for (uint x = 0u; x < span; ++x) {
-            ivec2 pixel = ivec2(first_pixel + uvec2(x, y));
-            if (pixel.x < size.x && pixel.y < size.y) {
-                flags |= classify_pixel(pixel);
-            }
-        }
+    int samples = gbuffer_sample_count();
+    uint packed_row = 0u;
+    for (uint i = 0u; i < 4u; ++i) {
+        uvec2 tile = first_tile + uvec2(i, 0u);
+        uint id = all(lessThan(tile, push.grid.xy)) ? classify_tile(tile, size, samples) : 0xFFu;
+        packed_row |= id << (8u * i);
     }
-    uint tile_in_block = (gl_LocalInvocationID.y / 4u) * 4u + gl_LocalInvocationID.x / 4u;
-    if (flags != 0u) {
-        atomicOr(tile_flags[tile_in_block], flags);
-    }
-    barrier();
-
-    if (local_index < 4u) {
-        uint row = local_index;
-        uvec2 first_tile = gl_WorkGroupID.xy * 4u + uvec2(0u, row);
-        uint packed_row = 0u;
-        for (uint i = 0u; i < 4u; ++i) {
-            uint id = 0xFFu;
-            if (first_tile.x + i < push.grid.x && first_tile.y < push.grid.y) {
-                id = raw_id_from_tile_flags(tile_flags[row * 4u + i]);
-            }
-            packed_row |= id << (8u * i);
-        }
-        uint block = gl_WorkGroupID.y * push.grid.z + gl_WorkGroupID.x;
-        tile_ids.block_rows[block * 4u + row] = packed_row;
-    }
+    tile_ids.block_rows[block * 4u + row] = packed_row;
 }

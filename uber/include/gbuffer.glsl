@@ -13,19 +13,29 @@
 //   depth   D32 (hardware depth, 0..1), multisampled like the colour targets
 //
 // Motion byte: bits 0..6 are the motion ID (0 = sky), bit 7 is Split/Second's
-// per-pixel MSAA-edge bit. The runtime may leave the edge bit clear; the
-// classifier then relies on comparing samples (gbuffer_samples_equal).
+// per-sample MSAA-edge bit. A material shader sets it in every sample it writes
+// when its fragment covers only part of the pixel (gbuffer_fragment_is_partial).
+// The classifier ORs the bit over a pixel's samples instead of comparing them:
+// because each fragment stores one depth in all its samples (below), two
+// fragments that both cover the whole pixel win the depth test on the same
+// samples, so a pixel whose samples differ always keeps a sample from a partial
+// fragment. The converse does not hold (two partial fragments may store equal
+// values), which is safe: the MSAA_EDGE permutation's running mean of equal
+// samples is exactly the colour of sample 0.
 //
 // Per-pixel depth: a non-edge pixel must have bit-identical samples, because
 // the lighting shades only sample 0 of it. Colour targets are written once per
 // pixel, but hardware depth is interpolated per sample, so a sloped surface
-// would give every sample a different depth. Scene material shaders should
-// therefore write `gl_FragDepth = gl_FragCoord.z;` (the pixel-centre depth),
-// which stores one depth for all covered samples of the pixel.
+// would give every sample a different depth. Scene material shaders therefore
+// write `gl_FragDepth = gl_FragCoord.z;` (the pixel-centre depth), which stores
+// one depth for all covered samples of the pixel; the edge-bit argument above
+// rests on it too.
 //
-// Define GBUFFER_ENCODE_ONLY before including this file in a material shader:
-// it then declares no descriptors (the lighting bindings would collide with the
-// material's own), only the layout and the encode/decode functions.
+// Define GBUFFER_ENCODE_ONLY before including this file in a material
+// (fragment) shader: it then declares no descriptors (the lighting bindings
+// would collide with the material's own), only the layout, the encode/decode
+// functions and gbuffer_fragment_is_partial(), whose GBUFFER_SAMPLES is
+// specialization constant 0 of the material shader.
 
 #ifndef UBER_GBUFFER_GLSL
 #define UBER_GBUFFER_GLSL
@@ -72,21 +82,29 @@ vec4 gbuffer_encode_rt1(vec3 normal, uint motion_id, bool msaa_edge)
     return vec4(normal, gbuffer_pack_motion_byte(motion_id, msaa_edge));
 }
 
-vec4 gbuffer_encode_rt1(vec3 normal, uint motion_id)
-{
-    return gbuffer_encode_rt1(normal, motion_id, false);
-}
-
 // Sky: prelit carries the final sky colour; motion ID 0 marks it.
-vec4 gbuffer_encode_sky_rt1()
+vec4 gbuffer_encode_sky_rt1(bool msaa_edge)
 {
-    return gbuffer_encode_rt1(vec3(0.0), GBUFFER_SKY_MOTION_ID, false);
+    return gbuffer_encode_rt1(vec3(0.0), GBUFFER_SKY_MOTION_ID, msaa_edge);
 }
 
 vec4 gbuffer_encode_rt2(vec3 prelit, float spec_power)
 {
     return vec4(prelit, spec_power);
 }
+
+#ifdef GBUFFER_ENCODE_ONLY
+// Samples per pixel of the G-buffer being written; the runtime specialises it.
+layout(constant_id = 0) const uint GBUFFER_SAMPLES = 1u;
+
+// True when this fragment covers only some of its pixel's samples: the value of
+// the MSAA-edge bit for every sample it writes. Fragment stage only.
+bool gbuffer_fragment_is_partial()
+{
+    uint all_samples = (1u << GBUFFER_SAMPLES) - 1u;
+    return (uint(gl_SampleMaskIn[0]) & all_samples) != all_samples;
+}
+#endif
 
 // ---------------------------------------------------------------------------
 // Decoding (pure: usable on values from any source, e.g. in round-trip tests).
@@ -138,22 +156,6 @@ GSample gbuffer_load(ivec2 pixel, int sample_index)
 bool gbuffer_load_msaa_edge_bit(ivec2 pixel, int sample_index)
 {
     return gbuffer_decode_msaa_edge_bit(texelFetch(gbuffer_normal_motion, pixel, sample_index));
-}
-
-// True when two samples of a pixel hold identical stored values in every
-// target. Shading is a function of the stored values and the pixel centre
-// only, so equal samples shade equally: this is the precise meaning of
-// "not an MSAA edge" that lets lighting.frag shade sample 0 alone. A NaN never
-// compares equal, which errs on the safe (edge) side.
-bool gbuffer_samples_equal(ivec2 pixel, int sample_a, int sample_b)
-{
-    return all(equal(texelFetch(gbuffer_albedo_spec, pixel, sample_a),
-                     texelFetch(gbuffer_albedo_spec, pixel, sample_b)))
-        && all(equal(texelFetch(gbuffer_normal_motion, pixel, sample_a),
-                     texelFetch(gbuffer_normal_motion, pixel, sample_b)))
-        && all(equal(texelFetch(gbuffer_prelit_power, pixel, sample_a),
-                     texelFetch(gbuffer_prelit_power, pixel, sample_b)))
-        && texelFetch(gbuffer_depth, pixel, sample_a).r == texelFetch(gbuffer_depth, pixel, sample_b).r;
 }
 
 #endif // GBUFFER_ENCODE_ONLY

@@ -32,6 +32,14 @@ float shadow_fade_factor(float view_depth)
 // permutations rely on, with or without fused multiply-add: fade 0 gives
 // shadow, shadow 1 gives 1, shadow 0 gives fade. `precise` stops the driver
 // from re-deriving it as a*(1-t) + b*t, which is not exact at those points.
+// True when the shadow is faded out completely: shadow_fade_apply() then returns exactly 1.0
+// for every PCF factor k/8 (1 - k/8 and k/8 + (1 - k/8) are exact), so no shadow type can change
+// the sample's colour and the classifier leaves it out when it picks one.
+bool shadow_fade_complete(float view_depth)
+{
+    return shadow_fade_factor(view_depth) >= 1.0;
+}
+
 float shadow_fade_apply(float shadow, float view_depth)
 {
     precise float faded = shadow + (1.0 - shadow) * shadow_fade_factor(view_depth);

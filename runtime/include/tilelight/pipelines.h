@@ -58,6 +58,7 @@ struct GraphicsPipelineDesc {
   VkRenderPass render_pass = VK_NULL_HANDLE;
   std::span<const std::uint32_t> vertex_spirv;
   std::span<const std::uint32_t> fragment_spirv;  // empty: depth-only pipeline
+  SpecConstants fragment_constants;                 // specialisation of the fragment stage
   std::vector<VkVertexInputBindingDescription> vertex_bindings;
   std::vector<VkVertexInputAttributeDescription> vertex_attributes;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;

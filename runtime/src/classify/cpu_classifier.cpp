@@ -45,14 +45,6 @@ struct Sample {
   }
 };
 
-// gbuffer_samples_equal(): every stored value equal (a NaN never is).
-bool samples_equal(const Sample& a, const Sample& b) {
-  for (int i = 0; i < 13; ++i) {
-    if (!(a.v[i] == b.v[i])) return false;
-  }
-  return true;
-}
-
 glm::vec4 multiply(const glm::mat4& m, const glm::vec4& v) {
   glm::vec4 r;
   for (int row = 0; row < 4; ++row) {
@@ -95,7 +87,14 @@ class SampleClassifier {
     const bool faces = n_dot_l > 0.0f;  // NaN: not facing
     const bool faces_uncertain = std::fabs(n_dot_l) <= 1e-5f;
     f.add(kSun, faces, faces_uncertain);
-    if (faces || faces_uncertain) add_shadow(pos, f, faces_uncertain);
+    // shadow_fade_complete(): a completely faded shadow has no say in the tile's shadow type.
+    const float fade = (view_depth - params_.distances.x) * params_.distances.y;
+    const bool faded = fade >= 1.0f;
+    const bool fade_uncertain = near_threshold(view_depth, params_.distances.x + 1.0f / params_.distances.y,
+                                               depth_margin);
+    if ((faces || faces_uncertain) && (!faded || fade_uncertain)) {
+      add_shadow(pos, f, faces_uncertain || fade_uncertain);
+    }
     return f;
   }
 
@@ -165,9 +164,9 @@ class SampleClassifier {
 };
 
 Flags classify_pixel(const SampleClassifier& classifier, const GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
-  const Sample first{g.at(x, y, 0)};
-  bool edge = first.edge_bit();
-  for (std::uint32_t s = 1; s < g.samples && !edge; ++s) edge = !samples_equal(first, Sample{g.at(x, y, s)});
+  // The MSAA-edge bit of any sample (gbuffer.glsl: materials set it on partial coverage).
+  bool edge = false;
+  for (std::uint32_t s = 0; s < g.samples; ++s) edge = edge || Sample{g.at(x, y, s)}.edge_bit();
   Flags f;
   f.add(kEdge, edge, false);
   const std::uint32_t classified = edge ? g.samples : 1;

@@ -104,6 +104,7 @@ UniquePipeline create_compute_pipeline(const Context& context, VkPipelineLayout 
 UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPipelineDesc& desc) {
   const UniqueShaderModule vertex = create_shader_module(context, desc.vertex_spirv, desc.name + " (vertex)");
   UniqueShaderModule fragment;
+  SpecConstants fragment_constants = desc.fragment_constants;  // info() points into it
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT,
                vertex.get(), "main", nullptr};
@@ -111,7 +112,7 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
   if (!desc.fragment_spirv.empty()) {
     fragment = create_shader_module(context, desc.fragment_spirv, desc.name + " (fragment)");
     stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT,
-                 fragment.get(), "main", nullptr};
+                 fragment.get(), "main", fragment_constants.info()};
     stage_count = 2;
   }
 

@@ -73,6 +73,7 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   gbuffer.vertex_bindings = scene_bindings();
   gbuffer.vertex_attributes = scene_attributes();
   gbuffer.samples = targets.samples();
+  gbuffer.fragment_constants.set(0, static_cast<std::uint32_t>(targets.samples()));  // GBUFFER_SAMPLES
   gbuffer.color_attachments = 3;
   gbuffer.depth_test = true;
   gbuffer.depth_write = true;
@@ -85,6 +86,7 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   sky.vertex_spirv = companion_spirv("sky_vertex");
   sky.fragment_spirv = companion_spirv("sky");
   sky.samples = targets.samples();
+  sky.fragment_constants.set(0, static_cast<std::uint32_t>(targets.samples()));  // GBUFFER_SAMPLES
   sky.color_attachments = 3;
   sky.depth_test = true;
   sky.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;

@@ -53,7 +53,10 @@ void TileClassification::record(VkCommandBuffer cmd) const {
                           nullptr);
   const std::array<std::uint32_t, 4> push{grid_.tiles_x, grid_.tiles_y, grid_.blocks_x, grid_.blocks_y};
   vkCmdPushConstants(cmd, lighting_->compute_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), push.data());
-  vkCmdDispatch(cmd, grid_.blocks_x, grid_.blocks_y, 1);
+  // One invocation per block row, 64 per work group (classify_tiles.comp).
+  constexpr std::uint32_t kRowsPerGroup = 64;
+  const std::uint32_t block_rows = grid_.blocks_x * grid_.blocks_y * 4;
+  vkCmdDispatch(cmd, (block_rows + kRowsPerGroup - 1) / kRowsPerGroup, 1, 1);
 
   buffer_barrier(cmd, ids_.handle(), {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
                  {VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
