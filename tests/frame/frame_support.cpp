@@ -40,4 +40,32 @@ std::set<std::uint32_t> optimised_ids_of(const std::vector<std::uint8_t>& raw_id
   return ids;
 }
 
+ReferenceComparison compare_with_reference(const std::vector<std::uint8_t>& gpu,
+                                           const ReferenceClassification& cpu, std::uint32_t tiles_x) {
+  namespace bit = split_second::raw_bit;
+  const std::uint32_t shadow_bits = bit::SHADOW_SOLID | bit::SHADOW_SOFT;
+  ReferenceComparison result;
+  for (std::size_t i = 0; i < gpu.size() && i < cpu.raw_ids.size(); ++i) {
+    const std::uint32_t cpu_id = cpu.raw_ids[i];
+    if (cpu.uncertain_bits[i] != 0) ++result.uncertain_tiles;
+    std::uint32_t expected = cpu_id;
+    const bool settled_by_taps = (cpu_id & bit::SUN_LIGHT) != 0 && (cpu_id & shadow_bits) != bit::SHADOW_SOFT;
+    if (settled_by_taps && (gpu[i] & shadow_bits) == bit::SHADOW_SOFT) {
+      expected = (expected & ~shadow_bits) | bit::SHADOW_SOFT;
+      ++result.soft_by_bounds;
+    } else if (settled_by_taps) {
+      ++result.settled_by_bounds;
+    }
+    if (((gpu[i] ^ expected) & ~cpu.uncertain_bits[i]) != 0 && result.mismatches++ == 0) {
+      result.first_mismatch = fmt::format("tile ({}, {}): GPU raw ID {:#04x}, CPU {:#04x} (uncertain bits {:#04x})",
+                                          i % tiles_x, i / tiles_x, gpu[i], cpu_id, cpu.uncertain_bits[i]);
+    }
+  }
+  if (gpu.size() != cpu.raw_ids.size()) {
+    ++result.mismatches;
+    result.first_mismatch = fmt::format("{} GPU IDs, {} CPU IDs", gpu.size(), cpu.raw_ids.size());
+  }
+  return result;
+}
+
 }  // namespace tilelight::test

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers for the frame tests: render one frame with given options and compare.
 
+#include "tilelight/cpu_classifier.h"
 #include "tilelight/readback.h"
 #include "tilelight/tile_renderer.h"
 
@@ -24,6 +25,21 @@ struct FrameComparison {
 };
 
 FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, double tolerance);
+
+// The GPU's raw IDs against the CPU reference (which counts every tap of every sample). They must
+// be equal except (a) bits the reference marks as near a threshold and (b) SOFT where the taps
+// say SOLID or lit: the GPU settles shadow types from bounds and calls the rest SOFT (full PCF,
+// right for every sample, only slower; see classify_tiles.comp).
+struct ReferenceComparison {
+  std::size_t mismatches = 0;      // neither (a) nor (b)
+  std::string first_mismatch;      // "tile (x, y): GPU raw ID ..., CPU ..."
+  std::size_t uncertain_tiles = 0;
+  std::size_t soft_by_bounds = 0;  // (b)
+  std::size_t settled_by_bounds = 0;  // sunlit tiles the reference calls SOLID or lit, and so does the GPU
+};
+
+ReferenceComparison compare_with_reference(const std::vector<std::uint8_t>& gpu_raw_ids,
+                                           const ReferenceClassification& cpu, std::uint32_t tiles_x);
 
 // Optimised IDs present in a frame's raw tile IDs (row-major).
 std::set<std::uint32_t> optimised_ids_of(const std::vector<std::uint8_t>& raw_ids);

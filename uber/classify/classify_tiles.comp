@@ -3,8 +3,8 @@
 //
 // One invocation classifies one row of a block of 4x4 tiles (Fig. 4.3), tile by tile, and
 // writes the row's four IDs as one uint32. Every decision calls the same include functions as
-// lighting.frag (sun_faces, sun_shadow_lookup / sun_shadow_lit_taps, shadow_fade_active,
-// light_scattering_active), so a tile's ID admits exactly what its pixels need. IDs are bytes
+// lighting.frag (sun_faces, sun_shadow_lookup, shadow_fade_active, shadow_fade_complete,
+// light_scattering_active), so a tile's ID admits what its pixels need. IDs are bytes
 // in the blocked layout: block b holds 16 bytes, one uint32 per block row (byte i = tile i of
 // the row); tiles beyond the frame's partial edge blocks get 0xFF.
 //
@@ -14,16 +14,16 @@
 //   by side;
 // - MSAA edges come from the per-sample edge bit the materials write (gbuffer.glsl): one fetch
 //   of one target per sample instead of comparing every target;
-// - the shadow type of a tile is settled, where possible, from bounds instead of 8 taps per
-//   sample. The pass over the tile's pixels collects the rectangle of shadow-map texels that
-//   any tap of any sun-facing sample can touch and the range of the samples' receiver depths;
-//   then the stored depths over that rectangle are read, and
-//     every stored depth >= every receiver depth  -> every tap lit: LIT;
-//     every stored depth <  every receiver depth, rectangle inside the map -> SHADOWED;
-//     otherwise (a shadow boundary, or a rectangle too large to read) -> count the taps of
-//     every sample, as the lighting does.
-//   Both shortcuts are implications of the per-tap comparison, so the IDs are exactly the
-//   ones the taps would give.
+// - the shadow type of a tile comes from bounds instead of 8 taps per sample. The pass over the
+//   tile's pixels collects the rectangle of shadow-map texels that any tap of any sun-facing
+//   sample can touch and the range of the samples' receiver depths; then the stored depths
+//   over that rectangle are read, and
+//     every stored depth >= every receiver depth  -> every tap lit: LIT (exactly);
+//     every stored depth <  every receiver depth, rectangle inside the map -> SHADOWED (exactly);
+//     otherwise (a shadow boundary, or a rectangle too large to read) -> SOFT.
+//   SOFT is full PCF, which is right for every sample, so a tile wrongly called SOFT costs
+//   lighting time, never correctness. Counting each sample's taps to settle those tiles
+//   exactly was measured and cost more classification time than it saved lighting time.
 #extension GL_GOOGLE_include_directive : require
 #include "gbuffer.glsl"
 #include "light_scattering.glsl"
@@ -44,9 +44,9 @@ layout(push_constant) uniform ClassifyPush {
     uvec4 grid; // tiles_x, tiles_y, blocks_x, blocks_y
 } push;
 
-// A tile whose tap rectangle holds more texels than this counts its taps instead: reading the
-// rectangle would cost about as much as the taps (8 per sample).
-const int MAX_BOUNDED_TEXELS = 48;
+// A tile whose tap rectangle holds more texels than this is SOFT without reading it. Measured
+// on the default 720p frame (docs/results.md): larger rectangles settle few more tiles.
+const int MAX_BOUNDED_TEXELS = 128;
 
 const int INT_MAX = 0x7FFFFFFF;
 const int INT_MIN = -INT_MAX - 1;
@@ -141,30 +141,6 @@ uint classify_pixel(ivec2 pixel, int samples, inout ShadowBounds bounds)
     return flags;
 }
 
-// The exact shadow type of one pixel's sun-facing samples, from their taps.
-uint count_pixel_taps(ivec2 pixel, int samples)
-{
-    int classified = classified_samples(pixel, samples);
-    uint flags = 0u;
-    for (int s = 0; s < classified; ++s) {
-        GSample g = gbuffer_load(pixel, s);
-        if (g.is_sky || !sun_faces(g.normal)) {
-            continue;
-        }
-        vec3 world_pos = world_position_from_depth(pixel, g.depth);
-        if (shadow_fade_complete(linear_view_depth(world_pos))) {
-            continue;
-        }
-        SunShadowLookup lookup = sun_shadow_lookup(world_pos);
-        if (!lookup.in_volume) {
-            continue; // already flagged LIT in phase 1
-        }
-        uint lit = sun_shadow_lit_taps(lookup);
-        flags |= lit == 0u ? TILE_FLAG_SHADOWED : lit == SUN_SHADOW_TAP_COUNT ? TILE_FLAG_LIT : TILE_FLAG_PARTIAL;
-    }
-    return flags;
-}
-
 // The part of the tap rectangle inside the map; empty when lo > hi.
 void clipped_rect(ShadowBounds bounds, out ivec2 lo, out ivec2 hi)
 {
@@ -173,7 +149,7 @@ void clipped_rect(ShadowBounds bounds, out ivec2 lo, out ivec2 hi)
 }
 
 // LIT or SHADOWED when the stored depths under the tap rectangle settle the shadow type of every
-// sample in `bounds`; 0 when only the taps can tell (a shadow boundary, or a large rectangle).
+// sample in `bounds`; else PARTIAL, which makes the tile SOFT: full PCF, right for any sample.
 uint shadow_type_from_bounds(ShadowBounds bounds)
 {
     ivec2 lo, hi;
@@ -183,7 +159,7 @@ uint shadow_type_from_bounds(ShadowBounds bounds)
     }
     ivec2 extent = hi - lo + 1;
     if (extent.x * extent.y > MAX_BOUNDED_TEXELS) {
-        return 0u;
+        return TILE_FLAG_PARTIAL;
     }
     uint stored_min = 0xFFFFFFFFu;
     uint stored_max = 0u;
@@ -202,7 +178,7 @@ uint shadow_type_from_bounds(ShadowBounds bounds)
     if (inside_map && bounds.receiver_min > stored_max) {
         return TILE_FLAG_SHADOWED;
     }
-    return 0u;
+    return TILE_FLAG_PARTIAL;
 }
 
 // The raw ID of `tile`, which lies inside the grid.
@@ -218,15 +194,7 @@ uint classify_tile(uvec2 tile, ivec2 size, int samples)
         }
     }
     if (bounds.any) {
-        uint shadow = shadow_type_from_bounds(bounds);
-        if (shadow == 0u) {
-            for (int y = first_pixel.y; y < end_pixel.y; ++y) {
-                for (int x = first_pixel.x; x < end_pixel.x; ++x) {
-                    shadow |= count_pixel_taps(ivec2(x, y), samples);
-                }
-            }
-        }
-        flags |= shadow;
+        flags |= shadow_type_from_bounds(bounds);
     }
     return raw_id_from_tile_flags(flags);
 }

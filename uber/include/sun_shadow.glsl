@@ -2,15 +2,14 @@
 //
 // Everything goes through ONE lookup (sun_shadow_lookup: where the receiver
 // lands, its biased depth) and ONE set of taps:
-//   sun_shadow_lit_taps(p)  0..8 unoccluded taps; the classifier counts them
-//                           for tiles it cannot settle from bounds and marks a
-//                           tile solid (all sun-facing samples 0), lit (all 8)
-//                           or soft (anything else);
+//   sun_shadow_lit_taps(p)  0..8 unoccluded taps (the CPU reference classifier
+//                           counts them too);
 //   sun_shadow_pcf(p)       lit / 8.0, the shadow factor lighting.frag uses.
-// The classifier settles most tiles without counting taps: every tap lies in
+// The classifier does not count taps: every tap lies in
 // [base + SUN_SHADOW_TAP_MIN_OFFSET, base + SUN_SHADOW_TAP_MAX_OFFSET], so the
-// stored depths over one rectangle bound every tap of a tile (classify_tiles.comp).
-// Because both count the same taps, "0 taps lit" is exactly factor 0.0 and
+// stored depths over one rectangle bound every tap of a tile: all lit (0 taps
+// occluded) or all occluded (classify_tiles.comp).
+// Because the factor counts taps, "0 taps lit" is exactly factor 0.0 and
 // "8 taps lit" exactly 1.0 (n * 0.125 is exact in float), so the SOLID_SHADOW
 // permutation (factor 0) and the no-shadow permutation (factor 1) reproduce
 // the full PCF shader bit for bit on the tiles they are used for.

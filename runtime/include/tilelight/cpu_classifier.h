@@ -1,6 +1,8 @@
 #pragma once
 // The CPU reference classifier: the tile classification of uber/classify/classify_tiles.comp
-// recomputed on the host from the read-back G-buffer and shadow map, for tests.
+// recomputed on the host from the read-back G-buffer and shadow map, for tests. It counts every
+// shadow tap of every sample; the GPU settles shadow types from bounds and may call a tile SOFT
+// where the taps say SOLID or lit (tests/frame/frame_support.h compare_with_reference).
 //
 // The GPU decides every threshold with `precise` arithmetic, but the driver's normalize(),
 // matrix products and divisions may still round differently from the host's. So for each

@@ -1,5 +1,7 @@
-// Mirrors uber/classify/classify_tiles.comp and the include functions it calls; the comments
-// name the GLSL function each part reproduces.
+// Reproduces the decisions of uber/classify/classify_tiles.comp and the include functions it
+// calls (the comments name each GLSL function), except that it counts every shadow tap of every
+// sample where the GPU settles shadow types from bounds: it is the exact answer the GPU's SOLID
+// and lit tiles must agree with.
 #include "tilelight/cpu_classifier.h"
 
 #include "tilelight/error.h"
