@@ -17,9 +17,9 @@
 namespace {
 
 namespace fs = std::filesystem;
-using sgtest::Child;
-using sgtest::ChildOutcome;
-using sgtest::ChildSetup;
+using testsupport::Child;
+using testsupport::ChildOutcome;
+using testsupport::ChildSetup;
 
 ChildOutcome run_shadergen(const std::vector<std::string>& args, ChildSetup setup = {}) {
     Child child(sgtest::shadergen_exe(), args, setup);

@@ -1,9 +1,10 @@
-// A child process for the fault tests: started with fork/exec (so the test can set resource
-// limits, drop privileges and send signals to exactly that process), its stdout and stderr read
-// through pipes. Pipes, not files: RLIMIT_FSIZE applies to every regular file a process
-// writes, its captured stderr included, but not to pipes.
+// A child process for the fault and soak tests (shadergen and tilelight): started with
+// fork/exec, so the test can set resource limits, drop privileges and send signals to exactly
+// that process; its stdout and stderr read through pipes. Pipes, not files: RLIMIT_FSIZE
+// applies to every regular file a process writes, its captured stderr included, but not to
+// pipes.
 //
-// Header-only, like fixture_support.h.
+// Header-only: each test executable that uses it adds tests/support to its include path.
 #pragma once
 
 #include <fcntl.h>
@@ -23,10 +24,11 @@
 #include <thread>
 #include <vector>
 
-namespace sgtest {
+namespace testsupport {
 
 struct ChildSetup {
-    rlim_t file_size_limit = RLIM_INFINITY;  // RLIMIT_FSIZE in bytes; SIGXFSZ is then ignored
+    rlim_t file_size_limit = RLIM_INFINITY;      // RLIMIT_FSIZE in bytes; SIGXFSZ is then ignored
+    rlim_t address_space_limit = RLIM_INFINITY;  // RLIMIT_AS in bytes: allocations beyond it fail
     bool drop_to_nobody = false;             // setgid/setuid 65534 before exec (tests run as root)
 };
 
@@ -59,6 +61,10 @@ public:
                 ::signal(SIGXFSZ, SIG_IGN);  // write() then fails with EFBIG instead of killing
                 rlimit limit{setup.file_size_limit, setup.file_size_limit};
                 if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(125);
+            }
+            if (setup.address_space_limit != RLIM_INFINITY) {
+                rlimit limit{setup.address_space_limit, setup.address_space_limit};
+                if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(125);
             }
             if (setup.drop_to_nobody && (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0))
                 ::_exit(125);
@@ -153,4 +159,4 @@ private:
     bool closed_ = false;
 };
 
-}  // namespace sgtest
+}  // namespace testsupport
