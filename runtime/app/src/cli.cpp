@@ -156,6 +156,7 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
     last = renderer.render_frame();
     timings.push_back(last.timings);
   }
+  const double rss_after_frames = current_rss_mib();
   stage = "reading back the frames";
   const RgbaImage classified = renderer.read_classified();
   const RgbaImage naive = renderer.read_naive();
@@ -182,6 +183,7 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   });
   // Measured last, so the figure covers every frame, the read-back and the PNG encoding.
   report.process.peak_rss_mib = peak_rss_mib();
+  report.process.rss_after_frames_mib = rss_after_frames;
   files.stage_text("report.json", report_json(report));
   files.commit();
 

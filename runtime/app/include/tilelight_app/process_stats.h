@@ -7,4 +7,8 @@ namespace tilelight::app {
 // Never decreases; 0 if the system does not say.
 double peak_rss_mib();
 
+// The resident set size now, in MiB (/proc/self/statm); 0 if it cannot be read. Unlike the
+// peak, it is not dominated by start-up (shader compilation), so a slow leak shows in it first.
+double current_rss_mib();
+
 }  // namespace tilelight::app

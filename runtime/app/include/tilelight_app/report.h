@@ -30,7 +30,8 @@ struct Equivalence {
 };
 
 struct ProcessFigures {
-  double peak_rss_mib = 0;  // the process's largest resident set size, at the end of the run
+  double peak_rss_mib = 0;          // the process's largest resident set size, at the end of the run
+  double rss_after_frames_mib = 0;  // the resident set size right after the last frame
 };
 
 struct FrameReport {
