@@ -3,6 +3,7 @@
 // machine without the memory). Whatever fails first, the process must exit 1 with one line that
 // names the stage, never abort or die on a signal, and must write no output.
 #include "child_process.h"
+#include "sanitizer.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -37,7 +38,7 @@ bool names_a_stage(const std::string& message) {
 }
 
 TEST(TilelightOutOfMemory, AllocationFailuresEndWithOneLineNamingTheStage) {
-#if defined(__SANITIZE_ADDRESS__)
+#ifdef TEST_UNDER_ASAN
   GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space, so RLIMIT_AS cannot be applied";
 #endif
   constexpr rlim_t kGiB = rlim_t{1} << 30;
