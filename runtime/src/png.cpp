@@ -11,15 +11,28 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <new>
 #include <system_error>
 
 namespace tilelight {
 namespace {
 
-void append_bytes(void* context, void* data, int size) {
-  auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+struct EncodedPng {
+  std::vector<std::uint8_t> bytes;
+  bool out_of_memory = false;
+};
+
+// Called from inside stb (C code): no exception may cross it, so a failed allocation is
+// recorded and reported once stb has returned.
+void append_bytes(void* context, void* data, int size) noexcept {
+  auto* out = static_cast<EncodedPng*>(context);
+  if (out->out_of_memory) return;
   const auto* bytes = static_cast<const std::uint8_t*>(data);
-  out->insert(out->end(), bytes, bytes + size);
+  try {
+    out->bytes.insert(out->bytes.end(), bytes, bytes + size);
+  } catch (const std::bad_alloc&) {
+    out->out_of_memory = true;
+  }
 }
 
 // Writes `bytes` to `path` and closes it, reporting the OS reason on failure.
@@ -68,12 +81,15 @@ void write_png_rgba8(const std::filesystem::path& path, std::uint32_t width, std
 
   // Encode in memory, so that file errors come from our own I/O with a precise reason (stb's
   // file writer reports only "failed").
-  std::vector<std::uint8_t> encoded;
+  EncodedPng png;
   const int w = static_cast<int>(width);
   const int h = static_cast<int>(height);
-  if (stbi_write_png_to_func(&append_bytes, &encoded, w, h, 4, rgba.data(), w * 4) == 0) {
-    throw Error(fmt::format("cannot write PNG {}: encoding failed", path.string()));
+  // stb fails only when its own allocation fails.
+  if (stbi_write_png_to_func(&append_bytes, &png, w, h, 4, rgba.data(), w * 4) == 0 || png.out_of_memory) {
+    throw Error(fmt::format("cannot write PNG {}: out of host memory while encoding {}x{}", path.string(), width,
+                            height));
   }
+  const std::vector<std::uint8_t>& encoded = png.bytes;
 
   std::filesystem::path temporary = path;
   temporary += fmt::format(".tmp-{}", static_cast<long>(::getpid()));

@@ -90,7 +90,7 @@ Result<BuildSummary> build(const BuildOptions& given) {
                                                        ": " + blob.fallback_reason);
     if (options.cancelled && options.cancelled()) return make_error("build interrupted");
     StagedOutput staged = outputs_for(options, *domain, cpp_name, ns, seconds);
-    auto changed = staged.commit();
+    auto changed = staged.commit(options.cancelled);
     if (!changed) return std::move(changed).take_errors();
     if (!options.depfile.empty()) {
         std::string target = (options.out_dir / (cpp_name + ".h")).string();

@@ -41,19 +41,30 @@ bool take(std::string_view& in, std::size_t count, std::string_view& out) {
 
 std::string entry_checksum(std::string_view key, const CachedBlob& blob);
 
-std::string cache_key(std::string_view stage_name, std::string_view preprocessed) {
+CacheKeyParts current_cache_key_parts() {
+    // A package upgrade of either compiler library may change the blobs: new keys.
+    return CacheKeyParts{SHADERGEN_VERSION,
+                         std::to_string(GLSLANG_VERSION_MAJOR) + "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
+                             std::to_string(GLSLANG_VERSION_PATCH) + GLSLANG_VERSION_FLAVOR,
+                         spvSoftwareVersionString(), std::string(kTargetDescription), std::string(kOptimiserRecipe)};
+}
+
+std::string cache_key(const CacheKeyParts& parts, std::string_view stage_name, std::string_view preprocessed) {
     return Sha256()
         .field("shadergen-cache-entry")
-        .field(SHADERGEN_VERSION)
-        // A package upgrade of either compiler library may change the blobs: new keys.
-        .field(std::to_string(GLSLANG_VERSION_MAJOR) + "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
-               std::to_string(GLSLANG_VERSION_PATCH) + GLSLANG_VERSION_FLAVOR)
-        .field(spvSoftwareVersionString())
-        .field(kTargetDescription)
-        .field(kOptimiserRecipe)
+        .field(parts.tool_version)
+        .field(parts.glslang_version)
+        .field(parts.spirv_tools_version)
+        .field(parts.target)
+        .field(parts.optimiser_recipe)
         .field(stage_name)
         .field(preprocessed)
         .finish_hex();
+}
+
+std::string cache_key(std::string_view stage_name, std::string_view preprocessed) {
+    static const CacheKeyParts parts = current_cache_key_parts();
+    return cache_key(parts, stage_name, preprocessed);
 }
 
 std::filesystem::path default_cache_directory() {

@@ -42,8 +42,24 @@ private:
     std::filesystem::path directory_;
 };
 
-// The key of a stage-`stage_name` blob compiled from `preprocessed` text.
+// Everything besides the source that decides a blob's bytes. No command-line flag changes a
+// blob (-j, --stats, --depfile, --cpp-name, --namespace only change other files), so the
+// tool and library versions, the target and the optimiser recipe are the whole list.
+struct CacheKeyParts {
+    std::string tool_version;         // SHADERGEN_VERSION
+    std::string glslang_version;      // the compiler library linked in
+    std::string spirv_tools_version;  // the optimiser and validator library linked in
+    std::string target;               // kTargetDescription
+    std::string optimiser_recipe;     // kOptimiserRecipe
+};
+
+// The parts of this build of the tool.
+CacheKeyParts current_cache_key_parts();
+
+// The key of a stage-`stage_name` blob compiled from `preprocessed` text by this tool.
 std::string cache_key(std::string_view stage_name, std::string_view preprocessed);
+// The same for a tool described by `parts` (tests use it for "another version").
+std::string cache_key(const CacheKeyParts& parts, std::string_view stage_name, std::string_view preprocessed);
 
 // $SHADERGEN_CACHE_DIR, else $XDG_CACHE_HOME/shadergen, else ~/.cache/shadergen; empty if none
 // of those variables is set.

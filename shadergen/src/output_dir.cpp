@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <set>
+#include <vector>
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -28,6 +29,22 @@ std::set<std::string> existing_files(const fs::path& dir) {
 fs::path sibling(const fs::path& out_dir, std::string_view what) {
     fs::path name = out_dir.filename();
     return out_dir.parent_path() / temporary_name(name.string() + "." + std::string(what));
+}
+
+// The start of every sibling(out_dir, what) name (see temporary_name()).
+std::string sibling_prefix(const fs::path& out_dir, std::string_view what) {
+    return "." + out_dir.filename().string() + "." + std::string(what) + ".tmp-";
+}
+
+bool starts_with(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
+
+// The same failure, reported against `path` (the output file the user knows) instead of the
+// staging copy that no longer exists once the commit has failed.
+Status renamed(Status status, const fs::path& path) {
+    if (status) return status;
+    Diagnostics errors = std::move(status).take_errors();
+    for (Diagnostic& d : errors) d.file = path.string();
+    return errors;
 }
 
 // Holds an exclusive flock() on the folder that contains the output, so that two builds
@@ -71,14 +88,16 @@ Status StagedOutput::stage(const fs::path& staging) const {
     for (const auto& [relative, bytes] : files_) {
         fs::path target = staging / relative;
         fs::create_directories(target.parent_path(), ec);
-        if (ec) return make_error(target.parent_path().string(), 0, "cannot create folder: " + ec.message());
+        if (ec)
+            return make_error((out_dir_ / relative).parent_path().string(), 0, "cannot create folder: " + ec.message());
         fs::path previous = out_dir_ / relative;
         if (file_has_bytes(previous, bytes)) {
             fs::create_hard_link(previous, target, ec);
             if (!ec) continue;  // otherwise fall through and write a copy
             ec.clear();
         }
-        if (Status written = write_file_atomic(target, bytes); !written) return written;
+        if (Status written = write_file_atomic(target, bytes); !written)
+            return renamed(std::move(written), out_dir_ / relative);
     }
     return Ok{};
 }
@@ -103,20 +122,49 @@ Status StagedOutput::swap_in(const fs::path& staging) {
     return Ok{};
 }
 
-Result<bool> StagedOutput::commit() {
+void StagedOutput::clear_leftovers() const {
+    const fs::path parent = out_dir_.parent_path().empty() ? fs::path(".") : out_dir_.parent_path();
+    const std::string staging_prefix = sibling_prefix(out_dir_, "staging");
+    const std::string old_prefix = sibling_prefix(out_dir_, "old");
     std::error_code ec;
-    if (!out_dir_.parent_path().empty()) {
-        fs::create_directories(out_dir_.parent_path(), ec);
-        if (ec) return make_error(out_dir_.parent_path().string(), 0, "cannot create folder: " + ec.message());
+    std::vector<fs::path> leftovers;
+    for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (starts_with(name, staging_prefix) || starts_with(name, old_prefix)) leftovers.push_back(it->path());
     }
-    ParentLock lock(out_dir_.parent_path());
+    for (const fs::path& path : leftovers) {
+        // Killed between the two renames of swap_in(): the set-aside folder is the previous
+        // output, complete. Put it back rather than lose it.
+        if (starts_with(path.filename().string(), old_prefix) && !fs::exists(out_dir_, ec) &&
+            std::rename(path.c_str(), out_dir_.c_str()) == 0)
+            continue;
+        fs::remove_all(path, ec);
+    }
+}
+
+Result<bool> StagedOutput::commit(const std::function<bool()>& cancelled) {
+    std::error_code ec;
+    const fs::path parent = out_dir_.parent_path();
+    if (!parent.empty()) {
+        fs::create_directories(parent, ec);
+        if (ec)
+            return make_error(out_dir_.string(), 0,
+                              "cannot create its parent folder " + parent.string() + ": " + ec.message());
+    }
+    ParentLock lock(parent);
     if (!lock.locked())
-        return make_error(out_dir_.parent_path().string(), 0, std::string("cannot lock folder: ") + std::strerror(errno));
+        return make_error(out_dir_.string(), 0,
+                          "cannot lock its parent folder " + (parent.empty() ? fs::path(".") : parent).string() +
+                              ": " + std::strerror(errno));
+    clear_leftovers();
     if (unchanged()) return false;
     fs::path staging = sibling(out_dir_, "staging");
     fs::create_directory(staging, ec);
-    if (ec) return make_error(staging.string(), 0, "cannot create staging folder: " + ec.message());
+    if (ec)
+        return make_error(out_dir_.string(), 0,
+                          "cannot create a staging folder beside it (" + staging.string() + "): " + ec.message());
     Status status = stage(staging);
+    if (status && cancelled && cancelled()) status = make_error("build interrupted");
     if (status) status = swap_in(staging);
     if (!status) {
         fs::remove_all(staging, ec);

@@ -130,5 +130,26 @@ TEST_F(VulkanTest, SubmitWaitsForHostSignal) {
   }
 }
 
+// wait_idle() stands in for vkDeviceWaitIdle/vkQueueWaitIdle, which have no timeout: it must
+// give up with the stage's name while the queue is held by a wait the host never signals.
+// Without the validation layer: on a timeout the fence is deliberately leaked (destroying a
+// pending fence is invalid), and the layer would report the leak when the device goes.
+TEST(BoundedWaits, WaitIdleTimesOutWhileTheQueueWaitsForTheHost) {
+  ContextOptions options;
+  options.validation = false;
+  const Context context(options);
+  const TimelineSemaphore timeline(context, "never signalled in time");
+  const SemaphoreWait wait[] = {{timeline.handle(), 1, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT}};
+  submit(context, {{}, wait, {}, VK_NULL_HANDLE}, "a batch waiting for the host");
+  try {
+    context.wait_idle("the blocked queue", Seconds{0.05});
+    FAIL() << "wait_idle returned while the queue was blocked";
+  } catch (const TimeoutError& e) {
+    EXPECT_STREQ(e.what(), "GPU did not finish the blocked queue within 0.05 s");
+  }
+  timeline.signal(1);
+  EXPECT_NO_THROW(context.wait_idle("the released queue", Seconds{30.0}));
+}
+
 }  // namespace
 }  // namespace tilelight

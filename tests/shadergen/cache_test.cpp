@@ -40,6 +40,31 @@ TEST(CacheEntry, RejectsEveryKindOfDamage) {
     EXPECT_FALSE(decode_cache_entry(kKey, ""));
 }
 
+// An entry written by another shadergen version, another compiler or optimiser library, for
+// another target or with another optimiser recipe sits under another key, so it is never read.
+TEST(CacheKey, EveryPartOfTheToolDescriptionChangesTheKey) {
+    const CacheKeyParts current = current_cache_key_parts();
+    EXPECT_EQ(current.tool_version, SHADERGEN_VERSION_STRING);
+    EXPECT_FALSE(current.glslang_version.empty());
+    EXPECT_FALSE(current.spirv_tools_version.empty());
+    const std::string key = cache_key(current, "frag", "void main() {}");
+    EXPECT_EQ(cache_key("frag", "void main() {}"), key) << "the short form uses this tool's parts";
+    for (std::string CacheKeyParts::*part :
+         {&CacheKeyParts::tool_version, &CacheKeyParts::glslang_version, &CacheKeyParts::spirv_tools_version,
+          &CacheKeyParts::target, &CacheKeyParts::optimiser_recipe}) {
+        CacheKeyParts other = current;
+        other.*part += "-other";
+        EXPECT_NE(cache_key(other, "frag", "void main() {}"), key) << current.*part;
+    }
+    EXPECT_NE(cache_key(current, "vert", "void main() {}"), key);
+    EXPECT_NE(cache_key(current, "frag", "void main() { }"), key);
+    // Fields are length-delimited: moving a character from one field to the next is a new key.
+    CacheKeyParts shifted = current;
+    shifted.target += shifted.optimiser_recipe.substr(0, 1);
+    shifted.optimiser_recipe.erase(0, 1);
+    EXPECT_NE(cache_key(shifted, "frag", "void main() {}"), key);
+}
+
 TEST(CacheEntry, DefaultDirectoryFollowsTheEnvironment) {
     ::setenv("SHADERGEN_CACHE_DIR", "/tmp/explicit-cache", 1);
     EXPECT_EQ(default_cache_directory(), fs::path("/tmp/explicit-cache"));

@@ -7,11 +7,14 @@
 #include "tilelight/scene.h"
 #include "tilelight/tile_class_image.h"
 #include "tilelight/tile_renderer.h"
+#include "tilelight_app/failure.h"
+#include "tilelight_app/process_stats.h"
 #include "tilelight_app/report.h"
 
 #include <split_second_shaders.h>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -91,7 +94,9 @@ void add_options(CLI::App& cli, Arguments& a) {
   cli.add_flag("--list-cameras", a.list_cameras, "list the cameras and exit");
 }
 
-int render(const Arguments& a, std::ostream& out) {
+// `stage` always says what the run is doing, for the message if it fails.
+int render(const Arguments& a, std::ostream& out, std::string& stage) {
+  stage = "building the scene";
   const Scene scene = make_demo_scene();
   if (a.list_cameras) {
     for (const Camera& c : scene.cameras) out << c.name << ": " << c.description << '\n';
@@ -107,8 +112,10 @@ int render(const Arguments& a, std::ostream& out) {
   options.coalesce = !a.no_coalesce;
   options.camera = a.camera;
   options.timeout = Seconds(a.timeout_s);
+  stage = "choosing the camera";
   (void)scene.camera(a.camera);  // an unknown camera fails before any Vulkan work
 
+  stage = "creating the Vulkan context";
   ContextOptions context_options;
   context_options.device = a.device;
   context_options.validation = a.validation;
@@ -119,6 +126,7 @@ int render(const Arguments& a, std::ostream& out) {
     }
     return 0;
   }
+  stage = "preparing the output folder " + a.out;
   OutputFiles files(a.out);  // proves --out writable before the long part
   // Errors about a value name the flag that set it.
   try {
@@ -126,6 +134,7 @@ int render(const Arguments& a, std::ostream& out) {
   } catch (const Error& e) {
     throw Error("--msaa " + a.msaa + ": " + e.what());
   }
+  stage = fmt::format("creating the renderer ({}x{})", a.width, a.height);
   std::optional<TileRenderer> renderer_storage;
   try {
     renderer_storage.emplace(context, scene, options);
@@ -138,18 +147,23 @@ int render(const Arguments& a, std::ostream& out) {
 
   // One untimed warm-up frame first: drivers (lavapipe included) compile pipelines lazily at
   // first use, which would otherwise land in the first frame's light-pass timings.
+  stage = "the warm-up frame";
   renderer.render_frame();
   std::vector<FrameTimings> timings;
   FrameResult last;
   for (std::uint32_t f = 0; f < a.frames; ++f) {
+    stage = fmt::format("frame {} of {}", f + 1, a.frames);
     last = renderer.render_frame();
     timings.push_back(last.timings);
   }
+  const double rss_after_frames = current_rss_mib();
+  stage = "reading back the frames";
   const RgbaImage classified = renderer.read_classified();
   const RgbaImage naive = renderer.read_naive();
   const std::vector<std::uint8_t> raw_ids = renderer.raw_tile_ids();
   if (a.validation) context.require_no_validation_messages("tilelight");
 
+  stage = "comparing the frames and writing the results to " + a.out;
   FrameReport report;
   const char* threads = std::getenv("LP_NUM_THREADS");
   report.run = {context.device_name(), a.width, a.height, renderer.msaa_samples(), a.tile_size, a.frames, a.path,
@@ -167,6 +181,9 @@ int render(const Arguments& a, std::ostream& out) {
     const Rgba8Canvas canvas = compose_tile_class_image(shown, a.tile_size, optimised_ids(raw_ids));
     write_png_rgba8(p, canvas.width, canvas.height, canvas.pixels);
   });
+  // Measured last, so the figure covers every frame, the read-back and the PNG encoding.
+  report.process.peak_rss_mib = peak_rss_mib();
+  report.process.rss_after_frames_mib = rss_after_frames;
   files.stage_text("report.json", report_json(report));
   files.commit();
 
@@ -190,10 +207,11 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   } catch (const CLI::ParseError& e) {
     return cli.exit(e, out, err);
   }
+  std::string stage = "starting";
   try {
-    return render(arguments, out);
-  } catch (const std::exception& e) {
-    err << "tilelight: error: " << e.what() << '\n';
+    return render(arguments, out, stage);
+  } catch (...) {
+    err << "tilelight: error: " << failure_message(stage, std::current_exception()) << '\n';
     return kExitError;
   }
 }

@@ -110,6 +110,8 @@ std::string report_json(const FrameReport& r) {
   j["timings_ms"] = timings;
   j["equivalence"] = {{"max_abs_difference", r.equivalence.max_abs_difference},
                       {"pixels_different", r.equivalence.pixels_different}};
+  j["process"] = {{"peak_rss_mib", std::round(r.process.peak_rss_mib * 10.0) / 10.0},
+                  {"rss_after_frames_mib", std::round(r.process.rss_after_frames_mib * 10.0) / 10.0}};
   return j.dump(2) + "\n";
 }
 

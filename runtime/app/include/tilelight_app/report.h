@@ -29,6 +29,11 @@ struct Equivalence {
   std::uint64_t pixels_different = 0;  // pixels with any channel differing
 };
 
+struct ProcessFigures {
+  double peak_rss_mib = 0;          // the process's largest resident set size, at the end of the run
+  double rss_after_frames_mib = 0;  // the resident set size right after the last frame
+};
+
 struct FrameReport {
   RunDescription run;
   std::uint32_t tiles = 0;
@@ -37,6 +42,7 @@ struct FrameReport {
   std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0;
   MedianTimings timings;
   Equivalence equivalence;
+  ProcessFigures process;
 };
 
 // Counts per raw property and per optimised ID from the row-major raw tile IDs (through the

@@ -1,0 +1,45 @@
+#include "tilelight_app/failure.h"
+
+#include "tilelight/error.h"
+
+#include <fmt/format.h>
+
+#include <new>
+
+namespace tilelight::app {
+namespace {
+
+std::string_view hint(VkResult result) {
+  switch (result) {
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY:
+    case VK_ERROR_OUT_OF_HOST_MEMORY:
+      return " (out of memory: try a smaller --width/--height or --msaa 1)";
+    case VK_ERROR_DEVICE_LOST:
+      return " (the device was lost: a driver fault or a GPU reset; no output was written)";
+    default:
+      return "";
+  }
+}
+
+}  // namespace
+
+std::string failure_message(std::string_view stage, const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const VulkanError& e) {
+    return fmt::format("{}: {}{}", stage, e.what(), hint(e.result()));
+  } catch (const Error& e) {
+    // A message about a flag ("--width 0: ...") says all a user needs; any other gets the stage.
+    const std::string_view what = e.what();
+    if (what.rfind("--", 0) == 0) return std::string(what);
+    return fmt::format("{}: {}", stage, what);
+  } catch (const std::bad_alloc&) {
+    return fmt::format("{}: out of host memory (std::bad_alloc); try a smaller --width/--height", stage);
+  } catch (const std::exception& e) {
+    return fmt::format("{}: {}", stage, e.what());
+  } catch (...) {
+    return fmt::format("{}: an unknown exception", stage);
+  }
+}
+
+}  // namespace tilelight::app

@@ -1,0 +1,80 @@
+// The soak: tilelight renders 500 frames at a small size with the validation layer on. The layer
+// must report nothing (tilelight fails the run on any message), and the process's memory must
+// not grow with the frame count: report.json's peak RSS and its resident size right after the
+// last frame are compared with a 50-frame run's.
+//
+// Why both: the peak is reached at start-up or during the read-back, so a leak smaller than the
+// gap between that peak and the steady state would not move it; the size after the frames
+// shows such a leak. Why 16 MiB: runs of the same command differ by up to 7 MiB in either
+// figure (llvmpipe's threads and their malloc arenas), so 16 MiB is about twice the noise, and
+// over 450 extra frames it still catches any leak of about 36 KiB or more per frame: a read-back
+// image at this size (128x72 RGBA32F, 144 KiB) or a per-frame copy of the G-buffer would fail
+// it. Smaller leaks are LeakSanitizer's job (the sanitizer build).
+#include "child_process.h"
+#include "sanitizer.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kToleranceMiB = 16.0;
+
+struct SoakRun {
+  double peak_rss_mib = 0;
+  double rss_after_frames_mib = 0;
+  bool ok = false;
+};
+
+SoakRun run_frames(unsigned frames) {
+  const fs::path out = fs::path(TILELIGHT_TEST_SCRATCH) / ("frames" + std::to_string(frames));
+  fs::remove_all(out);
+  testsupport::Child child(TILELIGHT_EXECUTABLE, {"--width", "128", "--height", "72", "--frames",
+                                                  std::to_string(frames), "--validation", "--out", out.string()});
+  const testsupport::ChildOutcome r = child.wait();
+  SoakRun run;
+  EXPECT_EQ(r.exit_code, 0) << frames << " frames:\n" << r.err;
+  EXPECT_EQ(r.err, "") << frames << " frames: nothing on stderr, validation messages included";
+  std::ifstream file(out / "report.json");
+  if (r.exit_code != 0 || !file) return run;
+  const nlohmann::json report = nlohmann::json::parse(file);
+  EXPECT_EQ(report["frames"], frames);
+  run.peak_rss_mib = report["process"]["peak_rss_mib"].get<double>();
+  run.rss_after_frames_mib = report["process"]["rss_after_frames_mib"].get<double>();
+  EXPECT_GT(run.peak_rss_mib, 0.0);
+  EXPECT_GT(run.rss_after_frames_mib, 0.0);
+  EXPECT_LE(run.rss_after_frames_mib, run.peak_rss_mib);
+  run.ok = true;
+  return run;
+}
+
+TEST(Soak, FiveHundredValidatedFramesUseNoMoreMemoryThanFifty) {
+#ifdef TEST_UNDER_ASAN
+  GTEST_SKIP() << "under AddressSanitizer freed memory sits in its quarantine, so RSS grows with the frame count "
+                  "by design; the sanitizer build checks leaks with LeakSanitizer instead";
+#endif
+  const SoakRun short_run = run_frames(50);
+  const SoakRun long_run = run_frames(500);
+  ASSERT_TRUE(short_run.ok && long_run.ok);
+  std::cout << "peak RSS: 50 frames " << short_run.peak_rss_mib << " MiB, 500 frames " << long_run.peak_rss_mib
+            << " MiB; after the frames: " << short_run.rss_after_frames_mib << " MiB, "
+            << long_run.rss_after_frames_mib << " MiB\n";
+  RecordProperty("peak_rss_mib_50_frames", std::to_string(short_run.peak_rss_mib));
+  RecordProperty("peak_rss_mib_500_frames", std::to_string(long_run.peak_rss_mib));
+  RecordProperty("rss_after_frames_mib_50_frames", std::to_string(short_run.rss_after_frames_mib));
+  RecordProperty("rss_after_frames_mib_500_frames", std::to_string(long_run.rss_after_frames_mib));
+  EXPECT_LE(long_run.peak_rss_mib, short_run.peak_rss_mib + kToleranceMiB)
+      << "peak memory grew by " << long_run.peak_rss_mib - short_run.peak_rss_mib << " MiB over 450 frames";
+  EXPECT_LE(long_run.rss_after_frames_mib, short_run.rss_after_frames_mib + kToleranceMiB)
+      << "resident memory grew by " << long_run.rss_after_frames_mib - short_run.rss_after_frames_mib
+      << " MiB over 450 frames";
+}
+
+}  // namespace
