@@ -1,12 +1,12 @@
 #include "tilelight_app/cli.h"
 
-#include "output_files.h"
 #include "tilelight/context.h"
 #include "tilelight/error.h"
 #include "tilelight/png.h"
 #include "tilelight/scene.h"
 #include "tilelight/tile_class_image.h"
 #include "tilelight/tile_renderer.h"
+#include "tilelight_app/output_files.h"
 #include "tilelight_app/report.h"
 
 #include <split_second_shaders.h>
