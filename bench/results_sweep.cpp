@@ -27,17 +27,6 @@ namespace {
 using namespace tilelight;
 using namespace tilelight::sweep;
 
-std::vector<Measurement> measure_all(const Context& context, const SweepPlan& plan, std::uint32_t frames) {
-  const Scene scene = make_demo_scene();
-  std::vector<Measurement> measurements;
-  for (std::size_t i = 0; i < plan.configurations.size(); ++i) {
-    std::cerr << fmt::format("[{}/{}] {}\n", i + 1, plan.configurations.size(),
-                             configuration_key(plan.configurations[i]));
-    measurements.push_back(measure(context, scene, plan.configurations[i], frames, std::cerr));
-  }
-  return measurements;
-}
-
 std::vector<const Measurement*> rows_of(const Comparison& c, const std::vector<Measurement>& measurements) {
   std::map<std::string, const Measurement*> by_key;
   for (const Measurement& m : measurements) by_key[m.key] = &m;
@@ -52,10 +41,12 @@ int run_sweep(const SweepOptions& options) {
   const Context context(context_options);
   app::OutputFiles files(options.out);  // proves --out writable before the long part
   const SweepPlan plan = make_sweep_plan(options);
-  const std::vector<Measurement> measurements = measure_all(context, plan, options.frames);
+  const std::vector<Measurement> measurements =
+      measure_round_robin(context, make_demo_scene(), plan.configurations, options.frames, std::cerr);
 
   const char* threads = std::getenv("LP_NUM_THREADS");
-  std::cout << fmt::format("Device: {}, {}x MSAA, median of {} frame(s) after 1 warm-up frame, LP_NUM_THREADS={}\n",
+  std::cout << fmt::format("Device: {}, {}x MSAA, median of {} frame(s) after 1 warm-up frame (configurations "
+                           "measured round-robin), LP_NUM_THREADS={}\n",
                            context.device_name(), measurements.front().msaa_samples, options.frames,
                            threads != nullptr ? threads : "(default)");
   for (const Comparison& c : plan.comparisons) {

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace tilelight::sweep {
 
@@ -35,10 +36,14 @@ struct Measurement {
 // "1280x720 tile 4 cpu optimised coalesced": names a configuration in keys and progress lines.
 std::string configuration_key(const RendererOptions& options);
 
-// Renders one untimed warm-up frame and `frames` timed ones (precondition: frames >= 1) with
-// a renderer made for `options`, then reads both images back and compares them. Progress
-// goes to `progress`.
-Measurement measure(const Context& context, const Scene& scene, const RendererOptions& options,
-                    std::uint32_t frames, std::ostream& progress);
+// Makes one renderer per configuration and renders one untimed warm-up frame with each, then
+// `frames` timed rounds (precondition: frames >= 1), each round one frame of every
+// configuration in turn: on a shared machine, a change of load then hits every configuration
+// alike instead of whichever happened to be measured at the time. Finally reads both images
+// of each back and compares them. Progress lines go to `progress`. Results are in the order
+// of `configurations`.
+std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,
+                                             const std::vector<RendererOptions>& configurations,
+                                             std::uint32_t frames, std::ostream& progress);
 
 }  // namespace tilelight::sweep

@@ -52,6 +52,7 @@ std::string results_json(const SweepRun& run) {
   j["device"] = run.device;
   j["frames"] = run.options->frames;
   j["warmup_frames"] = 1;
+  j["schedule"] = "round-robin";  // timed frame f of every configuration before frame f + 1 of any
   j["camera"] = run.plan->configurations.front().camera;
   Json sizes = Json::array();
   for (const FrameSize& s : run.options->sizes) sizes.push_back(s.name);

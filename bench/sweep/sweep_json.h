@@ -18,7 +18,7 @@ struct SweepRun {
   const std::vector<Measurement>* measurements = nullptr;  // in plan->configurations order
 };
 
-// {"device", "frames", "warmup_frames", "camera", "sizes", "lavapipe_threads",
+// {"device", "frames", "warmup_frames", "schedule", "camera", "sizes", "lavapipe_threads",
 //  "configurations": [{key, width, height, msaa_samples, tile_size, path, permutations,
 //                      coalesce, pipelines, tiles, rectangles {uncoalesced, coalesced},
 //                      timings_ms {...}, classified_light_ms, speedup, equivalence {...}}],
