@@ -1,8 +1,11 @@
 # Smoke run of tilelight_sweep: --quick (64x36 and 96x54, one frame), then every output file
 # must exist and not be empty, and stdout must hold every comparison's table. Timings are not
-# looked at. Arguments: -DSWEEP=<tilelight_sweep> -DOUT=<scratch folder>.
+# looked at. The tables also go into a copy of docs/results.md, which must then hold them.
+# Arguments: -DSWEEP=<tilelight_sweep> -DOUT=<scratch folder> -DDOC=<docs/results.md>.
 file(REMOVE_RECURSE "${OUT}")
-execute_process(COMMAND "${SWEEP}" --quick --out "${OUT}"
+file(MAKE_DIRECTORY "${OUT}")
+file(COPY_FILE "${DOC}" "${OUT}/results.md")
+execute_process(COMMAND "${SWEEP}" --quick --out "${OUT}" --update-doc "${OUT}/results.md"
   RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "tilelight_sweep --quick exited with ${rc}\nstdout:\n${stdout}\nstderr:\n${stderr}")
@@ -28,6 +31,20 @@ foreach(heading IN ITEMS "### Optimised vs raw permutations (64x36)" "### Tile s
     message(FATAL_ERROR "tilelight_sweep --quick printed no '${heading}'\nstdout:\n${stdout}")
   endif()
 endforeach()
+
+# Every table of the page replaced: none of its 1280x720 rows (57600 tiles) is left, the tiny
+# sizes' rows are there.
+file(READ "${OUT}/results.md" doc)
+foreach(row IN ITEMS "| 144 |" "| 96x54 |" "Device: ")
+  string(FIND "${doc}" "${row}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "tilelight_sweep --update-doc left no '${row}' in ${OUT}/results.md")
+  endif()
+endforeach()
+string(FIND "${doc}" "| 57600 |" at)
+if(NOT at EQUAL -1)
+  message(FATAL_ERROR "tilelight_sweep --update-doc left a 1280x720 row in ${OUT}/results.md")
+endif()
 
 # Every configuration must still draw the classified frame equal to the naive one.
 file(READ "${OUT}/results.json" json)

@@ -37,18 +37,21 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
                "tilelight_sweep");
   std::vector<std::string> sizes{"720p", "1080p", "1440p"};
   cli.add_option("--frames", options.frames, "timed frames per configuration")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(1u, 10000u))
       ->capture_default_str();
   cli.add_option("--out", options.out, "output folder")->capture_default_str();
   cli.add_option("--sizes", sizes, "frame sizes: 720p, 1080p, 1440p or WxH; the first is the comparisons' size")
       ->delimiter(',')
       ->capture_default_str();
   cli.add_option("--device", options.device, "Vulkan device: index or name substring (default: lavapipe)");
+  cli.add_option("--update-doc", options.update_doc,
+                 "markdown file whose <!-- sweep:ID --> sections get the new tables (docs/results.md)");
   cli.add_flag("--quick", options.quick, "smoke run: sizes 64x36,96x54 and 1 frame (overrides --sizes, --frames)");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    exit_code = cli.exit(e, out, err);
+    // CLI11 prints help or the error; usage errors exit 2 like tilelight's, whatever CLI11's code.
+    exit_code = cli.exit(e, out, err) == 0 ? 0 : 2;
     return false;
   }
   if (options.quick) {

@@ -21,6 +21,8 @@ struct SweepOptions {
   std::vector<FrameSize> sizes;
   std::string device;  // as tilelight --device: "" = lavapipe, an index or a name substring
   bool quick = false;
+  // A markdown file whose marked sections (see doc_update.h) get the new tables; "" = none.
+  std::string update_doc;
 };
 
 // "720p", "1080p", "1440p" or "<width>x<height>". Throws tilelight::Error:
@@ -28,7 +30,7 @@ struct SweepOptions {
 FrameSize parse_frame_size(const std::string& text);
 
 // Parses argv. On --help or a usage error it prints to `out` / `err` and sets `exit_code`
-// (0 for help, non-zero otherwise), returning false; true means go on and sweep.
+// (0 for help, 2 for a usage error), returning false; true means go on and sweep.
 bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& options, int& exit_code,
                          std::ostream& out, std::ostream& err);
 
