@@ -66,6 +66,23 @@ void update_document(const std::filesystem::path& path, std::map<std::string, st
   folder.commit();
 }
 
+// Prints the run line and every comparison's table on stdout and stages its chart in `files`;
+// returns the tables by comparison id, and the run line as "run" (the document's sections).
+std::map<std::string, std::string> report_comparisons(const SweepPlan& plan, const std::vector<Measurement>& measurements,
+                                                      const std::string& run_line, app::OutputFiles& files) {
+  std::map<std::string, std::string> sections{{"run", run_line}};
+  std::cout << run_line;
+  for (const Comparison& c : plan.comparisons) {
+    const std::vector<const Measurement*> rows = rows_of(c, measurements);
+    sections[c.id] = markdown_table(c, rows);
+    std::cout << "\n### " << c.title << "\n\n" << sections[c.id];
+    files.stage(c.id + ".png", [&](const std::filesystem::path& p) {
+      plot::write_bar_chart_png(p, comparison_chart(c, rows));
+    });
+  }
+  return sections;
+}
+
 int run_sweep(const SweepOptions& options) {
   ContextOptions context_options;
   context_options.device = options.device;
@@ -80,21 +97,12 @@ int run_sweep(const SweepOptions& options) {
       measure_round_robin(context, make_demo_scene(), plan.configurations, options.frames, std::cerr);
 
   const char* threads = std::getenv("LP_NUM_THREADS");
-  std::map<std::string, std::string> sections;
-  sections["run"] = fmt::format(
+  const std::string run_line = fmt::format(
       "Device: {}, {}x MSAA, median of {} frame(s) after 1 warm-up frame (configurations measured round-robin), "
       "LP_NUM_THREADS={}\n",
       context.device_name(), measurements.front().msaa_samples, options.frames,
       threads != nullptr ? threads : "(default)");
-  std::cout << sections["run"];
-  for (const Comparison& c : plan.comparisons) {
-    const std::vector<const Measurement*> rows = rows_of(c, measurements);
-    sections[c.id] = markdown_table(c, rows);
-    std::cout << "\n### " << c.title << "\n\n" << sections[c.id];
-    files.stage(c.id + ".png", [&](const std::filesystem::path& p) {
-      plot::write_bar_chart_png(p, comparison_chart(c, rows));
-    });
-  }
+  const std::map<std::string, std::string> sections = report_comparisons(plan, measurements, run_line, files);
   const SweepRun run{context.device_name(), threads != nullptr ? threads : "", &options, &plan, &measurements};
   files.stage_text("results.json", results_json(run));
   files.commit();
