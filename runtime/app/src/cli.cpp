@@ -1,6 +1,5 @@
 #include "tilelight_app/cli.h"
 
-#include "output_files.h"
 #include "tilelight/context.h"
 #include "tilelight/error.h"
 #include "tilelight/png.h"
@@ -8,6 +7,7 @@
 #include "tilelight/tile_class_image.h"
 #include "tilelight/tile_renderer.h"
 #include "tilelight_app/failure.h"
+#include "tilelight_app/output_files.h"
 #include "tilelight_app/process_stats.h"
 #include "tilelight_app/report.h"
 

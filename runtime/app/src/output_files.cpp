@@ -1,4 +1,4 @@
-#include "output_files.h"
+#include "tilelight_app/output_files.h"
 
 #include "tilelight/error.h"
 

@@ -1,0 +1,129 @@
+// tilelight_sweep: every design choice of the tile-classified light pass measured side by side
+// in one process (issue 4, target 2). For each comparison it prints a markdown table on stdout
+// and writes a bar chart; DIR/results.json holds every number. Progress goes to stderr.
+//
+//   tilelight_sweep [--frames N] [--out DIR] [--sizes 720p,1080p,1440p] [--device ...] [--quick]
+//                   [--update-doc docs/results.md]
+
+#include "sweep/doc_update.h"
+#include "sweep/measurement.h"
+#include "sweep/sweep_charts.h"
+#include "sweep/sweep_json.h"
+#include "sweep/sweep_options.h"
+#include "sweep/sweep_plan.h"
+#include "sweep/sweep_tables.h"
+
+#include "plot/bar_chart.h"
+#include "tilelight/context.h"
+#include "tilelight/error.h"
+#include "tilelight/scene.h"
+#include "tilelight_app/output_files.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace {
+
+using namespace tilelight;
+using namespace tilelight::sweep;
+
+std::vector<const Measurement*> rows_of(const Comparison& c, const std::vector<Measurement>& measurements) {
+  std::map<std::string, const Measurement*> by_key;
+  for (const Measurement& m : measurements) by_key[m.key] = &m;
+  std::vector<const Measurement*> rows;
+  for (const std::string& key : c.keys) rows.push_back(by_key.at(key));
+  return rows;
+}
+
+std::string read_document(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (!file) throw Error("--update-doc " + path.string() + ": cannot read: " + std::strerror(errno));
+  return text.str();
+}
+
+// The document's sweep sections: one per comparison, and "run" for the line naming the run.
+std::map<std::string, std::string> empty_sections(const SweepPlan& plan) {
+  std::map<std::string, std::string> sections{{"run", ""}};
+  for (const Comparison& c : plan.comparisons) sections[c.id] = "";
+  return sections;
+}
+
+void update_document(const std::filesystem::path& path, std::map<std::string, std::string> sections) {
+  // Blank lines around each section keep the markers (HTML comments) apart from the tables.
+  for (auto& [id, content] : sections) content = "\n" + content + "\n";
+  const std::string text = replace_marked_sections(read_document(path), sections, path.string());
+  app::OutputFiles folder(path.has_parent_path() ? path.parent_path() : ".");
+  folder.stage_text(path.filename().string(), text);
+  folder.commit();
+}
+
+// Prints the run line and every comparison's table on stdout and stages its chart in `files`;
+// returns the tables by comparison id, and the run line as "run" (the document's sections).
+std::map<std::string, std::string> report_comparisons(const SweepPlan& plan, const std::vector<Measurement>& measurements,
+                                                      const std::string& run_line, app::OutputFiles& files) {
+  std::map<std::string, std::string> sections{{"run", run_line}};
+  std::cout << run_line;
+  for (const Comparison& c : plan.comparisons) {
+    const std::vector<const Measurement*> rows = rows_of(c, measurements);
+    sections[c.id] = markdown_table(c, rows);
+    std::cout << "\n### " << c.title << "\n\n" << sections[c.id];
+    files.stage(c.id + ".png", [&](const std::filesystem::path& p) {
+      plot::write_bar_chart_png(p, comparison_chart(c, rows));
+    });
+  }
+  return sections;
+}
+
+int run_sweep(const SweepOptions& options) {
+  ContextOptions context_options;
+  context_options.device = options.device;
+  const Context context(context_options);
+  app::OutputFiles files(options.out);  // proves --out writable before the long part
+  const SweepPlan plan = make_sweep_plan(options);
+  // A document without its markers fails now, not after the long part.
+  if (!options.update_doc.empty()) {
+    (void)replace_marked_sections(read_document(options.update_doc), empty_sections(plan), options.update_doc);
+  }
+  const std::vector<Measurement> measurements =
+      measure_round_robin(context, make_demo_scene(), plan.configurations, options.frames, std::cerr);
+
+  const char* threads = std::getenv("LP_NUM_THREADS");
+  const std::string run_line = fmt::format(
+      "Device: {}, {}x MSAA, median of {} frame(s) after 1 warm-up frame (configurations measured round-robin), "
+      "LP_NUM_THREADS={}\n",
+      context.device_name(), measurements.front().msaa_samples, options.frames,
+      threads != nullptr ? threads : "(default)");
+  const std::map<std::string, std::string> sections = report_comparisons(plan, measurements, run_line, files);
+  const SweepRun run{context.device_name(), threads != nullptr ? threads : "", &options, &plan, &measurements};
+  files.stage_text("results.json", results_json(run));
+  files.commit();
+  std::cerr << "wrote " << (files.folder() / "results.json").string() << " and one PNG per comparison\n";
+  if (!options.update_doc.empty()) {
+    update_document(options.update_doc, sections);
+    std::cerr << "updated the tables in " << options.update_doc << '\n';
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  SweepOptions options;
+  int exit_code = 0;
+  try {
+    if (!parse_sweep_options(argc, argv, options, exit_code, std::cout, std::cerr)) return exit_code;
+    return run_sweep(options);
+  } catch (const std::exception& e) {
+    std::cerr << "tilelight_sweep: error: " << e.what() << '\n';
+    return 1;
+  }
+}

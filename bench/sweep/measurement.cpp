@@ -1,0 +1,83 @@
+#include "measurement.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <memory>
+
+namespace tilelight::sweep {
+namespace {
+
+struct Run {
+  std::unique_ptr<TileRenderer> renderer;
+  std::vector<FrameTimings> timings;
+  FrameResult last;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Measurement finish(const Run& run, const RendererOptions& options, std::uint32_t frames) {
+  Measurement m;
+  m.key = configuration_key(options);
+  m.options = options;
+  m.frames = frames;
+  m.timings = app::median_timings(run.timings);
+  m.msaa_samples = run.renderer->msaa_samples();
+  m.pipelines = run.renderer->pipeline_count();
+  m.tiles = run.renderer->grid().tile_count();
+  m.primitives_uncoalesced = run.last.stats.primitives_uncoalesced;
+  m.primitives_coalesced = run.last.stats.primitives_coalesced;
+  m.equivalence = app::compare_frames(run.renderer->read_classified(), run.renderer->read_naive());
+  return m;
+}
+
+}  // namespace
+
+double Measurement::speedup() const {
+  const double classified = classified_light();
+  return classified > 0 ? timings.naive_light / classified : 0.0;
+}
+
+std::string configuration_key(const RendererOptions& o) {
+  return fmt::format("{}x{} tile {} {} {} {}", o.width, o.height, o.tile_size,
+                     o.path == IndexPath::gpu ? "gpu" : "cpu", o.raw_permutations ? "raw" : "optimised",
+                     o.coalesce ? "coalesced" : "uncoalesced");
+}
+
+std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,
+                                             const std::vector<RendererOptions>& configurations,
+                                             std::uint32_t frames, std::ostream& progress) {
+  const std::size_t n = configurations.size();
+  std::vector<Run> runs(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    progress << fmt::format("[{}/{}] {}: set-up and warm-up frame", i + 1, n, configuration_key(configurations[i]))
+             << std::flush;
+    runs[i].renderer = std::make_unique<TileRenderer>(context, scene, configurations[i]);
+    // The warm-up frame takes the drivers' lazy pipeline compilation out of the timings.
+    runs[i].renderer->render_frame();
+    progress << fmt::format(" ({:.1f} s)\n", seconds_since(start));
+  }
+  for (std::uint32_t f = 0; f < frames; ++f) {
+    const auto start = std::chrono::steady_clock::now();
+    progress << fmt::format("round {}/{}: one frame of each configuration", f + 1, frames) << std::flush;
+    for (Run& run : runs) {
+      run.last = run.renderer->render_frame();
+      run.timings.push_back(run.last.timings);
+    }
+    progress << fmt::format(" ({:.1f} s)\n", seconds_since(start));
+  }
+  std::vector<Measurement> measurements;
+  for (std::size_t i = 0; i < n; ++i) {
+    measurements.push_back(finish(runs[i], configurations[i], frames));
+    const Measurement& m = measurements.back();
+    progress << fmt::format("[{}/{}] {}: speed-up {:.2f}x, {} pixels differ\n", i + 1, n, m.key, m.speedup(),
+                            m.equivalence.pixels_different);
+    runs[i].renderer.reset();  // its memory is not needed any more
+  }
+  return measurements;
+}
+
+}  // namespace tilelight::sweep

@@ -1,0 +1,49 @@
+#pragma once
+// One configuration of the renderer measured: medians of every stage over the timed frames,
+// the primitive counts, and whether the classified frame still equals the naive one.
+
+#include "tilelight/context.h"
+#include "tilelight/scene.h"
+#include "tilelight/tile_renderer.h"
+#include "tilelight_app/report.h"
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace tilelight::sweep {
+
+struct Measurement {
+  std::string key;  // configuration_key(options): unique per configuration
+  RendererOptions options;
+  std::uint32_t frames = 0;
+  std::uint32_t msaa_samples = 0;
+  std::uint32_t pipelines = 0;  // lighting pipelines the tile pass binds (32 or 96)
+  std::uint32_t tiles = 0;
+  std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0;
+  app::MedianTimings timings;
+  app::Equivalence equivalence;
+
+  // The index build of whichever path ran (the other one is 0).
+  double index_build() const { return timings.index_build_cpu + timings.index_build_gpu; }
+  // What the classified frame spends on lighting: classification + index build + tiled light.
+  double classified_light() const { return timings.classification + index_build() + timings.tiled_light; }
+  // naive light / classified_light(); 0 when nothing was timed.
+  double speedup() const;
+};
+
+// "1280x720 tile 4 cpu optimised coalesced": names a configuration in keys and progress lines.
+std::string configuration_key(const RendererOptions& options);
+
+// Makes one renderer per configuration and renders one untimed warm-up frame with each, then
+// `frames` timed rounds (precondition: frames >= 1), each round one frame of every
+// configuration in turn: on a shared machine, a change of load then hits every configuration
+// alike instead of whichever happened to be measured at the time. Finally reads both images
+// of each back and compares them. Progress lines go to `progress`. Results are in the order
+// of `configurations`.
+std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,
+                                             const std::vector<RendererOptions>& configurations,
+                                             std::uint32_t frames, std::ostream& progress);
+
+}  // namespace tilelight::sweep

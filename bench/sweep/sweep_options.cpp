@@ -1,0 +1,66 @@
+#include "sweep_options.h"
+
+#include "tilelight/error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+
+namespace tilelight::sweep {
+namespace {
+
+bool parse_positive(std::string_view text, std::uint32_t& value) {
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc() && end == text.data() + text.size() && value > 0;
+}
+
+}  // namespace
+
+FrameSize parse_frame_size(const std::string& text) {
+  if (text == "720p") return {1280, 720, text};
+  if (text == "1080p") return {1920, 1080, text};
+  if (text == "1440p") return {2560, 1440, text};
+  const std::size_t x = text.find('x');
+  FrameSize size{0, 0, text};
+  if (x != std::string::npos && parse_positive(std::string_view(text).substr(0, x), size.width) &&
+      parse_positive(std::string_view(text).substr(x + 1), size.height)) {
+    return size;
+  }
+  throw Error("--sizes " + text + ": expected 720p, 1080p, 1440p or <width>x<height>");
+}
+
+bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& options, int& exit_code,
+                         std::ostream& out, std::ostream& err) {
+  CLI::App cli("tilelight_sweep: every design choice of the tile-classified light pass measured side by side\n"
+               "in one process (medians over --frames after one warm-up frame); writes DIR/results.json,\n"
+               "one PNG chart per comparison, and markdown tables on stdout.",
+               "tilelight_sweep");
+  std::vector<std::string> sizes{"720p", "1080p", "1440p"};
+  cli.add_option("--frames", options.frames, "timed frames per configuration")
+      ->check(CLI::Range(1u, 10000u))
+      ->capture_default_str();
+  cli.add_option("--out", options.out, "output folder")->capture_default_str();
+  cli.add_option("--sizes", sizes, "frame sizes: 720p, 1080p, 1440p or WxH; the first is the comparisons' size")
+      ->delimiter(',')
+      ->capture_default_str();
+  cli.add_option("--device", options.device, "Vulkan device: index or name substring (default: lavapipe)");
+  cli.add_option("--update-doc", options.update_doc,
+                 "markdown file whose <!-- sweep:ID --> sections get the new tables (docs/results.md)");
+  cli.add_flag("--quick", options.quick, "smoke run: sizes 64x36,96x54 and 1 frame (overrides --sizes, --frames)");
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints help or the error; usage errors exit 2 like tilelight's, whatever CLI11's code.
+    exit_code = cli.exit(e, out, err) == 0 ? 0 : 2;
+    return false;
+  }
+  if (options.quick) {
+    sizes = {"64x36", "96x54"};
+    options.frames = 1;
+  }
+  options.sizes.clear();
+  for (const std::string& s : sizes) options.sizes.push_back(parse_frame_size(s));
+  return true;
+}
+
+}  // namespace tilelight::sweep

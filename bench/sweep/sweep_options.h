@@ -1,0 +1,37 @@
+#pragma once
+// The command line of tilelight_sweep: how many frames, which sizes, which device, where to.
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace tilelight::sweep {
+
+struct FrameSize {
+  std::uint32_t width = 0, height = 0;
+  std::string name;  // as given on the command line ("720p", "96x54")
+};
+
+struct SweepOptions {
+  std::uint32_t frames = 5;
+  std::string out = "tilelight-sweep";
+  // The first size is the one every design-choice comparison runs at; all of them make the
+  // resolution comparison.
+  std::vector<FrameSize> sizes;
+  std::string device;  // as tilelight --device: "" = lavapipe, an index or a name substring
+  bool quick = false;
+  // A markdown file whose marked sections (see doc_update.h) get the new tables; "" = none.
+  std::string update_doc;
+};
+
+// "720p", "1080p", "1440p" or "<width>x<height>". Throws tilelight::Error:
+//   "--sizes <text>: expected 720p, 1080p, 1440p or <width>x<height>"
+FrameSize parse_frame_size(const std::string& text);
+
+// Parses argv. On --help or a usage error it prints to `out` / `err` and sets `exit_code`
+// (0 for help, 2 for a usage error), returning false; true means go on and sweep.
+bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& options, int& exit_code,
+                         std::ostream& out, std::ostream& err);
+
+}  // namespace tilelight::sweep

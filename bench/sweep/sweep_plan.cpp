@@ -1,0 +1,82 @@
+#include "sweep_plan.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace tilelight::sweep {
+namespace {
+
+class PlanBuilder {
+ public:
+  explicit PlanBuilder(RendererOptions base) : base_(std::move(base)) {}
+
+  // Adds a comparison whose rows are the base configuration changed by each of `variants`.
+  template <typename Variant>
+  void compare(Facet facet, std::string id, std::string title, const std::vector<Variant>& variants,
+               void (*apply)(RendererOptions&, const Variant&)) {
+    Comparison c{facet, std::move(id), std::move(title), {}};
+    for (const Variant& v : variants) {
+      RendererOptions o = base_;
+      apply(o, v);
+      c.keys.push_back(add(o));
+    }
+    plan_.comparisons.push_back(std::move(c));
+  }
+
+  SweepPlan take() { return std::move(plan_); }
+
+ private:
+  std::string add(const RendererOptions& options) {
+    const std::string key = configuration_key(options);
+    const bool known = std::any_of(plan_.configurations.begin(), plan_.configurations.end(),
+                                   [&](const RendererOptions& o) { return configuration_key(o) == key; });
+    if (!known) plan_.configurations.push_back(options);
+    return key;
+  }
+
+  RendererOptions base_;
+  SweepPlan plan_;
+};
+
+}  // namespace
+
+SweepPlan make_sweep_plan(const SweepOptions& options) {
+  RendererOptions base;
+  base.width = options.sizes.front().width;
+  base.height = options.sizes.front().height;
+  const std::string at = fmt::format(" ({}x{})", base.width, base.height);
+  PlanBuilder b(base);
+  b.compare<bool>(Facet::permutations, "permutations", "Optimised vs raw permutations" + at, {false, true},
+                  [](RendererOptions& o, const bool& raw) { o.raw_permutations = raw; });
+  b.compare<std::uint32_t>(Facet::tile_size, "tile_size", "Tile size 4 vs 8 vs 16" + at, {4, 8, 16},
+                           [](RendererOptions& o, const std::uint32_t& t) { o.tile_size = t; });
+  b.compare<IndexPath>(Facet::index_path, "index_path", "CPU patching vs GPU-driven index build" + at,
+                       {IndexPath::cpu, IndexPath::gpu},
+                       [](RendererOptions& o, const IndexPath& p) { o.path = p; });
+  b.compare<bool>(Facet::coalescing, "coalescing", "Coalesced vs uncoalesced tiles" + at, {true, false},
+                  [](RendererOptions& o, const bool& c) { o.coalesce = c; });
+  b.compare<FrameSize>(Facet::resolution, "resolution", "Resolution scaling, naive vs classified", options.sizes,
+                       [](RendererOptions& o, const FrameSize& s) {
+                         o.width = s.width;
+                         o.height = s.height;
+                       });
+  b.compare<bool>(Facet::stages, "stages", "Per-stage cost, naive vs classified" + at, {true},
+                  [](RendererOptions&, const bool&) {});
+  return b.take();
+}
+
+std::string row_label(Facet facet, const Measurement& m) {
+  const RendererOptions& o = m.options;
+  switch (facet) {
+    case Facet::permutations: return fmt::format("{} ({})", o.raw_permutations ? "raw" : "optimised", m.pipelines);
+    case Facet::tile_size: return fmt::format("tile {}", o.tile_size);
+    case Facet::index_path: return o.path == IndexPath::gpu ? "GPU-driven" : "CPU patching";
+    case Facet::coalescing: return o.coalesce ? "coalesced" : "uncoalesced";
+    case Facet::resolution:
+    case Facet::stages: return fmt::format("{}x{}", o.width, o.height);
+  }
+  return m.key;
+}
+
+}  // namespace tilelight::sweep
