@@ -13,6 +13,7 @@
 #include "input_cache.h"
 #include "phase_clock.h"
 #include "sha256.h"
+#include "source_key.h"
 #include "spirv_passes.h"
 #include "thread_pool.h"
 
@@ -157,7 +158,7 @@ private:
                 continue;
             }
             for (const auto& include : results[i]->includes) dependencies.insert(include);
-            assign_source(i, cache_key(stage_name(d_.jobs[i].stage), results[i]->text), by_key);
+            assign_source(i, cache_key(stage_name(d_.jobs[i].stage), key_text(results[i]->text)), by_key);
             reads.push_back(std::move(results[i]->reads));
         }
         d_.dependencies.assign(dependencies.begin(), dependencies.end());

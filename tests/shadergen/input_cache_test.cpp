@@ -2,8 +2,8 @@
 // in a temporary folder: a warm build that skips preprocessing writes exactly what a cold
 // build writes (depfile included); a corrupted or foreign entry reads as a miss; any change to
 // a file the preprocessor read, or a file appearing where an include was probed, forces
-// preprocessing; and editing code inside one #ifdef block recompiles exactly the permutations
-// that define that feature.
+// preprocessing; and editing code inside one #ifdef block (in place or by adding a line)
+// recompiles exactly the permutations that define that feature.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -15,6 +15,7 @@
 #include "input_cache.h"
 #include "sha256.h"
 #include "shadergen/build.h"
+#include "source_key.h"
 
 namespace {
 
@@ -169,7 +170,8 @@ TEST(InputCache, FileAppearingWhereAnIncludeWasProbedIsPreprocessedAgain) {
     ToyCopy toy;
     ASSERT_TRUE(toy.build("before").ok());
     fs::copy_file(toy.file("include/particle_common.glsl"), toy.file("particle_common.glsl"));
-    toy.replace_in("particle_common.glsl", "\n", "\n// shadowing copy\n");
+    sgtest::write_file(toy.file("particle_common.glsl"),
+                       sgtest::read_file(toy.file("particle_common.glsl")) + "const float shadowing_copy = 1.0;\n");
     auto after = toy.build("after");
     ASSERT_TRUE(after.ok()) << first_error(after);
     EXPECT_FALSE(after->inputs_reused);
@@ -206,6 +208,20 @@ TEST(InputCache, EditInsideOneIfdefRecompilesExactlyThePermutationsDefiningIt) {
     EXPECT_EQ(edited->recompiled, expected);
     EXPECT_EQ(edited->reused, edited->permutations - expected);
     EXPECT_TRUE(edited->output_changed);
+
+    // A new line inside the block moves every later line of every permutation; only the
+    // permutations that keep the block have new code.
+    toy.replace_in("particle.frag", "#ifdef SOFT_PARTICLES\n", "#ifdef SOFT_PARTICLES\n    float unused_edit = 0.0;\n");
+    auto inserted = toy.build("out");
+    ASSERT_TRUE(inserted.ok()) << first_error(inserted);
+    EXPECT_EQ(inserted->recompiled, expected);
+}
+
+TEST(SourceKey, DropsBlankLinesAndLineDirectivesOnly) {
+    EXPECT_EQ(shadergen::key_text("#version 450\n\n   \n#line 1 \"a.glsl\"\nfloat x;\n  # line 7\n#linear\nvoid main() {}"),
+              "#version 450\nfloat x;\n#linear\nvoid main() {}\n");
+    EXPECT_EQ(shadergen::key_text("a\n\nb\n"), shadergen::key_text("a\nb\n\n\n"));
+    EXPECT_NE(shadergen::key_text("a b\n"), shadergen::key_text("ab\n"));
 }
 
 TEST(InputCache, StatsLinesSayRecompiledReusedAndThePhases) {
