@@ -255,6 +255,18 @@ public:
                     warm, cold / warm);
         std::printf("  (d) after an edit inside #ifdef %s: rebuild                %8.3f s  %d of %zu permutations recompiled (%zu define %s)\n",
                     define_.c_str(), edit, recompiled_, jobs_.size(), expected_, define_.c_str());
+        std::printf("  every run (s): (a) %s; (b) %s; (c) %s; (d) %s\n", list(script_s_).c_str(), list(cold_s_).c_str(),
+                    list(warm_s_).c_str(), list(edit_s_).c_str());
+    }
+
+    static std::string list(const std::vector<double>& values) {
+        std::string out;
+        char number[32];
+        for (double v : values) {
+            std::snprintf(number, sizeof number, "%s%.3f", out.empty() ? "" : " ", v);
+            out += number;
+        }
+        return out;
     }
 
 private:

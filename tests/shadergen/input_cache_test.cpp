@@ -159,6 +159,7 @@ TEST(InputCache, EditedIncludeIsPreprocessedAgain) {
     auto after = toy.build("after");
     ASSERT_TRUE(after.ok()) << first_error(after);
     EXPECT_FALSE(after->inputs_reused);
+    EXPECT_EQ(after->recompiled, 0u) << "a comment and a line break change no content key";
     auto again = toy.build("again");
     ASSERT_TRUE(again.ok()) << first_error(again);
     EXPECT_TRUE(again->inputs_reused);
