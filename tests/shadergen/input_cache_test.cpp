@@ -225,6 +225,27 @@ TEST(SourceKey, DropsBlankLinesAndLineDirectivesOnly) {
     EXPECT_NE(shadergen::key_text("a b\n"), shadergen::key_text("ab\n"));
 }
 
+TEST(InputCache, CliStatsLineCountsRecompiledAndReusedPermutations) {
+    ToyCopy toy;
+    std::vector<std::string> args{"build", toy.spec().string(), "--out", toy.path("out").string(), "--cache-dir",
+                                  toy.cache().string(), "--stats"};
+    auto first = sgtest::run_process(sgtest::shadergen_exe(), args);
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    EXPECT_TRUE(sgtest::contains(first.out, "\nshadergen: permutations: 17 (17 recompiled, 0 reused); inputs preprocessed\n"))
+        << first.out;
+    auto second = sgtest::run_process(sgtest::shadergen_exe(), args);
+    ASSERT_EQ(second.exit_code, 0) << second.err;
+    EXPECT_TRUE(sgtest::contains(second.out,
+                                 "\nshadergen: permutations: 17 (0 recompiled, 17 reused); inputs unchanged, preprocessing skipped\n"))
+        << second.out;
+    json stats = json::parse(sgtest::read_file(toy.path("out") / "stats.json"));
+    EXPECT_EQ(stats["recompiled_permutations"], 0);
+    EXPECT_EQ(stats["reused_permutations"], 17);
+    EXPECT_EQ(stats["inputs_reused"], true);
+    EXPECT_FALSE(stats["phases_ms"].contains("preprocess"));
+    EXPECT_TRUE(stats["phases_ms"].contains("compile or load"));
+}
+
 TEST(InputCache, StatsLinesSayRecompiledReusedAndThePhases) {
     shadergen::BuildSummary summary;
     summary.permutations = 17;
