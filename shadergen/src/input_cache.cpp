@@ -26,7 +26,9 @@ bool read_count(std::istream& in, std::string_view word, std::size_t& count) {
     std::string line;
     if (!std::getline(in, line) || line.rfind(std::string(word) + " ", 0) != 0) return false;
     std::string digits = line.substr(word.size() + 1);
-    if (digits.empty() || digits.size() > 7 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) return false;
+    if (digits.empty() || digits.size() > 7 ||
+        !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return false;
     count = std::stoul(digits);
     return count <= kMaxCount;
 }
