@@ -6,8 +6,10 @@
 #include "codegen.h"
 #include "compiled_domain.h"
 #include "file_io.h"
+#include "input_cache.h"
 #include "manifest.h"
 #include "output_dir.h"
+#include "phase_clock.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
 
@@ -47,6 +49,9 @@ BuildSummary summarise(const CompiledDomain& d) {
     s.companions = static_cast<std::uint32_t>(d.spec.companions.size());
     s.unique_sources = static_cast<std::uint32_t>(d.sources.size());
     for (const SourceRecord& source : d.sources) (source.cache_hit ? s.cache_hits : s.compiled)++;
+    s.permutations = static_cast<std::uint32_t>(d.jobs.size());
+    for (const CompileJob& job : d.jobs) (d.sources[static_cast<std::size_t>(job.source)].cache_hit ? s.reused : s.recompiled)++;
+    s.inputs_reused = d.inputs_reused;
     s.unique_blobs = static_cast<std::uint32_t>(d.blobs.size());
     for (const Blob& b : d.blobs) s.optimiser_fallbacks += b.fell_back;
     return s;
@@ -66,23 +71,34 @@ BuildOptions normalised(BuildOptions options) {
 Result<BuildSummary> build(const BuildOptions& given) {
     const BuildOptions options = normalised(given);
     auto start = std::chrono::steady_clock::now();
-    auto spec = load_domain(options.spec_path);
-    if (!spec) return std::move(spec).take_errors();
+    std::vector<PhaseTime> phases;
+    PhaseClock clock(phases);
+    auto loaded = load_spec_with_digest(options.spec_path);
+    if (!loaded) return std::move(loaded).take_errors();
+    Result<DomainSpec> spec(std::move(loaded->spec));
     std::string cpp_name = options.cpp_name.empty() ? spec->name : options.cpp_name;
     std::string ns = options.cpp_namespace.empty() ? spec->name : options.cpp_namespace;
     if (Status ok = check_names(options, cpp_name, ns); !ok) return std::move(ok).take_errors();
     auto plan = expand(*spec);
     if (!plan) return std::move(plan).take_errors();
+    clock.lap("parse spec");
 
     ContentCache cache;
+    InputCache inputs;
     if (options.use_cache) {
         std::filesystem::path dir = options.cache_dir.empty() ? default_cache_directory() : options.cache_dir;
-        if (!dir.empty()) cache = ContentCache(dir);
+        if (!dir.empty()) cache = ContentCache(dir), inputs = InputCache(dir);
     }
-    CompileOptions compile_options{options.jobs, cache.enabled() ? &cache : nullptr, options.verbose, options.log,
-                                   options.cancelled};
+    CompileOptions compile_options{options.jobs, cache.enabled() ? &cache : nullptr, nullptr, {}, options.verbose,
+                                   options.log, options.cancelled};
+    if (inputs.enabled() && !loaded->digest.empty()) {
+        compile_options.inputs = &inputs;
+        compile_options.input_key = input_set_key(options.spec_path, loaded->digest);
+    }
     auto domain = compile_domain(std::move(spec).value(), std::move(plan).value(), compile_options);
     if (!domain) return std::move(domain).take_errors();
+    phases.insert(phases.end(), domain->phases.begin(), domain->phases.end());
+    clock.restart();
 
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const Blob& blob : domain->blobs)
@@ -90,8 +106,10 @@ Result<BuildSummary> build(const BuildOptions& given) {
                                                        ": " + blob.fallback_reason);
     if (options.cancelled && options.cancelled()) return make_error("build interrupted");
     StagedOutput staged = outputs_for(options, *domain, cpp_name, ns, seconds);
+    clock.lap("manifest and codegen");
     auto changed = staged.commit(options.cancelled);
     if (!changed) return std::move(changed).take_errors();
+    clock.lap("output compare or write");
     if (!options.depfile.empty()) {
         std::string target = (options.out_dir / (cpp_name + ".h")).string();
         std::string text = write_depfile(target, *domain);
@@ -99,8 +117,10 @@ Result<BuildSummary> build(const BuildOptions& given) {
             if (Status written = write_file_atomic(options.depfile, text); !written)
                 return std::move(written).take_errors();
     }
+    clock.lap("depfile");
     BuildSummary summary = summarise(*domain);
     summary.output_changed = *changed;
+    summary.phases = std::move(phases);
     summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return summary;
 }

@@ -113,6 +113,7 @@ int run_build(const BuildArgs& a, std::ostream& out, std::ostream& err) {
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, " in %.2f s\n", s.seconds);
     out << seconds;
+    if (a.stats) out << format_build_stats(s);
     return 0;
 }
 

@@ -74,34 +74,58 @@ public:
     std::string run(const std::string& header_name, const std::string& ns) {
         out_ << banner(d_) << "#include " << literal(header_name) << "\n\n#include <span>\n#include <string_view>\n\n"
              << open_namespace(ns) << "namespace {\n\n";
-        words();
+        // The words are most of the bytes: they go straight into one string, not through the stream.
+        std::string text = out_.str();
+        out_.str({});
+        words(text);
         reflections();
         names_and_defines();
         permutations();
         registry();
         out_ << "}  // namespace\n\nconst shadergen::Registry& registry() { return kRegistry; }\n\n"
              << close_namespace(ns);
-        return out_.str();
+        text += out_.str();
+        return text;
     }
 
 private:
-    void words() {
+    void words(std::string& text) {
         std::size_t total = 0;
         for (const Blob& b : d_.blobs) total += b.words.size();
-        out_ << "// " << d_.blobs.size() << " distinct SPIR-V blobs, stored once each.\n";
-        out_ << "constexpr std::uint32_t kWords[" << total << "] = {";
+        text.reserve(text.size() + total * 14 + d_.blobs.size() * 96 + 128);
+        text += "// " + std::to_string(d_.blobs.size()) + " distinct SPIR-V blobs, stored once each.\n";
+        text += "constexpr std::uint32_t kWords[" + std::to_string(total) + "] = {";
         std::size_t offset = 0;
-        char buffer[16];
         for (const Blob& b : d_.blobs) {
             word_offset_.push_back(offset);
-            out_ << "\n    // " << b.hash;
-            for (std::size_t i = 0; i < b.words.size(); ++i) {
-                std::snprintf(buffer, sizeof buffer, "0x%08xu,", b.words[i]);
-                out_ << (i % 8 ? " " : "\n    ") << buffer;
-            }
+            text += "\n    // " + b.hash;
+            append_hex_words(text, b.words);
             offset += b.words.size();
         }
-        out_ << "\n};\n\n";
+        text += "\n};\n\n";
+    }
+
+    // "\n    0x0000abcdu, 0x...u," eight to a line, formatted by hand: per-word printf and
+    // stream calls made this the slowest step of a warm build.
+    static void append_hex_words(std::string& text, const std::vector<std::uint32_t>& words) {
+        static constexpr char kDigits[] = "0123456789abcdef";
+        std::size_t start = text.size();
+        text.resize(start + words.size() * 13 + (words.size() / 8 + 1) * 4);
+        char* out = text.data() + start;
+        for (std::size_t i = 0; i < words.size(); ++i) {
+            if (i % 8) {
+                *out++ = ' ';
+            } else {
+                *out++ = '\n';
+                for (int k = 0; k < 4; ++k) *out++ = ' ';
+            }
+            *out++ = '0';
+            *out++ = 'x';
+            for (int shift = 28; shift >= 0; shift -= 4) *out++ = kDigits[(words[i] >> shift) & 0xFu];
+            *out++ = 'u';
+            *out++ = ',';
+        }
+        text.resize(static_cast<std::size_t>(out - text.data()));
     }
 
     void bindings_array(const char* name, const std::vector<BindingInfo>& list) {

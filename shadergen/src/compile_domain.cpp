@@ -3,13 +3,17 @@
 #include <chrono>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 
 #include "cache.h"
 #include "compiled_domain.h"
 #include "error_grouping.h"
 #include "glsl_compiler.h"
+#include "input_cache.h"
+#include "phase_clock.h"
 #include "sha256.h"
+#include "source_key.h"
 #include "spirv_passes.h"
 #include "thread_pool.h"
 
@@ -75,10 +79,21 @@ public:
 
     Status run() {
         d_.jobs = make_jobs(d_.spec, d_.plan);
-        if (Status s = preprocess_all(); !s) return s;
+        PhaseClock clock(d_.phases);
+        d_.inputs_reused = reuse_inputs();
+        clock.lap("input check");
+        if (!d_.inputs_reused) {
+            if (Status s = preprocess_all(); !s) return s;
+            clock.lap("preprocess");
+        }
         if (Status s = compile_sources(); !s) return s;
+        clock.lap("compile or load");
         if (Status s = reflect_blobs(); !s) return s;
-        return merge();
+        clock.lap("reflect");
+        if (Status s = merge(); !s) return s;
+        clock.lap("layout");
+        remember_inputs();
+        return Ok{};
     }
 
 private:
@@ -88,6 +103,37 @@ private:
 
     void log(const std::string& line) const {
         if (options_.log) options_.log(line);
+    }
+
+    // Gives job `i` the distinct source with this cache key, adding it if new.
+    void assign_source(std::size_t i, const std::string& key, std::map<std::string, int>& by_key) {
+        auto [it, fresh] = by_key.try_emplace(key, static_cast<int>(d_.sources.size()));
+        if (fresh) d_.sources.push_back({key, i, false, 0.0, -1});
+        d_.jobs[i].source = it->second;
+    }
+
+    // With an input-set entry whose every file is unchanged, the preprocessed texts (and so
+    // their keys) are what they were: take the keys and skip glslang altogether.
+    bool reuse_inputs() {
+        if (!options_.inputs || options_.input_key.empty()) return false;
+        auto set = options_.inputs->load(options_.input_key);
+        if (!set || set->source_keys.size() != d_.jobs.size() || !inputs_unchanged(set->files)) return false;
+        std::map<std::string, int> by_key;
+        for (std::size_t i = 0; i < d_.jobs.size(); ++i) assign_source(i, set->source_keys[i], by_key);
+        std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
+        for (const InputRead& file : set->files)
+            if (file.found) dependencies.insert(file.path);
+        d_.dependencies.assign(dependencies.begin(), dependencies.end());
+        return true;
+    }
+
+    void remember_inputs() {
+        if (d_.inputs_reused || !reads_ || !options_.inputs || options_.input_key.empty()) return;
+        InputSet set{std::move(*reads_), {}};
+        for (const CompileJob& job : d_.jobs) set.source_keys.push_back(d_.sources[static_cast<std::size_t>(job.source)].key);
+        // Like the content cache: failing to remember only costs time later.
+        if (Status stored = options_.inputs->store(options_.input_key, set); !stored)
+            log("warning: " + stored.errors().front().to_string());
     }
 
     Status preprocess_all() {
@@ -104,6 +150,7 @@ private:
         std::vector<JobFailure> failures;
         std::map<std::string, int> by_key;
         std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
+        std::vector<std::vector<InputRead>> reads;
         for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
             dependencies.insert(d_.jobs[i].path.lexically_normal());
             if (!results[i]) {
@@ -111,13 +158,12 @@ private:
                 continue;
             }
             for (const auto& include : results[i]->includes) dependencies.insert(include);
-            std::string key = cache_key(stage_name(d_.jobs[i].stage), results[i]->text);
-            auto [it, fresh] = by_key.try_emplace(key, static_cast<int>(d_.sources.size()));
-            if (fresh) d_.sources.push_back({key, i, false, 0.0, -1});
-            d_.jobs[i].source = it->second;
+            assign_source(i, cache_key(stage_name(d_.jobs[i].stage), key_text(results[i]->text)), by_key);
+            reads.push_back(std::move(results[i]->reads));
         }
         d_.dependencies.assign(dependencies.begin(), dependencies.end());
         if (!failures.empty()) return group_failures(d_.jobs, failures);
+        reads_ = merge_reads(reads);
         return Ok{};
     }
 
@@ -251,6 +297,7 @@ private:
 
     CompiledDomain& d_;
     const CompileOptions& options_;
+    std::optional<std::vector<InputRead>> reads_;  // what preprocessing read; nullopt: inconsistent
 };
 
 }  // namespace

@@ -10,12 +10,14 @@
 #include "layout_check.h"
 #include "reflection.h"
 #include "shadergen/diagnostic.h"
+#include "shadergen/build.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
 
 namespace shadergen {
 
 class ContentCache;
+class InputCache;
 
 // One distinct SPIR-V blob; permutations with equal words share it.
 struct Blob {
@@ -59,6 +61,8 @@ struct CompiledDomain {
     std::vector<Blob> blobs;
     MergedLayout layout;
     std::vector<std::filesystem::path> dependencies;  // spec, shaders, includes; sorted, unique
+    bool inputs_reused = false;       // source keys came from the input-set cache, no preprocessing
+    std::vector<PhaseTime> phases;    // preprocess (or input check), compile or load, reflect, layout
 
     // Blob of raw ID `id`, or nullptr when pruned. Likewise for optimised IDs and companions.
     const Blob* raw_blob(std::uint32_t id) const;
@@ -69,6 +73,8 @@ struct CompiledDomain {
 struct CompileOptions {
     unsigned jobs = 0;
     const ContentCache* cache = nullptr;  // nullptr: no cache
+    const InputCache* inputs = nullptr;   // nullptr: always preprocess
+    std::string input_key;                // input_set_key() of this build; empty: always preprocess
     bool verbose = false;
     std::function<void(const std::string&)> log;
     std::function<bool()> cancelled;

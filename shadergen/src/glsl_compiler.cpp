@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "file_io.h"
+#include "sha256.h"
 
 namespace shadergen {
 namespace {
@@ -56,22 +57,30 @@ public:
     }
 
     std::vector<std::filesystem::path> take_hits() { return std::move(hits_); }
+    std::vector<InputRead> take_reads() { return std::move(reads_); }
 
 private:
+    // A probe that finds nothing is recorded too: a file created there later would change
+    // what this include resolves to.
     IncludeResult* open(const std::filesystem::path& candidate) {
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(candidate, ec)) return nullptr;
-        auto text = read_file(candidate);
-        if (!text) return nullptr;
-        auto* owned = new std::string(std::move(text).value());
         std::filesystem::path name = candidate.lexically_normal();
+        auto text = std::filesystem::is_regular_file(candidate, ec) ? read_file(candidate)
+                                                                     : Result<std::string>(make_error("absent"));
+        if (!text) {
+            reads_.push_back({name, false, {}});
+            return nullptr;
+        }
+        auto* owned = new std::string(std::move(text).value());
         hits_.push_back(name);
+        reads_.push_back({name, true, sha256_hex(*owned)});
         return new IncludeResult(name.string(), owned->data(), owned->size(), owned);
     }
 
     std::filesystem::path main_file_;
     std::vector<std::filesystem::path> dirs_;
     std::vector<std::filesystem::path> hits_;
+    std::vector<InputRead> reads_;
 };
 
 std::string make_preamble(const std::vector<std::string>& defines) {
@@ -163,6 +172,8 @@ Result<Preprocessed> preprocess(const GlslSource& source) {
                                 job.includer))
         return parse_log(job.shader->getInfoLog(), job.name);
     out.includes = job.includer.take_hits();
+    out.reads.push_back({source.path.lexically_normal(), true, sha256_hex(job.text)});
+    for (InputRead& read : job.includer.take_reads()) out.reads.push_back(std::move(read));
     return out;
 }
 

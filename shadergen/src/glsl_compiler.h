@@ -23,9 +23,18 @@ struct GlslSource {
     std::vector<std::string> defines;                // each becomes `#define NAME 1`
 };
 
+// One file the preprocessor looked at: opened (with the SHA-256 of the bytes it read) or
+// probed on the include search path and not found. Together these decide the text.
+struct InputRead {
+    std::filesystem::path path;
+    bool found = false;
+    std::string digest;  // hex; empty when not found
+};
+
 struct Preprocessed {
     std::string text;                            // what the parser will see; the dedup key
     std::vector<std::filesystem::path> includes; // every file #include opened, in order
+    std::vector<InputRead> reads;                // the shader, its includes and failed probes
 };
 
 // Target: Vulkan 1.2, SPIR-V 1.5, GLSL 450 unless the shader says otherwise.

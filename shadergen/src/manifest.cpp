@@ -154,6 +154,15 @@ std::string write_stats(const CompiledDomain& d, double seconds) {
     w.key("unique_blobs"), w.value(static_cast<std::uint32_t>(d.blobs.size()));
     w.key("optimiser_fallbacks"), w.value(fallbacks);
     w.end_object();
+    std::uint32_t recompiled = 0;
+    for (const CompileJob& job : d.jobs) recompiled += !d.sources[static_cast<std::size_t>(job.source)].cache_hit;
+    w.key("recompiled_permutations"), w.value(recompiled);
+    w.key("reused_permutations"), w.value(static_cast<std::uint32_t>(d.jobs.size()) - recompiled);
+    w.key("inputs_reused"), w.value(d.inputs_reused);
+    w.key("phases_ms");
+    w.begin_object();
+    for (const PhaseTime& phase : d.phases) w.key(phase.name), w.value(phase.ms);
+    w.end_object();
     w.key("seconds"), w.value(seconds);
     w.key("permutations");
     w.begin_array();

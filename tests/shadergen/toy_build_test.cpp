@@ -362,10 +362,14 @@ TEST(ToyBuildCache, AnExplicitCacheFolderIsTheOnlyOneUsed) {
     else ::unsetenv("SHADERGEN_CACHE_DIR");
     ASSERT_TRUE(summary.ok()) << first_error(summary);
     EXPECT_FALSE(sgtest::fs::exists(decoy));
-    std::size_t entries = 0;
+    std::size_t entries = 0, input_sets = 0;
     for (const auto& entry : sgtest::fs::recursive_directory_iterator(dir / "explicit-cache"))
-        entries += entry.is_regular_file();
+        if (entry.is_regular_file()) {
+            if (entry.path().parent_path().filename() == "inputs") ++input_sets;
+            else ++entries;
+        }
     EXPECT_EQ(entries, 13u) << "one entry per distinct source";
+    EXPECT_EQ(input_sets, 1u) << "one input-set entry for the one spec";
 }
 
 TEST(ToyBuildNames, CppNameAndNamespaceOptionsNameTheGeneratedFiles) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "shadergen/diagnostic.h"
 
@@ -28,6 +29,12 @@ struct BuildOptions {
     std::function<bool()> cancelled;
 };
 
+// Wall time of one phase of a build ("parse spec", "preprocess", "compile or load", ...).
+struct PhaseTime {
+    std::string name;
+    double ms = 0.0;
+};
+
 struct BuildSummary {
     std::uint32_t raw = 0;             // raw permutations in the domain
     std::uint32_t pruned = 0;          // of which impossible
@@ -38,9 +45,18 @@ struct BuildSummary {
     std::uint32_t cache_hits = 0;
     std::uint32_t unique_blobs = 0;    // distinct SPIR-V blobs written
     std::uint32_t optimiser_fallbacks = 0;
+    std::uint32_t permutations = 0;    // compile jobs: unpruned raw + optimised + companions
+    std::uint32_t recompiled = 0;      // of which compiled now (their preprocessed source missed)
+    std::uint32_t reused = 0;          // of which taken from the cache
+    bool inputs_reused = false;        // every input unchanged: preprocessing was skipped
     bool output_changed = false;       // false when every output file already had these bytes
     double seconds = 0.0;
+    std::vector<PhaseTime> phases;     // in order; their sum is close to `seconds`
 };
+
+// Two lines for `--stats`: permutations recompiled vs reused, whether preprocessing was
+// skipped, and the phase timings. Ends with a newline.
+std::string format_build_stats(const BuildSummary& summary);
 
 // Runs the whole build. On failure nothing under out_dir (or the depfile) has changed.
 Result<BuildSummary> build(const BuildOptions& options);
