@@ -11,6 +11,7 @@
 #include <csignal>
 
 #include "cache.h"
+#include "input_cache.h"
 #include "child_process.h"
 #include "fixture_support.h"
 
@@ -52,9 +53,12 @@ std::vector<std::string> bad_cache_files(const fs::path& cache) {
     for (const auto& entry : fs::recursive_directory_iterator(cache)) {
         if (!entry.is_regular_file()) continue;
         const std::string name = entry.path().filename().string();
-        const bool placed = name.size() == 64 && entry.path().parent_path().filename() == name.substr(0, 2);
-        if (!placed || !shadergen::decode_cache_entry(name, sgtest::read_file(entry.path())))
-            bad.push_back(entry.path().lexically_relative(cache).string());
+        const std::string folder = entry.path().parent_path().filename().string();
+        const std::string bytes = sgtest::read_file(entry.path());
+        const bool good = name.size() == 64 && (folder == "inputs" ? shadergen::decode_input_set(name, bytes).has_value()
+                                                                     : folder == name.substr(0, 2) &&
+                                                                           shadergen::decode_cache_entry(name, bytes));
+        if (!good) bad.push_back(entry.path().lexically_relative(cache).string());
     }
     return bad;
 }
@@ -300,8 +304,8 @@ TEST(DamagedCache, RebuildOverItIsByteIdenticalToAColdBuildAndRepairsIt) {
     const auto cold = cold_toy_build(dir / "cold");
     ASSERT_EQ(run_shadergen(build_args(sgtest::toy_spec(), dir / "first", cache)).exit_code, 0);
     std::vector<fs::path> entries;
-    for (const auto& e : fs::recursive_directory_iterator(cache))
-        if (e.is_regular_file()) entries.push_back(e.path());
+    for (const auto& e : fs::recursive_directory_iterator(cache))  // the blobs; not the input sets
+        if (e.is_regular_file() && e.path().parent_path().filename() != "inputs") entries.push_back(e.path());
     std::sort(entries.begin(), entries.end());
     ASSERT_EQ(entries.size(), 13u);
 
