@@ -84,6 +84,9 @@ INSTANTIATE_TEST_SUITE_P(
                   "uber_shader, include_dirs, companions, raw, optimised)"},
         ErrorCase{"bit_out_of_range", replace(kBase, "\"C\", \"bit\": 2", "\"C\", \"bit\": 3"),
                   "spec.json:9:29: error: raw.features[2].bit: bit must be an integer from 0 to 2, found 3"},
+        // Once undefined behaviour (a double far outside int64 converted before the range test).
+        ErrorCase{"bit_huge", replace(kBase, "\"C\", \"bit\": 2", "\"C\", \"bit\": 1e300"),
+                  "spec.json:9:29: error: raw.features[2].bit: bit must be an integer from 0 to 2, found 1e+300"},
         ErrorCase{"wrong_type", replace(kBase, "\"bit\": 0, \"define\"", "\"bit\": \"0\", \"define\""),
                   "spec.json:7:29: error: raw.features[0].bit: expected a number, found a string"},
         ErrorCase{"rule_syntax", replace(kBase, "\"A || C\"", "\"A || || C\""),
