@@ -39,7 +39,8 @@ endif()
 set(SHADERGEN_LSAN_SUPPRESSIONS "${PROJECT_SOURCE_DIR}/tests/sanitizers/lsan.supp")
 if(SANITIZE)
   add_library(shadergen_sanitizer_defaults OBJECT
-    ${PROJECT_SOURCE_DIR}/tests/sanitizers/default_options.cpp)
+    ${PROJECT_SOURCE_DIR}/tests/sanitizers/default_options.cpp
+    ${PROJECT_SOURCE_DIR}/tests/sanitizers/keep_drivers_loaded.cpp)
   target_compile_definitions(shadergen_sanitizer_defaults PRIVATE
     SHADERGEN_LSAN_SUPPRESSIONS="${SHADERGEN_LSAN_SUPPRESSIONS}")
 endif()
