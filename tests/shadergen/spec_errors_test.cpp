@@ -39,12 +39,6 @@ std::string replace(std::string text, const std::string& from, const std::string
     return text;
 }
 
-std::string first_error(const std::string& text) {
-    auto result = parse_domain(text, "spec.json");
-    if (result.ok()) return "(no error)";
-    return result.errors().front().to_string();
-}
-
 TEST(SpecErrors, BaseSpecIsValid) {
     auto result = parse_domain(kBase, "dir/spec.json");
     ASSERT_TRUE(result.ok()) << result.errors().front().to_string();
@@ -64,7 +58,7 @@ void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
 class SpecErrorTable : public ::testing::TestWithParam<ErrorCase> {};
 
 TEST_P(SpecErrorTable, ExactDiagnostic) {
-    EXPECT_EQ(first_error(GetParam().text), GetParam().expected);
+    EXPECT_EQ(test::first_spec_error(GetParam().text), GetParam().expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(

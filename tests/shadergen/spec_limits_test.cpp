@@ -8,6 +8,7 @@
 #include "json.h"
 #include "shadergen/domain.h"
 #include "shadergen/expression.h"
+#include "test_helpers.h"
 
 namespace shadergen {
 namespace {
@@ -54,12 +55,6 @@ std::string rule_of_length(std::size_t length) {
 // An array holding `count` zeros: count + 1 JSON values in all.
 std::string array_of_zeros(std::size_t count) { return "[" + repeat("0", count, ",") + "]"; }
 
-std::string first_error(const std::string& text) {
-    auto result = parse_domain(text, "spec.json");
-    if (result.ok()) return "(no error)";
-    return result.errors().front().to_string();
-}
-
 struct LimitCase {
     const char* name;
     std::string text;
@@ -70,7 +65,9 @@ void PrintTo(const LimitCase& c, std::ostream* os) { *os << c.name; }
 
 class SpecLimitTable : public ::testing::TestWithParam<LimitCase> {};
 
-TEST_P(SpecLimitTable, ExactDiagnostic) { EXPECT_EQ(first_error(GetParam().text), GetParam().expected); }
+TEST_P(SpecLimitTable, ExactDiagnostic) {
+    EXPECT_EQ(test::first_spec_error(GetParam().text), GetParam().expected);
+}
 
 INSTANTIATE_TEST_SUITE_P(
     Limits, SpecLimitTable,
