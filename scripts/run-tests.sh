@@ -1,5 +1,6 @@
 #!/bin/sh
-# Every test: install what is missing, build with tests, run the whole CTest suite.
+# Every test: install what is missing, build with tests, run the whole CTest suite; then the
+# same suite again in a sanitizer build.
 set -eu
 cd "$(dirname "$0")/.."
 
@@ -11,3 +12,12 @@ SHADERGEN_CACHE_DIR="$PWD/build/tests/shadergen-cache"
 export SHADERGEN_CACHE_DIR
 cmake --build build/tests
 ctest --test-dir build/tests --output-on-failure --timeout 900 -j 2
+
+# AddressSanitizer + UndefinedBehaviorSanitizer on every target (cmake/Sanitizers.cmake), the
+# shadergen runs at build time and the lavapipe tests included. The sanitizer options and the
+# driver-only leak suppressions are built into the executables (tests/sanitizers/), so a plain
+# `ctest` in build/sanitize behaves the same.
+cmake -S . -B build/sanitize -G Ninja -DSANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADERGEN_BUILD_TESTS=ON
+SHADERGEN_CACHE_DIR="$PWD/build/sanitize/shadergen-cache"
+cmake --build build/sanitize
+ctest --test-dir build/sanitize --output-on-failure --timeout 900 -j 2

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <optional>
 #include <fstream>
 #include <map>
@@ -53,6 +54,12 @@ public:
     Diagnostics& errors() { return errors_; }
 
     void error(const Value& at, std::string_view where, std::string message) {
+        if (errors_.size() > kMaxSpecErrors) return;
+        if (errors_.size() == kMaxSpecErrors) {
+            errors_.push_back(make_error(file_, 0, "more than " + std::to_string(kMaxSpecErrors) +
+                                                       " problems; the rest are not reported"));
+            return;
+        }
         errors_.push_back(Diagnostic{Severity::error, file_, at.line, at.column,
                                      std::string(where) + ": " + std::move(message)});
     }
@@ -94,7 +101,9 @@ public:
         const Value* found = member(object, where, "bit", Type::number);
         if (!found) return std::nullopt;
         double v = found->number;
-        if (v < 0 || v != static_cast<double>(static_cast<std::int64_t>(v)) || v >= limit) {
+        // The range test comes first: converting a double outside an integer type's range (a
+        // "bit" of 1e300; Clang's UBSan flagged it in the fuzz corpus) is undefined behaviour.
+        if (!(v >= 0 && v < limit) || v != std::trunc(v)) {
             error(*found, join(where, "bit"),
                   "bit must be an integer from 0 to " + std::to_string(limit - 1) + ", found " + json_number(v));
             return std::nullopt;
@@ -111,11 +120,26 @@ public:
             Diagnostic d = parsed.errors().front();
             // The value's column points at its opening quote; expression columns are 1-based.
             error(*found, join(where, key),
-                  d.message + " in \"" + found->string + "\" at column " + std::to_string(d.column) +
+                  d.message + " in \"" + quoted_rule(found->string) + "\" at column " + std::to_string(d.column) +
                       " (rules here name " + std::string(symbol_kind) + ")");
             return std::nullopt;
         }
         return Rule{std::move(parsed).value(), found->string, found->line};
+    }
+
+    // A rule as quoted in a message; one over the length limit is shortened, not repeated whole.
+    static std::string quoted_rule(const std::string& text) {
+        constexpr std::size_t kShown = 40;
+        return text.size() <= kMaxExpressionLength ? text : text.substr(0, kShown) + "...";
+    }
+
+    // Records an error and returns false when `list` has more than `limit` entries.
+    bool within_limit(const Value& list, std::string_view where, std::size_t limit, std::string_view what) {
+        if (list.array.size() <= limit) return true;
+        error(list, where,
+              "more than " + std::to_string(limit) + " " + std::string(what) + " (found " +
+                  std::to_string(list.array.size()) + ")");
+        return false;
     }
 
     static std::string join(std::string_view where, std::string_view key) {
@@ -197,7 +221,7 @@ private:
 
     void read_include_dirs(const Value& root) {
         const Value* dirs = reader_.member(root, "spec", "include_dirs", Type::array, false);
-        if (!dirs) return;
+        if (!dirs || !reader_.within_limit(*dirs, "include_dirs", kMaxIncludeDirs, "include folders")) return;
         for (std::size_t i = 0; i < dirs->array.size(); ++i) {
             const Value& dir = dirs->array[i];
             if (dir.type != Type::string) {
@@ -310,7 +334,7 @@ private:
 
     void read_impossible(const Value& raw) {
         const Value* list = reader_.member(raw, "raw", "impossible", Type::array, false);
-        if (!list) return;
+        if (!list || !reader_.within_limit(*list, "raw.impossible", kMaxImpossibleRules, "rules")) return;
         auto symbols = spec_.raw_feature_names();
         for (std::size_t i = 0; i < list->array.size(); ++i) {
             const Value& item = list->array[i];
@@ -378,7 +402,7 @@ private:
 
     void read_variants(const Value& optimised) {
         const Value* list = reader_.member(optimised, "optimised", "variants", Type::array);
-        if (!list) return;
+        if (!list || !reader_.within_limit(*list, "optimised.variants", kMaxVariants, "variants")) return;
         auto symbols = spec_.optimised_bit_names();
         for (std::size_t i = 0; i < list->array.size(); ++i) {
             const Value& item = list->array[i];

@@ -1,6 +1,7 @@
 #include "shadergen/expression.h"
 
 #include <cctype>
+#include <string>
 
 namespace shadergen {
 
@@ -58,6 +59,11 @@ public:
         : text_(text), symbols_(symbols) {}
 
     Result<Expression> run() {
+        if (text_.size() > kMaxExpressionLength) {
+            pos_ = kMaxExpressionLength;
+            return fail("rule is " + std::to_string(text_.size()) + " characters long; the limit is " +
+                        std::to_string(kMaxExpressionLength));
+        }
         auto root = parse_or(0);
         if (!root) return error_;
         skip_space();

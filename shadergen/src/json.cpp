@@ -69,6 +69,8 @@ private:
     bool parse_value(Value& out, int depth) {
         out.line = line_;
         out.column = column();
+        if (++values_ > kMaxJsonValues)
+            return fail("more than " + std::to_string(kMaxJsonValues) + " JSON values"), false;
         if (at_end()) return fail("unexpected end of file (the spec is truncated?)"), false;
         char c = peek();
         if (c == '{' || c == '[') {
@@ -126,7 +128,7 @@ private:
             skip_space();
             Value member;
             if (!parse_value(member, depth)) return false;
-            out.object.emplace_back(std::move(key), std::move(member));
+            out.object.push_back(Member{std::move(key), std::move(member)});
             skip_space();
             if (peek() == ',') {
                 ++pos_;
@@ -271,6 +273,7 @@ private:
     const std::string& file_;
     std::size_t pos_ = 0;
     std::size_t line_start_ = 0;
+    std::size_t values_ = 0;
     int line_ = 1;
     Diagnostic error_;
 };

@@ -8,11 +8,19 @@
 
 #include <sys/wait.h>
 
+#include "shadergen/domain.h"
+
 namespace shadergen::test {
 
 std::filesystem::path source_dir() { return SHADERGEN_SOURCE_DIR; }
 std::filesystem::path split_second_spec() { return source_dir() / "permutations" / "split_second.json"; }
 std::filesystem::path toy_spec() { return source_dir() / "tests" / "fixtures" / "toy" / "toy.json"; }
+
+std::string first_spec_error(const std::string& text) {
+    auto result = parse_domain(text, "spec.json");
+    if (result.ok()) return "(no error)";
+    return result.errors().front().to_string();
+}
 
 std::filesystem::path scratch(const std::string& name) {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();

@@ -20,6 +20,9 @@ void write_text(const std::filesystem::path& path, const std::string& text);
 // Every regular file under `dir`, relative path -> bytes.
 std::map<std::string, std::string> snapshot(const std::filesystem::path& dir);
 
+// The first diagnostic of parse_domain(text, "spec.json") as printed, or "(no error)".
+std::string first_spec_error(const std::string& text);
+
 // Runs a shell command, returns its exit status.
 int run_command(const std::string& command);
 

@@ -23,6 +23,13 @@ namespace shadergen {
 inline constexpr std::uint32_t kMaxRawFeatures = 12;     // 4096 raw permutations
 inline constexpr std::uint32_t kMaxOptimisedBits = 8;       // the LUT stores optimised IDs as bytes
 inline constexpr std::size_t kMaxCompanions = 64;
+inline constexpr std::size_t kMaxIncludeDirs = 64;
+// Rule counts bound the cost of expansion: every impossible rule is evaluated for each of up to
+// 4096 raw IDs, every variant for each of up to 256 optimised IDs.
+inline constexpr std::size_t kMaxImpossibleRules = 64;
+inline constexpr std::size_t kMaxVariants = 256;
+// A spec reports at most this many problems; a hostile file cannot grow the list without bound.
+inline constexpr std::size_t kMaxSpecErrors = 50;
 
 // A rule as written in the spec, with where it was written (for messages).
 struct Rule {

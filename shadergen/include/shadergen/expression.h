@@ -6,6 +6,7 @@
 // time, so an unknown name is an error that points at its column, not a silent false.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -43,6 +44,9 @@ struct Expression::Node {
 
 // Maximum nesting of parentheses and negations; deeper input is rejected (bounded recursion).
 inline constexpr int kMaxExpressionDepth = 64;
+// Maximum length of a rule's text. Bounds the tree (a chain of '&&' is a left-deep tree that
+// evaluation and destruction walk recursively) and the cost of expanding a domain.
+inline constexpr std::size_t kMaxExpressionLength = 1024;
 
 // Parses `text`. `symbols[i]` names bit i. On error the diagnostic's column is 1-based within
 // `text` and its message says what is wrong; the caller adds the file and line.
