@@ -124,17 +124,13 @@ bool pixel_is_edge(ivec2 pixel, int samples)
     return edge;
 }
 
-// The samples that are shaded: all of an edge pixel, else sample 0, which speaks for its equal
-// siblings exactly as the lighting shades only sample 0 of such a pixel.
-int classified_samples(ivec2 pixel, int samples)
-{
-    return pixel_is_edge(pixel, samples) ? samples : 1;
-}
-
+// An edge pixel classifies all its samples; any other pixel sample 0 alone, which speaks for its
+// equal siblings exactly as the lighting shades only sample 0 of such a pixel.
 uint classify_pixel(ivec2 pixel, int samples, inout ShadowBounds bounds)
 {
-    int classified = classified_samples(pixel, samples);
-    uint flags = classified > 1 ? TILE_FLAG_EDGE : 0u;
+    bool edge = pixel_is_edge(pixel, samples);
+    uint flags = edge ? TILE_FLAG_EDGE : 0u;
+    int classified = edge ? samples : 1;
     for (int s = 0; s < classified; ++s) {
         flags |= classify_sample(pixel, s, bounds);
     }

@@ -36,17 +36,11 @@ GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& target
   set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "G-buffer upload set");
   write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, samples_.handle());
 
-  GraphicsPipelineDesc desc;
-  desc.layout = layout_.get();
-  desc.render_pass = targets.gbuffer_pass();
+  GraphicsPipelineDesc desc = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer upload");
   desc.vertex_spirv = companion_spirv("sky_vertex");  // a full-screen triangle
   desc.fragment_spirv = companion_spirv("gbuffer_upload");
-  desc.samples = targets.samples();
-  desc.color_attachments = 3;
-  desc.depth_test = true;
   desc.depth_write = true;
   desc.depth_compare = VK_COMPARE_OP_ALWAYS;
-  desc.name = "G-buffer upload";
   pipeline_ = create_graphics_pipeline(context, desc);
 }
 

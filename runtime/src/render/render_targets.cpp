@@ -139,6 +139,18 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   naive_framebuffer_ = create_framebuffer(context, light_pass_.get(), naive_views, extent, "light target (naive)");
 }
 
+GraphicsPipelineDesc RenderTargets::gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name) const {
+  GraphicsPipelineDesc desc;
+  desc.layout = layout;
+  desc.render_pass = gbuffer_pass();
+  desc.samples = samples_;
+  desc.fragment_constants.set(0, static_cast<std::uint32_t>(samples_));  // GBUFFER_SAMPLES
+  desc.color_attachments = 3;
+  desc.depth_test = true;
+  desc.name = std::move(name);
+  return desc;
+}
+
 void RenderTargets::begin_gbuffer_pass(VkCommandBuffer cmd) const {
   // RT1 cleared to motion ID 0 reads as sky; the sky pass (or the upload) overwrites every
   // pixel anyway, so the colour clear values only matter for debugging.

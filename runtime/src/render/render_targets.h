@@ -4,11 +4,13 @@
 // (classified and naive), which the frame reads back for comparison and the PNGs.
 
 #include "tilelight/image.h"
+#include "tilelight/pipelines.h"
 #include "tilelight/vk_handles.h"
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <string>
 
 namespace tilelight {
 
@@ -52,6 +54,11 @@ class RenderTargets {
 
   // Begins the G-buffer render pass (every target cleared; depth to 1) and sets the viewport.
   void begin_gbuffer_pass(VkCommandBuffer cmd) const;
+
+  // What every pipeline writing the G-buffer shares: this render pass and sample count, the
+  // three colour targets, the depth test, and GBUFFER_SAMPLES (fragment specialization
+  // constant 0, see gbuffer.glsl) for the MSAA-edge bit. Callers add shaders and depth state.
+  GraphicsPipelineDesc gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name) const;
 
  private:
   VkExtent2D extent_;

@@ -65,32 +65,18 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "scene descriptor set");
   write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
 
-  GraphicsPipelineDesc gbuffer;
-  gbuffer.layout = layout_.get();
-  gbuffer.render_pass = targets.gbuffer_pass();
+  GraphicsPipelineDesc gbuffer = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials");
   gbuffer.vertex_spirv = companion_spirv("scene");
   gbuffer.fragment_spirv = companion_spirv("gbuffer");
   gbuffer.vertex_bindings = scene_bindings();
   gbuffer.vertex_attributes = scene_attributes();
-  gbuffer.samples = targets.samples();
-  gbuffer.fragment_constants.set(0, static_cast<std::uint32_t>(targets.samples()));  // GBUFFER_SAMPLES
-  gbuffer.color_attachments = 3;
-  gbuffer.depth_test = true;
   gbuffer.depth_write = true;
-  gbuffer.name = "G-buffer materials";
   gbuffer_pipeline_ = create_graphics_pipeline(context, gbuffer);
 
-  GraphicsPipelineDesc sky;
-  sky.layout = layout_.get();
-  sky.render_pass = targets.gbuffer_pass();
+  GraphicsPipelineDesc sky = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer sky");
   sky.vertex_spirv = companion_spirv("sky_vertex");
   sky.fragment_spirv = companion_spirv("sky");
-  sky.samples = targets.samples();
-  sky.fragment_constants.set(0, static_cast<std::uint32_t>(targets.samples()));  // GBUFFER_SAMPLES
-  sky.color_attachments = 3;
-  sky.depth_test = true;
   sky.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
-  sky.name = "G-buffer sky";
   sky_pipeline_ = create_graphics_pipeline(context, sky);
 
   GraphicsPipelineDesc shadow;
