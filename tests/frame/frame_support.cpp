@@ -44,21 +44,31 @@ ReferenceComparison compare_with_reference(const std::vector<std::uint8_t>& gpu,
                                            const ReferenceClassification& cpu, std::uint32_t tiles_x) {
   namespace bit = split_second::raw_bit;
   const std::uint32_t shadow_bits = bit::SHADOW_SOLID | bit::SHADOW_SOFT;
+  const std::uint32_t exact_bits = bit::SKY | bit::SUN_LIGHT;
+  const std::uint32_t at_least_bits = bit::MSAA_EDGE | bit::SHADOW_FADE | bit::LIGHT_SCATTERING;
   ReferenceComparison result;
   for (std::size_t i = 0; i < gpu.size() && i < cpu.raw_ids.size(); ++i) {
     const std::uint32_t cpu_id = cpu.raw_ids[i];
+    const std::uint32_t gpu_id = gpu[i];
+    const std::uint32_t certain = ~static_cast<std::uint32_t>(cpu.uncertain_bits[i]);
     if (cpu.uncertain_bits[i] != 0) ++result.uncertain_tiles;
-    std::uint32_t expected = cpu_id;
-    const bool settled_by_taps = (cpu_id & bit::SUN_LIGHT) != 0 && (cpu_id & shadow_bits) != bit::SHADOW_SOFT;
-    if (settled_by_taps && (gpu[i] & shadow_bits) == bit::SHADOW_SOFT) {
-      expected = (expected & ~shadow_bits) | bit::SHADOW_SOFT;
-      ++result.soft_by_bounds;
-    } else if (settled_by_taps) {
-      ++result.settled_by_bounds;
+    const char* why = nullptr;
+    if (((gpu_id ^ cpu_id) & exact_bits & certain) != 0) {
+      why = "sky or sun bit differs";
+    } else if ((cpu_id & at_least_bits & certain & ~gpu_id) != 0) {
+      why = "a needed MSAA-edge, fade or scattering bit is missing";
+    } else if ((gpu_id & bit::SUN_LIGHT) != 0) {
+      const std::uint32_t type = gpu_id & shadow_bits;
+      if (type == shadow_bits) why = "both shadow bits";
+      if (type == bit::SHADOW_SOLID && cpu.solid_ruled_out[i]) why = "SOLID, but a sample has a lit tap";
+      if (type == 0 && cpu.lit_ruled_out[i]) why = "no shadow, but a sample has an occluded tap";
+      const bool settled_by_taps = (cpu_id & bit::SUN_LIGHT) != 0 && (cpu_id & shadow_bits) != bit::SHADOW_SOFT;
+      if (settled_by_taps && type == bit::SHADOW_SOFT) ++result.soft_by_bounds;
+      if (settled_by_taps && type != bit::SHADOW_SOFT) ++result.settled_by_bounds;
     }
-    if (((gpu[i] ^ expected) & ~cpu.uncertain_bits[i]) != 0 && result.mismatches++ == 0) {
-      result.first_mismatch = fmt::format("tile ({}, {}): GPU raw ID {:#04x}, CPU {:#04x} (uncertain bits {:#04x})",
-                                          i % tiles_x, i / tiles_x, gpu[i], cpu_id, cpu.uncertain_bits[i]);
+    if (why != nullptr && result.mismatches++ == 0) {
+      result.first_mismatch = fmt::format("tile ({}, {}): GPU raw ID {:#04x}, CPU {:#04x} (uncertain bits {:#04x}): {}",
+                                          i % tiles_x, i / tiles_x, gpu_id, cpu_id, cpu.uncertain_bits[i], why);
     }
   }
   if (gpu.size() != cpu.raw_ids.size()) {

@@ -26,15 +26,17 @@ struct FrameComparison {
 
 FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, double tolerance);
 
-// The GPU's raw IDs against the CPU reference (which counts every tap of every sample). They must
-// be equal except (a) bits the reference marks as near a threshold and (b) SOFT where the taps
-// say SOLID or lit: the GPU settles shadow types from bounds and calls the rest SOFT (full PCF,
-// right for every sample, only slower; see classify_tiles.comp).
+// The GPU's raw IDs against the CPU reference (which classifies every sample and counts every
+// tap), outside the bits the reference marks as near a threshold: SKY and SUN_LIGHT must be
+// equal; MSAA_EDGE, SHADOW_FADE and LIGHT_SCATTERING must be set wherever the reference sets them
+// (more is allowed: those features are exact identities where not needed); the shadow type must
+// be one no sample rules out: SOFT always, SOLID only with no lit tap, none only with no
+// occluded tap (see classify_tiles.comp).
 struct ReferenceComparison {
-  std::size_t mismatches = 0;      // neither (a) nor (b)
-  std::string first_mismatch;      // "tile (x, y): GPU raw ID ..., CPU ..."
+  std::size_t mismatches = 0;
+  std::string first_mismatch;      // "tile (x, y): GPU raw ID ..., CPU ...: why"
   std::size_t uncertain_tiles = 0;
-  std::size_t soft_by_bounds = 0;  // (b)
+  std::size_t soft_by_bounds = 0;  // sunlit tiles the reference calls SOLID or lit, the GPU SOFT
   std::size_t settled_by_bounds = 0;  // sunlit tiles the reference calls SOLID or lit, and so does the GPU
 };
 

@@ -2,28 +2,41 @@
 // classify_tiles.comp -- screen-space tile classification (Split/Second, Sections 4.4-4.6).
 //
 // One invocation classifies one row of a block of 4x4 tiles (Fig. 4.3), tile by tile, and
-// writes the row's four IDs as one uint32. Every decision calls the same include functions as
-// lighting.frag (sun_faces, sun_shadow_lookup, shadow_fade_active, shadow_fade_complete,
-// light_scattering_active), so a tile's ID admits what its pixels need. IDs are bytes
-// in the blocked layout: block b holds 16 bytes, one uint32 per block row (byte i = tile i of
-// the row); tiles beyond the frame's partial edge blocks get 0xFF.
+// writes the row's four IDs as one uint32 (byte i = tile i of the row); tiles beyond the frame's
+// partial edge blocks get 0xFF.
 //
-// The cost is kept far below the lighting's (the point of the technique):
-// - no shared memory, atomics or barriers: on a CPU driver (lavapipe) their bookkeeping alone
-//   costs a third of the full lighting pass; the SIMD lanes are simply rows classified side
-//   by side;
-// - MSAA edges come from the per-sample edge bit the materials write (gbuffer.glsl): one fetch
-//   of one target per sample instead of comparing every target;
-// - the shadow type of a tile comes from bounds instead of 8 taps per sample. The pass over the
-//   tile's pixels collects the rectangle of shadow-map texels that any tap of any sun-facing
-//   sample can touch and the range of the samples' receiver depths; then the stored depths
-//   over that rectangle are read, and
-//     every stored depth >= every receiver depth  -> every tap lit: LIT (exactly);
-//     every stored depth <  every receiver depth, rectangle inside the map -> SHADOWED (exactly);
-//     otherwise (a shadow boundary, or a rectangle too large to read) -> SOFT.
-//   SOFT is full PCF, which is right for every sample, so a tile wrongly called SOFT costs
-//   lighting time, never correctness. Counting each sample's taps to settle those tiles
-//   exactly was measured and cost more classification time than it saved lighting time.
+// What a tile's ID must promise (lighting.frag): SKY and SUN_LIGHT exactly where some sample is
+// sky / faces the sun (sun_faces, the lighting's own test); MSAA_EDGE, SHADOW_FADE and
+// LIGHT_SCATTERING wherever a pixel needs them -- setting them anywhere else is harmless,
+// because each of those features is an exact identity on the pixels that do not need it; and a
+// shadow type that is right for every sun-facing sample whose shadow is not faded out
+// completely: SOLID only if every tap of every such sample is occluded, none if every tap is
+// lit, SOFT (full PCF, right for any sample) otherwise.
+//
+// Per sample the pass only reads what it must: the motion byte (sky), the normal (sun) and the
+// depth. Everything that depends on position is decided per TILE, from bounds, because the
+// lighting computes it with a projective map of (pixel centre, depth):
+//   (x, y, d) -> h = inv_view_proj * (x, y, d, 1) -> world = h.xyz / h.w -> sun map texel P,
+//   receiver depth r, view depth v,
+// and each of P, r, v is a ratio of two affine functions of (x, y, d) with h.w > 0. Such a
+// function is monotonic along every line, so over a convex polytope it takes its extremes at
+// the vertices. The polytope is the tile's pixel-centre rectangle times its depths:
+//   - view depth (fade, scattering): the rectangle x [nearest, farthest geometry depth];
+//   - shadow: a thin prism, the rectangle x [plane + lowest offset, plane + highest offset],
+//     where the plane is fitted to the tile's depths (a planar surface has depths affine in
+//     screen space, so on one surface the prism is nearly flat).
+// Every bound is widened by a rounding margin (shadow_margins below) that covers both the
+// lighting's float arithmetic and this shader's, so a decision that the bounds settle is the
+// one the lighting's own taps would make.
+//
+// The shadow test compares receivers with stored depths relative to a plane r = a.P + q fitted
+// through the prism (for the tile's own surface, q is nearly constant): a tap of a sample at P
+// reads texel t with t - P in (-2.5, 1.5] per axis (sun_shadow.glsl offsets), and is lit when
+// r <= stored(t), which holds for every tap when
+//     max q  <=  min over the tap rectangle of (stored(t) - a.t)  +  min over t - P of a.(t - P).
+// With a = 0 this is "every receiver in front of every stored depth"; with the fitted a, a
+// sloped surface that receives its own shadow map stays LIT as long as the PCF taps do. The
+// mirrored test settles SOLID. Both a = 0 and the fitted a are tried.
 #extension GL_GOOGLE_include_directive : require
 #include "gbuffer.glsl"
 #include "light_scattering.glsl"
@@ -44,75 +57,78 @@ layout(push_constant) uniform ClassifyPush {
     uvec4 grid; // tiles_x, tiles_y, blocks_x, blocks_y
 } push;
 
-// A tile whose tap rectangle holds more texels than this is SOFT without reading it. Measured
-// on the default 720p frame (docs/results.md): larger rectangles settle few more tiles.
-const int MAX_BOUNDED_TEXELS = 128;
+// A tile whose tap rectangle holds more texels than this is SOFT without reading it.
+const int MAX_BOUNDED_TEXELS = 256;
 
-const int INT_MAX = 0x7FFFFFFF;
-const int INT_MIN = -INT_MAX - 1;
+// Unit roundoff of float32 (2^-24). Every rounding margin below is a first-order error bound of
+// the arithmetic involved times a safety factor, MARGIN_ULPS units of roundoff per operation
+// chain; see shadow_margins().
+const float ROUNDOFF = 5.9604645e-8;
+const float MARGIN_ULPS = 16.0;
 
-// An unsigned key with the order of the float (for every non-NaN value; -0 is keyed as +0,
-// because the float comparison finds them equal).
-uint order_key(float value)
-{
-    uint bits = floatBitsToUint(value);
-    if (bits == 0x80000000u) {
-        bits = 0u;
-    }
-    return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
-}
+// Where t - P of a tap can lie, per axis: base = floor(P - 0.5) and offsets -1 .. 2.
+const float TAP_DELTA_MIN = float(SUN_SHADOW_TAP_MIN_OFFSET.x) - 1.5 - 1e-3;
+const float TAP_DELTA_MAX = float(SUN_SHADOW_TAP_MAX_OFFSET.x) - 0.5 + 1e-3;
 
-// What one invocation learns about the sun-facing samples of its pixels.
-struct ShadowBounds {
-    bool  any;            // some sun-facing sample inside the sun's volume
-    ivec2 rect_min;       // tap rectangle, in texels
-    ivec2 rect_max;
-    uint  receiver_min;   // order keys of the biased receiver depths
-    uint  receiver_max;
+// ---------------------------------------------------------------------------------------------
+// Per-tile facts from the samples.
+
+// A depth plane over the tile: depth(first_pixel + (i, j)) ~ origin + dot(gradient, (i, j)).
+struct DepthPlane {
+    float origin;
+    vec2  gradient;
 };
 
-ShadowBounds no_shadow_bounds()
+struct TileSamples {
+    uint  flags;           // TILE_FLAG_SKY / SUN / EDGE
+    float geometry_min;    // depth range of the non-sky samples
+    float geometry_max;
+    float sun_offset_min;  // depth - plane of the sun-facing samples
+    float sun_offset_max;
+};
+
+// Fitted through the depths of the corner pixels (sample 0), skipping corners at depth 1.0 --
+// sky, which the sky pass leaves at the far plane -- so that a tile on a silhouette against the
+// sky keeps its surface's plane. Any plane is sound: a poor fit (several surfaces) only widens
+// the offsets, and with them the prism.
+DepthPlane fit_depth_plane(ivec2 first_pixel, ivec2 last_pixel)
 {
-    return ShadowBounds(false, ivec2(INT_MAX), ivec2(INT_MIN), 0xFFFFFFFFu, 0u);
+    float d00 = gbuffer_load(first_pixel, 0).depth;
+    float d10 = gbuffer_load(ivec2(last_pixel.x, first_pixel.y), 0).depth;
+    float d01 = gbuffer_load(ivec2(first_pixel.x, last_pixel.y), 0).depth;
+    float d11 = gbuffer_load(last_pixel, 0).depth;
+    bool s00 = d00 < 1.0, s10 = d10 < 1.0, s01 = d01 < 1.0, s11 = d11 < 1.0;
+    vec2 span = vec2(max(last_pixel - first_pixel, ivec2(1)));
+    vec2 gradient;
+    gradient.x = s00 && s10 ? (d10 - d00) / span.x : s01 && s11 ? (d11 - d01) / span.x : 0.0;
+    gradient.y = s00 && s01 ? (d01 - d00) / span.y : s10 && s11 ? (d11 - d10) / span.y : 0.0;
+    float origin = s00 ? d00
+                 : s10 ? d10 - gradient.x * span.x
+                 : s01 ? d01 - gradient.y * span.y
+                 : d11 - gradient.x * span.x - gradient.y * span.y;
+    return DepthPlane(origin, gradient);
 }
 
-void add_to_bounds(inout ShadowBounds bounds, SunShadowLookup lookup)
+float plane_offset(DepthPlane plane, ivec2 step, float depth)
 {
-    bounds.any = true;
-    bounds.rect_min = min(bounds.rect_min, lookup.base + SUN_SHADOW_TAP_MIN_OFFSET);
-    bounds.rect_max = max(bounds.rect_max, lookup.base + SUN_SHADOW_TAP_MAX_OFFSET);
-    uint key = order_key(lookup.receiver_depth);
-    bounds.receiver_min = min(bounds.receiver_min, key);
-    bounds.receiver_max = max(bounds.receiver_max, key);
+    return (depth - plane.origin) - dot(plane.gradient, vec2(step));
 }
 
-// Flags of one sample, except the shadow type: a sun-facing sample inside the sun's volume is
-// added to `bounds` instead; one outside it has every tap lit; one whose shadow is faded out
-// completely has no say in the shadow type.
-uint classify_sample(ivec2 pixel, int sample_index, inout ShadowBounds bounds)
+void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, ivec2 pixel, int sample_index)
 {
     GSample g = gbuffer_load(pixel, sample_index);
     if (g.is_sky) {
-        return TILE_FLAG_SKY; // sky takes no lighting: no depth or shadow bits
+        tile.flags |= TILE_FLAG_SKY;
+        return;
     }
-    vec3 world_pos = world_position_from_depth(pixel, g.depth);
-    float view_depth = linear_view_depth(world_pos);
-    uint flags = 0u;
-    if (shadow_fade_active(view_depth)) flags |= TILE_FLAG_FADE;
-    if (light_scattering_active(view_depth)) flags |= TILE_FLAG_SCATTERING;
+    tile.geometry_min = min(tile.geometry_min, g.depth);
+    tile.geometry_max = max(tile.geometry_max, g.depth);
     if (sun_faces(g.normal)) {
-        flags |= TILE_FLAG_SUN;
-        if (shadow_fade_complete(view_depth)) {
-            return flags; // lit alike whatever the tile's shadow type
-        }
-        SunShadowLookup lookup = sun_shadow_lookup(world_pos);
-        if (lookup.in_volume) {
-            add_to_bounds(bounds, lookup);
-        } else {
-            flags |= TILE_FLAG_LIT;
-        }
+        tile.flags |= TILE_FLAG_SUN;
+        float offset = plane_offset(plane, step, g.depth);
+        tile.sun_offset_min = min(tile.sun_offset_min, offset);
+        tile.sun_offset_max = max(tile.sun_offset_max, offset);
     }
-    return flags;
 }
 
 bool pixel_is_edge(ivec2 pixel, int samples)
@@ -124,32 +140,259 @@ bool pixel_is_edge(ivec2 pixel, int samples)
     return edge;
 }
 
-// An edge pixel classifies all its samples; any other pixel sample 0 alone, which speaks for its
+// An edge pixel adds all its samples; any other pixel sample 0 alone, which speaks for its
 // equal siblings exactly as the lighting shades only sample 0 of such a pixel.
-uint classify_pixel(ivec2 pixel, int samples, inout ShadowBounds bounds)
+TileSamples gather_tile(ivec2 first_pixel, ivec2 last_pixel, int samples, DepthPlane plane)
 {
-    bool edge = pixel_is_edge(pixel, samples);
-    uint flags = edge ? TILE_FLAG_EDGE : 0u;
-    int classified = edge ? samples : 1;
-    for (int s = 0; s < classified; ++s) {
-        flags |= classify_sample(pixel, s, bounds);
+    TileSamples tile = TileSamples(0u, 1.0 / 0.0, -1.0 / 0.0, 1.0 / 0.0, -1.0 / 0.0);
+    for (int y = first_pixel.y; y <= last_pixel.y; ++y) {
+        for (int x = first_pixel.x; x <= last_pixel.x; ++x) {
+            ivec2 pixel = ivec2(x, y);
+            bool edge = pixel_is_edge(pixel, samples);
+            int count = 1;
+            if (edge) {
+                tile.flags |= TILE_FLAG_EDGE;
+                count = samples;
+            }
+            for (int s = 0; s < count; ++s) {
+                add_sample(tile, plane, pixel - first_pixel, pixel, s);
+            }
+        }
     }
-    return flags;
+    return tile;
 }
 
-// The part of the tap rectangle inside the map; empty when lo > hi.
-void clipped_rect(ShadowBounds bounds, out ivec2 lo, out ivec2 hi)
+// ---------------------------------------------------------------------------------------------
+// The projective map, per tile.
+
+// Rows of the map from homogeneous camera clip coordinates (x, y, d, 1), composed once per
+// invocation: h.w, the view depth's numerator, and the sun clip position's numerators.
+struct ClipMaps {
+    vec4 w_row;       // h.w
+    vec4 view_row;    // dot(h.xyz, camera_forward)
+    mat4 sun;         // sun_view_proj * inv_view_proj (rows used: x, y, z)
+    vec4 w_row_abs;   // |entries|, for the margins
+    float world_abs;  // max over rows x, y, z of the sum of |inv_view_proj| entries
+};
+
+vec4 matrix_row(mat4 m, int row)
 {
-    lo = max(bounds.rect_min, ivec2(0));
-    hi = min(bounds.rect_max, ivec2(params.shadow_map_size.xy) - 1);
+    return vec4(m[0][row], m[1][row], m[2][row], m[3][row]);
 }
 
-// LIT or SHADOWED when the stored depths under the tap rectangle settle the shadow type of every
-// sample in `bounds`; else PARTIAL, which makes the tile SOFT: full PCF, right for any sample.
-uint shadow_type_from_bounds(ShadowBounds bounds)
+ClipMaps clip_maps()
 {
-    ivec2 lo, hi;
-    clipped_rect(bounds, lo, hi);
+    mat4 inv = params.inv_view_proj;
+    ClipMaps maps;
+    maps.w_row = matrix_row(inv, 3);
+    vec3 forward = params.camera_forward.xyz;
+    maps.view_row = forward.x * matrix_row(inv, 0) + forward.y * matrix_row(inv, 1) + forward.z * matrix_row(inv, 2);
+    maps.sun = params.sun_view_proj * inv;
+    maps.w_row_abs = abs(maps.w_row);
+    maps.world_abs = max(max(dot(abs(matrix_row(inv, 0)), vec4(1.0)), dot(abs(matrix_row(inv, 1)), vec4(1.0))),
+                         dot(abs(matrix_row(inv, 2)), vec4(1.0)));
+    return maps;
+}
+
+// First-order bound on the error of a world position computed by world_position_from_depth()
+// (4-term dot products, one division), for vertices with |x|, |y| <= 1, |d| <= depth_abs,
+// h.w >= w_min and |world| <= world_abs. h.w is a small difference of large terms for distant
+// points, which is what makes them imprecise. MARGIN_ULPS covers the lighting's rounding and
+// this shader's (composed matrices) together.
+float world_error(ClipMaps maps, float depth_abs, float w_min, float world_abs)
+{
+    vec4 v_abs = vec4(1.0, 1.0, max(depth_abs, 1.0), 1.0);
+    float terms = maps.world_abs * max(depth_abs, 1.0);
+    float w_terms = dot(maps.w_row_abs, v_abs);
+    return MARGIN_ULPS * ROUNDOFF * ((terms + world_abs * w_terms) / w_min + world_abs);
+}
+
+// The largest |world coordinate| at a vertex.
+float world_abs_at(vec4 clip, float w)
+{
+    vec3 h = vec3(dot(matrix_row(params.inv_view_proj, 0), clip), dot(matrix_row(params.inv_view_proj, 1), clip),
+                  dot(matrix_row(params.inv_view_proj, 2), clip));
+    vec3 world = abs(h / w);
+    return max(world.x, max(world.y, world.z));
+}
+
+// View-depth range of the rectangle x [depth_min, depth_max].
+struct ViewRange {
+    float lo;
+    float hi;
+};
+
+ViewRange view_range(ClipMaps maps, vec2 ndc_min, vec2 ndc_max, float depth_min, float depth_max)
+{
+    float lo = 1.0 / 0.0;
+    float hi = -1.0 / 0.0;
+    float w_min = 1.0 / 0.0;
+    float world_abs = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        vec4 clip = vec4((i & 1) != 0 ? ndc_max.x : ndc_min.x, (i & 2) != 0 ? ndc_max.y : ndc_min.y,
+                         (i & 4) != 0 ? depth_max : depth_min, 1.0);
+        float w = dot(maps.w_row, clip);
+        float v = dot(maps.view_row, clip) / w;
+        lo = min(lo, v);
+        hi = max(hi, v);
+        w_min = min(w_min, w);
+        world_abs = max(world_abs, world_abs_at(clip, w));
+    }
+    float camera = dot(params.camera_pos.xyz, params.camera_forward.xyz);
+    vec3 forward_abs = abs(params.camera_forward.xyz);
+    float world = world_error(maps, max(abs(depth_min), abs(depth_max)), w_min, world_abs);
+    float margin = (forward_abs.x + forward_abs.y + forward_abs.z)
+                       * (world + MARGIN_ULPS * ROUNDOFF * (world_abs + abs(camera)))
+                   + MARGIN_ULPS * ROUNDOFF * max(abs(lo), abs(hi));
+    if (!(w_min > 0.0)) {
+        return ViewRange(-1.0 / 0.0, 1.0 / 0.0); // no bound: every distance feature, shadow kept
+    }
+    return ViewRange(lo - camera - margin, hi - camera + margin);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Shadow type from the prism.
+
+// Where the prism's samples land in the sun's map, in the lighting's float arithmetic.
+struct PrismBounds {
+    bool  valid;        // false: no usable bound (degenerate or non-finite), the tile is SOFT
+    vec2  p_min;        // texel position range (lookup point, continuous texel coordinates)
+    vec2  p_max;
+    float r_min;        // receiver depth range (biased)
+    float r_max;
+    vec2  slope;        // a: receiver depth per texel of the fitted surface, or 0
+    float q_min[2];     // range of r - a.P, for a = 0 ([0]) and the fitted a ([1])
+    float q_max[2];
+};
+
+// Sun clip numerators (x, y, z) and h.w at a vertex.
+vec4 sun_clip_at(ClipMaps maps, vec4 clip)
+{
+    vec4 s = maps.sun * clip;
+    return vec4(s.xyz, dot(maps.w_row, clip));
+}
+
+void texel_and_receiver(vec4 sun_clip, out vec2 texel, out float receiver)
+{
+    vec3 ndc = sun_clip.xyz / sun_clip.w;
+    texel = (ndc.xy * 0.5 + 0.5) * params.shadow_map_size.xy;
+    receiver = ndc.z - params.distances.w;
+}
+
+// The slope of r over P through three vertices on the plane; 0 where they are (nearly)
+// collinear in the map.
+vec2 fitted_slope(vec2 p0, float r0, vec2 p1, float r1, vec2 p2, float r2)
+{
+    vec2 e1 = p1 - p0;
+    vec2 e2 = p2 - p0;
+    float det = e1.x * e2.y - e1.y * e2.x;
+    if (!(abs(det) > 1e-6 * (dot(e1, e1) + dot(e2, e2)) && abs(det) > 1e-12)) {
+        return vec2(0.0);
+    }
+    vec2 a = vec2((r1 - r0) * e2.y - (r2 - r0) * e1.y, e1.x * (r2 - r0) - e2.x * (r1 - r0)) / det;
+    return all(lessThan(abs(a), vec2(1.0))) ? a : vec2(0.0);
+}
+
+PrismBounds prism_bounds(ClipMaps maps, vec2 ndc_min, vec2 ndc_max, DepthPlane plane, vec2 plane_span,
+                         float offset_min, float offset_max)
+{
+    // Outward rounding of the vertex depths (a few ulps of 1.0: the offsets themselves are
+    // differences of nearby depths and nearly exact).
+    const float depth_slack = 8.0 * ROUNDOFF * 2.0;
+    vec2 p[8];
+    float r[8];
+    float w_min = 1.0 / 0.0;
+    float depth_abs = 0.0;
+    float world_abs = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        vec2 corner = vec2((i & 1) != 0 ? 1.0 : 0.0, (i & 2) != 0 ? 1.0 : 0.0);
+        float depth = plane.origin + dot(plane.gradient, corner * plane_span)
+                      + ((i & 4) != 0 ? offset_max + depth_slack : offset_min - depth_slack);
+        vec4 clip = vec4(mix(ndc_min, ndc_max, corner), depth, 1.0);
+        vec4 sun_clip = sun_clip_at(maps, clip);
+        w_min = min(w_min, sun_clip.w);
+        depth_abs = max(depth_abs, abs(depth));
+        world_abs = max(world_abs, world_abs_at(clip, sun_clip.w));
+        texel_and_receiver(sun_clip, p[i], r[i]);
+    }
+    PrismBounds b;
+    b.valid = w_min > 0.0;
+    b.p_min = vec2(1.0 / 0.0);
+    b.p_max = vec2(-1.0 / 0.0);
+    b.r_min = 1.0 / 0.0;
+    b.r_max = -1.0 / 0.0;
+    b.slope = fitted_slope(p[0], r[0], p[1], r[1], p[2], r[2]);
+    b.q_min[0] = b.q_min[1] = 1.0 / 0.0;
+    b.q_max[0] = b.q_max[1] = -1.0 / 0.0;
+    for (int i = 0; i < 8; ++i) {
+        b.p_min = min(b.p_min, p[i]);
+        b.p_max = max(b.p_max, p[i]);
+        b.r_min = min(b.r_min, r[i]);
+        b.r_max = max(b.r_max, r[i]);
+        float q = r[i] - dot(b.slope, p[i]);
+        b.q_min[1] = min(b.q_min[1], q);
+        b.q_max[1] = max(b.q_max[1], q);
+    }
+    b.q_min[0] = b.r_min;
+    b.q_max[0] = b.r_max;
+    b.valid = b.valid && all(lessThan(abs(vec4(b.p_min, b.p_max)), vec4(1e7)))
+              && abs(b.r_min) < 1e7 && abs(b.r_max) < 1e7 && abs(b.q_min[1]) < 1e7 && abs(b.q_max[1]) < 1e7;
+    if (!b.valid) {
+        return b;
+    }
+
+    // Margins: the world position's error carried through the sun's affine map, plus that
+    // map's own rounding, for the lighting and for this shader alike.
+    float world = world_error(maps, depth_abs, w_min, world_abs);
+    mat4 sun = params.sun_view_proj;
+    vec3 row_abs = vec3(dot(abs(matrix_row(sun, 0).xyz), vec3(1.0)), dot(abs(matrix_row(sun, 1).xyz), vec3(1.0)),
+                        dot(abs(matrix_row(sun, 2).xyz), vec3(1.0)));
+    vec3 shift_abs = abs(matrix_row(sun, 3).xyz) + abs(vec3(sun[3][0], sun[3][1], sun[3][2]));
+    vec3 clip_error = row_abs * world + MARGIN_ULPS * ROUNDOFF * (row_abs * world_abs + shift_abs + 1.0);
+    vec2 map_size = params.shadow_map_size.xy;
+    float p_abs = max(max(abs(b.p_min.x), abs(b.p_max.x)), max(abs(b.p_min.y), abs(b.p_max.y)));
+    vec2 p_error = 0.5 * map_size * clip_error.xy + MARGIN_ULPS * ROUNDOFF * (p_abs + map_size);
+    float r_error = clip_error.z + MARGIN_ULPS * ROUNDOFF * (1.0 + abs(params.distances.w));
+    b.p_min -= p_error;
+    b.p_max += p_error;
+    b.r_min -= r_error;
+    b.r_max += r_error;
+    float slope_abs = abs(b.slope.x) + abs(b.slope.y);
+    float q_error[2];
+    q_error[0] = r_error;
+    q_error[1] = r_error + dot(abs(b.slope), p_error) + MARGIN_ULPS * ROUNDOFF * (1.0 + slope_abs * p_abs);
+    for (int k = 0; k < 2; ++k) {
+        b.q_min[k] -= q_error[k];
+        b.q_max[k] += q_error[k];
+    }
+    return b;
+}
+
+// The smallest / largest a.(t - P) over the tap box.
+float slope_delta_min(vec2 a)
+{
+    return min(a.x * TAP_DELTA_MIN, a.x * TAP_DELTA_MAX) + min(a.y * TAP_DELTA_MIN, a.y * TAP_DELTA_MAX);
+}
+
+float slope_delta_max(vec2 a)
+{
+    return max(a.x * TAP_DELTA_MIN, a.x * TAP_DELTA_MAX) + max(a.y * TAP_DELTA_MIN, a.y * TAP_DELTA_MAX);
+}
+
+uint shadow_type_from_prism(PrismBounds b)
+{
+    if (!b.valid) {
+        return TILE_FLAG_PARTIAL;
+    }
+    // The lighting clamps P to the map +- SUN_SHADOW_TAP_REACH: samples clamped there have no
+    // tap inside the map, so clamping the range here keeps every in-map tap and int() defined.
+    vec2 map_size = params.shadow_map_size.xy;
+    vec2 lo_pos = clamp(b.p_min, vec2(-2.0 * SUN_SHADOW_TAP_REACH), map_size + 2.0 * SUN_SHADOW_TAP_REACH);
+    vec2 hi_pos = clamp(b.p_max, vec2(-2.0 * SUN_SHADOW_TAP_REACH), map_size + 2.0 * SUN_SHADOW_TAP_REACH);
+    ivec2 rect_min = ivec2(floor(lo_pos - 0.5)) + SUN_SHADOW_TAP_MIN_OFFSET;
+    ivec2 rect_max = ivec2(floor(hi_pos - 0.5)) + SUN_SHADOW_TAP_MAX_OFFSET;
+    ivec2 lo = max(rect_min, ivec2(0));
+    ivec2 hi = min(rect_max, ivec2(map_size) - 1);
     if (any(greaterThan(lo, hi))) {
         return TILE_FLAG_LIT; // every tap outside the map, where nothing was rendered
     }
@@ -157,41 +400,73 @@ uint shadow_type_from_bounds(ShadowBounds bounds)
     if (extent.x * extent.y > MAX_BOUNDED_TEXELS) {
         return TILE_FLAG_PARTIAL;
     }
-    uint stored_min = 0xFFFFFFFFu;
-    uint stored_max = 0u;
+    // c = stored - a.t over the rectangle, for a = 0 and the fitted a.
+    float c_min[2] = float[2](1.0 / 0.0, 1.0 / 0.0);
+    float c_max[2] = float[2](-1.0 / 0.0, -1.0 / 0.0);
     for (int y = lo.y; y <= hi.y; ++y) {
         for (int x = lo.x; x <= hi.x; ++x) {
-            uint key = order_key(sun_shadow_stored_depth(ivec2(x, y)));
-            stored_min = min(stored_min, key);
-            stored_max = max(stored_max, key);
+            float stored = sun_shadow_stored_depth(ivec2(x, y));
+            float c = stored - dot(b.slope, vec2(x, y));
+            c_min[0] = min(c_min[0], stored);
+            c_max[0] = max(c_max[0], stored);
+            c_min[1] = min(c_min[1], c);
+            c_max[1] = max(c_max[1], c);
         }
     }
-    // Taps outside the map are lit, so they never stop LIT; SHADOWED needs every tap inside.
-    if (bounds.receiver_max <= stored_min) {
-        return TILE_FLAG_LIT;
+    float c_error = MARGIN_ULPS * ROUNDOFF * (1.0 + dot(abs(b.slope), map_size));
+    vec2 slopes[2] = vec2[2](vec2(0.0), b.slope);
+    // Taps outside the map are lit, so they never stop LIT.
+    for (int k = 0; k < 2; ++k) {
+        if (b.q_max[k] <= c_min[k] - c_error + slope_delta_min(slopes[k])) {
+            return TILE_FLAG_LIT;
+        }
     }
-    bool inside_map = all(equal(lo, bounds.rect_min)) && all(equal(hi, bounds.rect_max));
-    if (inside_map && bounds.receiver_min > stored_max) {
-        return TILE_FLAG_SHADOWED;
+    // SHADOWED needs every tap inside the map and every sample inside the sun's depth range
+    // (outside it, sun_shadow_lookup() counts all taps lit).
+    bool inside_map = all(equal(lo, rect_min)) && all(equal(hi, rect_max));
+    float bias = params.distances.w;
+    bool in_volume = b.r_min + bias >= 0.0 && b.r_max + bias <= 1.0;
+    if (inside_map && in_volume) {
+        for (int k = 0; k < 2; ++k) {
+            if (b.q_min[k] > c_max[k] + c_error + slope_delta_max(slopes[k])) {
+                return TILE_FLAG_SHADOWED;
+            }
+        }
     }
     return TILE_FLAG_PARTIAL;
 }
 
+// ---------------------------------------------------------------------------------------------
+
 // The raw ID of `tile`, which lies inside the grid.
-uint classify_tile(uvec2 tile, ivec2 size, int samples)
+uint classify_tile(ClipMaps maps, uvec2 tile, ivec2 size, int samples)
 {
     ivec2 first_pixel = ivec2(tile * TILE_SIZE);
-    ivec2 end_pixel = min(first_pixel + int(TILE_SIZE), size);
-    uint flags = 0u;
-    ShadowBounds bounds = no_shadow_bounds();
-    for (int y = first_pixel.y; y < end_pixel.y; ++y) {
-        for (int x = first_pixel.x; x < end_pixel.x; ++x) {
-            flags |= classify_pixel(ivec2(x, y), samples, bounds);
-        }
+    ivec2 last_pixel = min(first_pixel + int(TILE_SIZE), size) - 1;
+    DepthPlane plane = fit_depth_plane(first_pixel, last_pixel);
+    TileSamples samples_seen = gather_tile(first_pixel, last_pixel, samples, plane);
+    uint flags = samples_seen.flags;
+    if (samples_seen.geometry_min > samples_seen.geometry_max) {
+        return raw_id_from_tile_flags(flags); // sky only: no depth, no shadow
     }
-    if (bounds.any) {
-        flags |= shadow_type_from_bounds(bounds);
+    // The lighting's own pixel-centre NDC of the corner pixels: float arithmetic is monotonic,
+    // so every pixel of the tile lies between them.
+    vec2 ndc_min = pixel_centre_ndc(first_pixel);
+    vec2 ndc_max = pixel_centre_ndc(last_pixel);
+    ViewRange view = view_range(maps, ndc_min, ndc_max, samples_seen.geometry_min, samples_seen.geometry_max);
+    if (!(view.hi <= params.distances.x)) flags |= TILE_FLAG_FADE;
+    if (!(view.hi <= params.distances.z)) flags |= TILE_FLAG_SCATTERING;
+    if ((flags & TILE_FLAG_SUN) == 0u) {
+        return raw_id_from_tile_flags(flags);
     }
+    // A shadow faded out completely gives every shadow type the same colour (shadow_fade.glsl).
+    bool fully_faded = (view.lo - params.distances.x) * params.distances.y >= 1.0 + 1e-5;
+    if (fully_faded) {
+        return raw_id_from_tile_flags(flags);
+    }
+    PrismBounds prism = prism_bounds(maps, ndc_min, ndc_max, plane, vec2(last_pixel - first_pixel),
+                                     samples_seen.sun_offset_min, samples_seen.sun_offset_max);
+    flags |= shadow_type_from_prism(prism);
     return raw_id_from_tile_flags(flags);
 }
 
@@ -205,10 +480,11 @@ void main()
     uvec2 first_tile = uvec2(block % push.grid.z, block / push.grid.z) * 4u + uvec2(0u, row);
     ivec2 size = ivec2(params.viewport.xy);
     int samples = gbuffer_sample_count();
+    ClipMaps maps = clip_maps();
     uint packed_row = 0u;
     for (uint i = 0u; i < 4u; ++i) {
         uvec2 tile = first_tile + uvec2(i, 0u);
-        uint id = all(lessThan(tile, push.grid.xy)) ? classify_tile(tile, size, samples) : 0xFFu;
+        uint id = all(lessThan(tile, push.grid.xy)) ? classify_tile(maps, tile, size, samples) : 0xFFu;
         packed_row |= id << (8u * i);
     }
     tile_ids.block_rows[block * 4u + row] = packed_row;

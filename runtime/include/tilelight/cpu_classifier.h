@@ -1,8 +1,11 @@
 #pragma once
-// The CPU reference classifier: the tile classification of uber/classify/classify_tiles.comp
-// recomputed on the host from the read-back G-buffer and shadow map, for tests. It counts every
-// shadow tap of every sample; the GPU settles shadow types from bounds and may call a tile SOFT
-// where the taps say SOLID or lit (tests/frame/frame_support.h compare_with_reference).
+// The CPU reference classifier: the exact tile classification, recomputed on the host from the
+// read-back G-buffer and shadow map, for tests. It classifies every sample the lighting shades
+// and counts every shadow tap; uber/classify/classify_tiles.comp decides position-dependent bits
+// from per-tile bounds instead, so the GPU may set MSAA_EDGE, SHADOW_FADE and LIGHT_SCATTERING
+// where no sample needs them and call a tile SOFT where the taps say SOLID or lit; it must never
+// miss a bit or pick a shadow type a sample rules out (tests/frame/frame_support.h
+// compare_with_reference).
 //
 // The GPU decides every threshold with `precise` arithmetic, but the driver's normalize(),
 // matrix products and divisions may still round differently from the host's. So for each
@@ -30,6 +33,11 @@ RawBitLayout registry_raw_bits();
 struct ReferenceClassification {
   std::vector<std::uint8_t> raw_ids;        // row-major per tile
   std::vector<std::uint8_t> uncertain_bits; // row-major per tile: bits that may differ from the GPU
+  // Row-major per tile: a sample whose shadow matters for sure (sun-facing, not faded out
+  // completely, no decision near a threshold) has a lit tap (SOLID is wrong for the tile) /
+  // an occluded tap (no shadow is wrong for the tile).
+  std::vector<std::uint8_t> solid_ruled_out;
+  std::vector<std::uint8_t> lit_ruled_out;
 };
 
 // Preconditions: gbuffer covers grid.width x grid.height; shadow_map holds size^2 depths with

@@ -1,7 +1,7 @@
-// Reproduces the decisions of uber/classify/classify_tiles.comp and the include functions it
-// calls (the comments name each GLSL function), except that it counts every shadow tap of every
-// sample where the GPU settles shadow types from bounds: it is the exact answer the GPU's SOLID
-// and lit tiles must agree with.
+// The exact per-sample classification that uber/classify/classify_tiles.comp bounds per tile:
+// the same include functions (the comments name each GLSL function), evaluated for every
+// sample the lighting shades, with every shadow tap counted. It is the answer the GPU's IDs
+// must admit (tests/frame/frame_support.h compare_with_reference).
 #include "tilelight/cpu_classifier.h"
 
 #include "tilelight/error.h"
@@ -19,6 +19,10 @@ namespace {
 enum Flag : std::uint32_t {
   kFade = 0x01, kScattering = 0x02, kEdge = 0x04, kSky = 0x08, kSun = 0x10,
   kShadowed = 0x20, kLit = 0x40, kPartial = 0x80,
+  // Facts about samples whose shadow certainly matters (sun-facing, not faded out completely)
+  // and whose tap count is certain: one with a lit tap rules SOLID out, one with an occluded
+  // tap rules "no shadow" (lit) out.
+  kRulesOutSolid = 0x100, kRulesOutLit = 0x200,
 };
 constexpr std::uint32_t kShadowFlags = kShadowed | kLit | kPartial;
 
@@ -130,6 +134,8 @@ class SampleClassifier {
     // An uncertain sample could be in any shadow state.
     f.add(state, true, uncertain);
     if (uncertain) f.possible |= kShadowFlags;
+    if (!uncertain && lit > 0) f.certain |= kRulesOutSolid;
+    if (!uncertain && lit < 8) f.certain |= kRulesOutLit;
   }
 
   // The base texel floor(v) and, when v is within 1e-3 texel of an integer, the neighbour the
@@ -214,6 +220,8 @@ ReferenceClassification classify_on_cpu(const TileGrid& grid, const GBufferSampl
   ReferenceClassification out;
   out.raw_ids.resize(tiles.size());
   out.uncertain_bits.resize(tiles.size());
+  out.solid_ruled_out.resize(tiles.size());
+  out.lit_ruled_out.resize(tiles.size());
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     const std::uint32_t certain_id = raw_id(tiles[i].certain, bits);
     out.raw_ids[i] = static_cast<std::uint8_t>(certain_id);
@@ -224,6 +232,8 @@ ReferenceClassification classify_on_cpu(const TileGrid& grid, const GBufferSampl
       uncertain |= bits.shadow_solid | bits.shadow_soft;
     }
     out.uncertain_bits[i] = static_cast<std::uint8_t>(uncertain);
+    out.solid_ruled_out[i] = (tiles[i].certain & kRulesOutSolid) != 0;
+    out.lit_ruled_out[i] = (tiles[i].certain & kRulesOutLit) != 0;
   }
   return out;
 }
