@@ -140,44 +140,22 @@ bool pixel_is_edge(ivec2 pixel, int samples)
     return edge;
 }
 
-// True when two samples decode to the same values, bit for bit: the lighting then shades them
-// alike (the MSAA-edge bit itself is not shading input).
-bool samples_shade_alike(GSample a, GSample b)
-{
-    return all(equal(floatBitsToUint(vec4(a.albedo, a.spec_amount)), floatBitsToUint(vec4(b.albedo, b.spec_amount))))
-        && all(equal(floatBitsToUint(vec4(a.normal, a.depth)), floatBitsToUint(vec4(b.normal, b.depth))))
-        && all(equal(floatBitsToUint(vec4(a.prelit, a.spec_power)), floatBitsToUint(vec4(b.prelit, b.spec_power))))
-        && a.motion_id == b.motion_id;
-}
-
-bool pixel_samples_differ(ivec2 pixel, int samples)
-{
-    GSample first = gbuffer_load(pixel, 0);
-    bool differ = false;
-    for (int s = 1; s < samples; ++s) {
-        differ = differ || !samples_shade_alike(first, gbuffer_load(pixel, s));
-    }
-    return differ;
-}
-
-// A pixel without the MSAA-edge bit has equal samples (gbuffer.glsl): sample 0 speaks for all,
-// exactly as the lighting shades only sample 0 of it. A pixel with the bit adds all its
-// samples, and makes the tile MSAA_EDGE only if they really differ: a mesh's inner edges give
-// partial fragments that store equal values, and shading those pixels once per sample would
-// cost the lighting four times as much for the same colour.
+// An edge pixel adds all its samples; any other pixel sample 0 alone, which speaks for its
+// equal siblings exactly as the lighting shades only sample 0 of such a pixel.
 TileSamples gather_tile(ivec2 first_pixel, ivec2 last_pixel, int samples, DepthPlane plane)
 {
     TileSamples tile = TileSamples(0u, 1.0 / 0.0, -1.0 / 0.0, 1.0 / 0.0, -1.0 / 0.0);
     for (int y = first_pixel.y; y <= last_pixel.y; ++y) {
         for (int x = first_pixel.x; x <= last_pixel.x; ++x) {
             ivec2 pixel = ivec2(x, y);
-            bool edge_bit = pixel_is_edge(pixel, samples);
-            int count = edge_bit ? samples : 1;
+            bool edge = pixel_is_edge(pixel, samples);
+            int count = 1;
+            if (edge) {
+                tile.flags |= TILE_FLAG_EDGE;
+                count = samples;
+            }
             for (int s = 0; s < count; ++s) {
                 add_sample(tile, plane, pixel - first_pixel, pixel, s);
-            }
-            if (edge_bit && pixel_samples_differ(pixel, samples)) {
-                tile.flags |= TILE_FLAG_EDGE;
             }
         }
     }

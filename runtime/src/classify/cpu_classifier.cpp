@@ -45,16 +45,6 @@ struct Sample {
     const auto byte = static_cast<std::uint32_t>(std::clamp(std::nearbyint(v[7] * 255.0f), 0.0f, 255.0f));
     return (byte & 0x7Fu) == 0;
   }
-  std::uint32_t motion_id() const {
-    return static_cast<std::uint32_t>(std::clamp(std::nearbyint(v[7] * 255.0f), 0.0f, 255.0f)) & 0x7Fu;
-  }
-  // samples_shade_alike(): every decoded value bit for bit, the motion ID without the edge bit.
-  bool shades_like(const Sample& other) const {
-    for (int i : {0, 1, 2, 3, 4, 5, 6, 8, 9, 10, 11, 12}) {
-      if (std::memcmp(&v[i], &other.v[i], sizeof(float)) != 0) return false;
-    }
-    return motion_id() == other.motion_id();
-  }
   bool edge_bit() const {
     const auto byte = static_cast<std::uint32_t>(std::clamp(std::nearbyint(v[7] * 255.0f), 0.0f, 255.0f));
     return (byte & 0x80u) != 0;
@@ -182,17 +172,12 @@ class SampleClassifier {
 };
 
 Flags classify_pixel(const SampleClassifier& classifier, const GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
-  // The MSAA-edge bit of any sample (gbuffer.glsl: materials set it on partial coverage) marks
-  // the pixels that may differ; MSAA_EDGE needs samples that differ in what the lighting reads.
-  bool edge_bit = false;
-  for (std::uint32_t s = 0; s < g.samples; ++s) edge_bit = edge_bit || Sample{g.at(x, y, s)}.edge_bit();
-  bool differ = false;
-  for (std::uint32_t s = 1; s < g.samples && edge_bit; ++s) {
-    differ = differ || !Sample{g.at(x, y, 0)}.shades_like(Sample{g.at(x, y, s)});
-  }
+  // The MSAA-edge bit of any sample (gbuffer.glsl: materials set it on partial coverage).
+  bool edge = false;
+  for (std::uint32_t s = 0; s < g.samples; ++s) edge = edge || Sample{g.at(x, y, s)}.edge_bit();
   Flags f;
-  f.add(kEdge, differ, false);
-  const std::uint32_t classified = edge_bit ? g.samples : 1;
+  f.add(kEdge, edge, false);
+  const std::uint32_t classified = edge ? g.samples : 1;
   for (std::uint32_t s = 0; s < classified; ++s) f.merge(classifier.classify(x, y, Sample{g.at(x, y, s)}));
   return f;
 }
