@@ -403,18 +403,14 @@ uint shadow_type_from_prism(PrismBounds b)
     // c = stored - a.t over the rectangle, for a = 0 and the fitted a.
     float c_min[2] = float[2](1.0 / 0.0, 1.0 / 0.0);
     float c_max[2] = float[2](-1.0 / 0.0, -1.0 / 0.0);
-    // Read 2x2 texels at a time; on an odd extent the last quad also covers a texel beyond the
-    // rectangle (or a repeated edge texel), which only makes the bounds wider.
-    for (int y = lo.y; y <= hi.y; y += 2) {
-        for (int x = lo.x; x <= hi.x; x += 2) {
-            vec4 stored = sun_shadow_stored_depth_quad(ivec2(x, y));
-            vec4 tap_x = vec4(x, x + 1, x + 1, x);
-            vec4 tap_y = vec4(y + 1, y + 1, y, y);
-            vec4 c = stored - (b.slope.x * tap_x + b.slope.y * tap_y);
-            c_min[0] = min(c_min[0], min(min(stored.x, stored.y), min(stored.z, stored.w)));
-            c_max[0] = max(c_max[0], max(max(stored.x, stored.y), max(stored.z, stored.w)));
-            c_min[1] = min(c_min[1], min(min(c.x, c.y), min(c.z, c.w)));
-            c_max[1] = max(c_max[1], max(max(c.x, c.y), max(c.z, c.w)));
+    for (int y = lo.y; y <= hi.y; ++y) {
+        for (int x = lo.x; x <= hi.x; ++x) {
+            float stored = sun_shadow_stored_depth(ivec2(x, y));
+            float c = stored - dot(b.slope, vec2(x, y));
+            c_min[0] = min(c_min[0], stored);
+            c_max[0] = max(c_max[0], stored);
+            c_min[1] = min(c_min[1], c);
+            c_max[1] = max(c_max[1], c);
         }
     }
     float c_error = MARGIN_ULPS * ROUNDOFF * (1.0 + dot(abs(b.slope), map_size));

@@ -92,19 +92,6 @@ float sun_shadow_stored_depth(ivec2 texel)
     return texelFetch(shadow_map, texel, 0).r;
 }
 
-// The stored depths of the 2x2 texels from `texel` to texel + (1, 1), as
-// (texel + (0, 1), texel + (1, 1), texel + (1, 0), texel): one gather instead of
-// four fetches, for scans over many texels (the classifier's bounds). Texels past
-// the map's last row or column repeat its edge (clamp-to-edge sampler); raw
-// stored values either way, no filtering.
-// Precondition: sun_shadow_texel_in_map(texel).
-vec4 sun_shadow_stored_depth_quad(ivec2 texel)
-{
-    // The shared corner of the four texels: exactly half a texel from every
-    // rounding boundary of the gather's footprint.
-    return textureGather(shadow_map, vec2(texel + 1) * params.shadow_map_size.zw);
-}
-
 uint sun_shadow_lit_taps(SunShadowLookup lookup)
 {
     if (!lookup.in_volume) {
