@@ -133,11 +133,13 @@ void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, ivec2 pixe
 
 bool pixel_is_edge(ivec2 pixel, int samples)
 {
-    bool edge = false;
+    // No short-circuit: every sample is read anyway, and a branch per sample costs a CPU driver
+    // (lavapipe) more than the fetch.
+    uint edge = 0u;
     for (int s = 0; s < samples; ++s) {
-        edge = edge || gbuffer_load_msaa_edge_bit(pixel, s);
+        edge |= uint(gbuffer_load_msaa_edge_bit(pixel, s));
     }
-    return edge;
+    return edge != 0u;
 }
 
 // An edge pixel adds all its samples; any other pixel sample 0 alone, which speaks for its
