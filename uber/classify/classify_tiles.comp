@@ -114,9 +114,8 @@ float plane_offset(DepthPlane plane, ivec2 step, float depth)
     return (depth - plane.origin) - dot(plane.gradient, vec2(step));
 }
 
-void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, ivec2 pixel, int sample_index)
+void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, GSample g)
 {
-    GSample g = gbuffer_load(pixel, sample_index);
     if (g.is_sky) {
         tile.flags |= TILE_FLAG_SKY;
         return;
@@ -131,33 +130,28 @@ void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, ivec2 pixe
     }
 }
 
-bool pixel_is_edge(ivec2 pixel, int samples)
-{
-    // No short-circuit: every sample is read anyway, and a branch per sample costs a CPU driver
-    // (lavapipe) more than the fetch.
-    uint edge = 0u;
-    for (int s = 0; s < samples; ++s) {
-        edge |= uint(gbuffer_load_msaa_edge_bit(pixel, s));
-    }
-    return edge != 0u;
-}
-
 // An edge pixel adds all its samples; any other pixel sample 0 alone, which speaks for its
-// equal siblings exactly as the lighting shades only sample 0 of such a pixel.
+// equal siblings exactly as the lighting shades only sample 0 of such a pixel. Every sample's
+// edge bit is read without a branch per sample: the fetches happen anyway, and on a CPU driver
+// (lavapipe) a branch costs more than a fetch.
 TileSamples gather_tile(ivec2 first_pixel, ivec2 last_pixel, int samples, DepthPlane plane)
 {
     TileSamples tile = TileSamples(0u, 1.0 / 0.0, -1.0 / 0.0, 1.0 / 0.0, -1.0 / 0.0);
     for (int y = first_pixel.y; y <= last_pixel.y; ++y) {
         for (int x = first_pixel.x; x <= last_pixel.x; ++x) {
             ivec2 pixel = ivec2(x, y);
-            bool edge = pixel_is_edge(pixel, samples);
-            int count = 1;
-            if (edge) {
-                tile.flags |= TILE_FLAG_EDGE;
-                count = samples;
+            ivec2 step = pixel - first_pixel;
+            GSample first = gbuffer_load(pixel, 0);
+            uint edge = uint(first.msaa_edge);
+            for (int s = 1; s < samples; ++s) {
+                edge |= uint(gbuffer_load_msaa_edge_bit(pixel, s));
             }
-            for (int s = 0; s < count; ++s) {
-                add_sample(tile, plane, pixel - first_pixel, pixel, s);
+            add_sample(tile, plane, step, first);
+            if (edge != 0u) {
+                tile.flags |= TILE_FLAG_EDGE;
+                for (int s = 1; s < samples; ++s) {
+                    add_sample(tile, plane, step, gbuffer_load(pixel, s));
+                }
             }
         }
     }

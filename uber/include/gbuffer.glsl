@@ -52,6 +52,7 @@ struct GSample {
     float spec_amount;
     vec3  normal;      // as stored (signed, normalised by the material shader)
     uint  motion_id;   // 0..127, edge bit removed
+    bool  msaa_edge;   // the motion byte's MSAA-edge bit (classification only)
     bool  is_sky;      // motion_id == 0: colour is prelit, no lighting at all
     vec3  prelit;
     float spec_power;
@@ -126,6 +127,7 @@ GSample gbuffer_decode(vec4 rt0, vec4 rt1, vec4 rt2, float depth)
     g.spec_amount = rt0.a;
     g.normal      = rt1.xyz;
     g.motion_id   = gbuffer_unpack_motion_byte(rt1.a) & GBUFFER_MOTION_ID_MASK;
+    g.msaa_edge   = gbuffer_decode_msaa_edge_bit(rt1);
     g.is_sky      = g.motion_id == GBUFFER_SKY_MOTION_ID;
     g.prelit      = rt2.rgb;
     g.spec_power  = rt2.a;
