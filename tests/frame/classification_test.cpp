@@ -48,6 +48,12 @@ TEST_F(Classification, GpuMatchesCpuReferenceOnTheDefaultCamera) {
   expect_matches_reference(*renderer);
 }
 
+TEST_F(Classification, GpuMatchesCpuReferenceThroughATelephotoLens) {
+  scene_.cameras.push_back(telephoto_camera());
+  auto renderer = render("telephoto", 320, 180);
+  expect_matches_reference(*renderer);
+}
+
 TEST_F(Classification, GpuMatchesCpuReferenceWithPartialTiles) {
   auto renderer = render("low", 203, 117);
   expect_matches_reference(*renderer);

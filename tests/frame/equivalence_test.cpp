@@ -21,6 +21,7 @@ struct Case {
   bool raw;
   bool coalesce;
   const char* camera;
+  std::uint32_t tile_size = 4;
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
@@ -31,7 +32,8 @@ class Equivalence : public VulkanTest, public ::testing::WithParamInterface<Case
 
 TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
   const Case& c = GetParam();
-  const Scene scene = make_demo_scene();
+  Scene scene = make_demo_scene();
+  scene.cameras.push_back(telephoto_camera());
   RendererOptions options;
   options.width = c.width;
   options.height = c.height;
@@ -39,6 +41,7 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
   options.raw_permutations = c.raw;
   options.coalesce = c.coalesce;
   options.camera = c.camera;
+  options.tile_size = c.tile_size;
   TileRenderer renderer(context(), scene, options);
   const FrameResult frame = renderer.render_frame();
 
@@ -71,7 +74,12 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"gpu_sky", 200, 120, IndexPath::gpu, false, true, "sky"},
                       Case{"cpu_shadow", 200, 120, IndexPath::cpu, false, true, "shadow"},
                       Case{"gpu_shadow", 200, 120, IndexPath::gpu, false, true, "shadow"},
-                      Case{"cpu_low", 257, 131, IndexPath::cpu, false, true, "low"}),
+                      Case{"cpu_low", 257, 131, IndexPath::cpu, false, true, "low"},
+                      // Larger tiles: one depth-plane prism spans 8x8 / 16x16 pixels.
+                      Case{"cpu_tile8", 320, 180, IndexPath::cpu, false, true, "default", 8},
+                      Case{"gpu_tile16_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 16},
+                      // Thin prisms at 55-85 m, where the rounding margins decide most.
+                      Case{"cpu_telephoto", 320, 180, IndexPath::cpu, false, true, "telephoto"}),
     case_name);
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include "tilelight/cpu_classifier.h"
 #include "tilelight/readback.h"
+#include "tilelight/scene.h"
 #include "tilelight/tile_renderer.h"
 
 #include <cstdint>
@@ -42,6 +43,12 @@ struct ReferenceComparison {
 
 ReferenceComparison compare_with_reference(const std::vector<std::uint8_t>& gpu_raw_ids,
                                            const ReferenceClassification& cpu, std::uint32_t tiles_x);
+
+// A narrow (10 degree) view from 70 m onto the boxes, between the shadow-fade start and end: each
+// tile covers a few centimetres at a distance where float positions are coarse, so the
+// classifier's per-tile bounds are as thin as its rounding margins. Tests add it to the demo
+// scene's cameras.
+Camera telephoto_camera();
 
 // Optimised IDs present in a frame's raw tile IDs (row-major).
 std::set<std::uint32_t> optimised_ids_of(const std::vector<std::uint8_t>& raw_ids);
