@@ -25,8 +25,8 @@
 //   - shadow: a thin prism, the rectangle x [plane + lowest offset, plane + highest offset],
 //     where the plane is fitted to the tile's depths (a planar surface has depths affine in
 //     screen space, so on one surface the prism is nearly flat).
-// Every bound is widened by a rounding margin (shadow_margins below) that covers both the
-// lighting's float arithmetic and this shader's, so a decision that the bounds settle is the
+// Every bound is widened by a rounding margin (world_error(), view_range(), prism_bounds()) that
+// covers both the lighting's float arithmetic and this shader's, so a decision that the bounds settle is the
 // one the lighting's own taps would make.
 //
 // The shadow test compares receivers with stored depths relative to a plane r = a.P + q fitted
@@ -62,7 +62,7 @@ const int MAX_BOUNDED_TEXELS = 256;
 
 // Unit roundoff of float32 (2^-24). Every rounding margin below is a first-order error bound of
 // the arithmetic involved times a safety factor, MARGIN_ULPS units of roundoff per operation
-// chain; see shadow_margins().
+// chain; see world_error().
 const float ROUNDOFF = 5.9604645e-8;
 const float MARGIN_ULPS = 16.0;
 
