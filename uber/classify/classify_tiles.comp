@@ -164,6 +164,7 @@ TileSamples gather_tile(ivec2 first_pixel, ivec2 last_pixel, int samples, DepthP
 // Rows of the map from homogeneous camera clip coordinates (x, y, d, 1), composed once per
 // invocation: h.w, the view depth's numerator, and the sun clip position's numerators.
 struct ClipMaps {
+    mat3x4 world_rows; // h.x, h.y, h.z
     vec4 w_row;       // h.w
     vec4 view_row;    // dot(h.xyz, camera_forward)
     mat4 sun;         // sun_view_proj * inv_view_proj (rows used: x, y, z)
@@ -180,13 +181,13 @@ ClipMaps clip_maps()
 {
     mat4 inv = params.inv_view_proj;
     ClipMaps maps;
+    maps.world_rows = mat3x4(matrix_row(inv, 0), matrix_row(inv, 1), matrix_row(inv, 2));
     maps.w_row = matrix_row(inv, 3);
-    vec3 forward = params.camera_forward.xyz;
-    maps.view_row = forward.x * matrix_row(inv, 0) + forward.y * matrix_row(inv, 1) + forward.z * matrix_row(inv, 2);
+    maps.view_row = maps.world_rows * params.camera_forward.xyz;
     maps.sun = params.sun_view_proj * inv;
     maps.w_row_abs = abs(maps.w_row);
-    maps.world_abs = max(max(dot(abs(matrix_row(inv, 0)), vec4(1.0)), dot(abs(matrix_row(inv, 1)), vec4(1.0))),
-                         dot(abs(matrix_row(inv, 2)), vec4(1.0)));
+    maps.world_abs = max(max(dot(abs(maps.world_rows[0]), vec4(1.0)), dot(abs(maps.world_rows[1]), vec4(1.0))),
+                         dot(abs(maps.world_rows[2]), vec4(1.0)));
     return maps;
 }
 
@@ -203,12 +204,10 @@ float world_error(ClipMaps maps, float depth_abs, float w_min, float world_abs)
     return MARGIN_ULPS * ROUNDOFF * ((terms + world_abs * w_terms) / w_min + world_abs);
 }
 
-// The largest |world coordinate| at a vertex.
-float world_abs_at(vec4 clip, float w)
+// The largest |world coordinate| at a vertex whose h.w is w.
+float world_abs_at(ClipMaps maps, vec4 clip, float w)
 {
-    vec3 h = vec3(dot(matrix_row(params.inv_view_proj, 0), clip), dot(matrix_row(params.inv_view_proj, 1), clip),
-                  dot(matrix_row(params.inv_view_proj, 2), clip));
-    vec3 world = abs(h / w);
+    vec3 world = abs((clip * maps.world_rows) / w);
     return max(world.x, max(world.y, world.z));
 }
 
@@ -232,7 +231,7 @@ ViewRange view_range(ClipMaps maps, vec2 ndc_min, vec2 ndc_max, float depth_min,
         lo = min(lo, v);
         hi = max(hi, v);
         w_min = min(w_min, w);
-        world_abs = max(world_abs, world_abs_at(clip, w));
+        world_abs = max(world_abs, world_abs_at(maps, clip, w));
     }
     float camera = dot(params.camera_pos.xyz, params.camera_forward.xyz);
     vec3 forward_abs = abs(params.camera_forward.xyz);
@@ -240,7 +239,7 @@ ViewRange view_range(ClipMaps maps, vec2 ndc_min, vec2 ndc_max, float depth_min,
     float margin = (forward_abs.x + forward_abs.y + forward_abs.z)
                        * (world + MARGIN_ULPS * ROUNDOFF * (world_abs + abs(camera)))
                    + MARGIN_ULPS * ROUNDOFF * max(abs(lo), abs(hi));
-    if (!(w_min > 0.0)) {
+    if (!(w_min > 0.0 && lo <= hi)) {
         return ViewRange(-1.0 / 0.0, 1.0 / 0.0); // no bound: every distance feature, shadow kept
     }
     return ViewRange(lo - camera - margin, hi - camera + margin);
@@ -308,7 +307,7 @@ PrismBounds prism_bounds(ClipMaps maps, vec2 ndc_min, vec2 ndc_max, DepthPlane p
         vec4 sun_clip = sun_clip_at(maps, clip);
         w_min = min(w_min, sun_clip.w);
         depth_abs = max(depth_abs, abs(depth));
-        world_abs = max(world_abs, world_abs_at(clip, sun_clip.w));
+        world_abs = max(world_abs, world_abs_at(maps, clip, sun_clip.w));
         texel_and_receiver(sun_clip, p[i], r[i]);
     }
     PrismBounds b;
@@ -450,14 +449,15 @@ uint classify_tile(ClipMaps maps, uvec2 tile, ivec2 size, int samples)
     vec2 ndc_min = pixel_centre_ndc(first_pixel);
     vec2 ndc_max = pixel_centre_ndc(last_pixel);
     ViewRange view = view_range(maps, ndc_min, ndc_max, samples_seen.geometry_min, samples_seen.geometry_max);
-    if (!(view.hi <= params.distances.x)) flags |= TILE_FLAG_FADE;
-    if (!(view.hi <= params.distances.z)) flags |= TILE_FLAG_SCATTERING;
+    // The lighting's own threshold tests at the range's ends: float subtraction, multiplication
+    // by a positive constant and clamp are monotonic, so a sample's test lies between them.
+    if (shadow_fade_active(view.hi)) flags |= TILE_FLAG_FADE;
+    if (light_scattering_active(view.hi)) flags |= TILE_FLAG_SCATTERING;
     if ((flags & TILE_FLAG_SUN) == 0u) {
         return raw_id_from_tile_flags(flags);
     }
     // A shadow faded out completely gives every shadow type the same colour (shadow_fade.glsl).
-    bool fully_faded = (view.lo - params.distances.x) * params.distances.y >= 1.0 + 1e-5;
-    if (fully_faded) {
+    if (shadow_fade_complete(view.lo)) {
         return raw_id_from_tile_flags(flags);
     }
     PrismBounds prism = prism_bounds(maps, ndc_min, ndc_max, plane, vec2(last_pixel - first_pixel),
