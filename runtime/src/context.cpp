@@ -195,6 +195,7 @@ void Context::create_device() {
   enable.features.sampleRateShading = supported.features.sampleRateShading;
   enable.features.depthClamp = supported.features.depthClamp;
   enable.features.fragmentStoresAndAtomics = supported.features.fragmentStoresAndAtomics;
+  enable.features.largePoints = supported.features.largePoints;
 
   features_.draw_indirect_count = enable12.drawIndirectCount == VK_TRUE;
   features_.host_query_reset = enable12.hostQueryReset == VK_TRUE;
@@ -202,6 +203,7 @@ void Context::create_device() {
   features_.sample_rate_shading = enable.features.sampleRateShading == VK_TRUE;
   features_.depth_clamp = enable.features.depthClamp == VK_TRUE;
   features_.fragment_stores_and_atomics = enable.features.fragmentStoresAndAtomics == VK_TRUE;
+  features_.large_points = enable.features.largePoints == VK_TRUE;
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{};

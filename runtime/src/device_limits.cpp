@@ -35,6 +35,9 @@ DeviceLimits query_device_limits(VkPhysicalDevice device, std::uint32_t queue_fa
   limits.max_push_constants_size = l.maxPushConstantsSize;
   limits.max_compute_workgroup_invocations = l.maxComputeWorkGroupInvocations;
   limits.max_draw_indirect_count = l.maxDrawIndirectCount;
+  limits.max_point_size = l.pointSizeRange[1];
+  limits.max_viewport_width = l.maxViewportDimensions[0];
+  limits.max_viewport_height = l.maxViewportDimensions[1];
   limits.min_uniform_buffer_offset_alignment = l.minUniformBufferOffsetAlignment;
   limits.min_storage_buffer_offset_alignment = l.minStorageBufferOffsetAlignment;
   limits.non_coherent_atom_size = l.nonCoherentAtomSize;

@@ -5,6 +5,11 @@
 // optimised ID becomes one rectangle; otherwise each maximal run of equal IDs in a block row
 // becomes one rectangle. Counting and filling both call for_each_rectangle-style code below
 // with a different action, so they cannot disagree.
+//
+// Each rectangle becomes primitives as runtime/include/tilelight/tile_primitive.h says:
+// two triangles (6 indices over the corner grid), or with POINT_PRIMITIVES one point per square
+// (a square rectangle whole, any other one tile at a time), indexed by the square's top-left
+// corner vertex with (side in tiles - 1) in bits 30..31.
 
 #ifndef UBER_TILE_RECTS_GLSL
 #define UBER_TILE_RECTS_GLSL
@@ -21,10 +26,15 @@ layout(set = 0, binding = 1, std430) readonly buffer Lut {
                               // when drawing raw permutations); 0xFF = impossible or out of range
 } lut;
 
+// Specialisation constant 2 of both passes: draw points instead of triangle pairs.
+layout(constant_id = 2) const bool POINT_PRIMITIVES = false;
+const uint POINT_SIDE_SHIFT = 30u;
+
 layout(set = 0, binding = 2, std430) buffer Counters {
+    uint primitives[MAX_DRAW_CLASSES]; // per draw class
     uint rectangles[MAX_DRAW_CLASSES]; // per draw class
     uint tiles[MAX_DRAW_CLASSES];      // per draw class
-    uint cursor[MAX_DRAW_CLASSES];     // next free rectangle slot per class (set by the prefix pass)
+    uint cursor[MAX_DRAW_CLASSES];     // next free primitive slot per class (set by the prefix pass)
     uint invalid_tiles;   // tiles whose raw ID is impossible or out of range
 } counters;
 
@@ -86,11 +96,37 @@ bool block_is_uniform(Block b)
     return first != INVALID_TILE;
 }
 
-// Six indices over the corner grid for the tile rectangle [x0, x1) x [y0, y1).
+uint indices_per_primitive()
+{
+    return POINT_PRIMITIVES ? 1u : 6u;
+}
+
+// Primitives the tile rectangle [x0, x1) x [y0, y1) becomes.
+uint primitives_for_rect(uint x0, uint y0, uint x1, uint y1)
+{
+    uvec2 size = uvec2(x1 - x0, y1 - y0);
+    return POINT_PRIMITIVES && size.x != size.y ? size.x * size.y : 1u;
+}
+
+// The indices of the tile rectangle [x0, x1) x [y0, y1), from index `first` on: six over the
+// corner grid (two triangles), or one per point.
 void write_rectangle(uint first, uint x0, uint y0, uint x1, uint y1)
 {
     uint stride = push.grid.x + 1u;
     uint v00 = y0 * stride + x0;
+    if (POINT_PRIMITIVES) {
+        uvec2 size = uvec2(x1 - x0, y1 - y0);
+        if (size.x == size.y) {
+            index_buffer.indices[first] = v00 | ((size.x - 1u) << POINT_SIDE_SHIFT);
+            return;
+        }
+        for (uint row = 0u; row < size.y; ++row) {
+            for (uint col = 0u; col < size.x; ++col) {
+                index_buffer.indices[first + row * size.x + col] = v00 + row * stride + col;
+            }
+        }
+        return;
+    }
     uint v10 = y0 * stride + x1;
     uint v01 = y1 * stride + x0;
     uint v11 = y1 * stride + x1;

@@ -32,6 +32,7 @@ struct Arguments {
   std::string path = "cpu";
   std::string permutations = "optimised";
   std::string camera = "default";
+  std::string primitive = "auto";
   std::string device;
   std::string out = "tilelight-out";
   bool validation = false;
@@ -86,6 +87,11 @@ void add_options(CLI::App& cli, Arguments& a) {
       ->capture_default_str();
   cli.add_option("--tile-size", a.tile_size, "tile size in pixels: 4, 8 or 16")->capture_default_str();
   cli.add_flag("--no-coalesce", a.no_coalesce, "one rectangle per tile (no tile coalescing)");
+  cli.add_option("--primitive", a.primitive,
+                 "tile pass primitive: points (a point sprite per square of tiles), triangles (two per "
+                 "rectangle), auto (points where the device draws them)")
+      ->check(CLI::IsMember({"auto", "points", "triangles"}))
+      ->capture_default_str();
   cli.add_option("--device", a.device, "Vulkan device: index or name substring (default: the CPU device, lavapipe)");
   cli.add_flag("--validation", a.validation, "enable the Khronos validation layer; any message fails the run");
   cli.add_option("--out", a.out, "output folder")->capture_default_str();
@@ -110,6 +116,7 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   options.path = a.path == "gpu" ? IndexPath::gpu : IndexPath::cpu;
   options.raw_permutations = a.permutations == "raw";
   options.coalesce = !a.no_coalesce;
+  if (a.primitive != "auto") options.primitive = parse_tile_primitive(a.primitive);
   options.camera = a.camera;
   options.timeout = Seconds(a.timeout_s);
   stage = "choosing the camera";
@@ -140,7 +147,9 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
     renderer_storage.emplace(context, scene, options);
   } catch (const Error& e) {
     const std::string what = e.what();
-    if (what.rfind("width ", 0) == 0 || what.rfind("height ", 0) == 0) throw Error("--" + what);
+    if (what.rfind("width ", 0) == 0 || what.rfind("height ", 0) == 0 || what.rfind("primitive ", 0) == 0) {
+      throw Error("--" + what);
+    }
     throw;
   }
   TileRenderer& renderer = *renderer_storage;
@@ -167,10 +176,12 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   FrameReport report;
   const char* threads = std::getenv("LP_NUM_THREADS");
   report.run = {context.device_name(), a.width, a.height, renderer.msaa_samples(), a.tile_size, a.frames, a.path,
-                a.permutations, a.camera, options.coalesce, threads != nullptr ? threads : ""};
+                a.permutations, a.camera, options.coalesce, threads != nullptr ? threads : "",
+                std::string(to_string(renderer.tile_primitive()))};
   count_tiles(report, raw_ids);
   report.primitives_uncoalesced = last.stats.primitives_uncoalesced;
   report.primitives_coalesced = last.stats.primitives_coalesced;
+  report.rectangles = last.stats.rectangles;
   report.timings = median_timings(timings);
   report.equivalence = compare_frames(classified, naive);
 

@@ -90,6 +90,7 @@ std::string report_json(const FrameReport& r) {
   j["permutations"] = r.run.permutations;
   j["camera"] = r.run.camera;
   j["coalesce"] = r.run.coalesce;
+  j["primitive"] = r.run.primitive;
   j["frames"] = r.run.frames;
   j["lavapipe_threads"] = r.run.lavapipe_threads.empty() ? nlohmann::ordered_json(nullptr)
                                                          : nlohmann::ordered_json(r.run.lavapipe_threads);
@@ -98,7 +99,9 @@ std::string report_json(const FrameReport& r) {
   for (const auto& [name, count] : r.raw_property_tiles) properties[name] = count;
   j["raw_property_tiles"] = properties;
   j["optimised_tiles"] = r.optimised_tiles;
-  j["primitives"] = {{"uncoalesced", r.primitives_uncoalesced}, {"coalesced", r.primitives_coalesced}};
+  j["primitives"] = {{"uncoalesced", r.primitives_uncoalesced},
+                     {"coalesced", r.primitives_coalesced},
+                     {"rectangles", r.rectangles}};
   nlohmann::ordered_json timings;
   timings["gbuffer"] = round3(r.timings.gbuffer);
   timings["shadow_map"] = round3(r.timings.shadow_map);
@@ -137,9 +140,9 @@ std::string timing_table(const FrameReport& r) {
   const double speedup = classified_light > 0 ? t.naive_light / classified_light : 0.0;
   out += fmt::format("speed-up of the light pass: {:.2f}x (naive / classification + index build + tiled light)\n",
                      speedup);
-  out += fmt::format("tiles {}, primitives {} -> {} coalesced; classified vs naive: {} pixels differ (max {:.3g})\n",
-                     r.tiles, r.primitives_uncoalesced, r.primitives_coalesced, r.equivalence.pixels_different,
-                     r.equivalence.max_abs_difference);
+  out += fmt::format("tiles {}, {} {} -> {} coalesced ({} rectangles); classified vs naive: {} pixels differ (max {:.3g})\n",
+                     r.tiles, r.run.primitive, r.primitives_uncoalesced, r.primitives_coalesced, r.rectangles,
+                     r.equivalence.pixels_different, r.equivalence.max_abs_difference);
   return out;
 }
 

@@ -67,6 +67,7 @@ struct GraphicsPipelineDesc {
   bool depth_write = false;
   VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
   bool depth_bias = false;  // constant 1.25, slope 1.75: against shadow acne
+  VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   std::string name;
 };
 

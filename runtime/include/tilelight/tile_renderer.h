@@ -19,12 +19,14 @@
 #include "tilelight/readback.h"
 #include "tilelight/scene.h"
 #include "tilelight/tile_grid.h"
+#include "tilelight/tile_primitive.h"
 #include "tilelight/timeout.h"
 #include "tilelight/uniform_blocks.h"
 
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,9 @@ struct RendererOptions {
   IndexPath path = IndexPath::cpu;
   bool raw_permutations = false;  // draw the 96 raw permutations instead of the 32 optimised ones
   bool coalesce = true;
+  // How the tile pass draws its rectangles (tile_primitive.h); empty: points where the device
+  // draws them (largePoints, a whole block's width), else triangles.
+  std::optional<TilePrimitive> primitive;
   std::string camera = "default";
   Seconds timeout = kDefaultGpuTimeout;
 };
@@ -55,8 +60,10 @@ struct FrameTimings {  // milliseconds
 struct FrameStats {
   std::vector<std::uint32_t> class_tiles;       // per draw class (32 optimised or 128 raw)
   std::vector<std::uint32_t> class_rectangles;  // per draw class
-  std::uint32_t primitives_uncoalesced = 0;     // one rectangle per tile
-  std::uint32_t primitives_coalesced = 0;       // rectangles drawn
+  std::vector<std::uint32_t> class_primitives;  // per draw class
+  std::uint32_t primitives_uncoalesced = 0;     // one primitive per tile
+  std::uint32_t primitives_coalesced = 0;       // primitives drawn (points, or rectangles as triangle pairs)
+  std::uint32_t rectangles = 0;                 // rectangles after coalescing
 };
 
 struct FrameResult {
@@ -88,6 +95,7 @@ class TileRenderer {
   const TileGrid& grid() const;
   std::uint32_t msaa_samples() const;
   std::uint32_t draw_class_count() const;  // 32 or 128
+  TilePrimitive tile_primitive() const;     // the one chosen (RendererOptions::primitive)
   std::uint32_t pipeline_count() const;    // 32 or 96
   const LightingParamsBlock& lighting_params() const;
 

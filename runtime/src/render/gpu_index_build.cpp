@@ -17,7 +17,8 @@ namespace {
 // Mirrors tile_rects.glsl.
 constexpr std::uint32_t kMaxDrawClasses = 128;
 constexpr std::uint32_t kNoClass = 0xFF;
-constexpr VkDeviceSize kCountersBytes = (3 * kMaxDrawClasses + 1) * sizeof(std::uint32_t);
+// primitives, rectangles, tiles, cursor (kMaxDrawClasses each), invalid_tiles.
+constexpr VkDeviceSize kCountersBytes = (4 * kMaxDrawClasses + 1) * sizeof(std::uint32_t);
 constexpr VkDeviceSize kDrawRecordBytes = sizeof(VkDrawIndexedIndirectCommand);
 constexpr std::uint32_t kBlocksPerGroup = 128;  // local_size_x of tile_rects.comp
 
@@ -25,7 +26,8 @@ constexpr std::uint32_t kBlocksPerGroup = 128;  // local_size_x of tile_rects.co
 
 GpuIndexBuild::GpuIndexBuild(const Context& context, const TileGrid& grid,
                              std::span<const std::uint8_t> class_for_raw, std::span<const bool> pruned,
-                             std::uint32_t class_count, bool coalesce, const Buffer& tile_ids, VkDescriptorPool pool)
+                             std::uint32_t class_count, bool coalesce, TilePrimitive primitive,
+                             const Buffer& tile_ids, VkDescriptorPool pool)
     : grid_(grid), class_count_(class_count) {
   if (class_count > kMaxDrawClasses) throw Error("the GPU index build supports at most 128 draw classes");
   // Byte -> class; 0xFF for impossible or out-of-range raw IDs (and the padding byte 0xFF).
@@ -64,12 +66,15 @@ GpuIndexBuild::GpuIndexBuild(const Context& context, const TileGrid& grid,
     write_buffer_descriptor(context, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   }
 
+  const std::uint32_t points = primitive == TilePrimitive::points ? 1 : 0;
   count_ = create_compute_pipeline(context, layout_.get(), companion_spirv("tile_rects"),
-                                   SpecConstants{}.set(0, 0).set(1, coalesce ? 1 : 0), "GPU index build: count");
-  prefix_ = create_compute_pipeline(context, layout_.get(), companion_spirv("tile_prefix"), {},
-                                    "GPU index build: prefix sum");
+                                   SpecConstants{}.set(0, 0).set(1, coalesce ? 1 : 0).set(2, points),
+                                   "GPU index build: count");
+  prefix_ = create_compute_pipeline(context, layout_.get(), companion_spirv("tile_prefix"),
+                                    SpecConstants{}.set(2, points), "GPU index build: prefix sum");
   fill_ = create_compute_pipeline(context, layout_.get(), companion_spirv("tile_rects"),
-                                  SpecConstants{}.set(0, 1).set(1, coalesce ? 1 : 0), "GPU index build: fill");
+                                  SpecConstants{}.set(0, 1).set(1, coalesce ? 1 : 0).set(2, points),
+                                  "GPU index build: fill");
 }
 
 void GpuIndexBuild::record(VkCommandBuffer cmd) const {
@@ -105,9 +110,14 @@ void GpuIndexBuild::record(VkCommandBuffer cmd) const {
 GpuIndexBuild::Counts GpuIndexBuild::read_counts() const {
   const std::span<const std::uint32_t> values = host_counters_.as<const std::uint32_t>();
   Counts counts;
-  counts.rectangles.assign(values.begin(), values.begin() + class_count_);
-  counts.tiles.assign(values.begin() + kMaxDrawClasses, values.begin() + kMaxDrawClasses + class_count_);
-  counts.invalid_tiles = values[3 * kMaxDrawClasses];
+  const auto per_class = [&](std::uint32_t array) {
+    const auto first = values.begin() + array * kMaxDrawClasses;
+    return std::vector<std::uint32_t>(first, first + class_count_);
+  };
+  counts.primitives = per_class(0);
+  counts.rectangles = per_class(1);
+  counts.tiles = per_class(2);
+  counts.invalid_tiles = values[4 * kMaxDrawClasses];
   return counts;
 }
 

@@ -6,6 +6,7 @@
 
 #include "tilelight/buffer.h"
 #include "tilelight/tile_grid.h"
+#include "tilelight/tile_primitive.h"
 #include "tilelight/vk_handles.h"
 
 #include <cstdint>
@@ -20,7 +21,8 @@ class GpuIndexBuild {
   // class_for_raw: raw ID -> draw class (optimised ID, or the raw ID for raw permutations);
   // pruned raw IDs are impossible. class_count: 32 or 128.
   GpuIndexBuild(const Context& context, const TileGrid& grid, std::span<const std::uint8_t> class_for_raw,
-                std::span<const bool> pruned, std::uint32_t class_count, bool coalesce, const Buffer& tile_ids,
+                std::span<const bool> pruned, std::uint32_t class_count, bool coalesce, TilePrimitive primitive,
+                const Buffer& tile_ids,
                 VkDescriptorPool pool);
 
   // Clears the counters, counts, prefix-sums and fills; ends with a barrier that makes the
@@ -30,9 +32,9 @@ class GpuIndexBuild {
   const Buffer& indices() const { return indices_; }
   const Buffer& draws() const { return draws_; }
 
-  // Read back after the frame: rectangles and tiles per class, and tiles with invalid IDs.
+  // Read back after the frame: primitives, rectangles and tiles per class, and tiles with invalid IDs.
   struct Counts {
-    std::vector<std::uint32_t> rectangles, tiles;
+    std::vector<std::uint32_t> primitives, rectangles, tiles;
     std::uint32_t invalid_tiles = 0;
   };
   Counts read_counts() const;

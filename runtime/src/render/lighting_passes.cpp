@@ -16,26 +16,44 @@ namespace {
 
 constexpr std::uint32_t kNaiveOptimisedId = 31;  // every feature: the full uber-shader
 constexpr VkDeviceSize kDrawRecordBytes = sizeof(VkDrawIndexedIndirectCommand);
+constexpr std::uint32_t kCornerBinding = 0;  // tile.vert: the corner grid, per vertex
+constexpr std::uint32_t kGridBinding = 1;    // tile_point.vert: the grid's shape, per instance
 
 UniquePipeline create_light_pipeline(const Context& context, const RenderTargets& targets,
                                      const LightingInterface& lighting, std::span<const std::uint32_t> fragment,
-                                     std::string name) {
+                                     TilePrimitive primitive, std::string name) {
   GraphicsPipelineDesc desc;
   desc.layout = lighting.lighting_layout();
   desc.render_pass = targets.light_pass();
-  desc.vertex_spirv = companion_spirv("tile");
   desc.fragment_spirv = fragment;
-  desc.vertex_bindings = {{0, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
-  desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}};
-  desc.name = std::move(name);
+  if (primitive == TilePrimitive::points) {
+    // tile_point.vert computes each point from its index; binding 1 holds the grid's shape.
+    desc.vertex_spirv = companion_spirv("tile_point");
+    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    desc.vertex_bindings = {{kGridBinding, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_INSTANCE}};
+    desc.vertex_attributes = {{0, kGridBinding, VK_FORMAT_R32G32_SFLOAT, 0}};
+  } else {
+    desc.vertex_spirv = companion_spirv("tile");
+    desc.vertex_bindings = {{kCornerBinding, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertex_attributes = {{0, kCornerBinding, VK_FORMAT_R32G32_SFLOAT, 0}};
+  }
+  desc.name = std::move(name) + " (" + std::string(to_string(primitive)) + ")";
   return create_graphics_pipeline(context, desc);
 }
 
 }  // namespace
 
 LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
-                               const LightingInterface& lighting, PermutationSet permutations)
-    : lighting_(&lighting), extent_(targets.extent()) {
+                               const LightingInterface& lighting, PermutationSet permutations,
+                               TilePrimitive primitive)
+    : lighting_(&lighting),
+      extent_(targets.extent()),
+      viewport_{grid.tiles_x * grid.tile_size, grid.tiles_y * grid.tile_size} {
+  // Exact in float: a frame within the device's framebuffer limits is far below 2^24 tiles across.
+  const std::array<float, 2> grid_shape{static_cast<float>(grid.tiles_x + 1), static_cast<float>(grid.tile_size)};
+  grid_shape_ = Buffer(context, {sizeof(grid_shape), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::HostUpload,
+                                 "tile grid shape"});
+  grid_shape_.write_values(std::span<const float>(grid_shape));
   const std::vector<float> corners = grid.corner_vertices();
   corners_ = Buffer(context, {corners.size() * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
                               MemoryUse::HostUpload, "tile corner grid"});
@@ -51,18 +69,19 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
   const shadergen::Registry& registry = split_second::registry();
   if (permutations == PermutationSet::optimised) {
     for (const shadergen::Permutation& p : registry.optimised) {
-      pipelines_.push_back(create_light_pipeline(context, targets, lighting, p.spirv,
+      pipelines_.push_back(create_light_pipeline(context, targets, lighting, p.spirv, primitive,
                                                  "lighting optimised " + std::to_string(p.id)));
     }
   } else {
     for (const shadergen::Permutation& p : registry.raw) {
       pipelines_.push_back(p.pruned ? UniquePipeline{}
-                                    : create_light_pipeline(context, targets, lighting, p.spirv,
+                                    : create_light_pipeline(context, targets, lighting, p.spirv, primitive,
                                                             "lighting raw " + std::to_string(p.id)));
     }
   }
+  // The whole frame is not a square: two triangles, whose one diagonal costs little.
   naive_pipeline_ = create_light_pipeline(context, targets, lighting, registry.optimised[kNaiveOptimisedId].spirv,
-                                          "lighting naive (optimised 31)");
+                                          TilePrimitive::triangles, "lighting naive (optimised 31)");
 }
 
 std::uint32_t LightingPasses::pipeline_count() const {
@@ -82,16 +101,23 @@ void LightingPasses::begin(VkCommandBuffer cmd, const RenderTargets& targets, Vk
   begin.clearValueCount = 1;
   begin.pClearValues = &clear;
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  set_viewport_and_scissor(cmd, extent_);
+  // The viewport spans whole tiles, so a point's centre is inside it even for a partial tile at
+  // the right or bottom edge (a point whose centre is outside the viewport is culled whole);
+  // the scissor keeps drawing inside the frame. Pixels map 1:1 either way.
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(viewport_.width), static_cast<float>(viewport_.height),
+                            0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, extent_};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
   const VkDescriptorSet set = lighting_->set0();
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lighting_->lighting_layout(), 0, 1, &set, 0, nullptr);
-  const std::array<float, 2> inv_viewport{1.0f / static_cast<float>(extent_.width),
-                                          1.0f / static_cast<float>(extent_.height)};
+  const std::array<float, 2> inv_viewport{1.0f / static_cast<float>(viewport_.width),
+                                          1.0f / static_cast<float>(viewport_.height)};
   vkCmdPushConstants(cmd, lighting_->lighting_layout(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(inv_viewport),
                      inv_viewport.data());
-  const VkBuffer corners = corners_.handle();
-  const VkDeviceSize offset = 0;
-  vkCmdBindVertexBuffers(cmd, 0, 1, &corners, &offset);
+  const std::array<VkBuffer, 2> vertex_buffers{corners_.handle(), grid_shape_.handle()};
+  const std::array<VkDeviceSize, 2> offsets{0, 0};
+  vkCmdBindVertexBuffers(cmd, kCornerBinding, 2, vertex_buffers.data(), offsets.data());
 }
 
 void LightingPasses::record_tiled(VkCommandBuffer cmd, const RenderTargets& targets, const Buffer& indices,

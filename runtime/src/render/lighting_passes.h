@@ -2,13 +2,15 @@
 // The global light pass, tiled and naive. The tiled pass is recorded ONCE, before any
 // classification has run (Split/Second, Sections 4.7 and 4.9): one pipeline bind and one
 // indirect indexed draw per draw class, reading index and indirect buffers that are filled in
-// later each frame (by the host, or by the GPU-driven build). The naive pass draws optimised
-// ID 31 (every feature) over the whole frame.
+// later each frame (by the host, or by the GPU-driven build). Its primitives are triangle pairs
+// or point sprites (tile_primitive.h). The naive pass draws optimised ID 31 (every feature) over
+// the whole frame as two triangles.
 
 #include "lighting_interface.h"
 #include "render_targets.h"
 #include "tilelight/buffer.h"
 #include "tilelight/tile_grid.h"
+#include "tilelight/tile_primitive.h"
 #include "tilelight/vk_handles.h"
 
 #include <cstdint>
@@ -23,7 +25,7 @@ enum class PermutationSet { optimised, raw };
 class LightingPasses {
  public:
   LightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
-                 const LightingInterface& lighting, PermutationSet permutations);
+                 const LightingInterface& lighting, PermutationSet permutations, TilePrimitive primitive);
 
   // 32 (optimised) or 128 (raw; the 32 pruned raw IDs have no pipeline and are never drawn).
   std::uint32_t class_count() const { return static_cast<std::uint32_t>(pipelines_.size()); }
@@ -40,11 +42,13 @@ class LightingPasses {
   void begin(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer) const;
 
   const LightingInterface* lighting_;
-  Buffer corners_;        // the prebuilt grid of tile corners (pixels)
+  Buffer corners_;        // the prebuilt grid of tile corners (pixels): triangles
+  Buffer grid_shape_;     // tiles_x + 1 and the tile size: points        // the prebuilt grid of tile corners (pixels)
   Buffer naive_indices_;  // two triangles over the whole frame
   std::vector<UniquePipeline> pipelines_;  // per draw class; empty for pruned raw IDs
   UniquePipeline naive_pipeline_;
-  VkExtent2D extent_{};
+  VkExtent2D extent_{};    // the frame
+  VkExtent2D viewport_{};  // whole tiles: >= the frame
 };
 
 }  // namespace tilelight

@@ -46,6 +46,31 @@ TileGrid checked_grid(const Context& context, const RendererOptions& options) {
   return TileGrid::make(options.width, options.height, options.tile_size);
 }
 
+// Points need large point sprites up to a whole block (4 tiles) and a viewport of whole tiles.
+std::optional<std::string> points_unsupported(const Context& context, const TileGrid& grid) {
+  const DeviceLimits& limits = context.limits();
+  const float largest = static_cast<float>(kBlockTiles * grid.tile_size);
+  if (!context.features().large_points) return "the device lacks the largePoints feature";
+  if (limits.max_point_size < largest) {
+    return "the device's largest point is " + std::to_string(limits.max_point_size) + " pixels, " +
+           std::to_string(static_cast<int>(largest)) + " are needed";
+  }
+  if (grid.tiles_x * grid.tile_size > limits.max_viewport_width ||
+      grid.tiles_y * grid.tile_size > limits.max_viewport_height) {
+    return "a viewport of whole tiles exceeds the device's largest viewport";
+  }
+  return std::nullopt;
+}
+
+TilePrimitive choose_primitive(const Context& context, const TileGrid& grid, std::optional<TilePrimitive> asked) {
+  const std::optional<std::string> why_not = points_unsupported(context, grid);
+  if (!asked) return why_not ? TilePrimitive::triangles : TilePrimitive::points;
+  if (*asked == TilePrimitive::points && why_not) {
+    throw Error("primitive points: not available on " + context.device_name() + ": " + *why_not);
+  }
+  return *asked;
+}
+
 // raw ID -> draw class: the generated LUT, or the identity when drawing raw permutations.
 std::vector<std::uint8_t> draw_classes(bool raw_permutations) {
   const shadergen::Registry& registry = split_second::registry();
@@ -70,6 +95,7 @@ struct TileRenderer::Impl {
   const Context& context;
   RendererOptions options;
   TileGrid grid;
+  TilePrimitive primitive;
   VkSampleCountFlagBits samples;
   CommandPool pool;
   UniqueDescriptorPool descriptor_pool;
@@ -97,7 +123,11 @@ struct TileRenderer::Impl {
   std::function<void()> before_host_signal;
 
   Impl(const Context& ctx, const Scene& scene, const RendererOptions& opts)
-      : context(ctx), options(opts), grid(checked_grid(ctx, opts)), samples(ctx.choose_msaa(opts.msaa)),
+      : context(ctx),
+        options(opts),
+        grid(checked_grid(ctx, opts)),
+        primitive(choose_primitive(ctx, grid, opts.primitive)),
+        samples(ctx.choose_msaa(opts.msaa)),
         pool(ctx, "tilelight frame") {
     const Camera& camera = scene.camera(opts.camera);
     descriptor_pool = create_descriptor_pool(ctx, 16, "tilelight descriptors");
@@ -108,13 +138,14 @@ struct TileRenderer::Impl {
                                                    *targets, descriptor_pool.get());
     classification = std::make_unique<TileClassification>(ctx, grid, *lighting, descriptor_pool.get());
     light_passes = std::make_unique<LightingPasses>(
-        ctx, grid, *targets, *lighting, opts.raw_permutations ? PermutationSet::raw : PermutationSet::optimised);
+        ctx, grid, *targets, *lighting, opts.raw_permutations ? PermutationSet::raw : PermutationSet::optimised,
+        primitive);
 
     class_for_raw = draw_classes(opts.raw_permutations);
     pruned = pruned_raw_ids();
     const std::uint32_t classes = light_passes->class_count();
     if (opts.path == IndexPath::cpu) {
-      cpu_builder = std::make_unique<TileIndexBuilder>(grid, class_for_raw, pruned, classes);
+      cpu_builder = std::make_unique<TileIndexBuilder>(grid, class_for_raw, pruned, classes, primitive);
       cpu_indices = Buffer(ctx, {std::max<VkDeviceSize>(grid.max_index_count(), 6) * sizeof(std::uint32_t),
                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::HostUpload, "tile indices (host-built)"});
       cpu_draws = Buffer(ctx, {classes * sizeof(VkDrawIndexedIndirectCommand), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
@@ -122,7 +153,7 @@ struct TileRenderer::Impl {
       clear_draws();
     } else {
       gpu_build = std::make_unique<GpuIndexBuild>(ctx, grid, class_for_raw, pruned, classes, opts.coalesce,
-                                                  classification->device_ids(), descriptor_pool.get());
+                                                  primitive, classification->device_ids(), descriptor_pool.get());
     }
 
     frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
@@ -191,8 +222,10 @@ struct TileRenderer::Impl {
     FrameStats stats;
     stats.class_tiles.assign(built.class_tiles.begin(), built.class_tiles.end());
     stats.class_rectangles.assign(built.rectangles.begin(), built.rectangles.end());
+    stats.class_primitives.assign(built.primitives.begin(), built.primitives.end());
     stats.primitives_uncoalesced = built.primitives_uncoalesced;
     stats.primitives_coalesced = built.primitives_coalesced;
+    stats.rectangles = built.rectangles_coalesced;
     return stats;
   }
 
@@ -205,8 +238,10 @@ struct TileRenderer::Impl {
     FrameStats stats;
     stats.class_tiles = counts.tiles;
     stats.class_rectangles = counts.rectangles;
+    stats.class_primitives = counts.primitives;
     stats.primitives_uncoalesced = std::accumulate(counts.tiles.begin(), counts.tiles.end(), 0u);
-    stats.primitives_coalesced = std::accumulate(counts.rectangles.begin(), counts.rectangles.end(), 0u);
+    stats.primitives_coalesced = std::accumulate(counts.primitives.begin(), counts.primitives.end(), 0u);
+    stats.rectangles = std::accumulate(counts.rectangles.begin(), counts.rectangles.end(), 0u);
     return stats;
   }
 
@@ -285,6 +320,7 @@ FrameResult TileRenderer::render_frame() { return impl_->render_frame(); }
 const TileGrid& TileRenderer::grid() const { return impl_->grid; }
 std::uint32_t TileRenderer::msaa_samples() const { return static_cast<std::uint32_t>(impl_->samples); }
 std::uint32_t TileRenderer::draw_class_count() const { return impl_->light_passes->class_count(); }
+TilePrimitive TileRenderer::tile_primitive() const { return impl_->primitive; }
 std::uint32_t TileRenderer::pipeline_count() const { return impl_->light_passes->pipeline_count(); }
 const LightingParamsBlock& TileRenderer::lighting_params() const { return impl_->lighting->params(); }
 

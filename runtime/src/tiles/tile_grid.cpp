@@ -1,6 +1,7 @@
 #include "tilelight/tile_grid.h"
 
 #include "tilelight/error.h"
+#include "tilelight/tile_primitive.h"
 
 #include <fmt/format.h>
 
@@ -38,11 +39,13 @@ TileGrid TileGrid::make(std::uint32_t width, std::uint32_t height, std::uint32_t
   grid.blocks_x = ceil_div(grid.tiles_x, kBlockTiles);
   grid.blocks_y = ceil_div(grid.tiles_y, kBlockTiles);
   // Index counts, vertex indices and blocked offsets are 32-bit (the GPU's index type); the
-  // index count (6 per tile) and the padded block storage are the largest of them.
+  // index count (6 per tile) and the padded block storage are the largest of them. A point
+  // index keeps bits 30..31 for its side (tile_primitive.h), so corner vertices stay below 2^30.
   constexpr std::uint64_t kLimit = std::numeric_limits<std::uint32_t>::max();
   const std::uint64_t tiles = std::uint64_t{grid.tiles_x} * grid.tiles_y;
   const std::uint64_t padded = std::uint64_t{grid.blocks_x} * grid.blocks_y * kBlockTileCount;
-  if (tiles * 6 > kLimit || padded > kLimit) {
+  const std::uint64_t corners = std::uint64_t{grid.tiles_x + 1} * (grid.tiles_y + 1);
+  if (tiles * 6 > kLimit || padded > kLimit || corners > kPointCornerMask) {
     throw Error(fmt::format("TileGrid: frame {}x{} at tile size {} has too many tiles ({})", width,
                             height, tile_size, tiles));
   }

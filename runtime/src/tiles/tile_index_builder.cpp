@@ -30,6 +30,8 @@ struct TileIndexBuilder::Counts {
   static constexpr std::uint32_t kLanes = 4;
   std::array<std::array<std::uint32_t, kMaxDrawClasses>, kLanes> rects{};
   std::array<std::array<std::uint32_t, kMaxDrawClasses>, kLanes> tiles{};
+  std::array<std::array<std::uint32_t, kMaxDrawClasses>, kLanes> primitives{};
+  TilePrimitive primitive = TilePrimitive::triangles;
 
   // Appends one rectangle to `out` and counts it in `lane` (< kLanes; neighbours should differ);
   // returns the number of rectangles written (1).
@@ -38,6 +40,7 @@ struct TileIndexBuilder::Counts {
     *out = Rect{v00, id, static_cast<std::uint8_t>(w), static_cast<std::uint8_t>(h)};
     ++rects[lane][id];
     tiles[lane][id] += w * h;
+    primitives[lane][id] += primitives_for_rect(primitive, w, h);
     return 1;
   }
 
@@ -52,8 +55,9 @@ struct TileIndexBuilder::Counts {
 };
 
 TileIndexBuilder::TileIndexBuilder(const TileGrid& grid, std::span<const std::uint8_t> lut,
-                                   std::span<const bool> pruned, std::uint32_t class_count)
-    : grid_(grid), class_count_(class_count) {
+                                   std::span<const bool> pruned, std::uint32_t class_count,
+                                   TilePrimitive primitive)
+    : grid_(grid), class_count_(class_count), primitive_(primitive) {
   if (class_count == 0 || class_count > kMaxDrawClasses) {
     throw Error(fmt::format("TileIndexBuilder: the class count must be 1..{} (got {})", kMaxDrawClasses,
                             class_count));
@@ -205,24 +209,25 @@ std::uint32_t TileIndexBuilder::find_rects(const std::uint8_t* ids, bool coalesc
 }
 
 void TileIndexBuilder::write_indices(std::uint32_t rect_count,
-                                     const std::array<std::uint32_t, kMaxDrawClasses>& rects,
+                                     const std::array<std::uint32_t, kMaxDrawClasses>& primitives,
                                      std::span<std::uint32_t> indices,
                                      std::span<VkDrawIndexedIndirectCommand> draws) const {
   // Pass 2: exclusive prefix sum of the per-ID index counts gives each ID's first index.
+  const std::uint32_t per_primitive = indices_per_primitive(primitive_);
   std::array<std::uint32_t, kMaxDrawClasses> cursor{};
   std::uint32_t first = 0;
   for (std::uint32_t id = 0; id < class_count_; ++id) {
     cursor[id] = first;
-    draws[id] = VkDrawIndexedIndirectCommand{rects[id] * 6, 1, first, 0, 0};
-    first += rects[id] * 6;
+    draws[id] = VkDrawIndexedIndirectCommand{primitives[id] * per_primitive, 1, first, 0, 0};
+    first += primitives[id] * per_primitive;
   }
   if (rect_count == 0) return;
-  // Pass 3: scatter each rectangle's two triangles into its ID's range, keeping block order.
+  // Pass 3: scatter each rectangle's primitives into its ID's range, keeping block order.
   // The current ID's write position stays in a register while the ID repeats (large regions).
-  const std::uint32_t stride = grid_.tiles_x + 1;
   std::uint32_t* const base = indices.data();
   std::uint8_t current = rects_[0].id;
   std::uint32_t* dst = base + cursor[current];
+  const bool points = primitive_ == TilePrimitive::points;
   for (std::uint32_t i = 0; i < rect_count; ++i) {
     const Rect r = rects_[i];
     if (r.id != current) {
@@ -230,17 +235,35 @@ void TileIndexBuilder::write_indices(std::uint32_t rect_count,
       current = r.id;
       dst = base + cursor[current];
     }
-    const std::uint32_t v10 = r.v00 + r.w;
-    const std::uint32_t v01 = r.v00 + r.h * stride;
-    const std::uint32_t v11 = v01 + r.w;
-    dst[0] = r.v00;
-    dst[1] = v10;
-    dst[2] = v01;
-    dst[3] = v10;
-    dst[4] = v11;
-    dst[5] = v01;
-    dst += 6;
+    dst = points ? write_points(r, dst) : write_triangles(r, dst);
   }
+}
+
+std::uint32_t* TileIndexBuilder::write_triangles(const Rect& r, std::uint32_t* dst) const {
+  const std::uint32_t stride = grid_.tiles_x + 1;
+  const std::uint32_t v10 = r.v00 + r.w;
+  const std::uint32_t v01 = r.v00 + r.h * stride;
+  const std::uint32_t v11 = v01 + r.w;
+  dst[0] = r.v00;
+  dst[1] = v10;
+  dst[2] = v01;
+  dst[3] = v10;
+  dst[4] = v11;
+  dst[5] = v01;
+  return dst + 6;
+}
+
+std::uint32_t* TileIndexBuilder::write_points(const Rect& r, std::uint32_t* dst) const {
+  if (r.w == r.h) {
+    *dst = point_index(r.v00, r.w);
+    return dst + 1;
+  }
+  // A run in a block row, or a uniform partial block at the frame's edge: one point per tile.
+  const std::uint32_t stride = grid_.tiles_x + 1;
+  for (std::uint32_t row = 0; row < r.h; ++row) {
+    for (std::uint32_t col = 0; col < r.w; ++col) *dst++ = point_index(r.v00 + row * stride + col, 1);
+  }
+  return dst;
 }
 
 IndexBuildStats TileIndexBuilder::build(std::span<const std::uint8_t> blocked_raw_ids, bool coalesce,
@@ -259,16 +282,19 @@ IndexBuildStats TileIndexBuilder::build(std::span<const std::uint8_t> blocked_ra
                             class_count_, draws.size()));
   }
   Counts counts;
+  counts.primitive = primitive_;
   const std::uint32_t rect_count = find_rects(blocked_raw_ids.data(), coalesce, counts);
   IndexBuildStats stats;
   stats.rectangles = Counts::sum(counts.rects);
   stats.class_tiles = Counts::sum(counts.tiles);
-  write_indices(rect_count, stats.rectangles, indices, draws);
+  stats.primitives = Counts::sum(counts.primitives);
+  write_indices(rect_count, stats.primitives, indices, draws);
 
   stats.tiles = grid_.tile_count();
   stats.primitives_uncoalesced = stats.tiles;
-  stats.primitives_coalesced = rect_count;
-  stats.index_count = rect_count * 6;
+  stats.rectangles_coalesced = rect_count;
+  for (std::uint32_t id = 0; id < class_count_; ++id) stats.primitives_coalesced += stats.primitives[id];
+  stats.index_count = stats.primitives_coalesced * indices_per_primitive(primitive_);
   return stats;
 }
 

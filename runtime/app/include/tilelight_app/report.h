@@ -17,6 +17,7 @@ struct RunDescription {
   std::string camera;
   bool coalesce = true;
   std::string lavapipe_threads;  // LP_NUM_THREADS as set, or "" (driver default)
+  std::string primitive;         // "points" | "triangles": what the tile pass drew
 };
 
 struct MedianTimings {  // milliseconds, medians over the frames
@@ -40,6 +41,7 @@ struct FrameReport {
   std::vector<std::pair<std::string, std::uint32_t>> raw_property_tiles;  // in the order
   std::vector<std::uint32_t> optimised_tiles;                             // 32 counts
   std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0;
+  std::uint32_t rectangles = 0;  // after coalescing; a non-square one is drawn as one point per tile
   MedianTimings timings;
   Equivalence equivalence;
   ProcessFigures process;
