@@ -12,7 +12,7 @@ if(NOT rc EQUAL 0)
 endif()
 
 foreach(name IN ITEMS results.json permutations.png tile_size.png index_path.png coalescing.png
-                      resolution.png stages.png)
+                      primitive.png resolution.png stages.png)
   if(NOT EXISTS "${OUT}/${name}")
     message(FATAL_ERROR "tilelight_sweep --quick did not write ${OUT}/${name}")
   endif()
@@ -24,7 +24,8 @@ endforeach()
 
 foreach(heading IN ITEMS "### Optimised vs raw permutations (64x36)" "### Tile size 4 vs 8 vs 16 (64x36)"
                          "### CPU patching vs GPU-driven index build (64x36)"
-                         "### Coalesced vs uncoalesced tiles (64x36)" "### Resolution scaling, naive vs classified"
+                         "### Coalesced vs uncoalesced tiles (64x36)" "### Point sprites vs triangle pairs (64x36)"
+                         "### Resolution scaling, naive vs classified"
                          "### Per-stage cost, naive vs classified (64x36)" "| 96x54 |")
   string(FIND "${stdout}" "${heading}" at)
   if(at EQUAL -1)

@@ -29,6 +29,8 @@ Measurement finish(const Run& run, const RendererOptions& options, std::uint32_t
   m.tiles = run.renderer->grid().tile_count();
   m.primitives_uncoalesced = run.last.stats.primitives_uncoalesced;
   m.primitives_coalesced = run.last.stats.primitives_coalesced;
+  m.rectangles = run.last.stats.rectangles;
+  m.primitive = run.renderer->tile_primitive();
   m.equivalence = app::compare_frames(run.renderer->read_classified(), run.renderer->read_naive());
   return m;
 }
@@ -41,9 +43,9 @@ double Measurement::speedup() const {
 }
 
 std::string configuration_key(const RendererOptions& o) {
-  return fmt::format("{}x{} tile {} {} {} {}", o.width, o.height, o.tile_size,
+  return fmt::format("{}x{} tile {} {} {} {} {}", o.width, o.height, o.tile_size,
                      o.path == IndexPath::gpu ? "gpu" : "cpu", o.raw_permutations ? "raw" : "optimised",
-                     o.coalesce ? "coalesced" : "uncoalesced");
+                     o.coalesce ? "coalesced" : "uncoalesced", o.primitive ? to_string(*o.primitive) : "auto");
 }
 
 std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,

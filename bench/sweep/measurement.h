@@ -21,7 +21,8 @@ struct Measurement {
   std::uint32_t msaa_samples = 0;
   std::uint32_t pipelines = 0;  // lighting pipelines the tile pass binds (32 or 96)
   std::uint32_t tiles = 0;
-  std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0;
+  TilePrimitive primitive = TilePrimitive::triangles;  // what the tile pass drew (auto resolved)
+  std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0, rectangles = 0;
   app::MedianTimings timings;
   app::Equivalence equivalence;
 
@@ -33,7 +34,8 @@ struct Measurement {
   double speedup() const;
 };
 
-// "1280x720 tile 4 cpu optimised coalesced": names a configuration in keys and progress lines.
+// "1280x720 tile 4 cpu optimised coalesced auto": names a configuration in keys and progress
+// lines; the last word is the primitive asked for (auto, points or triangles).
 std::string configuration_key(const RendererOptions& options);
 
 // Makes one renderer per configuration and renders one untimed warm-up frame with each, then

@@ -36,7 +36,9 @@ Json measurement_json(const Measurement& m) {
   j["coalesce"] = o.coalesce;
   j["pipelines"] = m.pipelines;
   j["tiles"] = m.tiles;
-  j["rectangles"] = {{"uncoalesced", m.primitives_uncoalesced}, {"drawn", m.primitives_coalesced}};
+  j["primitive"] = to_string(m.primitive);
+  j["primitives"] = {
+      {"uncoalesced", m.primitives_uncoalesced}, {"drawn", m.primitives_coalesced}, {"rectangles", m.rectangles}};
   j["timings_ms"] = timings_json(m.timings);
   j["classified_light_ms"] = round3(m.classified_light());
   j["speedup"] = std::round(m.speedup() * 100.0) / 100.0;

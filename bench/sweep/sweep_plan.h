@@ -14,7 +14,7 @@
 namespace tilelight::sweep {
 
 // What varies within one comparison; decides how its rows are named and charted.
-enum class Facet { permutations, tile_size, index_path, coalescing, resolution, stages };
+enum class Facet { permutations, tile_size, index_path, coalescing, primitive, resolution, stages };
 
 struct Comparison {
   Facet facet;

@@ -9,7 +9,7 @@ std::string ms(double value) { return fmt::format("{:.3f}", value); }
 
 std::string configurations_table(const Comparison& c, const std::vector<const Measurement*>& rows) {
   std::string out =
-      "| configuration | tiles | rectangles drawn | classification | index build | tiled light | "
+      "| configuration | tiles | primitives drawn | classification | index build | tiled light | "
       "classified total | naive light | speed-up | pixels differ |\n"
       "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Measurement* m : rows) {
