@@ -2,6 +2,7 @@
 #include "test_support.h"
 #include "tilelight_app/cli.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -50,7 +51,9 @@ TEST(TilelightCli, WritesTheFourFilesAndTheReportFields) {
                         "MSAA_EDGE"}) {
     ASSERT_TRUE(report["raw_property_tiles"].contains(p)) << p;
     // At 200x120 no tile lies wholly inside one shadow (Classification.DefaultCameraHasAllSevenProperties).
-    if (std::string_view(p) != "SOLID_SHADOW") EXPECT_GT(report["raw_property_tiles"][p].get<int>(), 0) << p;
+    if (std::string_view(p) != "SOLID_SHADOW") {
+      EXPECT_GT(report["raw_property_tiles"][p].get<int>(), 0) << p;
+    }
   }
   ASSERT_EQ(report["optimised_tiles"].size(), 32u);
   int sum = 0;
@@ -58,6 +61,14 @@ TEST(TilelightCli, WritesTheFourFilesAndTheReportFields) {
   EXPECT_EQ(sum, 50 * 30);
   EXPECT_EQ(report["primitives"]["uncoalesced"], 50 * 30);
   EXPECT_LT(report["primitives"]["coalesced"].get<int>(), 50 * 30);
+  // auto is points on lavapipe: a non-square rectangle is drawn as a point per tile.
+  EXPECT_EQ(report["primitive"], "points");
+  const int coalesced = report["primitives"]["coalesced"].get<int>();
+  const int rectangles = report["primitives"]["rectangles"].get<int>();
+  EXPECT_GE(coalesced, rectangles);
+  EXPECT_NE(r.out.find(fmt::format("tiles 1500, points 1500 -> {} coalesced ({} rectangles);", coalesced, rectangles)),
+            std::string::npos)
+      << r.out;
   for (const char* t : {"gbuffer", "shadow_map", "classification", "index_build_cpu", "tiled_light", "naive_light"}) {
     ASSERT_TRUE(report["timings_ms"].contains(t)) << t;
     EXPECT_GE(report["timings_ms"][t].get<double>(), 0.0) << t;
@@ -67,6 +78,39 @@ TEST(TilelightCli, WritesTheFourFilesAndTheReportFields) {
   for (const auto& entry : fs::directory_iterator(out)) {
     EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
   }
+}
+
+// Forced triangles: each rectangle is one primitive (a pair of triangles), so the report's
+// primitive count is its rectangle count.
+TEST(TilelightCli, TrianglesReportOnePrimitivePerRectangle) {
+  const fs::path out = scratch_dir() / "out";
+  const CliResult r = run_cli({"--width", "200", "--height", "120", "--primitive", "triangles", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream file(out / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(file);
+  EXPECT_EQ(report["primitive"], "triangles");
+  const int coalesced = report["primitives"]["coalesced"].get<int>();
+  const int rectangles = report["primitives"]["rectangles"].get<int>();
+  EXPECT_EQ(coalesced, rectangles);
+  EXPECT_LT(rectangles, 50 * 30) << "nothing was coalesced";
+  EXPECT_NE(r.out.find(fmt::format("tiles 1500, triangles 1500 -> {} coalesced ({} rectangles);", coalesced,
+                                   rectangles)),
+            std::string::npos)
+      << r.out;
+}
+
+// Like --path, --primitive takes one of a fixed set: anything else is a usage error, reported
+// before anything is rendered.
+TEST(TilelightCli, UnknownPrimitiveIsAUsageError) {
+  const fs::path out = scratch_dir() / "out";
+  const CliResult primitive = run_cli({"--primitive", "bogus", "--out", out.string()});
+  const CliResult path = run_cli({"--path", "fpga", "--out", out.string()});
+  EXPECT_EQ(primitive.exit_code, 105);  // CLI11's ValidationError
+  EXPECT_EQ(primitive.exit_code, path.exit_code);
+  EXPECT_EQ(primitive.err,
+            "--primitive: bogus not in {auto,points,triangles}\nRun with --help for more information.\n");
+  EXPECT_EQ(primitive.out, "");
+  EXPECT_FALSE(fs::exists(out));
 }
 
 struct BadInput {
@@ -101,6 +145,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"unknown_device", {"--device", "no-such-gpu"}, "no-such-gpu"},
                       BadInput{"unknown_camera", {"--camera", "moon"}, "unknown camera 'moon'"},
                       BadInput{"bad_path", {"--path", "fpga"}, "--path"},
+                      BadInput{"bad_primitive", {"--primitive", "bogus"},
+                               "--primitive: bogus not in {auto,points,triangles}"},
                       BadInput{"bad_tile_size", {"--tile-size", "5"}, "tile_size must be 4, 8 or 16 (got 5)"}),
     [](const ::testing::TestParamInfo<BadInput>& param_info) { return std::string(param_info.param.name); });
 

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <numeric>
+#include <optional>
 
 namespace tilelight::test {
 namespace {
@@ -22,6 +23,7 @@ struct Case {
   bool coalesce;
   const char* camera;
   std::uint32_t tile_size = 4;
+  std::optional<TilePrimitive> primitive = std::nullopt;  // empty: auto, which is points on lavapipe
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
@@ -42,7 +44,9 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
   options.coalesce = c.coalesce;
   options.camera = c.camera;
   options.tile_size = c.tile_size;
+  options.primitive = c.primitive;
   TileRenderer renderer(context(), scene, options);
+  ASSERT_EQ(renderer.tile_primitive(), c.primitive.value_or(TilePrimitive::points));
   const FrameResult frame = renderer.render_frame();
 
   const FrameComparison cmp = compare(renderer.read_classified(), renderer.read_naive(), kEquivalenceTolerance);
@@ -57,6 +61,16 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
     EXPECT_LT(frame.stats.primitives_coalesced, frame.stats.primitives_uncoalesced);
   } else {
     EXPECT_EQ(frame.stats.primitives_coalesced, frame.stats.primitives_uncoalesced);
+  }
+  // Triangles draw each rectangle as one pair; points draw a non-square one tile by tile.
+  const std::uint32_t drawn_primitives =
+      std::accumulate(frame.stats.class_primitives.begin(), frame.stats.class_primitives.end(), 0u);
+  EXPECT_EQ(drawn_primitives, frame.stats.primitives_coalesced);
+  if (renderer.tile_primitive() == TilePrimitive::triangles) {
+    EXPECT_EQ(frame.stats.class_primitives, frame.stats.class_rectangles);
+    EXPECT_EQ(frame.stats.primitives_coalesced, frame.stats.rectangles);
+  } else {
+    EXPECT_GE(frame.stats.primitives_coalesced, frame.stats.rectangles);
   }
 }
 
@@ -79,7 +93,12 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"cpu_tile8", 320, 180, IndexPath::cpu, false, true, "default", 8},
                       Case{"gpu_tile16_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 16},
                       // Thin prisms at 55-85 m, where the rounding margins decide most.
-                      Case{"cpu_telephoto", 320, 180, IndexPath::cpu, false, true, "telephoto"}),
+                      Case{"cpu_telephoto", 320, 180, IndexPath::cpu, false, true, "telephoto"},
+                      // The chapter's two triangles per rectangle, where auto would choose points.
+                      Case{"cpu_triangles", 320, 180, IndexPath::cpu, false, true, "default", 4,
+                           TilePrimitive::triangles},
+                      Case{"gpu_triangles_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4,
+                           TilePrimitive::triangles}),
     case_name);
 
 }  // namespace

@@ -49,7 +49,10 @@ INSTANTIATE_TEST_SUITE_P(
                       GridCase{1280, 720, 8, 160, 90, 40, 23},
                       GridCase{1280, 720, 16, 80, 45, 20, 12},
                       GridCase{17, 33, 16, 2, 3, 1, 1},
-                      GridCase{80, 16, 4, 20, 4, 5, 1}));
+                      GridCase{80, 16, 4, 20, 4, 5, 1},
+                      // The widest one-tile-high frame whose corner vertices (2 * 536870911) stay
+                      // below 2^30, as point indices need (tile_primitive.h).
+                      GridCase{2147483640u, 4, 4, 536870910u, 1, 134217728u, 1}));
 
 TEST(TileGrid, ExactCountsAt720p) {
   const TileGrid grid = TileGrid::make(1280, 720);
@@ -86,7 +89,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadGrid{1280, 720, 32, "TileGrid: tile_size must be 4, 8 or 16 (got 32)"},
                       BadGrid{4294967295u, 4294967295u, 4,
                               "TileGrid: frame 4294967295x4294967295 at tile size 4 has too many "
-                              "tiles (1152921504606846976)"}));
+                              "tiles (1152921504606846976)"},
+                      // 536870911 tiles pass the index-count and block-storage limits, but their
+                      // 2 * 536870912 corner vertices do not fit in a point index's 30 bits.
+                      BadGrid{2147483641u, 4, 4,
+                              "TileGrid: frame 2147483641x4 at tile size 4 has too many tiles (536870911)"}));
 
 TEST(TileGrid, BlockedOffsetFollowsTheDocumentedLayout) {
   const TileGrid grid = TileGrid::make(1283, 719);  // 321x180 tiles, 81x45 blocks

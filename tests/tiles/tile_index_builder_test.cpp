@@ -1,9 +1,11 @@
 #include "tilelight/error.h"
 #include "tilelight/tile_grid.h"
 #include "tilelight/tile_index_builder.h"
+#include "tilelight/tile_primitive.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <ostream>
@@ -15,13 +17,20 @@
 namespace tilelight {
 namespace {
 
-// The tests' own LUT (not the generated one): optimised = raw & 31, so raw IDs 32 apart share an
-// optimised ID; raw IDs with bits 0 and 1 both set are pruned.
-std::vector<std::uint8_t> test_lut() {
+// The tests' own LUTs (not the generated one). With 32 draw classes: optimised = raw & 31, so raw
+// IDs 32 apart share an optimised ID; with 128: the identity, as when the raw permutations are
+// drawn. Raw IDs with bits 0 and 1 both set are pruned.
+std::uint8_t class_of(std::uint8_t raw, std::uint32_t class_count) {
+  return class_count == kOptimisedClassCount ? static_cast<std::uint8_t>(raw & 31u) : raw;
+}
+
+std::vector<std::uint8_t> lut_for(std::uint32_t class_count) {
   std::vector<std::uint8_t> lut(kRawClassCount);
-  for (std::uint32_t r = 0; r < kRawClassCount; ++r) lut[r] = static_cast<std::uint8_t>(r & 31u);
+  for (std::uint32_t r = 0; r < kRawClassCount; ++r) lut[r] = class_of(static_cast<std::uint8_t>(r), class_count);
   return lut;
 }
+
+std::vector<std::uint8_t> test_lut() { return lut_for(kOptimisedClassCount); }
 
 bool is_pruned(std::uint32_t raw) { return (raw & 3u) == 3u; }
 
@@ -43,17 +52,22 @@ std::vector<std::uint8_t> valid_raw_ids() {
   return ids;
 }
 
+constexpr std::uint32_t kUnwritten = 0xDEADBEEFu;  // what build_row_major() fills the index buffer with
+
 struct Built {
   IndexBuildStats stats;
   std::vector<std::uint32_t> indices;
-  std::array<VkDrawIndexedIndirectCommand, kOptimisedClassCount> draws{};
+  std::vector<VkDrawIndexedIndirectCommand> draws = std::vector<VkDrawIndexedIndirectCommand>(kOptimisedClassCount);
 };
 
-Built build_row_major(const TileGrid& grid, const std::vector<std::uint8_t>& row_major, bool coalesce) {
-  const std::vector<std::uint8_t> lut = test_lut();
-  TileIndexBuilder builder(grid, lut, test_pruned());
+Built build_row_major(const TileGrid& grid, const std::vector<std::uint8_t>& row_major, bool coalesce,
+                      std::uint32_t class_count = kOptimisedClassCount,
+                      TilePrimitive primitive = TilePrimitive::triangles) {
+  const std::vector<std::uint8_t> lut = lut_for(class_count);
+  TileIndexBuilder builder(grid, lut, test_pruned(), class_count, primitive);
   Built out;
-  out.indices.assign(grid.max_index_count(), 0xDEADBEEFu);
+  out.indices.assign(grid.max_index_count(), kUnwritten);
+  out.draws.resize(class_count);
   out.stats = builder.build(to_blocked(grid, row_major), coalesce, out.indices, out.draws);
   return out;
 }
@@ -73,15 +87,19 @@ Rectangle decode(const TileGrid& grid, const std::uint32_t* idx) {
   return r;
 }
 
-std::uint8_t optimised(std::uint8_t raw) { return static_cast<std::uint8_t>(raw & 31u); }
+// Rectangles and points per draw class by the coalescing rule, worked out independently on the
+// row-major IDs. A point is a square rectangle, or one tile of any other: a run inside a block row
+// is one tile high, so it is drawn as one point per tile whatever its length.
+struct Expected {
+  std::array<std::uint32_t, kMaxDrawClasses> rects{}, points{};
+};
 
-// Rectangle counts per optimised ID by the coalescing rule, worked out independently on the
-// row-major IDs.
-std::array<std::uint32_t, kMaxDrawClasses> expected_rects(const TileGrid& grid,
-                                                              const std::vector<std::uint8_t>& rm,
-                                                              bool coalesce) {
-  std::array<std::uint32_t, kMaxDrawClasses> counts{};
-  auto id_at = [&](std::uint32_t x, std::uint32_t y) { return optimised(rm[std::size_t{y} * grid.tiles_x + x]); };
+Expected expected_counts(const TileGrid& grid, const std::vector<std::uint8_t>& rm, bool coalesce,
+                         std::uint32_t class_count = kOptimisedClassCount) {
+  Expected counts;
+  auto id_at = [&](std::uint32_t x, std::uint32_t y) {
+    return class_of(rm[std::size_t{y} * grid.tiles_x + x], class_count);
+  };
   for (std::uint32_t by = 0; by < grid.blocks_y; ++by) {
     for (std::uint32_t bx = 0; bx < grid.blocks_x; ++bx) {
       const std::uint32_t x_end = std::min(grid.tiles_x, bx * 4 + 4);
@@ -91,12 +109,15 @@ std::array<std::uint32_t, kMaxDrawClasses> expected_rects(const TileGrid& grid,
         for (std::uint32_t x = bx * 4; x < x_end; ++x) uniform = uniform && id_at(x, y) == id_at(bx * 4, by * 4);
       }
       if (coalesce && uniform) {
-        ++counts[id_at(bx * 4, by * 4)];
+        const std::uint32_t w = x_end - bx * 4, h = y_end - by * 4;
+        ++counts.rects[id_at(bx * 4, by * 4)];
+        counts.points[id_at(bx * 4, by * 4)] += w == h ? 1 : w * h;
         continue;
       }
       for (std::uint32_t y = by * 4; y < y_end; ++y) {
         for (std::uint32_t x = bx * 4; x < x_end; ++x) {
-          if (!coalesce || x == bx * 4 || id_at(x, y) != id_at(x - 1, y)) ++counts[id_at(x, y)];
+          if (!coalesce || x == bx * 4 || id_at(x, y) != id_at(x - 1, y)) ++counts.rects[id_at(x, y)];
+          ++counts.points[id_at(x, y)];
         }
       }
     }
@@ -104,57 +125,93 @@ std::array<std::uint32_t, kMaxDrawClasses> expected_rects(const TileGrid& grid,
   return counts;
 }
 
-// Checks every structural promise of build(): contiguous draws, each tile covered exactly once by
-// a rectangle of its optimised ID, rectangles inside one block, block order within an ID, stats.
-void verify(const TileGrid& grid, const std::vector<std::uint8_t>& rm, const Built& b, bool coalesce) {
+// Decodes one point into the square of tiles it covers (tile_primitive.h).
+Rectangle decode_point(const TileGrid& grid, std::uint32_t index) {
+  const std::uint32_t stride = grid.tiles_x + 1;
+  const std::uint32_t corner = point_corner_vertex(index);
+  const std::uint32_t side = point_side_tiles(index);
+  return {corner % stride, corner / stride, corner % stride + side, corner / stride + side};
+}
+
+// Checks every structural promise of build() for either primitive: the draws are contiguous, at
+// the prefix sums of stats.primitives; each primitive covers a rectangle inside the grid and
+// inside one block (a point wider than a tile: its whole uniform block); each tile is covered
+// exactly once, by a primitive of its own class; a class's primitives keep block order; the
+// counts follow the coalescing rule (expected_counts); nothing is written past index_count.
+void verify_build(const TileGrid& grid, const std::vector<std::uint8_t>& rm, const Built& b, bool coalesce,
+                  std::uint32_t class_count, TilePrimitive primitive) {
+  ASSERT_EQ(b.draws.size(), class_count);
+  const std::uint32_t per_primitive = indices_per_primitive(primitive);
   std::uint32_t next_first = 0;
   std::vector<int> coverage(grid.tile_count(), 0);
-  std::array<std::uint32_t, kMaxDrawClasses> tiles_per_id{};
-  for (std::uint32_t id = 0; id < kOptimisedClassCount; ++id) {
+  std::array<std::uint32_t, kMaxDrawClasses> tiles_per_class{};
+  for (std::uint32_t id = 0; id < class_count; ++id) {
     const VkDrawIndexedIndirectCommand& d = b.draws[id];
     EXPECT_EQ(d.instanceCount, 1u);
     EXPECT_EQ(d.vertexOffset, 0);
     EXPECT_EQ(d.firstInstance, 0u);
-    ASSERT_EQ(d.firstIndex, next_first) << "draw " << id << " is not contiguous";
-    ASSERT_EQ(d.indexCount % 6, 0u);
-    ASSERT_EQ(d.indexCount, b.stats.rectangles[id] * 6);
+    ASSERT_EQ(d.firstIndex, next_first) << "draw " << id << " does not start at the prefix sum";
+    ASSERT_EQ(d.indexCount, b.stats.primitives[id] * per_primitive) << "draw " << id;
     next_first += d.indexCount;
     std::uint64_t last_key = 0;
-    for (std::uint32_t k = d.firstIndex; k < d.firstIndex + d.indexCount; k += 6) {
-      const Rectangle r = decode(grid, &b.indices[k]);
+    for (std::uint32_t k = d.firstIndex; k < d.firstIndex + d.indexCount; k += per_primitive) {
+      const Rectangle r =
+          primitive == TilePrimitive::points ? decode_point(grid, b.indices[k]) : decode(grid, &b.indices[k]);
       ASSERT_LT(r.x0, r.x1);
       ASSERT_LT(r.y0, r.y1);
-      ASSERT_LE(r.x1, grid.tiles_x);
-      ASSERT_LE(r.y1, grid.tiles_y);
-      ASSERT_EQ(r.x0 / 4, (r.x1 - 1) / 4) << "rectangle crosses a block edge";
-      ASSERT_EQ(r.y0 / 4, (r.y1 - 1) / 4) << "rectangle crosses a block edge";
+      ASSERT_LE(r.x1, grid.tiles_x) << "primitive at index " << k << " leaves the grid";
+      ASSERT_LE(r.y1, grid.tiles_y) << "primitive at index " << k << " leaves the grid";
+      ASSERT_EQ(r.x0 / 4, (r.x1 - 1) / 4) << "primitive at index " << k << " crosses a block edge";
+      ASSERT_EQ(r.y0 / 4, (r.y1 - 1) / 4) << "primitive at index " << k << " crosses a block edge";
+      const bool one_tile = r.x1 - r.x0 == 1 && r.y1 - r.y0 == 1;
       if (!coalesce) {
-        ASSERT_EQ((r.x1 - r.x0) * (r.y1 - r.y0), 1u);
+        ASSERT_TRUE(one_tile) << "a primitive wider than a tile without coalescing";
+      }
+      if (primitive == TilePrimitive::points && !one_tile) {
+        ASSERT_EQ(r.x1, std::min(r.x0 + 4, grid.tiles_x)) << "point at index " << k << " is not its whole block";
+        ASSERT_EQ(r.y1, std::min(r.y0 + 4, grid.tiles_y)) << "point at index " << k << " is not its whole block";
       }
       const std::uint64_t block = std::uint64_t{r.y0 / 4} * grid.blocks_x + r.x0 / 4;
       const std::uint64_t key = ((block * 4 + r.y0 % 4) * 4 + r.x0 % 4) + 1;
-      ASSERT_GT(key, last_key) << "rectangles of ID " << id << " are not in block order";
+      ASSERT_GT(key, last_key) << "primitives of class " << id << " are not in block order";
       last_key = key;
       for (std::uint32_t y = r.y0; y < r.y1; ++y) {
         for (std::uint32_t x = r.x0; x < r.x1; ++x) {
           const std::size_t t = std::size_t{y} * grid.tiles_x + x;
           ++coverage[t];
-          ASSERT_EQ(optimised(rm[t]), id) << "tile (" << x << ", " << y << ") drawn by the wrong ID";
-          ++tiles_per_id[id];
+          ASSERT_EQ(class_of(rm[t], class_count), id) << "tile (" << x << ", " << y << ") drawn by the wrong class";
+          ++tiles_per_class[id];
         }
       }
     }
   }
-  EXPECT_EQ(next_first, b.stats.index_count);
   for (std::size_t t = 0; t < coverage.size(); ++t) ASSERT_EQ(coverage[t], 1) << "tile " << t;
-  EXPECT_EQ(b.stats.class_tiles, tiles_per_id);
-  EXPECT_EQ(b.stats.rectangles, expected_rects(grid, rm, coalesce));
+  EXPECT_EQ(next_first, b.stats.index_count);
+  EXPECT_EQ(b.stats.index_count, b.stats.primitives_coalesced * per_primitive);
+  for (std::size_t i = b.stats.index_count; i < b.indices.size(); ++i) {
+    ASSERT_EQ(b.indices[i], kUnwritten) << "wrote past index_count at " << i;
+  }
+  EXPECT_EQ(b.stats.class_tiles, tiles_per_class);
+  const Expected expected = expected_counts(grid, rm, coalesce, class_count);
+  EXPECT_EQ(b.stats.rectangles, expected.rects);
+  EXPECT_EQ(b.stats.primitives, primitive == TilePrimitive::points ? expected.points : expected.rects);
+  std::uint32_t rectangles = 0;
+  for (std::uint32_t n : expected.rects) rectangles += n;
+  EXPECT_EQ(b.stats.rectangles_coalesced, rectangles);
   EXPECT_EQ(b.stats.tiles, grid.tile_count());
   EXPECT_EQ(b.stats.primitives_uncoalesced, grid.tile_count());
-  EXPECT_EQ(b.stats.index_count, b.stats.primitives_coalesced * 6);
   if (!coalesce) {
     EXPECT_EQ(b.stats.primitives_coalesced, grid.tile_count());
   }
+}
+
+void verify(const TileGrid& grid, const std::vector<std::uint8_t>& rm, const Built& b, bool coalesce) {
+  verify_build(grid, rm, b, coalesce, kOptimisedClassCount, TilePrimitive::triangles);
+}
+
+void verify_points(const TileGrid& grid, const std::vector<std::uint8_t>& rm, const Built& b, bool coalesce,
+                   std::uint32_t class_count) {
+  verify_build(grid, rm, b, coalesce, class_count, TilePrimitive::points);
 }
 
 std::vector<std::uint8_t> random_ids(const TileGrid& grid, std::uint32_t seed, std::size_t palette) {
@@ -316,7 +373,7 @@ TEST(TileIndexBuilder, PaddingSlotsAreNotRead) {
   std::vector<std::uint32_t> indices(grid.max_index_count());
   std::array<VkDrawIndexedIndirectCommand, kOptimisedClassCount> draws{};
   const IndexBuildStats stats = builder.build(blocked, true, indices, draws);
-  EXPECT_EQ(stats.rectangles, expected_rects(grid, ids, true));
+  EXPECT_EQ(stats.rectangles, expected_counts(grid, ids, true).rects);
 }
 
 TEST(TileIndexBuilder, RebuildingReusesTheScratchCorrectly) {
@@ -326,7 +383,7 @@ TEST(TileIndexBuilder, RebuildingReusesTheScratchCorrectly) {
   for (std::uint32_t round = 0; round < 3; ++round) {
     const std::vector<std::uint8_t> ids = random_ids(grid, round, round == 1 ? 96 : 2);
     Built b;
-    b.indices.assign(grid.max_index_count(), 0);
+    b.indices.assign(grid.max_index_count(), kUnwritten);
     b.stats = builder.build(to_blocked(grid, ids), round != 2, b.indices, b.draws);
     verify(grid, ids, b, round != 2);
   }
@@ -340,6 +397,146 @@ TEST(TileIndexBuilder, EmptyPrunedSetAllowsEveryRawId) {
   std::vector<std::uint32_t> indices(grid.max_index_count());
   std::array<VkDrawIndexedIndirectCommand, kOptimisedClassCount> draws{};
   EXPECT_EQ(builder.build(to_blocked(grid, ids), true, indices, draws).rectangles[3], 1u);
+}
+
+// ---- points (TilePrimitive::points) ----
+
+class RandomIdsAsPoints : public ::testing::TestWithParam<std::tuple<Size, bool>> {};
+
+TEST_P(RandomIdsAsPoints, CoverEveryTileOnceWithAPointOfItsClass) {
+  const auto [size, coalesce] = GetParam();
+  const TileGrid grid = TileGrid::make(size.width, size.height, size.tile_size);
+  // Palettes and class counts in one process: each build takes microseconds, a test process far longer.
+  for (const std::size_t palette : {std::size_t{2}, std::size_t{5}, std::size_t{96}}) {
+    for (const std::uint32_t class_count : {kOptimisedClassCount, kRawClassCount}) {
+      SCOPED_TRACE(testing::Message() << "palette " << palette << ", " << class_count << " classes");
+      const std::vector<std::uint8_t> ids = random_ids(grid, size.width * 31u + size.height, palette);
+      const Built points = build_row_major(grid, ids, coalesce, class_count, TilePrimitive::points);
+      verify_points(grid, ids, points, coalesce, class_count);
+
+      // Triangles find the same rectangles; only how they are drawn differs.
+      const Built triangles = build_row_major(grid, ids, coalesce, class_count, TilePrimitive::triangles);
+      verify_build(grid, ids, triangles, coalesce, class_count, TilePrimitive::triangles);
+      EXPECT_EQ(triangles.stats.rectangles, points.stats.rectangles);
+      EXPECT_EQ(triangles.stats.class_tiles, points.stats.class_tiles);
+      EXPECT_EQ(triangles.stats.rectangles_coalesced, points.stats.rectangles_coalesced);
+      EXPECT_EQ(triangles.stats.primitives_coalesced, triangles.stats.rectangles_coalesced);
+    }
+  }
+}
+
+// The grids of RandomIds, and partial blocks of 2x2 and 3x3 tiles (square, so one point each);
+// palettes of 2 raw IDs make uniform blocks and runs likely, 96 rare; 32 classes merge raw IDs
+// 32 apart, 128 keep every raw ID its own class.
+INSTANTIATE_TEST_SUITE_P(
+    Grids, RandomIdsAsPoints,
+    ::testing::Combine(::testing::Values(Size{1280, 720, 4}, Size{1283, 719, 4}, Size{1, 1, 4}, Size{5, 3, 4},
+                                         Size{37, 23, 8}, Size{1920, 1080, 16}, Size{61, 45, 4}, Size{24, 24, 4},
+                                         Size{12, 12, 4}),
+                       ::testing::Bool()));
+
+// Exact index buffers for small frames (tile size 4, coalescing on, the 32-class LUT).
+struct PointLayout {
+  const char* name;
+  std::uint32_t width, height;
+  std::uint8_t (*raw)(std::uint32_t x, std::uint32_t y);
+  std::vector<std::uint32_t> indices;           // the whole written index buffer
+  std::vector<std::uint32_t> points_per_class;  // draws[0..n).indexCount; later classes draw nothing
+  std::uint32_t rectangles;
+};
+
+void PrintTo(const PointLayout& c, std::ostream* os) { *os << c.name; }
+
+class PointLayouts : public ::testing::TestWithParam<PointLayout> {};
+
+TEST_P(PointLayouts, ExactIndicesAndDraws) {
+  const PointLayout& c = GetParam();
+  const TileGrid grid = TileGrid::make(c.width, c.height);
+  std::vector<std::uint8_t> ids(grid.tile_count());
+  for (std::uint32_t y = 0; y < grid.tiles_y; ++y) {
+    for (std::uint32_t x = 0; x < grid.tiles_x; ++x) ids[std::size_t{y} * grid.tiles_x + x] = c.raw(x, y);
+  }
+  const Built b = build_row_major(grid, ids, true, kOptimisedClassCount, TilePrimitive::points);
+  verify_points(grid, ids, b, true, kOptimisedClassCount);
+  ASSERT_EQ(b.stats.index_count, c.indices.size());
+  EXPECT_EQ(std::vector<std::uint32_t>(b.indices.begin(), b.indices.begin() + b.stats.index_count), c.indices);
+  std::uint32_t first = 0;
+  for (std::uint32_t id = 0; id < kOptimisedClassCount; ++id) {
+    const std::uint32_t count = id < c.points_per_class.size() ? c.points_per_class[id] : 0;
+    EXPECT_EQ(b.draws[id].indexCount, count) << "class " << id;
+    EXPECT_EQ(b.draws[id].firstIndex, first) << "class " << id;
+    first += count;
+  }
+  EXPECT_EQ(b.stats.rectangles_coalesced, c.rectangles);
+}
+
+std::uint8_t all_zero(std::uint32_t, std::uint32_t) { return 0; }
+
+INSTANTIATE_TEST_SUITE_P(
+    Frames, PointLayouts,
+    ::testing::Values(
+        // 4x4 tiles: one uniform block is one point of side 4.
+        PointLayout{"full_block", 16, 16, all_zero, {point_index(0, 4)}, {1}, 1},
+        // Raw IDs 0 and 32 share class 0: the block is uniform after the LUT.
+        PointLayout{"full_block_two_raw_ids", 16, 16,
+                    [](std::uint32_t x, std::uint32_t) { return std::uint8_t(x % 2 * 32); },
+                    {point_index(0, 4)}, {1}, 1},
+        PointLayout{"two_blocks", 32, 16, all_zero, {point_index(0, 4), point_index(4, 4)}, {2}, 2},
+        // 3x3 tiles: a partial block that is square is still one point.
+        PointLayout{"partial_3x3", 12, 12, all_zero, {point_index(0, 3)}, {1}, 1},
+        PointLayout{"one_tile", 1, 1, all_zero, {point_index(0, 1)}, {1}, 1},
+        // 6x6 tiles, corner stride 7: a 4x4 block, a 2x4 and a 4x2 one (a point per tile, row-major),
+        // then the 2x2 corner block, at corner (4, 4) = 32, as one point of side 2.
+        PointLayout{"partial_2x2_corner", 24, 24, all_zero,
+                    {point_index(0, 4),
+                     4, 5, 11, 12, 18, 19, 25, 26,
+                     28, 29, 30, 31, 35, 36, 37, 38,
+                     point_index(32, 2)},
+                    {18}, 4},
+        // 5x3 tiles, stride 6: a 4x3 block and a 1x3 block, neither square.
+        PointLayout{"partial_4x3_and_1x3", 20, 12, all_zero,
+                    {0, 1, 2, 3, 6, 7, 8, 9, 12, 13, 14, 15, 4, 10, 16}, {15}, 2},
+        // 4x4 tiles, stride 5: tile (3, 0) is class 1, so row 0 is a run of three class-0 tiles (three
+        // points of side 1) and rows 1-3 are runs of four (four points each).
+        PointLayout{"row_run_of_three", 16, 16,
+                    [](std::uint32_t x, std::uint32_t y) { return std::uint8_t(x == 3 && y == 0 ? 1 : 0); },
+                    {0, 1, 2, 5, 6, 7, 8, 10, 11, 12, 13, 15, 16, 17, 18, point_index(3, 1)}, {15, 1}, 5}),
+    [](const ::testing::TestParamInfo<PointLayout>& param_info) { return std::string(param_info.param.name); });
+
+TEST(TileIndexBuilder, UniformFrameIsOnePointPerBlock) {
+  const TileGrid grid = TileGrid::make(1280, 720);
+  const std::vector<std::uint8_t> ids(grid.tile_count(), 37);  // class 5
+  const Built b = build_row_major(grid, ids, true, kOptimisedClassCount, TilePrimitive::points);
+  verify_points(grid, ids, b, true, kOptimisedClassCount);
+  EXPECT_EQ(b.stats.primitives_coalesced, 3600u);
+  EXPECT_EQ(b.stats.rectangles_coalesced, 3600u);
+  EXPECT_EQ(b.stats.primitives[5], 3600u);
+  EXPECT_EQ(b.draws[5].indexCount, 3600u);
+  for (std::uint32_t k = 0; k < b.stats.index_count; ++k) ASSERT_EQ(point_side_tiles(b.indices[k]), 4u) << k;
+}
+
+TEST(TileIndexBuilder, UniformFrameWithoutCoalescingIsOnePointPerTile) {
+  const TileGrid grid = TileGrid::make(1280, 720);
+  const std::vector<std::uint8_t> ids(grid.tile_count(), 37);
+  const Built b = build_row_major(grid, ids, false, kOptimisedClassCount, TilePrimitive::points);
+  verify_points(grid, ids, b, false, kOptimisedClassCount);
+  EXPECT_EQ(b.stats.primitives_coalesced, 57600u);
+  EXPECT_EQ(b.stats.rectangles_coalesced, 57600u);
+  EXPECT_EQ(b.draws[5].indexCount, 57600u);
+}
+
+TEST(TileIndexBuilder, RebuildingPointsReusesTheScratchCorrectly) {
+  const TileGrid grid = TileGrid::make(61, 45);
+  const std::vector<std::uint8_t> lut = test_lut();
+  TileIndexBuilder builder(grid, lut, test_pruned(), kOptimisedClassCount, TilePrimitive::points);
+  EXPECT_EQ(builder.primitive(), TilePrimitive::points);
+  for (std::uint32_t round = 0; round < 3; ++round) {
+    const std::vector<std::uint8_t> ids = random_ids(grid, round, round == 1 ? 96 : 2);
+    Built b;
+    b.indices.assign(grid.max_index_count(), kUnwritten);
+    b.stats = builder.build(to_blocked(grid, ids), round != 2, b.indices, b.draws);
+    verify_points(grid, ids, b, round != 2, kOptimisedClassCount);
+  }
 }
 
 // ---- errors ----
