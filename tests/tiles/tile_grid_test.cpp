@@ -93,7 +93,8 @@ INSTANTIATE_TEST_SUITE_P(
                       // 536870911 tiles pass the index-count and block-storage limits, but their
                       // 2 * 536870912 corner vertices do not fit in a point index's 30 bits.
                       BadGrid{2147483641u, 4, 4,
-                              "TileGrid: frame 2147483641x4 at tile size 4 has too many tiles (536870911)"}));
+                              "TileGrid: frame 2147483641x4 at tile size 4 has too many tile corners (1073741824, at most "
+                              "1073741823)"}));
 
 TEST(TileGrid, BlockedOffsetFollowsTheDocumentedLayout) {
   const TileGrid grid = TileGrid::make(1283, 719);  // 321x180 tiles, 81x45 blocks

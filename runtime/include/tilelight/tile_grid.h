@@ -23,7 +23,8 @@ struct TileGrid {
   // Throws tilelight::Error naming the value when width/height is 0 or tile_size is not 4, 8 or
   // 16, e.g. "TileGrid: width must be > 0 (got 0)", "TileGrid: tile_size must be 4, 8 or 16
   // (got 5)". Also throws when the frame is so large that the index count (6 per tile) would not
-  // fit in 32 bits.
+  // fit in 32 bits, or a corner vertex would not fit in the 30 bits of a point index
+  // (tile_primitive.h).
   static TileGrid make(std::uint32_t width, std::uint32_t height, std::uint32_t tile_size = 4);
 
   std::uint32_t tile_count() const;     // tiles_x * tiles_y

@@ -220,9 +220,11 @@ struct TileRenderer::Impl {
     if (before_host_signal) before_host_signal();
     timeline.signal(patched_value);
     FrameStats stats;
-    stats.class_tiles.assign(built.class_tiles.begin(), built.class_tiles.end());
-    stats.class_rectangles.assign(built.rectangles.begin(), built.rectangles.end());
-    stats.class_primitives.assign(built.primitives.begin(), built.primitives.end());
+    // One entry per draw class, like the GPU path's counts.
+    const std::size_t classes = light_passes->class_count();
+    stats.class_tiles.assign(built.class_tiles.begin(), built.class_tiles.begin() + classes);
+    stats.class_rectangles.assign(built.rectangles.begin(), built.rectangles.begin() + classes);
+    stats.class_primitives.assign(built.primitives.begin(), built.primitives.begin() + classes);
     stats.primitives_uncoalesced = built.primitives_uncoalesced;
     stats.primitives_coalesced = built.primitives_coalesced;
     stats.rectangles = built.rectangles_coalesced;
