@@ -99,14 +99,32 @@ TEST(TilelightCli, TrianglesReportOnePrimitivePerRectangle) {
       << r.out;
 }
 
+// The README's contract: 2 on any usage error, whatever kind of parse error CLI11 raised; --help
+// is not an error.
+TEST(TilelightCli, UsageErrorsExitTwoAndHelpExitsZero) {
+  const fs::path out = scratch_dir() / "out";
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"--no-such-option"}, {"--frames", "abc"}, {"--frames", "0"}, {"--width"}, {"--path", "fpga"}}) {
+    std::vector<std::string> with_out = args;
+    with_out.insert(with_out.end(), {"--out", out.string()});
+    const CliResult r = run_cli(with_out);
+    EXPECT_EQ(r.exit_code, 2) << args.front() << ": " << r.err;
+    EXPECT_NE(r.err.find("Run with --help for more information."), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(out));
+  const CliResult help = run_cli({"--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--primitive"), std::string::npos) << help.out;
+}
+
 // Like --path, --primitive takes one of a fixed set: anything else is a usage error, reported
 // before anything is rendered.
 TEST(TilelightCli, UnknownPrimitiveIsAUsageError) {
   const fs::path out = scratch_dir() / "out";
   const CliResult primitive = run_cli({"--primitive", "bogus", "--out", out.string()});
   const CliResult path = run_cli({"--path", "fpga", "--out", out.string()});
-  EXPECT_EQ(primitive.exit_code, 105);  // CLI11's ValidationError
-  EXPECT_EQ(primitive.exit_code, path.exit_code);
+  EXPECT_EQ(primitive.exit_code, 2);  // README: 2 on a usage error
+  EXPECT_EQ(path.exit_code, 2);
   EXPECT_EQ(primitive.err,
             "--primitive: bogus not in {auto,points,triangles}\nRun with --help for more information.\n");
   EXPECT_EQ(primitive.out, "");

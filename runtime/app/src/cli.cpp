@@ -25,6 +25,7 @@ namespace tilelight::app {
 namespace {
 
 constexpr int kExitError = 1;
+constexpr int kExitUsage = 2;  // README: 2 on a usage error (CLI11's own codes vary by error kind)
 
 struct Arguments {
   std::uint32_t width = 1280, height = 720, frames = 1, tile_size = 4;
@@ -216,7 +217,9 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return cli.exit(e, out, err);
+    // cli.exit() prints the message (or the help); --help and --version are successes.
+    const int code = cli.exit(e, out, err);
+    return code == 0 ? 0 : kExitUsage;
   }
   std::string stage = "starting";
   try {
