@@ -12,7 +12,8 @@
 //   points     1 index per square: a square rectangle (w == h tiles) is one point; any other
 //              rectangle is one point per tile. The index is the corner-grid vertex of the
 //              square's top-left corner with (side in tiles - 1) in bits 30..31
-//              (point_index()); uber/tile_point.vert decodes it, no vertex buffer is read.
+//              (point_index()); uber/tile_point.vert decodes it (no per-vertex data; the
+//              grid's shape comes as an instance-rate attribute).
 //              Needs the largePoints feature and a point size range reaching 4 tiles.
 
 #include <cstdint>
