@@ -82,16 +82,17 @@ std::vector<std::uint8_t> make_ids(const tilelight::TileGrid& grid, int pattern)
   }
 }
 
-// Args: width, height, pattern, coalesce.
+// Args: width, height, pattern, coalesce, primitive (0: triangle pairs, 1: points; tile_primitive.h).
 void BM_IndexBuild(benchmark::State& state) {
   const auto grid = tilelight::TileGrid::make(static_cast<std::uint32_t>(state.range(0)),
                                               static_cast<std::uint32_t>(state.range(1)));
   const int pattern = static_cast<int>(state.range(2));
   const bool coalesce = state.range(3) != 0;
+  const auto primitive = state.range(4) != 0 ? tilelight::TilePrimitive::points : tilelight::TilePrimitive::triangles;
   const std::vector<std::uint8_t> blocked = tilelight::to_blocked(grid, make_ids(grid, pattern));
   const std::vector<std::uint8_t> lut = synthetic_lut();
   const std::array<bool, kRawClassCount> pruned = synthetic_pruned();
-  tilelight::TileIndexBuilder builder(grid, lut, pruned);
+  tilelight::TileIndexBuilder builder(grid, lut, pruned, kOptimisedClassCount, primitive);
   std::vector<std::uint32_t> indices(grid.max_index_count());
   std::array<VkDrawIndexedIndirectCommand, kOptimisedClassCount> draws{};
 
@@ -105,15 +106,18 @@ void BM_IndexBuild(benchmark::State& state) {
   state.SetLabel(kPatternNames[pattern]);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * grid.tile_count());
   state.counters["tiles_per_rect"] =
-      static_cast<double>(stats.tiles) / static_cast<double>(stats.primitives_coalesced);
-  state.counters["rects"] = static_cast<double>(stats.primitives_coalesced);
+      static_cast<double>(stats.tiles) / static_cast<double>(stats.rectangles_coalesced);
+  state.counters["rects"] = static_cast<double>(stats.rectangles_coalesced);
+  state.counters["prims"] = static_cast<double>(stats.primitives_coalesced);
 }
 
 void index_build_args(benchmark::internal::Benchmark* b) {
-  b->ArgNames({"w", "h", "pattern", "coalesce"});
+  b->ArgNames({"w", "h", "pattern", "coalesce", "points"});
   for (const auto& [w, h] : {std::array<std::int64_t, 2>{1280, 720}, std::array<std::int64_t, 2>{1920, 1080}}) {
     for (std::int64_t pattern : {kUniform, kRandom, kSceneLike}) {
-      for (std::int64_t coalesce : {1, 0}) b->Args({w, h, pattern, coalesce});
+      for (std::int64_t coalesce : {1, 0}) {
+        for (std::int64_t points : {0, 1}) b->Args({w, h, pattern, coalesce, points});
+      }
     }
   }
   b->Unit(benchmark::kMicrosecond);
