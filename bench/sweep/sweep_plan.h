@@ -25,7 +25,7 @@ struct Comparison {
 
 struct SweepPlan {
   std::vector<RendererOptions> configurations;  // distinct, in the order they are measured
-  std::vector<Comparison> comparisons;          // a) to f) of the brief, in that order
+  std::vector<Comparison> comparisons;          // results.md a) to g), in that order
 };
 
 // The defaults every comparison starts from: the first size, tile 4, CPU path, optimised
