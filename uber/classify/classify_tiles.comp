@@ -37,6 +37,16 @@
 // With a = 0 this is "every receiver in front of every stored depth"; with the fitted a, a
 // sloped surface that receives its own shadow map stays LIT as long as the PCF taps do. The
 // mirrored test settles SOLID. Both a = 0 and the fitted a are tried.
+//
+// Two dispatches of this shader (specialization constant CLASSIFY_PASS). The tap rectangles are
+// small for most tiles but reach MAX_BOUNDED_TEXELS for some (a tile spanning two surfaces, a
+// distant tile covering many map texels). On a SIMD driver such as lavapipe, whose lanes are
+// neighbouring invocations, one lane walking a large rectangle holds up the seven others. So
+// pass 0 reads only rectangles of at most MAX_DIRECT_TEXELS and appends the tiles with larger
+// ones to a list, with the prism bounds that decide them; pass 1 (dispatched indirectly over
+// that list) settles them with the same shadow_type_from_prism() and ORs the shadow bits into
+// the IDs. Both passes decide from the same bounds with the same function, so the IDs are the
+// ones a single pass would write.
 #extension GL_GOOGLE_include_directive : require
 #include "gbuffer.glsl"
 #include "light_scattering.glsl"
@@ -47,11 +57,30 @@
 #include "world_position.glsl"
 
 layout(constant_id = 0) const uint TILE_SIZE = 4u; // pixels; 4, 8 or 16
-layout(local_size_x = 64) in;
+// 0: classify every tile, deferring large tap rectangles; 1: settle the deferred tiles.
+layout(constant_id = 8) const uint CLASSIFY_PASS = 0u;
+const uint CLASSIFY_GROUP_SIZE = 64u;
+layout(local_size_x = CLASSIFY_GROUP_SIZE) in;
 
-layout(set = 1, binding = 0, std430) writeonly buffer TileIds {
+layout(set = 1, binding = 0, std430) buffer TileIds {
     uint block_rows[]; // 4 per block
 } tile_ids;
+
+// One tile whose shadow type pass 1 decides: its prism bounds (PrismBounds below) and where its
+// ID byte lives.
+struct DeferredShadow {
+    vec4  p;          // p_min.xy, p_max.xy
+    vec4  r_slope;    // r_min, r_max, slope.xy
+    vec4  q;          // q_min[0], q_min[1], q_max[0], q_max[1]
+    uvec4 id_byte;    // block-row word, bit shift of the tile's byte, 0, 0
+};
+
+// Reset by the runtime to (0, 1, 1, 0) before pass 0; pass 1 is dispatched indirectly from
+// `dispatch.xyz`. Holds room for every tile of the grid.
+layout(set = 2, binding = 0, std430) buffer DeferredShadows {
+    uvec4 dispatch;   // work groups of pass 1 (x, y, z), number of records (w)
+    DeferredShadow records[];
+} deferred;
 
 layout(push_constant) uniform ClassifyPush {
     uvec4 grid; // tiles_x, tiles_y, blocks_x, blocks_y
@@ -59,6 +88,8 @@ layout(push_constant) uniform ClassifyPush {
 
 // A tile whose tap rectangle holds more texels than this is SOFT without reading it.
 const int MAX_BOUNDED_TEXELS = 256;
+// Pass 0 reads rectangles up to this size itself and leaves larger ones to pass 1.
+const int MAX_DIRECT_TEXELS = 32;
 
 // Unit roundoff of float32 (2^-24). Every rounding margin below is a first-order error bound of
 // the arithmetic involved times a safety factor, MARGIN_ULPS units of roundoff per operation
@@ -374,25 +405,53 @@ float slope_delta_max(vec2 a)
     return max(a.x * TAP_DELTA_MIN, a.x * TAP_DELTA_MAX) + max(a.y * TAP_DELTA_MIN, a.y * TAP_DELTA_MAX);
 }
 
-uint shadow_type_from_prism(PrismBounds b)
+// The map texels any tap of the prism's samples can read: [rect_min, rect_max], and its part
+// inside the map, [lo, hi] (empty when lo > hi in some axis).
+struct TapRectangle {
+    ivec2 rect_min;
+    ivec2 rect_max;
+    ivec2 lo;
+    ivec2 hi;
+};
+
+// Precondition: b.valid.
+TapRectangle tap_rectangle(PrismBounds b)
 {
-    if (!b.valid) {
-        return TILE_FLAG_PARTIAL;
-    }
     // The lighting clamps P to the map +- SUN_SHADOW_TAP_REACH: samples clamped there have no
     // tap inside the map, so clamping the range here keeps every in-map tap and int() defined.
     vec2 map_size = params.shadow_map_size.xy;
     vec2 lo_pos = clamp(b.p_min, vec2(-2.0 * SUN_SHADOW_TAP_REACH), map_size + 2.0 * SUN_SHADOW_TAP_REACH);
     vec2 hi_pos = clamp(b.p_max, vec2(-2.0 * SUN_SHADOW_TAP_REACH), map_size + 2.0 * SUN_SHADOW_TAP_REACH);
-    ivec2 rect_min = ivec2(floor(lo_pos - 0.5)) + SUN_SHADOW_TAP_MIN_OFFSET;
-    ivec2 rect_max = ivec2(floor(hi_pos - 0.5)) + SUN_SHADOW_TAP_MAX_OFFSET;
-    ivec2 lo = max(rect_min, ivec2(0));
-    ivec2 hi = min(rect_max, ivec2(map_size) - 1);
+    TapRectangle rect;
+    rect.rect_min = ivec2(floor(lo_pos - 0.5)) + SUN_SHADOW_TAP_MIN_OFFSET;
+    rect.rect_max = ivec2(floor(hi_pos - 0.5)) + SUN_SHADOW_TAP_MAX_OFFSET;
+    rect.lo = max(rect.rect_min, ivec2(0));
+    rect.hi = min(rect.rect_max, ivec2(map_size) - 1);
+    return rect;
+}
+
+// Texels of the rectangle inside the map (0 when none).
+int tap_rectangle_texels(TapRectangle rect)
+{
+    ivec2 extent = max(rect.hi - rect.lo + 1, ivec2(0));
+    return extent.x * extent.y;
+}
+
+uint shadow_type_from_prism(PrismBounds b)
+{
+    if (!b.valid) {
+        return TILE_FLAG_PARTIAL;
+    }
+    TapRectangle rect = tap_rectangle(b);
+    ivec2 rect_min = rect.rect_min;
+    ivec2 rect_max = rect.rect_max;
+    ivec2 lo = rect.lo;
+    ivec2 hi = rect.hi;
+    vec2 map_size = params.shadow_map_size.xy;
     if (any(greaterThan(lo, hi))) {
         return TILE_FLAG_LIT; // every tap outside the map, where nothing was rendered
     }
-    ivec2 extent = hi - lo + 1;
-    if (extent.x * extent.y > MAX_BOUNDED_TEXELS) {
+    if (tap_rectangle_texels(rect) > MAX_BOUNDED_TEXELS) {
         return TILE_FLAG_PARTIAL;
     }
     // c = stored - a.t over the rectangle, for a = 0 and the fitted a.
@@ -432,9 +491,73 @@ uint shadow_type_from_prism(PrismBounds b)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Deferred shadow decisions (pass 0 appends, pass 1 settles).
 
-// The raw ID of `tile`, which lies inside the grid.
-uint classify_tile(ClipMaps maps, uvec2 tile, ivec2 size, int samples)
+// Where a tile's ID byte lives: the block-row word and the byte's bit shift.
+struct IdByte {
+    uint word;
+    uint shift;
+};
+
+bool shadow_deferred(PrismBounds b)
+{
+    if (!b.valid) {
+        return false;
+    }
+    int texels = tap_rectangle_texels(tap_rectangle(b));
+    return texels > MAX_DIRECT_TEXELS && texels <= MAX_BOUNDED_TEXELS;
+}
+
+// A record's index; the first record of every work group of pass 1 adds that group.
+uint deferred_append()
+{
+    uint index = atomicAdd(deferred.dispatch.w, 1u);
+    if (index % CLASSIFY_GROUP_SIZE == 0u) {
+        atomicAdd(deferred.dispatch.x, 1u);
+    }
+    return index;
+}
+
+void defer_shadow(PrismBounds b, IdByte id_byte)
+{
+    uint index = deferred_append();
+    deferred.records[index].p = vec4(b.p_min, b.p_max);
+    deferred.records[index].r_slope = vec4(b.r_min, b.r_max, b.slope);
+    deferred.records[index].q = vec4(b.q_min[0], b.q_min[1], b.q_max[0], b.q_max[1]);
+    deferred.records[index].id_byte = uvec4(id_byte.word, id_byte.shift, 0u, 0u);
+}
+
+PrismBounds deferred_prism(DeferredShadow record)
+{
+    PrismBounds b;
+    b.valid = true;
+    b.p_min = record.p.xy;
+    b.p_max = record.p.zw;
+    b.r_min = record.r_slope.x;
+    b.r_max = record.r_slope.y;
+    b.slope = record.r_slope.zw;
+    b.q_min[0] = record.q.x;
+    b.q_min[1] = record.q.y;
+    b.q_max[0] = record.q.z;
+    b.q_max[1] = record.q.w;
+    return b;
+}
+
+void settle_deferred_shadow(uint index)
+{
+    if (index >= deferred.dispatch.w) {
+        return;
+    }
+    DeferredShadow record = deferred.records[index];
+    uint raw = raw_id_from_tile_flags(shadow_type_from_prism(deferred_prism(record)));
+    atomicOr(tile_ids.block_rows[record.id_byte.x], raw << record.id_byte.y);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+// The raw ID of `tile`, which lies inside the grid; without its shadow bits when the decision
+// was deferred to pass 1.
+uint classify_tile(ClipMaps maps, uvec2 tile, IdByte id_byte, ivec2 size, int samples)
 {
     ivec2 first_pixel = ivec2(tile * TILE_SIZE);
     ivec2 last_pixel = min(first_pixel + int(TILE_SIZE), size) - 1;
@@ -462,11 +585,15 @@ uint classify_tile(ClipMaps maps, uvec2 tile, ivec2 size, int samples)
     }
     PrismBounds prism = prism_bounds(maps, ndc_min, ndc_max, plane, vec2(last_pixel - first_pixel),
                                      samples_seen.sun_offset_min, samples_seen.sun_offset_max);
-    flags |= shadow_type_from_prism(prism);
+    if (shadow_deferred(prism)) {
+        defer_shadow(prism, id_byte);
+    } else {
+        flags |= shadow_type_from_prism(prism);
+    }
     return raw_id_from_tile_flags(flags);
 }
 
-void main()
+void classify_block_row()
 {
     uint block = gl_GlobalInvocationID.x / 4u;
     if (block >= push.grid.z * push.grid.w) {
@@ -480,8 +607,18 @@ void main()
     uint packed_row = 0u;
     for (uint i = 0u; i < 4u; ++i) {
         uvec2 tile = first_tile + uvec2(i, 0u);
-        uint id = all(lessThan(tile, push.grid.xy)) ? classify_tile(maps, tile, size, samples) : 0xFFu;
+        IdByte id_byte = IdByte(block * 4u + row, 8u * i);
+        uint id = all(lessThan(tile, push.grid.xy)) ? classify_tile(maps, tile, id_byte, size, samples) : 0xFFu;
         packed_row |= id << (8u * i);
     }
     tile_ids.block_rows[block * 4u + row] = packed_row;
+}
+
+void main()
+{
+    if (CLASSIFY_PASS == 0u) {
+        classify_block_row();
+    } else {
+        settle_deferred_shadow(gl_GlobalInvocationID.x);
+    }
 }
