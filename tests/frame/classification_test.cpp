@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
 
 namespace tilelight::test {
@@ -69,8 +70,8 @@ struct EdgeBitCount {
 };
 
 EdgeBitCount count_edge_bits(const GBufferSamples& g) {
-  const auto edge_bit = [](const float* sample) {
-    return (static_cast<std::uint32_t>(std::lround(sample[7] * 255.0f)) & 0x80u) != 0;
+  const auto edge_bit = [](const float* sample) {  // gbuffer.glsl: the depth's lowest bit
+    return (std::bit_cast<std::uint32_t>(sample[12]) & 1u) != 0;
   };
   EdgeBitCount count;
   for (std::uint32_t y = 0; y < g.height; ++y) {

@@ -15,6 +15,7 @@
 
 #include <glm/glm.hpp>
 
+#include <bit>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -54,7 +55,8 @@ std::array<float, 16> far_pixel(const GBufferSamples& g, const LightingParamsBlo
   v[5] = -p.sun_direction.y;
   v[6] = -p.sun_direction.z;
   v[7] = 9.0f / 255.0f;           // a geometry motion ID
-  v[12] = clip.z / clip.w;
+  // As a material stores it (gbuffer.glsl): a whole pixel, so the depth's edge bit is clear.
+  v[12] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(clip.z / clip.w) & ~1u);
   return v;
 }
 
@@ -65,13 +67,12 @@ std::array<float, 16> sky_pixel() {
   return v;
 }
 
-// What a material does for a partially covered pixel (gbuffer.glsl): the MSAA-edge bit (bit 7 of
-// the motion byte, stored as byte / 255) on every sample.
+// What a material does for a partially covered pixel (gbuffer.glsl): the MSAA-edge bit (the
+// lowest mantissa bit of the stored depth) on every sample.
 void mark_msaa_edge(GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
   for (std::uint32_t s = 0; s < g.samples; ++s) {
     float* v = g.values.data() + ((static_cast<std::size_t>(y) * g.width + x) * g.samples + s) * 16;
-    const auto byte = static_cast<std::uint32_t>(std::lround(v[7] * 255.0f)) | 0x80u;
-    v[7] = static_cast<float>(byte) / 255.0f;
+    v[12] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(v[12]) | 1u);
   }
 }
 

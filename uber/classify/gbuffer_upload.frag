@@ -43,8 +43,7 @@ bool pixel_samples_differ(uvec2 pixel)
 bool pixel_has_edge_bit(uvec2 pixel)
 {
     for (uint s = 0u; s < push.size.z; ++s) {
-        uint motion_byte = gbuffer_unpack_motion_byte(source.texels[sample_texel(pixel, s, 1u)].a);
-        if ((motion_byte & GBUFFER_MSAA_EDGE_BIT) != 0u) {
+        if (gbuffer_decode_msaa_edge_bit(source.texels[sample_texel(pixel, s, 3u)].x)) {
             return true;
         }
     }
@@ -55,12 +54,12 @@ void main()
 {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
     uint at = sample_texel(pixel, uint(gl_SampleID), 0u);
-    vec4 rt1 = source.texels[at + 1u];
+    float depth = source.texels[at + 3u].x;
     if (!pixel_has_edge_bit(pixel) && pixel_samples_differ(pixel)) {
-        rt1.a = gbuffer_pack_motion_byte(gbuffer_unpack_motion_byte(rt1.a), true);
+        depth = gbuffer_encode_depth(depth, true);
     }
     out_rt0 = source.texels[at + 0u];
-    out_rt1 = rt1;
+    out_rt1 = source.texels[at + 1u];
     out_rt2 = source.texels[at + 2u];
-    gl_FragDepth = source.texels[at + 3u].x;
+    gl_FragDepth = depth;
 }

@@ -37,9 +37,10 @@ void main()
     uint motion_id = uint(in_material.y);
 
     out_rt0 = gbuffer_encode_rt0(albedo, in_albedo_spec.a);
-    out_rt1 = gbuffer_encode_rt1(normal, motion_id, gbuffer_fragment_is_partial());
+    out_rt1 = gbuffer_encode_rt1(normal, motion_id);
     out_rt2 = gbuffer_encode_rt2(albedo * ambient, in_material.x);
     // One depth per pixel: every covered sample stores the pixel-centre depth, so a pixel
-    // inside one surface has bit-identical samples (see gbuffer.glsl).
-    gl_FragDepth = gl_FragCoord.z;
+    // inside one surface has bit-identical samples; its lowest bit is the MSAA-edge bit
+    // (see gbuffer.glsl).
+    gl_FragDepth = gbuffer_encode_depth(gl_FragCoord.z, gbuffer_fragment_is_partial());
 }

@@ -26,6 +26,6 @@ void main()
     // pixel centre only, at depth 1), so sky samples alone never make a pixel's samples differ,
     // and a partially covering geometry fragment marks its own samples. The driver may split the
     // full-screen triangle, and marking its seams would make sky tiles MSAA edges for nothing.
-    out_rt1 = gbuffer_encode_sky_rt1(false);
+    out_rt1 = gbuffer_encode_sky_rt1();
     out_rt2 = gbuffer_encode_rt2(colour, 0.0);
 }

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -45,10 +46,8 @@ struct Sample {
     const auto byte = static_cast<std::uint32_t>(std::clamp(std::nearbyint(v[7] * 255.0f), 0.0f, 255.0f));
     return (byte & 0x7Fu) == 0;
   }
-  bool edge_bit() const {
-    const auto byte = static_cast<std::uint32_t>(std::clamp(std::nearbyint(v[7] * 255.0f), 0.0f, 255.0f));
-    return (byte & 0x80u) != 0;
-  }
+  // gbuffer.glsl: the lowest mantissa bit of the stored depth.
+  bool edge_bit() const { return (std::bit_cast<std::uint32_t>(v[12]) & 1u) != 0; }
 };
 
 glm::vec4 multiply(const glm::mat4& m, const glm::vec4& v) {
