@@ -14,7 +14,7 @@
 // lit, SOFT (full PCF, right for any sample) otherwise.
 //
 // Per sample the pass only reads what it must: the motion byte (sky), the normal (sun) and the
-// depth. Everything that depends on position is decided per TILE, from bounds, because the
+// depth, whose lowest bit is the MSAA-edge bit (gbuffer.glsl). Everything that depends on position is decided per TILE, from bounds, because the
 // lighting computes it with a projective map of (pixel centre, depth):
 //   (x, y, d) -> h = inv_view_proj * (x, y, d, 1) -> world = h.xyz / h.w -> sun map texel P,
 //   receiver depth r, view depth v,
@@ -163,8 +163,8 @@ void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, GSample g)
 
 // An edge pixel adds all its samples; any other pixel sample 0 alone, which speaks for its
 // equal siblings exactly as the lighting shades only sample 0 of such a pixel. Every sample's
-// edge bit is read without a branch per sample: the fetches happen anyway, and on a CPU driver
-// (lavapipe) a branch costs more than a fetch.
+// edge bit (one depth fetch) is read without a branch per sample: the fetches happen anyway,
+// and on a CPU driver (lavapipe) a branch costs more than a fetch.
 TileSamples gather_tile(ivec2 first_pixel, ivec2 last_pixel, int samples, DepthPlane plane)
 {
     TileSamples tile = TileSamples(0u, 1.0 / 0.0, -1.0 / 0.0, 1.0 / 0.0, -1.0 / 0.0);
