@@ -61,8 +61,8 @@ TileClassification::TileClassification(const Context& context, const TileGrid& g
 
   const std::array<VkDescriptorSetLayout, 3> sets{lighting.set0_layout(), lighting.storage_set_layout(),
                                                   lighting.storage_set_layout()};
-  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, 32};
-  classify_layout_ = create_pipeline_layout(context, sets, std::span(&push, 1), "tile classification layout");
+  classify_layout_ = create_pipeline_layout(context, sets, std::span(&LightingInterface::kComputePush, 1),
+                                            "tile classification layout");
   const std::span<const std::uint32_t> spirv = companion_spirv("classify_tiles");
   classify_ = create_compute_pipeline(context, classify_layout_.get(), spirv,
                                       classification_constants(grid.tile_size, ClassifyPass::tiles),

@@ -2,8 +2,8 @@
 // Classification on the GPU (uber/classify/classify_tiles.comp): one invocation per row of a
 // block of 4x4 tiles writes the raw IDs in the blocked layout; tiles with large shadow-map tap
 // rectangles are appended to a list that a second, indirect dispatch of the same shader settles.
-// Then the IDs are copied to host memory for the CPU index builder (and the report). Also the G-buffer dump used by the CPU reference
-// classifier and the tests.
+// Then the IDs are copied to host memory for the CPU index builder (and the report). Also the
+// G-buffer dump used by the CPU reference classifier and the tests.
 
 #include "lighting_interface.h"
 #include "tilelight/buffer.h"
