@@ -48,6 +48,7 @@
 // the IDs. Both passes decide from the same bounds with the same function, so the IDs are the
 // ones a single pass would write.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "gbuffer.glsl"
 #include "light_scattering.glsl"
 #include "shadow_fade.glsl"
@@ -59,6 +60,10 @@
 layout(constant_id = 0) const uint TILE_SIZE = 4u; // pixels; 4, 8 or 16
 // 0: classify every tile, deferring large tap rectangles; 1: settle the deferred tiles.
 layout(constant_id = 8) const uint CLASSIFY_PASS = 0u;
+// Samples per pixel of the G-buffer (the runtime specialises it to the targets' count). A
+// constant, so that the loops over samples unroll: lavapipe runs a loop's body once more,
+// masked, when its lanes leave it, which for a loop over samples 1..3 is a fourth fetch.
+layout(constant_id = 9) const int GBUFFER_SAMPLES = 4;
 const uint CLASSIFY_GROUP_SIZE = 64u;
 layout(local_size_x = CLASSIFY_GROUP_SIZE) in;
 
@@ -161,47 +166,59 @@ void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, GSample g)
     }
 }
 
-// Rows of a tile whose pixels fit one 32-bit edge mask: 8, 4 or 2.
-const uint EDGE_MASK_ROWS = 32u / TILE_SIZE;
+// Rows of a tile gathered at a time: as many as one 32-bit edge mask holds (all 4 rows of a 4x4
+// tile; 4 of 8, 2 of 16).
+const uint GATHER_ROWS = 32u / TILE_SIZE < TILE_SIZE ? 32u / TILE_SIZE : TILE_SIZE;
 
 // An edge pixel adds all its samples; any other pixel sample 0 alone, which speaks for its
-// equal siblings exactly as the lighting shades only sample 0 of such a pixel. Every sample's
-// edge bit (one depth fetch) is read without a branch per sample.
+// equal siblings exactly as the lighting shades only sample 0 of such a pixel.
 //
-// The other samples of the edge pixels are added afterwards, in a loop over a bit mask of
-// them, not in a branch per pixel: lavapipe runs eight neighbouring invocations as one SIMD
-// program in which a branch's body is executed for all of them (masked) whenever it is
-// reached, whereas a loop stops once no lane has work left. A branch per pixel paid the
-// samples' fetches for every pixel; the loop pays them once per edge pixel of the busiest
-// tile among the eight (about 3 % of pixels are edge pixels).
-TileSamples gather_tile(ivec2 first_pixel, ivec2 last_pixel, int samples, DepthPlane plane)
+// The code is shaped for lavapipe, which runs eight neighbouring invocations as one SIMD
+// program: a branch's body is executed (masked) for all eight whenever it is reached, and a
+// loop runs as long as its busiest lane plus one masked pass. So
+//   - the pixels of GATHER_ROWS rows are unrolled, with constant bounds (coordinates clamped to
+//     the frame: a repeated pixel adds nothing new), and no per-pixel loop runs out;
+//   - every sample's edge bit (one depth fetch) is read without a branch per sample;
+//   - the other samples of the edge pixels are added afterwards, in a loop over a bit mask of
+//     them, instead of a branch per pixel that paid their fetches for every pixel; the loop
+//     runs once per edge pixel of the busiest of the eight tiles (about 3 % of pixels are
+//     edge pixels).
+void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, DepthPlane plane, uint rows)
+{
+    uint edge_pixels = 0u; // bit j * TILE_SIZE + i: pixel (i, rows + j) of the tile
+    [[unroll]] for (uint j = 0u; j < GATHER_ROWS; ++j) {
+        [[unroll]] for (uint i = 0u; i < TILE_SIZE; ++i) {
+            ivec2 pixel = min(first_pixel + ivec2(i, rows + j), last_pixel);
+            GSample first = gbuffer_load(pixel, 0);
+            uint edge = uint(first.msaa_edge);
+            [[unroll]] for (int s = 1; s < GBUFFER_SAMPLES; ++s) {
+                edge |= uint(gbuffer_load_msaa_edge_bit(pixel, s));
+            }
+            add_sample(tile, plane, pixel - first_pixel, first);
+            edge_pixels |= edge << (j * TILE_SIZE + i);
+        }
+    }
+    if (edge_pixels != 0u) {
+        tile.flags |= TILE_FLAG_EDGE;
+    }
+    while (edge_pixels != 0u) {
+        uint bit = uint(findLSB(edge_pixels));
+        edge_pixels &= edge_pixels - 1u;
+        ivec2 pixel = min(first_pixel + ivec2(bit % TILE_SIZE, rows + bit / TILE_SIZE), last_pixel);
+        [[unroll]] for (int s = 1; s < GBUFFER_SAMPLES; ++s) {
+            add_sample(tile, plane, pixel - first_pixel, gbuffer_load(pixel, s));
+        }
+    }
+}
+
+TileSamples gather_tile(ivec2 first_pixel, ivec2 last_pixel, DepthPlane plane)
 {
     TileSamples tile = TileSamples(0u, 1.0 / 0.0, -1.0 / 0.0, 1.0 / 0.0, -1.0 / 0.0);
-    for (int rows = first_pixel.y; rows <= last_pixel.y; rows += int(EDGE_MASK_ROWS)) {
-        int rows_end = min(rows + int(EDGE_MASK_ROWS) - 1, last_pixel.y);
-        uint edge_pixels = 0u; // bit (y - rows) * TILE_SIZE + (x - first_pixel.x)
-        for (int y = rows; y <= rows_end; ++y) {
-            for (int x = first_pixel.x; x <= last_pixel.x; ++x) {
-                ivec2 pixel = ivec2(x, y);
-                GSample first = gbuffer_load(pixel, 0);
-                uint edge = uint(first.msaa_edge);
-                for (int s = 1; s < samples; ++s) {
-                    edge |= uint(gbuffer_load_msaa_edge_bit(pixel, s));
-                }
-                add_sample(tile, plane, pixel - first_pixel, first);
-                edge_pixels |= edge << (uint(y - rows) * TILE_SIZE + uint(x - first_pixel.x));
-            }
-        }
-        if (edge_pixels != 0u) {
-            tile.flags |= TILE_FLAG_EDGE;
-        }
-        while (edge_pixels != 0u) {
-            uint bit = uint(findLSB(edge_pixels));
-            edge_pixels &= edge_pixels - 1u;
-            ivec2 pixel = ivec2(first_pixel.x + int(bit % TILE_SIZE), rows + int(bit / TILE_SIZE));
-            for (int s = 1; s < samples; ++s) {
-                add_sample(tile, plane, pixel - first_pixel, gbuffer_load(pixel, s));
-            }
+    if (GATHER_ROWS == TILE_SIZE) {
+        gather_rows(tile, first_pixel, last_pixel, plane, 0u); // the whole tile, without a loop
+    } else {
+        for (uint rows = 0u; rows < TILE_SIZE; rows += GATHER_ROWS) {
+            gather_rows(tile, first_pixel, last_pixel, plane, rows);
         }
     }
     return tile;
@@ -575,12 +592,12 @@ void settle_deferred_shadow(uint index)
 
 // The raw ID of `tile`, which lies inside the grid; without its shadow bits when the decision
 // was deferred to pass 1.
-uint classify_tile(ClipMaps maps, uvec2 tile, IdByte id_byte, ivec2 size, int samples)
+uint classify_tile(ClipMaps maps, uvec2 tile, IdByte id_byte, ivec2 size)
 {
     ivec2 first_pixel = ivec2(tile * TILE_SIZE);
     ivec2 last_pixel = min(first_pixel + int(TILE_SIZE), size) - 1;
     DepthPlane plane = fit_depth_plane(first_pixel, last_pixel);
-    TileSamples samples_seen = gather_tile(first_pixel, last_pixel, samples, plane);
+    TileSamples samples_seen = gather_tile(first_pixel, last_pixel, plane);
     uint flags = samples_seen.flags;
     if (samples_seen.geometry_min > samples_seen.geometry_max) {
         return raw_id_from_tile_flags(flags); // sky only: no depth, no shadow
@@ -620,13 +637,12 @@ void classify_block_row()
     uint row = gl_GlobalInvocationID.x % 4u;
     uvec2 first_tile = uvec2(block % push.grid.z, block / push.grid.z) * 4u + uvec2(0u, row);
     ivec2 size = ivec2(params.viewport.xy);
-    int samples = gbuffer_sample_count();
     ClipMaps maps = clip_maps();
     uint packed_row = 0u;
     for (uint i = 0u; i < 4u; ++i) {
         uvec2 tile = first_tile + uvec2(i, 0u);
         IdByte id_byte = IdByte(block * 4u + row, 8u * i);
-        uint id = all(lessThan(tile, push.grid.xy)) ? classify_tile(maps, tile, id_byte, size, samples) : 0xFFu;
+        uint id = all(lessThan(tile, push.grid.xy)) ? classify_tile(maps, tile, id_byte, size) : 0xFFu;
         packed_row |= id << (8u * i);
     }
     tile_ids.block_rows[block * 4u + row] = packed_row;

@@ -23,11 +23,12 @@ enum class ClassifyPass : std::uint32_t { tiles = 0, deferred_shadows = 1 };
 constexpr VkDeviceSize kDeferredRecordBytes = 64;
 constexpr VkDeviceSize kDeferredHeaderBytes = 16;
 
-SpecConstants classification_constants(std::uint32_t tile_size, ClassifyPass pass) {
+SpecConstants classification_constants(std::uint32_t tile_size, std::uint32_t samples, ClassifyPass pass) {
   namespace bit = split_second::raw_bit;
   SpecConstants spec;
   spec.set(0, tile_size)
       .set(8, static_cast<std::uint32_t>(pass))
+      .set(9, samples)
       .set(1, bit::SHADOW_SOLID)
       .set(2, bit::SHADOW_SOFT)
       .set(3, bit::SHADOW_FADE)
@@ -40,7 +41,7 @@ SpecConstants classification_constants(std::uint32_t tile_size, ClassifyPass pas
 
 }  // namespace
 
-TileClassification::TileClassification(const Context& context, const TileGrid& grid,
+TileClassification::TileClassification(const Context& context, const TileGrid& grid, std::uint32_t samples,
                                        const LightingInterface& lighting, VkDescriptorPool pool)
     : lighting_(&lighting), grid_(grid) {
   ids_ = Buffer(context, {grid.id_bytes(),
@@ -65,10 +66,10 @@ TileClassification::TileClassification(const Context& context, const TileGrid& g
                                             "tile classification layout");
   const std::span<const std::uint32_t> spirv = companion_spirv("classify_tiles");
   classify_ = create_compute_pipeline(context, classify_layout_.get(), spirv,
-                                      classification_constants(grid.tile_size, ClassifyPass::tiles),
+                                      classification_constants(grid.tile_size, samples, ClassifyPass::tiles),
                                       "tile classification");
   settle_ = create_compute_pipeline(context, classify_layout_.get(), spirv,
-                                    classification_constants(grid.tile_size, ClassifyPass::deferred_shadows),
+                                    classification_constants(grid.tile_size, samples, ClassifyPass::deferred_shadows),
                                     "tile classification (deferred shadows)");
 
 }

@@ -19,8 +19,9 @@ class Context;
 
 class TileClassification {
  public:
-  TileClassification(const Context& context, const TileGrid& grid, const LightingInterface& lighting,
-                     VkDescriptorPool pool);
+  // `samples`: samples per pixel of the G-buffer that `lighting` binds.
+  TileClassification(const Context& context, const TileGrid& grid, std::uint32_t samples,
+                     const LightingInterface& lighting, VkDescriptorPool pool);
 
   // Dispatches classification and copies the IDs to host memory. Afterwards the device ID
   // buffer is readable by compute shaders and the host copy by the host.
