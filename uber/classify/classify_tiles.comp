@@ -127,12 +127,11 @@ struct TileSamples {
 // sky, which the sky pass leaves at the far plane -- so that a tile on a silhouette against the
 // sky keeps its surface's plane. Any plane is sound: a poor fit (several surfaces) only widens
 // the offsets, and with them the prism.
-DepthPlane fit_depth_plane(ivec2 first_pixel, ivec2 last_pixel)
+// d00, d10, d01, d11: sample 0's depths at first_pixel, (last.x, first.y), (first.x, last.y),
+// last_pixel.
+DepthPlane depth_plane_from_corners(float d00, float d10, float d01, float d11, ivec2 first_pixel,
+                                    ivec2 last_pixel)
 {
-    float d00 = gbuffer_load(first_pixel, 0).depth;
-    float d10 = gbuffer_load(ivec2(last_pixel.x, first_pixel.y), 0).depth;
-    float d01 = gbuffer_load(ivec2(first_pixel.x, last_pixel.y), 0).depth;
-    float d11 = gbuffer_load(last_pixel, 0).depth;
     bool s00 = d00 < 1.0, s10 = d10 < 1.0, s01 = d01 < 1.0, s11 = d11 < 1.0;
     vec2 span = vec2(max(last_pixel - first_pixel, ivec2(1)));
     vec2 gradient;
@@ -145,33 +144,61 @@ DepthPlane fit_depth_plane(ivec2 first_pixel, ivec2 last_pixel)
     return DepthPlane(origin, gradient);
 }
 
+DepthPlane fit_depth_plane(ivec2 first_pixel, ivec2 last_pixel)
+{
+    return depth_plane_from_corners(gbuffer_load(first_pixel, 0).depth,
+                                    gbuffer_load(ivec2(last_pixel.x, first_pixel.y), 0).depth,
+                                    gbuffer_load(ivec2(first_pixel.x, last_pixel.y), 0).depth,
+                                    gbuffer_load(last_pixel, 0).depth, first_pixel, last_pixel);
+}
+
 float plane_offset(DepthPlane plane, ivec2 step, float depth)
 {
     return (depth - plane.origin) - dot(plane.gradient, vec2(step));
 }
 
-void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, GSample g)
+void add_sun_offset(inout TileSamples tile, DepthPlane plane, ivec2 step, float depth)
+{
+    float offset = plane_offset(plane, step, depth);
+    tile.sun_offset_min = min(tile.sun_offset_min, offset);
+    tile.sun_offset_max = max(tile.sun_offset_max, offset);
+}
+
+// Adds everything but the sun-facing sample's plane offset; returns whether it needs one.
+bool add_sample_flags(inout TileSamples tile, GSample g)
 {
     if (g.is_sky) {
         tile.flags |= TILE_FLAG_SKY;
-        return;
+        return false;
     }
     tile.geometry_min = min(tile.geometry_min, g.depth);
     tile.geometry_max = max(tile.geometry_max, g.depth);
-    if (sun_faces(g.normal)) {
+    bool sun = sun_faces(g.normal);
+    if (sun) {
         tile.flags |= TILE_FLAG_SUN;
-        float offset = plane_offset(plane, step, g.depth);
-        tile.sun_offset_min = min(tile.sun_offset_min, offset);
-        tile.sun_offset_max = max(tile.sun_offset_max, offset);
+    }
+    return sun;
+}
+
+void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, GSample g)
+{
+    if (add_sample_flags(tile, g)) {
+        add_sun_offset(tile, plane, step, g.depth);
     }
 }
 
 // Rows of a tile gathered at a time: as many as one 32-bit edge mask holds (all 4 rows of a 4x4
 // tile; 4 of 8, 2 of 16).
 const uint GATHER_ROWS = 32u / TILE_SIZE < TILE_SIZE ? 32u / TILE_SIZE : TILE_SIZE;
+const uint GATHER_PIXELS = GATHER_ROWS * TILE_SIZE;
 
 // An edge pixel adds all its samples; any other pixel sample 0 alone, which speaks for its
 // equal siblings exactly as the lighting shades only sample 0 of such a pixel.
+//
+// Gathers rows [rows, rows + GATHER_ROWS) of the tile. With `whole_tile` (GATHER_ROWS ==
+// TILE_SIZE, rows == 0) it first fits `plane` to the corner depths it has just read (the
+// pixels are clamped to the frame, so its corner entries are the tile's corner pixels), which
+// spares the four reads of fit_depth_plane(); otherwise `plane` is the caller's.
 //
 // The code is shaped for lavapipe, which runs eight neighbouring invocations as one SIMD
 // program: a branch's body is executed (masked) for all eight whenever it is reached, and a
@@ -183,42 +210,56 @@ const uint GATHER_ROWS = 32u / TILE_SIZE < TILE_SIZE ? 32u / TILE_SIZE : TILE_SI
 //     them, instead of a branch per pixel that paid their fetches for every pixel; the loop
 //     runs once per edge pixel of the busiest of the eight tiles (about 3 % of pixels are
 //     edge pixels).
-void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, DepthPlane plane, uint rows)
+void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, inout DepthPlane plane, uint rows,
+                 bool whole_tile)
 {
-    uint edge_pixels = 0u; // bit j * TILE_SIZE + i: pixel (i, rows + j) of the tile
-    [[unroll]] for (uint j = 0u; j < GATHER_ROWS; ++j) {
-        [[unroll]] for (uint i = 0u; i < TILE_SIZE; ++i) {
-            ivec2 pixel = min(first_pixel + ivec2(i, rows + j), last_pixel);
-            GSample first = gbuffer_load(pixel, 0);
-            uint edge = uint(first.msaa_edge);
-            [[unroll]] for (int s = 1; s < GBUFFER_SAMPLES; ++s) {
-                edge |= uint(gbuffer_load_msaa_edge_bit(pixel, s));
-            }
-            add_sample(tile, plane, pixel - first_pixel, first);
-            edge_pixels |= edge << (j * TILE_SIZE + i);
+    float depth[GATHER_PIXELS];  // sample 0's, of the pixels that need a plane offset
+    uint needs_offset = 0u;      // bit k: pixel k = j * TILE_SIZE + i, that is (i, rows + j)
+    uint edge_pixels = 0u;
+    [[unroll]] for (uint k = 0u; k < GATHER_PIXELS; ++k) {
+        ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
+        GSample first = gbuffer_load(pixel, 0);
+        uint edge = uint(first.msaa_edge);
+        [[unroll]] for (int s = 1; s < GBUFFER_SAMPLES; ++s) {
+            edge |= uint(gbuffer_load_msaa_edge_bit(pixel, s));
+        }
+        depth[k] = first.depth;
+        needs_offset |= uint(add_sample_flags(tile, first)) << k;
+        edge_pixels |= edge << k;
+    }
+    if (whole_tile) {
+        plane = depth_plane_from_corners(depth[0], depth[TILE_SIZE - 1], depth[GATHER_PIXELS - TILE_SIZE],
+                                         depth[GATHER_PIXELS - 1], first_pixel, last_pixel);
+    }
+    [[unroll]] for (uint k = 0u; k < GATHER_PIXELS; ++k) {
+        if ((needs_offset & (1u << k)) != 0u) {
+            ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
+            add_sun_offset(tile, plane, pixel - first_pixel, depth[k]);
         }
     }
     if (edge_pixels != 0u) {
         tile.flags |= TILE_FLAG_EDGE;
     }
     while (edge_pixels != 0u) {
-        uint bit = uint(findLSB(edge_pixels));
+        uint k = uint(findLSB(edge_pixels));
         edge_pixels &= edge_pixels - 1u;
-        ivec2 pixel = min(first_pixel + ivec2(bit % TILE_SIZE, rows + bit / TILE_SIZE), last_pixel);
+        ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
         [[unroll]] for (int s = 1; s < GBUFFER_SAMPLES; ++s) {
             add_sample(tile, plane, pixel - first_pixel, gbuffer_load(pixel, s));
         }
     }
 }
 
-TileSamples gather_tile(ivec2 first_pixel, ivec2 last_pixel, DepthPlane plane)
+// Also returns the tile's depth plane (fit_depth_plane()'s).
+TileSamples gather_tile(ivec2 first_pixel, ivec2 last_pixel, out DepthPlane plane)
 {
     TileSamples tile = TileSamples(0u, 1.0 / 0.0, -1.0 / 0.0, 1.0 / 0.0, -1.0 / 0.0);
     if (GATHER_ROWS == TILE_SIZE) {
-        gather_rows(tile, first_pixel, last_pixel, plane, 0u); // the whole tile, without a loop
+        gather_rows(tile, first_pixel, last_pixel, plane, 0u, true); // the whole tile, without a loop
     } else {
+        plane = fit_depth_plane(first_pixel, last_pixel);
         for (uint rows = 0u; rows < TILE_SIZE; rows += GATHER_ROWS) {
-            gather_rows(tile, first_pixel, last_pixel, plane, rows);
+            gather_rows(tile, first_pixel, last_pixel, plane, rows, false);
         }
     }
     return tile;
@@ -596,7 +637,7 @@ uint classify_tile(ClipMaps maps, uvec2 tile, IdByte id_byte, ivec2 size)
 {
     ivec2 first_pixel = ivec2(tile * TILE_SIZE);
     ivec2 last_pixel = min(first_pixel + int(TILE_SIZE), size) - 1;
-    DepthPlane plane = fit_depth_plane(first_pixel, last_pixel);
+    DepthPlane plane;
     TileSamples samples_seen = gather_tile(first_pixel, last_pixel, plane);
     uint flags = samples_seen.flags;
     if (samples_seen.geometry_min > samples_seen.geometry_max) {
