@@ -509,6 +509,36 @@ TapRectangle tap_rectangle(PrismBounds b)
     return rect;
 }
 
+// The stored depths of the 2x2 texels from `texel` (inside the map), read with one
+// textureGather: four texels for one coordinate computation, one bounds check and one pass of
+// the caller's loop, where lavapipe pays each of those per texelFetch (2026-11-24: about a
+// sixth of the classification, docs/results.md h). A texel beyond `hi` (the rectangle's last
+// column or row) is replaced by `texel` itself, which the rectangle holds and whose second
+// reading changes no minimum or maximum, so the bounds are exactly the rectangle's.
+struct ShadowTexels {
+    ivec2 texel[4];
+    float stored[4];
+};
+
+ShadowTexels sun_shadow_stored_quad(ivec2 texel, ivec2 hi)
+{
+    // The gather's footprint for a point on the corner between the four texels is exactly
+    // them: (i0, j1), (i1, j1), (i1, j0), (i0, j0) in x, y, z, w.
+    vec4 g = textureGather(shadow_map, vec2(texel + 1) * params.shadow_map_size.zw);
+    bool right = texel.x + 1 <= hi.x;
+    bool below = texel.y + 1 <= hi.y;
+    ShadowTexels q;
+    q.texel[0] = texel;
+    q.stored[0] = g.w;
+    q.texel[1] = right ? texel + ivec2(1, 0) : texel;
+    q.stored[1] = right ? g.z : g.w;
+    q.texel[2] = below ? texel + ivec2(0, 1) : texel;
+    q.stored[2] = below ? g.x : g.w;
+    q.texel[3] = right && below ? texel + ivec2(1, 1) : texel;
+    q.stored[3] = right && below ? g.y : g.w;
+    return q;
+}
+
 // Texels of the rectangle inside the map (0 when none).
 int tap_rectangle_texels(TapRectangle rect)
 {
@@ -536,14 +566,17 @@ uint shadow_type_from_prism(PrismBounds b)
     // c = stored - a.t over the rectangle, for a = 0 and the fitted a.
     float c_min[2] = float[2](1.0 / 0.0, 1.0 / 0.0);
     float c_max[2] = float[2](-1.0 / 0.0, -1.0 / 0.0);
-    for (int y = lo.y; y <= hi.y; ++y) {
-        for (int x = lo.x; x <= hi.x; ++x) {
-            float stored = sun_shadow_stored_depth(ivec2(x, y));
-            float c = stored - dot(b.slope, vec2(x, y));
-            c_min[0] = min(c_min[0], stored);
-            c_max[0] = max(c_max[0], stored);
-            c_min[1] = min(c_min[1], c);
-            c_max[1] = max(c_max[1], c);
+    for (int y = lo.y; y <= hi.y; y += 2) {
+        for (int x = lo.x; x <= hi.x; x += 2) {
+            ShadowTexels quad = sun_shadow_stored_quad(ivec2(x, y), hi);
+            [[unroll]] for (int i = 0; i < 4; ++i) {
+                float stored = quad.stored[i];
+                float c = stored - dot(b.slope, vec2(quad.texel[i]));
+                c_min[0] = min(c_min[0], stored);
+                c_max[0] = max(c_max[0], stored);
+                c_min[1] = min(c_min[1], c);
+                c_max[1] = max(c_max[1], c);
+            }
         }
     }
     float c_error = MARGIN_ULPS * ROUNDOFF * (1.0 + dot(abs(b.slope), map_size));

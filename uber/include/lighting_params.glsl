@@ -28,6 +28,6 @@ layout(set = 0, binding = 1) uniform sampler2DMS gbuffer_albedo_spec;   // RT0
 layout(set = 0, binding = 2) uniform sampler2DMS gbuffer_normal_motion; // RT1
 layout(set = 0, binding = 3) uniform sampler2DMS gbuffer_prelit_power;  // RT2
 layout(set = 0, binding = 4) uniform sampler2DMS gbuffer_depth;
-layout(set = 0, binding = 5) uniform sampler2D shadow_map;   // read with texelFetch only
+layout(set = 0, binding = 5) uniform sampler2D shadow_map;   // texelFetch / textureGather, no filtering
 
 #endif // UBER_LIGHTING_PARAMS_GLSL

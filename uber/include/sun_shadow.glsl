@@ -14,9 +14,10 @@
 // permutation (factor 0) and the no-shadow permutation (factor 1) reproduce
 // the full PCF shader bit for bit on the tiles they are used for.
 //
-// The map is read with texelFetch only: no filtering, no sampler state, no
-// hardware compare, and therefore nothing that could differ between the
-// fragment and the compute stage.
+// The map is read with texelFetch only (the classifier also with textureGather,
+// which returns the same stored texels four at a time): no filtering, no
+// sampler state, no hardware compare, and therefore nothing that could differ
+// between the fragment and the compute stage.
 
 #ifndef UBER_SUN_SHADOW_GLSL
 #define UBER_SUN_SHADOW_GLSL

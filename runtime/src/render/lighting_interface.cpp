@@ -26,7 +26,7 @@ LightingInterface::LightingInterface(const Context& context, const LightingParam
   params_ = Buffer(context, {sizeof(LightingParamsBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::HostUpload,
                              "lighting parameters"});
   params_.write_values(std::span<const LightingParamsBlock>(&params_block_, 1));
-  sampler_ = Sampler(context, {.name = "G-buffer and shadow map (texelFetch only)"});
+  sampler_ = Sampler(context, {.name = "G-buffer and shadow map (texelFetch and textureGather)"});
 
   // Every stage that could read set 0: the merged layout names the fragment stage; the
   // compute passes share the same set, so widen the stage mask.
