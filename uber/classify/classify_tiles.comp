@@ -333,7 +333,7 @@ ViewRange view_range(ClipMaps maps, vec2 ndc_min, vec2 ndc_max, float depth_min,
     float hi = -1.0 / 0.0;
     float w_min = 1.0 / 0.0;
     float world_abs = 0.0;
-    for (int i = 0; i < 8; ++i) {
+    [[unroll]] for (int i = 0; i < 8; ++i) {
         vec4 clip = vec4((i & 1) != 0 ? ndc_max.x : ndc_min.x, (i & 2) != 0 ? ndc_max.y : ndc_min.y,
                          (i & 4) != 0 ? depth_max : depth_min, 1.0);
         float w = dot(maps.w_row, clip);
@@ -409,7 +409,7 @@ PrismBounds prism_bounds(ClipMaps maps, vec2 ndc_min, vec2 ndc_max, DepthPlane p
     float w_min = 1.0 / 0.0;
     float depth_abs = 0.0;
     float world_abs = 0.0;
-    for (int i = 0; i < 8; ++i) {
+    [[unroll]] for (int i = 0; i < 8; ++i) {
         vec2 corner = vec2((i & 1) != 0 ? 1.0 : 0.0, (i & 2) != 0 ? 1.0 : 0.0);
         float depth = plane.origin + dot(plane.gradient, corner * plane_span)
                       + ((i & 4) != 0 ? offset_max + depth_slack : offset_min - depth_slack);
@@ -429,7 +429,7 @@ PrismBounds prism_bounds(ClipMaps maps, vec2 ndc_min, vec2 ndc_max, DepthPlane p
     b.slope = fitted_slope(p[0], r[0], p[1], r[1], p[2], r[2]);
     b.q_min[0] = b.q_min[1] = 1.0 / 0.0;
     b.q_max[0] = b.q_max[1] = -1.0 / 0.0;
-    for (int i = 0; i < 8; ++i) {
+    [[unroll]] for (int i = 0; i < 8; ++i) {
         b.p_min = min(b.p_min, p[i]);
         b.p_max = max(b.p_max, p[i]);
         b.r_min = min(b.r_min, r[i]);
@@ -466,7 +466,7 @@ PrismBounds prism_bounds(ClipMaps maps, vec2 ndc_min, vec2 ndc_max, DepthPlane p
     float q_error[2];
     q_error[0] = r_error;
     q_error[1] = r_error + dot(abs(b.slope), p_error) + MARGIN_ULPS * ROUNDOFF * (1.0 + slope_abs * p_abs);
-    for (int k = 0; k < 2; ++k) {
+    [[unroll]] for (int k = 0; k < 2; ++k) {
         b.q_min[k] -= q_error[k];
         b.q_max[k] += q_error[k];
     }
@@ -582,7 +582,7 @@ uint shadow_type_from_prism(PrismBounds b)
     float c_error = MARGIN_ULPS * ROUNDOFF * (1.0 + dot(abs(b.slope), map_size));
     vec2 slopes[2] = vec2[2](vec2(0.0), b.slope);
     // Taps outside the map are lit, so they never stop LIT.
-    for (int k = 0; k < 2; ++k) {
+    [[unroll]] for (int k = 0; k < 2; ++k) {
         if (b.q_max[k] <= c_min[k] - c_error + slope_delta_min(slopes[k])) {
             return TILE_FLAG_LIT;
         }
@@ -593,7 +593,7 @@ uint shadow_type_from_prism(PrismBounds b)
     float bias = params.distances.w;
     bool in_volume = b.r_min + bias >= 0.0 && b.r_max + bias <= 1.0;
     if (inside_map && in_volume) {
-        for (int k = 0; k < 2; ++k) {
+        [[unroll]] for (int k = 0; k < 2; ++k) {
             if (b.q_min[k] > c_max[k] + c_error + slope_delta_max(slopes[k])) {
                 return TILE_FLAG_SHADOWED;
             }
