@@ -38,15 +38,11 @@
 // sloped surface that receives its own shadow map stays LIT as long as the PCF taps do. The
 // mirrored test settles SOLID. Both a = 0 and the fitted a are tried.
 //
-// Two dispatches of this shader (specialization constant CLASSIFY_PASS). The tap rectangles are
-// small for most tiles but reach MAX_BOUNDED_TEXELS for some (a tile spanning two surfaces, a
-// distant tile covering many map texels). On a SIMD driver such as lavapipe, whose lanes are
-// neighbouring invocations, one lane walking a large rectangle holds up the seven others. So
-// pass 0 reads only rectangles of at most MAX_DIRECT_TEXELS and appends the tiles with larger
-// ones to a list, with the prism bounds that decide them; pass 1 (dispatched indirectly over
-// that list) settles them with the same shadow_type_from_prism() and ORs the shadow bits into
-// the IDs. Both passes decide from the same bounds with the same function, so the IDs are the
-// ones a single pass would write.
+// The tap rectangles are read 2x2 texels per textureGather, inside this one dispatch: for most
+// tiles a rectangle holds 16-32 texels, for some (a distant tile, one spanning two surfaces)
+// up to MAX_BOUNDED_TEXELS. On lavapipe, whose eight SIMD lanes loop as long as their largest
+// rectangle, such tiles were once settled by a second, indirect dispatch; with four texels per
+// gather that costs more than the lanes' wait (docs/results.md h).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "gbuffer.glsl"
@@ -58,12 +54,10 @@
 #include "world_position.glsl"
 
 layout(constant_id = 0) const uint TILE_SIZE = 4u; // pixels; 4, 8 or 16
-// 0: classify every tile, deferring large tap rectangles; 1: settle the deferred tiles.
-layout(constant_id = 8) const uint CLASSIFY_PASS = 0u;
 // Samples per pixel of the G-buffer (the runtime specialises it to the targets' count). A
 // constant, so that the loops over samples unroll: lavapipe runs a loop's body once more,
 // masked, when its lanes leave it, which for a loop over samples 1..3 is a fourth fetch.
-layout(constant_id = 9) const int GBUFFER_SAMPLES = 4;
+layout(constant_id = 8) const int GBUFFER_SAMPLES = 4;
 const uint CLASSIFY_GROUP_SIZE = 64u;
 layout(local_size_x = CLASSIFY_GROUP_SIZE) in;
 
@@ -71,30 +65,12 @@ layout(set = 1, binding = 0, std430) buffer TileIds {
     uint block_rows[]; // 4 per block
 } tile_ids;
 
-// One tile whose shadow type pass 1 decides: its prism bounds (PrismBounds below) and where its
-// ID byte lives.
-struct DeferredShadow {
-    vec4  p;          // p_min.xy, p_max.xy
-    vec4  r_slope;    // r_min, r_max, slope.xy
-    vec4  q;          // q_min[0], q_min[1], q_max[0], q_max[1]
-    uvec4 id_byte;    // block-row word, bit shift of the tile's byte, 0, 0
-};
-
-// Reset by the runtime to (0, 1, 1, 0) before pass 0; pass 1 is dispatched indirectly from
-// `dispatch.xyz`. Holds room for every tile of the grid.
-layout(set = 2, binding = 0, std430) buffer DeferredShadows {
-    uvec4 dispatch;   // work groups of pass 1 (x, y, z), number of records (w)
-    DeferredShadow records[];
-} deferred;
-
 layout(push_constant) uniform ClassifyPush {
     uvec4 grid; // tiles_x, tiles_y, blocks_x, blocks_y
 } push;
 
 // A tile whose tap rectangle holds more texels than this is SOFT without reading it.
 const int MAX_BOUNDED_TEXELS = 256;
-// Pass 0 reads rectangles up to this size itself and leaves larger ones to pass 1.
-const int MAX_DIRECT_TEXELS = 32;
 
 // Unit roundoff of float32 (2^-24). Every rounding margin below is a first-order error bound of
 // the arithmetic involved times a safety factor, MARGIN_ULPS units of roundoff per operation
@@ -603,73 +579,9 @@ uint shadow_type_from_prism(PrismBounds b)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Deferred shadow decisions (pass 0 appends, pass 1 settles).
 
-// Where a tile's ID byte lives: the block-row word and the byte's bit shift.
-struct IdByte {
-    uint word;
-    uint shift;
-};
-
-bool shadow_deferred(PrismBounds b)
-{
-    if (!b.valid) {
-        return false;
-    }
-    int texels = tap_rectangle_texels(tap_rectangle(b));
-    return texels > MAX_DIRECT_TEXELS && texels <= MAX_BOUNDED_TEXELS;
-}
-
-// A record's index; the first record of every work group of pass 1 adds that group.
-uint deferred_append()
-{
-    uint index = atomicAdd(deferred.dispatch.w, 1u);
-    if (index % CLASSIFY_GROUP_SIZE == 0u) {
-        atomicAdd(deferred.dispatch.x, 1u);
-    }
-    return index;
-}
-
-void defer_shadow(PrismBounds b, IdByte id_byte)
-{
-    uint index = deferred_append();
-    deferred.records[index].p = vec4(b.p_min, b.p_max);
-    deferred.records[index].r_slope = vec4(b.r_min, b.r_max, b.slope);
-    deferred.records[index].q = vec4(b.q_min[0], b.q_min[1], b.q_max[0], b.q_max[1]);
-    deferred.records[index].id_byte = uvec4(id_byte.word, id_byte.shift, 0u, 0u);
-}
-
-PrismBounds deferred_prism(DeferredShadow record)
-{
-    PrismBounds b;
-    b.valid = true;
-    b.p_min = record.p.xy;
-    b.p_max = record.p.zw;
-    b.r_min = record.r_slope.x;
-    b.r_max = record.r_slope.y;
-    b.slope = record.r_slope.zw;
-    b.q_min[0] = record.q.x;
-    b.q_min[1] = record.q.y;
-    b.q_max[0] = record.q.z;
-    b.q_max[1] = record.q.w;
-    return b;
-}
-
-void settle_deferred_shadow(uint index)
-{
-    if (index >= deferred.dispatch.w) {
-        return;
-    }
-    DeferredShadow record = deferred.records[index];
-    uint raw = raw_id_from_tile_flags(shadow_type_from_prism(deferred_prism(record)));
-    atomicOr(tile_ids.block_rows[record.id_byte.x], raw << record.id_byte.y);
-}
-
-// ---------------------------------------------------------------------------------------------
-
-// The raw ID of `tile`, which lies inside the grid; without its shadow bits when the decision
-// was deferred to pass 1.
-uint classify_tile(ClipMaps maps, uvec2 tile, IdByte id_byte, ivec2 size)
+// The raw ID of `tile`, which lies inside the grid.
+uint classify_tile(ClipMaps maps, uvec2 tile, ivec2 size)
 {
     ivec2 first_pixel = ivec2(tile * TILE_SIZE);
     ivec2 last_pixel = min(first_pixel + int(TILE_SIZE), size) - 1;
@@ -697,11 +609,7 @@ uint classify_tile(ClipMaps maps, uvec2 tile, IdByte id_byte, ivec2 size)
     }
     PrismBounds prism = prism_bounds(maps, ndc_min, ndc_max, plane, vec2(last_pixel - first_pixel),
                                      samples_seen.sun_offset_min, samples_seen.sun_offset_max);
-    if (shadow_deferred(prism)) {
-        defer_shadow(prism, id_byte);
-    } else {
-        flags |= shadow_type_from_prism(prism);
-    }
+    flags |= shadow_type_from_prism(prism);
     return raw_id_from_tile_flags(flags);
 }
 
@@ -718,8 +626,7 @@ void classify_block_row()
     uint packed_row = 0u;
     for (uint i = 0u; i < 4u; ++i) {
         uvec2 tile = first_tile + uvec2(i, 0u);
-        IdByte id_byte = IdByte(block * 4u + row, 8u * i);
-        uint id = all(lessThan(tile, push.grid.xy)) ? classify_tile(maps, tile, id_byte, size) : 0xFFu;
+        uint id = all(lessThan(tile, push.grid.xy)) ? classify_tile(maps, tile, size) : 0xFFu;
         packed_row |= id << (8u * i);
     }
     tile_ids.block_rows[block * 4u + row] = packed_row;
@@ -727,9 +634,5 @@ void classify_block_row()
 
 void main()
 {
-    if (CLASSIFY_PASS == 0u) {
-        classify_block_row();
-    } else {
-        settle_deferred_shadow(gl_GlobalInvocationID.x);
-    }
+    classify_block_row();
 }

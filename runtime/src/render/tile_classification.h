@@ -1,9 +1,8 @@
 #pragma once
 // Classification on the GPU (uber/classify/classify_tiles.comp): one invocation per row of a
-// block of 4x4 tiles writes the raw IDs in the blocked layout; tiles with large shadow-map tap
-// rectangles are appended to a list that a second, indirect dispatch of the same shader settles.
-// Then the IDs are copied to host memory for the CPU index builder (and the report). Also the
-// G-buffer dump used by the CPU reference classifier and the tests.
+// block of 4x4 tiles writes the raw IDs in the blocked layout, then the IDs are copied to host
+// memory for the CPU index builder (and the report). Also the G-buffer dump used by the CPU
+// reference classifier and the tests.
 
 #include "lighting_interface.h"
 #include "tilelight/buffer.h"
@@ -41,11 +40,9 @@ class TileClassification {
  private:
   const LightingInterface* lighting_;
   TileGrid grid_;
-  Buffer ids_, host_ids_, deferred_, dump_;
-  VkDescriptorSet ids_set_ = VK_NULL_HANDLE, deferred_set_ = VK_NULL_HANDLE, dump_set_ = VK_NULL_HANDLE;
-  // Sets 0 (lighting), 1 (IDs), 2 (deferred shadow list) and the compute push constants.
-  UniquePipelineLayout classify_layout_;
-  UniquePipeline classify_, settle_, dump_pipeline_;
+  Buffer ids_, host_ids_, dump_;
+  VkDescriptorSet ids_set_ = VK_NULL_HANDLE, dump_set_ = VK_NULL_HANDLE;
+  UniquePipeline classify_, dump_pipeline_;
 };
 
 }  // namespace tilelight
