@@ -542,18 +542,22 @@ uint shadow_type_from_prism(PrismBounds b)
     // c = stored - a.t over the rectangle, for a = 0 and the fitted a.
     float c_min[2] = float[2](1.0 / 0.0, 1.0 / 0.0);
     float c_max[2] = float[2](-1.0 / 0.0, -1.0 / 0.0);
-    for (int y = lo.y; y <= hi.y; y += 2) {
-        for (int x = lo.x; x <= hi.x; x += 2) {
-            ShadowTexels quad = sun_shadow_stored_quad(ivec2(x, y), hi);
-            [[unroll]] for (int i = 0; i < 4; ++i) {
-                float stored = quad.stored[i];
-                float c = stored - dot(b.slope, vec2(quad.texel[i]));
-                c_min[0] = min(c_min[0], stored);
-                c_max[0] = max(c_max[0], stored);
-                c_min[1] = min(c_min[1], c);
-                c_max[1] = max(c_max[1], c);
-            }
+    // The rectangle's 2x2 quads row by row in one loop, not a loop per row: lavapipe runs each
+    // loop once more (masked) than its busiest lane needs.
+    int quads = ((hi.x - lo.x + 2) / 2) * ((hi.y - lo.y + 2) / 2);
+    ivec2 quad_origin = lo;
+    for (int q = 0; q < quads; ++q) {
+        ShadowTexels quad = sun_shadow_stored_quad(quad_origin, hi);
+        [[unroll]] for (int i = 0; i < 4; ++i) {
+            float stored = quad.stored[i];
+            float c = stored - dot(b.slope, vec2(quad.texel[i]));
+            c_min[0] = min(c_min[0], stored);
+            c_max[0] = max(c_max[0], stored);
+            c_min[1] = min(c_min[1], c);
+            c_max[1] = max(c_max[1], c);
         }
+        bool row_done = quad_origin.x + 2 > hi.x;
+        quad_origin = row_done ? ivec2(lo.x, quad_origin.y + 2) : quad_origin + ivec2(2, 0);
     }
     float c_error = MARGIN_ULPS * ROUNDOFF * (1.0 + dot(abs(b.slope), map_size));
     vec2 slopes[2] = vec2[2](vec2(0.0), b.slope);
