@@ -487,10 +487,10 @@ TapRectangle tap_rectangle(PrismBounds b)
 
 // The stored depths of the 2x2 texels from `texel` (inside the map), read with one
 // textureGather: four texels for one coordinate computation, one bounds check and one pass of
-// the caller's loop, where lavapipe pays each of those per texelFetch (2026-11-24: about a
-// sixth of the classification, docs/results.md h). A texel beyond `hi` (the rectangle's last
-// column or row) is replaced by `texel` itself, which the rectangle holds and whose second
-// reading changes no minimum or maximum, so the bounds are exactly the rectangle's.
+// the caller's loop, where lavapipe pays each of those per texelFetch (docs/results.md h). A
+// texel beyond `hi` (the rectangle's last column or row) is replaced by `texel` itself, which
+// the rectangle holds and whose second reading changes no minimum or maximum, so the bounds are
+// exactly the rectangle's.
 struct ShadowTexels {
     ivec2 texel[4];
     float stored[4];
