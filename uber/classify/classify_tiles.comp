@@ -216,15 +216,17 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
     if (edge_pixels != 0u) {
         tile.flags |= TILE_FLAG_EDGE;
     }
-    // One (edge pixel, sample) pair per pass, so that the pass the loop always runs once more
-    // (masked) costs one sample's fetches, not a pixel's.
+    // Samples 1.. of the edge pixels (none without MSAA), one (edge pixel, sample) pair per
+    // pass, so that the pass the loop always runs once more (masked) costs one sample's
+    // fetches, not a pixel's.
+    uint pending = GBUFFER_SAMPLES > 1 ? edge_pixels : 0u;
     int s = 1;
-    while (edge_pixels != 0u) {
-        uint k = uint(findLSB(edge_pixels));
+    while (pending != 0u) {
+        uint k = uint(findLSB(pending));
         ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
         add_sample(tile, plane, pixel - first_pixel, gbuffer_load(pixel, s));
-        bool pixel_done = s == GBUFFER_SAMPLES - 1;
-        edge_pixels = pixel_done ? edge_pixels & (edge_pixels - 1u) : edge_pixels;
+        bool pixel_done = s >= GBUFFER_SAMPLES - 1;
+        pending = pixel_done ? pending & (pending - 1u) : pending;
         s = pixel_done ? 1 : s + 1;
     }
 }
