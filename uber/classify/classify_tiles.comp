@@ -14,7 +14,8 @@
 // lit, SOFT (full PCF, right for any sample) otherwise.
 //
 // Per sample the pass only reads what it must: the motion byte (sky), the normal (sun) and the
-// depth, whose lowest bit is the MSAA-edge bit (gbuffer.glsl). Everything that depends on position is decided per TILE, from bounds, because the
+// depth, whose lowest bit is the MSAA-edge bit (gbuffer.glsl). Everything that depends on
+// position is decided per TILE, from bounds, because the
 // lighting computes it with a projective map of (pixel centre, depth):
 //   (x, y, d) -> h = inv_view_proj * (x, y, d, 1) -> world = h.xyz / h.w -> sun map texel P,
 //   receiver depth r, view depth v,
@@ -186,10 +187,10 @@ const uint GATHER_PIXELS = GATHER_ROWS * TILE_SIZE;
 //     them, instead of a branch per pixel that paid their fetches for every pixel; the loop
 //     runs once per edge pixel of the busiest of the eight tiles (about 3 % of pixels are
 //     edge pixels).
-void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, inout DepthPlane plane, uint rows,
-                 bool whole_tile)
+void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, inout DepthPlane plane,
+                 uint rows, bool whole_tile)
 {
-    float depth[GATHER_PIXELS];  // sample 0's, of the pixels that need a plane offset
+    float depth[GATHER_PIXELS];  // sample 0: corners fit the plane, sun-facing ones get offsets
     uint needs_offset = 0u;      // bit k: pixel k = j * TILE_SIZE + i, that is (i, rows + j)
     uint edge_pixels = 0u;
     [[unroll]] for (uint k = 0u; k < GATHER_PIXELS; ++k) {
@@ -530,11 +531,8 @@ uint shadow_type_from_prism(PrismBounds b)
         return TILE_FLAG_PARTIAL;
     }
     TapRectangle rect = tap_rectangle(b);
-    ivec2 rect_min = rect.rect_min;
-    ivec2 rect_max = rect.rect_max;
     ivec2 lo = rect.lo;
     ivec2 hi = rect.hi;
-    vec2 map_size = params.shadow_map_size.xy;
     if (any(greaterThan(lo, hi))) {
         return TILE_FLAG_LIT; // every tap outside the map, where nothing was rendered
     }
@@ -561,7 +559,7 @@ uint shadow_type_from_prism(PrismBounds b)
         bool row_done = quad_origin.x + 2 > hi.x;
         quad_origin = row_done ? ivec2(lo.x, quad_origin.y + 2) : quad_origin + ivec2(2, 0);
     }
-    float c_error = MARGIN_ULPS * ROUNDOFF * (1.0 + dot(abs(b.slope), map_size));
+    float c_error = MARGIN_ULPS * ROUNDOFF * (1.0 + dot(abs(b.slope), params.shadow_map_size.xy));
     vec2 slopes[2] = vec2[2](vec2(0.0), b.slope);
     // Taps outside the map are lit, so they never stop LIT.
     [[unroll]] for (int k = 0; k < 2; ++k) {
@@ -571,7 +569,7 @@ uint shadow_type_from_prism(PrismBounds b)
     }
     // SHADOWED needs every tap inside the map and every sample inside the sun's depth range
     // (outside it, sun_shadow_lookup() counts all taps lit).
-    bool inside_map = all(equal(lo, rect_min)) && all(equal(hi, rect_max));
+    bool inside_map = all(equal(lo, rect.rect_min)) && all(equal(hi, rect.rect_max));
     float bias = params.distances.w;
     bool in_volume = b.r_min + bias >= 0.0 && b.r_max + bias <= 1.0;
     if (inside_map && in_volume) {

@@ -49,7 +49,8 @@ LightingInterface::LightingInterface(const Context& context, const LightingParam
   const std::array<VkDescriptorSetLayout, 1> lighting_sets{set0_layout_.get()};
   lighting_layout_ = create_pipeline_layout(context, lighting_sets, push, "lighting pipeline layout");
   const std::array<VkDescriptorSetLayout, 2> compute_sets{set0_layout_.get(), storage_set_layout_.get()};
-  compute_layout_ = create_pipeline_layout(context, compute_sets, std::span(&kComputePush, 1),
+  const VkPushConstantRange compute_push{VK_SHADER_STAGE_COMPUTE_BIT, 0, 32};
+  compute_layout_ = create_pipeline_layout(context, compute_sets, std::span(&compute_push, 1),
                                            "classification pipeline layout");
 
   set0_ = allocate_descriptor_set(context, pool, set0_layout_.get(), "lighting set 0");

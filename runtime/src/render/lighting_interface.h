@@ -26,8 +26,6 @@ class LightingInterface {
   VkPipelineLayout lighting_layout() const { return lighting_layout_.get(); }
   // Compute passes: set 0, set 1 (one storage buffer), 32 bytes of push constants.
   VkPipelineLayout compute_layout() const { return compute_layout_.get(); }
-  // The compute passes' push-constant range (32 bytes), for layouts with more sets.
-  static constexpr VkPushConstantRange kComputePush{VK_SHADER_STAGE_COMPUTE_BIT, 0, 32};
   const LightingParamsBlock& params() const { return params_block_; }
 
  private:
