@@ -54,7 +54,7 @@ vec3 shade_geometry(GSample g, ivec2 pixel)
     float view_depth = linear_view_depth(world_pos);
     vec3 colour = g.prelit;
 #ifdef SUN_LIGHT
-    vec3 sun = sun_surface_radiance(g.albedo, g.normal, world_pos, g.spec_amount, g.spec_power);
+    vec3 sun = sun_surface_radiance(g.albedo, g.faces_sun, g.normal, world_pos, g.spec_amount, g.spec_power);
     colour += sun * sun_visibility(world_pos, view_depth);
 #endif
 #ifdef LIGHT_SCATTERING

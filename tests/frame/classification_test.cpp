@@ -100,6 +100,54 @@ TEST_F(Classification, EdgeBitsCoverEveryPixelWithDifferingSamples) {
   EXPECT_GT(differing, 0u) << "no frame has an MSAA edge: the check proves nothing";
 }
 
+// The classifier reads the depth alone (gbuffer.glsl): the sky is depth 1.0, and the sun-facing
+// bit is the material's N.L > 0 on the normal as RT1 stores it. Check both on every sample of
+// real frames against what the other targets hold.
+struct DepthBitCount {
+  std::size_t sky = 0, facing = 0, away = 0, wrong = 0;
+  std::string first_wrong;
+};
+
+DepthBitCount count_depth_bits(const GBufferSamples& g, const glm::vec4& sun) {
+  DepthBitCount count;
+  for (std::uint32_t y = 0; y < g.height; ++y) {
+    for (std::uint32_t x = 0; x < g.width; ++x) {
+      for (std::uint32_t s = 0; s < g.samples; ++s) {
+        const float* v = g.at(x, y, s);
+        const bool sky = v[12] == 1.0f;
+        const bool sky_motion = std::nearbyint(v[7] * 255.0f) == 0.0f;
+        const float n_dot_l = v[4] * sun.x + v[5] * sun.y + v[6] * sun.z;  // precise_dot()'s order
+        const bool bit = (std::bit_cast<std::uint32_t>(v[12]) & 2u) != 0;
+        bool wrong = sky != sky_motion || (sky && (std::bit_cast<std::uint32_t>(v[12]) & 3u) != 0);
+        if (!sky) wrong = wrong || (bit != (n_dot_l > 0.0f) && std::fabs(n_dot_l) > 1e-6f);
+        count.sky += sky;
+        count.facing += !sky && bit;
+        count.away += !sky && !bit;
+        if (wrong && count.wrong++ == 0) {
+          count.first_wrong = fmt::format("pixel ({}, {}) sample {}: depth {:a}, motion byte {}, N.L {}", x, y, s,
+                                          v[12], v[7] * 255.0f, n_dot_l);
+        }
+      }
+    }
+  }
+  return count;
+}
+
+TEST_F(Classification, DepthBitsAgreeWithTheOtherTargets) {
+  DepthBitCount total;
+  for (const char* camera : {"default", "low", "shadow"}) {
+    auto renderer = render(camera, 320, 180);
+    const DepthBitCount count = count_depth_bits(renderer->read_gbuffer(), renderer->lighting_params().sun_direction);
+    EXPECT_EQ(count.wrong, 0u) << camera << ": " << count.first_wrong;
+    total.sky += count.sky;
+    total.facing += count.facing;
+    total.away += count.away;
+  }
+  EXPECT_GT(total.sky, 0u);
+  EXPECT_GT(total.facing, 0u);
+  EXPECT_GT(total.away, 0u);
+}
+
 // SOLID needs a tile whose samples' tap rectangle lies inside one occluder's shadow; at 320x180
 // the default view's tiles are too large for that (classify_tiles.comp bounds a tile, not each
 // sample), at 640x360 about 20 tiles are.

@@ -6,16 +6,16 @@
 // partial edge blocks get 0xFF.
 //
 // What a tile's ID must promise (lighting.frag): SKY and SUN_LIGHT exactly where some sample is
-// sky / faces the sun (sun_faces, the lighting's own test); MSAA_EDGE, SHADOW_FADE and
+// sky / faces the sun (the G-buffer's sun-facing bit, the lighting's own test); MSAA_EDGE, SHADOW_FADE and
 // LIGHT_SCATTERING wherever a pixel needs them -- setting them anywhere else is harmless,
 // because each of those features is an exact identity on the pixels that do not need it; and a
 // shadow type that is right for every sun-facing sample whose shadow is not faded out
 // completely: SOLID only if every tap of every such sample is occluded, none if every tap is
 // lit, SOFT (full PCF, right for any sample) otherwise.
 //
-// Per sample the pass only reads what it must: the motion byte (sky), the normal (sun) and the
-// depth, whose lowest bit is the MSAA-edge bit (gbuffer.glsl). Everything that depends on
-// position is decided per TILE, from bounds, because the
+// Per sample the pass reads the depth alone, which says whether the sample is sky, faces the sun
+// (the lighting's own decision, made by the material) or marks an MSAA edge (gbuffer.glsl), and
+// where it lies. Everything that depends on position is decided per TILE, from bounds, because the
 // lighting computes it with a projective map of (pixel centre, depth):
 //   (x, y, d) -> h = inv_view_proj * (x, y, d, 1) -> world = h.xyz / h.w -> sun map texel P,
 //   receiver depth r, view depth v,
@@ -49,7 +49,6 @@
 #include "gbuffer.glsl"
 #include "light_scattering.glsl"
 #include "shadow_fade.glsl"
-#include "sun_lighting.glsl"
 #include "sun_shadow.glsl"
 #include "tile_classes.glsl"
 #include "world_position.glsl"
@@ -123,10 +122,10 @@ DepthPlane depth_plane_from_corners(float d00, float d10, float d01, float d11, 
 
 DepthPlane fit_depth_plane(ivec2 first_pixel, ivec2 last_pixel)
 {
-    return depth_plane_from_corners(gbuffer_load(first_pixel, 0).depth,
-                                    gbuffer_load(ivec2(last_pixel.x, first_pixel.y), 0).depth,
-                                    gbuffer_load(ivec2(first_pixel.x, last_pixel.y), 0).depth,
-                                    gbuffer_load(last_pixel, 0).depth, first_pixel, last_pixel);
+    return depth_plane_from_corners(gbuffer_load_depth(first_pixel, 0).depth,
+                                    gbuffer_load_depth(ivec2(last_pixel.x, first_pixel.y), 0).depth,
+                                    gbuffer_load_depth(ivec2(first_pixel.x, last_pixel.y), 0).depth,
+                                    gbuffer_load_depth(last_pixel, 0).depth, first_pixel, last_pixel);
 }
 
 float plane_offset(DepthPlane plane, ivec2 step, float depth)
@@ -142,7 +141,7 @@ void add_sun_offset(inout TileSamples tile, DepthPlane plane, ivec2 step, float 
 }
 
 // Adds everything but the sun-facing sample's plane offset; returns whether it needs one.
-bool add_sample_flags(inout TileSamples tile, GSample g)
+bool add_sample_flags(inout TileSamples tile, GDepthSample g)
 {
     if (g.is_sky) {
         tile.flags |= TILE_FLAG_SKY;
@@ -150,14 +149,13 @@ bool add_sample_flags(inout TileSamples tile, GSample g)
     }
     tile.geometry_min = min(tile.geometry_min, g.depth);
     tile.geometry_max = max(tile.geometry_max, g.depth);
-    bool sun = sun_faces(g.normal);
-    if (sun) {
+    if (g.faces_sun) {
         tile.flags |= TILE_FLAG_SUN;
     }
-    return sun;
+    return g.faces_sun;
 }
 
-void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, GSample g)
+void add_sample(inout TileSamples tile, DepthPlane plane, ivec2 step, GDepthSample g)
 {
     if (add_sample_flags(tile, g)) {
         add_sun_offset(tile, plane, step, g.depth);
@@ -195,7 +193,7 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
     uint edge_pixels = 0u;
     [[unroll]] for (uint k = 0u; k < GATHER_PIXELS; ++k) {
         ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
-        GSample first = gbuffer_load(pixel, 0);
+        GDepthSample first = gbuffer_load_depth(pixel, 0);
         uint edge = uint(first.msaa_edge);
         [[unroll]] for (int s = 1; s < GBUFFER_SAMPLES; ++s) {
             edge |= uint(gbuffer_load_msaa_edge_bit(pixel, s));
@@ -225,7 +223,7 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
     while (pending != 0u) {
         uint k = uint(findLSB(pending));
         ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
-        add_sample(tile, plane, pixel - first_pixel, gbuffer_load(pixel, s));
+        add_sample(tile, plane, pixel - first_pixel, gbuffer_load_depth(pixel, s));
         bool pixel_done = s >= GBUFFER_SAMPLES - 1;
         pending = pixel_done ? pending & (pending - 1u) : pending;
         s = pixel_done ? 1 : s + 1;

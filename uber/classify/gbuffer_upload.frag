@@ -11,7 +11,8 @@ layout(set = 0, binding = 0, std430) readonly buffer Samples {
 } source;
 
 layout(push_constant) uniform UploadPush {
-    uvec4 size; // width, height, samples
+    uvec4 size;         // width, height, samples
+    vec4 sun_direction; // xyz: towards the sun, as the material shaders see it
 } push;
 
 layout(location = 0) out vec4 out_rt0;
@@ -23,10 +24,11 @@ uint sample_texel(uvec2 pixel, uint sample_index, uint target)
     return ((pixel.y * push.size.x + pixel.x) * push.size.z + sample_index) * 4u + target;
 }
 
-// The upload stands in for the material shaders, so it must keep their promise: a pixel whose
-// samples differ carries the MSAA-edge bit on some sample (gbuffer.glsl). A test's edits may make
-// samples differ that the scene wrote alike; such a pixel gets the bit on every sample. Pixels
-// that keep the promise already are written exactly as given.
+// The upload stands in for the material shaders, so it must keep their promises (gbuffer.glsl):
+// a pixel whose samples differ carries the MSAA-edge bit on some sample -- a test's edits may make
+// samples differ that the scene wrote alike; such a pixel gets the bit on every sample -- and a
+// geometry sample's sun-facing bit is that of its stored normal, its depth below the sky's.
+// Samples that keep the promises already are written exactly as given.
 bool pixel_samples_differ(uvec2 pixel)
 {
     for (uint s = 1u; s < push.size.z; ++s) {
@@ -55,11 +57,14 @@ void main()
     uvec2 pixel = uvec2(gl_FragCoord.xy);
     uint at = sample_texel(pixel, uint(gl_SampleID), 0u);
     float depth = source.texels[at + 3u].x;
-    if (!pixel_has_edge_bit(pixel) && pixel_samples_differ(pixel)) {
-        depth = gbuffer_encode_depth(depth, true);
+    vec4 rt1 = source.texels[at + 1u];
+    if (depth != GBUFFER_SKY_DEPTH) {
+        bool edge = gbuffer_decode_msaa_edge_bit(depth) || (!pixel_has_edge_bit(pixel) && pixel_samples_differ(pixel));
+        rt1.xyz = gbuffer_stored_normal(rt1.xyz);
+        depth = gbuffer_encode_depth(depth, edge, gbuffer_faces_sun(rt1.xyz, push.sun_direction.xyz));
     }
     out_rt0 = source.texels[at + 0u];
-    out_rt1 = source.texels[at + 1u];
+    out_rt1 = rt1;
     out_rt2 = source.texels[at + 2u];
     gl_FragDepth = depth;
 }

@@ -10,10 +10,28 @@
 //   RT0     RGBA8 unorm  albedo.r  albedo.g  albedo.b  specular amount
 //   RT1     RGBA16F      normal.x  normal.y  normal.z  motion byte / 255
 //   RT2     RGBA16F      prelit.r  prelit.g  prelit.b  specular power
-//   depth   D32 (0..1), multisampled like the colour targets; its lowest
-//           mantissa bit is the MSAA-edge bit
+//   depth   D32 (0..1), multisampled like the colour targets; exactly 1.0 is
+//           sky, geometry lies below it; the lowest mantissa bit is the
+//           MSAA-edge bit, the next one the sun-facing bit
 //
 // Motion byte: bits 0..6 are the motion ID (0 = sky), bit 7 is unused.
+//
+// The depth alone classifies a sample: whether it is sky, faces the sun or
+// marks an MSAA edge, and where it lies. The classifier reads nothing else
+// (gbuffer_load_depth()), which halves what it fetches per pixel: an RGBA16F
+// RT1 texel is the costliest fetch on a CPU driver (lavapipe), and the
+// classifier read it for every pixel for two decisions (docs/results.md h).
+//
+// Sky: the sky pass draws at the far plane, depth 1.0 (and motion ID 0), where
+// the depth was cleared; gbuffer_encode_depth() keeps every material depth
+// below 1.0, so `depth == 1.0` is the sky test of every reader.
+//
+// Sun-facing bit: the one "faces the sun" decision of the lighting (SUN_LIGHT)
+// is made once, by the material shader, on the normal exactly as RT1 stores it
+// (gbuffer_stored_normal()), and kept in the depth; the lighting and the
+// classifier both read the bit, so they cannot disagree. It makes the G-buffer
+// depend on the direction of the one sun, which the frame knows before the
+// G-buffer pass (scene_params.glsl).
 //
 // MSAA-edge bit: Split/Second keeps a per-sample edge bit in the motion byte;
 // here it is the lowest mantissa bit of the stored depth (one unit in the last
@@ -35,10 +53,11 @@
 // the lighting shades only sample 0 of it. Colour targets are written once per
 // pixel, but hardware depth is interpolated per sample, so a sloped surface
 // would give every sample a different depth. Scene material shaders therefore
-// write `gl_FragDepth = gbuffer_encode_depth(gl_FragCoord.z, partial)` (the
-// pixel-centre depth with the edge bit), which stores one depth for all covered
+// write `gl_FragDepth = gbuffer_encode_depth(gl_FragCoord.z, partial, faces_sun)`
+// (the pixel-centre depth with its bits), which stores one depth for all covered
 // samples of the pixel; the edge-bit argument above rests on it too. The sky
-// pass writes no edge bit: it lies at depth 1.0, whose lowest bit is 0.
+// pass writes no bits: it lies at depth 1.0, whose low bits are 0 (and the
+// decoders ignore the bits of the sky depth).
 //
 // Define GBUFFER_ENCODE_ONLY before including this file in a material
 // (fragment) shader: it then declares no descriptors (the lighting bindings
@@ -49,11 +68,18 @@
 #ifndef UBER_GBUFFER_GLSL
 #define UBER_GBUFFER_GLSL
 
+#include "precise_math.glsl"
+
 // Motion byte layout.
 const uint GBUFFER_MOTION_ID_MASK = 0x7Fu; // motion IDs 0..127
 const uint GBUFFER_SKY_MOTION_ID  = 0u;
 // The MSAA-edge bit: the lowest mantissa bit of the stored depth.
 const uint GBUFFER_DEPTH_EDGE_BIT = 1u;
+// The sun-facing bit: the next mantissa bit.
+const uint GBUFFER_DEPTH_SUN_BIT = 2u;
+// The depth of the sky (the far plane), and the largest a material stores.
+const float GBUFFER_SKY_DEPTH = 1.0;
+const float GBUFFER_MAX_GEOMETRY_DEPTH = 0.99999994; // the float below 1.0
 
 // One decoded G-buffer sample: everything the lighting needs, and nothing about
 // how it is stored.
@@ -61,12 +87,21 @@ struct GSample {
     vec3  albedo;
     float spec_amount;
     vec3  normal;      // as stored (signed, normalised by the material shader)
-    uint  motion_id;   // 0..127, edge bit removed
+    uint  motion_id;   // 0..127
     bool  msaa_edge;   // the depth's MSAA-edge bit (classification only)
-    bool  is_sky;      // motion_id == 0: colour is prelit, no lighting at all
+    bool  faces_sun;   // the depth's sun-facing bit
+    bool  is_sky;      // depth 1.0: colour is prelit, no lighting at all
     vec3  prelit;
     float spec_power;
-    float depth;       // depth as stored, 0..1 (edge bit included)
+    float depth;       // depth as stored, 0..1 (its bits included)
+};
+
+// What the depth alone says about a sample (gbuffer_decode_depth()).
+struct GDepthSample {
+    float depth;       // as stored, bits included
+    bool  is_sky;
+    bool  faces_sun;
+    bool  msaa_edge;
 };
 
 // ---------------------------------------------------------------------------
@@ -80,14 +115,35 @@ float gbuffer_pack_motion_byte(uint motion_id)
     return float(motion_id & GBUFFER_MOTION_ID_MASK) / 255.0;
 }
 
-// The depth a fragment stores: `depth` (0..1) with its lowest mantissa bit
-// replaced by the MSAA-edge bit. Depths below the smallest normal float are
-// raised to it first, so the bit never lands in a denormal that a driver
-// running with denormals-are-zero (llvmpipe) would flush.
-float gbuffer_encode_depth(float depth, bool msaa_edge)
+// The depth a material fragment stores: `depth` (0..1) kept below the sky's
+// 1.0, with its two lowest mantissa bits replaced by the MSAA-edge and
+// sun-facing bits. Depths below the smallest normal float are raised to it
+// first, so the bits never land in a denormal that a driver running with
+// denormals-are-zero (llvmpipe) would flush.
+float gbuffer_encode_depth(float depth, bool msaa_edge, bool faces_sun)
 {
-    uint bits = floatBitsToUint(max(depth, 1.17549435e-38));
-    return uintBitsToFloat((bits & ~GBUFFER_DEPTH_EDGE_BIT) | (msaa_edge ? GBUFFER_DEPTH_EDGE_BIT : 0u));
+    uint bits = floatBitsToUint(clamp(depth, 1.17549435e-38, GBUFFER_MAX_GEOMETRY_DEPTH));
+    bits &= ~(GBUFFER_DEPTH_EDGE_BIT | GBUFFER_DEPTH_SUN_BIT);
+    return uintBitsToFloat(bits | (msaa_edge ? GBUFFER_DEPTH_EDGE_BIT : 0u) | (faces_sun ? GBUFFER_DEPTH_SUN_BIT : 0u));
+}
+
+// The normal as RT1 (16F) stores it: rounded to half precision here, so that
+// the attachment stores this exact value and the sun-facing bit is decided on
+// what the lighting shades with.
+vec3 gbuffer_stored_normal(vec3 normal)
+{
+    vec2 xy = unpackHalf2x16(packHalf2x16(normal.xy));
+    float z = unpackHalf2x16(packHalf2x16(vec2(normal.z, 0.0))).x;
+    return vec3(xy, z);
+}
+
+// The sun-facing bit of a stored normal: N.L > 0 towards the sun (false for a
+// zero or NaN normal), written out in a fixed order (precise_dot()) so that
+// every shader that recomputes it from the same values (the test upload) gets
+// the same bit.
+bool gbuffer_faces_sun(vec3 stored_normal, vec3 towards_sun)
+{
+    return precise_dot(stored_normal, towards_sun) > 0.0;
 }
 
 // RT0: the target is unorm, so the clamp only makes explicit what the hardware
@@ -139,6 +195,16 @@ bool gbuffer_decode_msaa_edge_bit(float depth)
     return (floatBitsToUint(depth) & GBUFFER_DEPTH_EDGE_BIT) != 0u;
 }
 
+GDepthSample gbuffer_decode_depth(float depth)
+{
+    GDepthSample d;
+    d.depth = depth;
+    d.is_sky = depth == GBUFFER_SKY_DEPTH;
+    d.faces_sun = !d.is_sky && (floatBitsToUint(depth) & GBUFFER_DEPTH_SUN_BIT) != 0u;
+    d.msaa_edge = !d.is_sky && gbuffer_decode_msaa_edge_bit(depth);
+    return d;
+}
+
 GSample gbuffer_decode(vec4 rt0, vec4 rt1, vec4 rt2, float depth)
 {
     GSample g;
@@ -146,8 +212,10 @@ GSample gbuffer_decode(vec4 rt0, vec4 rt1, vec4 rt2, float depth)
     g.spec_amount = rt0.a;
     g.normal      = rt1.xyz;
     g.motion_id   = gbuffer_unpack_motion_byte(rt1.a) & GBUFFER_MOTION_ID_MASK;
-    g.msaa_edge   = gbuffer_decode_msaa_edge_bit(depth);
-    g.is_sky      = g.motion_id == GBUFFER_SKY_MOTION_ID;
+    GDepthSample d = gbuffer_decode_depth(depth);
+    g.msaa_edge   = d.msaa_edge;
+    g.faces_sun   = d.faces_sun;
+    g.is_sky      = d.is_sky;
     g.prelit      = rt2.rgb;
     g.spec_power  = rt2.a;
     g.depth       = depth;
@@ -172,6 +240,12 @@ GSample gbuffer_load(ivec2 pixel, int sample_index)
                           texelFetch(gbuffer_normal_motion, pixel, sample_index),
                           texelFetch(gbuffer_prelit_power, pixel, sample_index),
                           texelFetch(gbuffer_depth, pixel, sample_index).r);
+}
+
+// The depth target alone (classification).
+GDepthSample gbuffer_load_depth(ivec2 pixel, int sample_index)
+{
+    return gbuffer_decode_depth(texelFetch(gbuffer_depth, pixel, sample_index).r);
 }
 
 bool gbuffer_load_msaa_edge_bit(ivec2 pixel, int sample_index)

@@ -2,8 +2,9 @@
 //
 //     radiance = sun_color * N.L * (albedo + spec_amount * max(N.H, 0)^spec_power)
 //
-// Exactness contract: where N.L <= 0 the sun term (diffuse AND specular) is
-// exactly vec3(0), by an early return rather than a smooth falloff. A tile
+// Exactness contract: where the surface does not face the sun (the G-buffer's
+// sun-facing bit, set by the material where N.L > 0) the sun term (diffuse AND
+// specular) is exactly vec3(0), by an early return rather than a smooth falloff. A tile
 // whose non-sky pixels all face away from the sun (SUN_LIGHT bit clear) then
 // gets exactly prelit from the full shader too, so its permutation may drop
 // the sun code without changing a single pixel.
@@ -13,8 +14,8 @@
 // lighting could round N.L differently (N.L ~ 0), the two disagree by noise,
 // not by a highlight popping in or out.
 //
-// The classifier must decide "faces the sun" with sun_faces() below, so that
-// it and the lighting test the same value.
+// The classifier reads the same bit (gbuffer.glsl), so it and the lighting
+// cannot disagree about which pixels face the sun.
 
 #ifndef UBER_SUN_LIGHTING_GLSL
 #define UBER_SUN_LIGHTING_GLSL
@@ -34,34 +35,30 @@ struct SunTerm {
 };
 
 // N.L with the stored normal renormalised (16F storage drifts from unit
-// length). Normalising does not change the sign, and a zero or broken normal
-// yields NaN, which sun_faces() reports as not facing. Its sign decides a
-// classification bit, hence precise_dot().
+// length); precise_dot(), so that every permutation rounds it alike.
 float sun_n_dot_l(vec3 normal)
 {
     return precise_dot(normalize(normal), params.sun_direction.xyz);
 }
 
-// The one "faces the sun" test. x > 0 is false for NaN, so a broken normal
-// counts as not facing, in the classifier and in sun_lighting() alike.
-bool sun_faces(vec3 normal)
-{
-    return sun_n_dot_l(normal) > 0.0;
-}
-
 // Every value returned is finite whatever the G-buffer holds (spec_amount is
 // unorm; NaN/Inf powers and degenerate half vectors are caught), so that
 // "sun term * shadow factor 0" is exactly 0, as the solid-shadow class assumes.
-SunTerm sun_lighting(vec3 normal, vec3 world_pos, float spec_amount, float spec_power)
+// `faces_sun`: the sample's sun-facing bit (GSample.faces_sun).
+SunTerm sun_lighting(bool faces_sun, vec3 normal, vec3 world_pos, float spec_amount, float spec_power)
 {
     SunTerm term;
     term.diffuse = vec3(0.0);
     term.specular = vec3(0.0);
 
-    float n_dot_l = sun_n_dot_l(normal);
-    if (!(n_dot_l > 0.0)) { // the negation of sun_faces(), NaN included
-        return term;        // exactly zero: the contract SUN_LIGHT relies on
+    if (!faces_sun) {
+        return term; // exactly zero: the contract SUN_LIGHT relies on
     }
+    // The bit was decided on the stored normal; renormalised, N.L of a grazing
+    // one may still round to 0 or below, or be NaN for an infinite normal: no
+    // sun then, and every value stays finite.
+    float n_dot_l = sun_n_dot_l(normal);
+    n_dot_l = n_dot_l > 0.0 ? n_dot_l : 0.0;
 
     vec3 n = normalize(normal);
     vec3 l = params.sun_direction.xyz;
@@ -84,9 +81,10 @@ SunTerm sun_lighting(vec3 normal, vec3 world_pos, float spec_amount, float spec_
 }
 
 // The sun's contribution to a surface before shadowing.
-vec3 sun_surface_radiance(vec3 albedo, vec3 normal, vec3 world_pos, float spec_amount, float spec_power)
+vec3 sun_surface_radiance(vec3 albedo, bool faces_sun, vec3 normal, vec3 world_pos, float spec_amount,
+                          float spec_power)
 {
-    SunTerm term = sun_lighting(normal, world_pos, spec_amount, spec_power);
+    SunTerm term = sun_lighting(faces_sun, normal, world_pos, spec_amount, spec_power);
     return albedo * term.diffuse + term.specular;
 }
 

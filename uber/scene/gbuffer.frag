@@ -36,11 +36,14 @@ void main()
     vec3 ambient = mix(scene.ambient_ground.rgb, scene.ambient_sky.rgb, hemisphere);
     uint motion_id = uint(in_material.y);
 
+    // The sun-facing bit is decided on the normal exactly as RT1 stores it.
+    vec3 stored_normal = gbuffer_stored_normal(normal);
     out_rt0 = gbuffer_encode_rt0(albedo, in_albedo_spec.a);
-    out_rt1 = gbuffer_encode_rt1(normal, motion_id);
+    out_rt1 = gbuffer_encode_rt1(stored_normal, motion_id);
     out_rt2 = gbuffer_encode_rt2(albedo * ambient, in_material.x);
     // One depth per pixel: every covered sample stores the pixel-centre depth, so a pixel
-    // inside one surface has bit-identical samples; its lowest bit is the MSAA-edge bit
-    // (see gbuffer.glsl).
-    gl_FragDepth = gbuffer_encode_depth(gl_FragCoord.z, gbuffer_fragment_is_partial());
+    // inside one surface has bit-identical samples; its two lowest bits are the MSAA-edge and
+    // sun-facing bits (see gbuffer.glsl).
+    gl_FragDepth = gbuffer_encode_depth(gl_FragCoord.z, gbuffer_fragment_is_partial(),
+                                        gbuffer_faces_sun(stored_normal, scene.sun_direction.xyz));
 }

@@ -12,7 +12,8 @@
 // decision the reference also reports whether the value lies within a small margin of its
 // threshold; a tile bit that depends on such a decision is "uncertain" and may legitimately
 // differ. Everything else must match exactly. Margins: view depth 1e-4 relative (at least
-// 1e-4 m); N.L 1e-5; shadow-map texel position 1e-3 texel; shadow depth compare 2e-6.
+// 1e-4 m); shadow-map texel position 1e-3 texel; shadow depth compare 2e-6. Sky and sun-facing
+// are read from the depth's bits as stored (gbuffer.glsl), so they are never uncertain.
 
 #include "tilelight/tile_grid.h"
 #include "tilelight/tile_renderer.h"

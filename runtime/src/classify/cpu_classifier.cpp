@@ -42,12 +42,12 @@ struct Flags {
 
 struct Sample {
   const float* v;  // rt0[4], rt1[4], rt2[4], depth
-  bool is_sky() const {
-    const auto byte = static_cast<std::uint32_t>(std::clamp(std::nearbyint(v[7] * 255.0f), 0.0f, 255.0f));
-    return (byte & 0x7Fu) == 0;
-  }
-  // gbuffer.glsl: the lowest mantissa bit of the stored depth.
-  bool edge_bit() const { return (std::bit_cast<std::uint32_t>(v[12]) & 1u) != 0; }
+  // gbuffer.glsl: the sky lies at depth 1.0, every material depth below it.
+  bool is_sky() const { return v[12] == 1.0f; }
+  // gbuffer.glsl: the lowest mantissa bit of the stored depth (none on the sky).
+  bool edge_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 1u) != 0; }
+  // gbuffer.glsl: the next mantissa bit, set by the material where the stored normal faces the sun.
+  bool sun_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 2u) != 0; }
 };
 
 glm::vec4 multiply(const glm::mat4& m, const glm::vec4& v) {
@@ -85,20 +85,16 @@ class SampleClassifier {
     f.add(kFade, view_depth > params_.distances.x, near_threshold(view_depth, params_.distances.x, depth_margin));
     f.add(kScattering, view_depth > params_.distances.z,
           near_threshold(view_depth, params_.distances.z, depth_margin));
-    // sun_faces().
-    const glm::vec3 normal{s.v[4], s.v[5], s.v[6]};
-    const float length = std::sqrt(glm::dot(normal, normal));
-    const float n_dot_l = glm::dot(normal / length, glm::vec3(params_.sun_direction));
-    const bool faces = n_dot_l > 0.0f;  // NaN: not facing
-    const bool faces_uncertain = std::fabs(n_dot_l) <= 1e-5f;
-    f.add(kSun, faces, faces_uncertain);
+    // The sun-facing bit: the G-buffer's decision, which the lighting reads as it is.
+    const bool faces = s.sun_bit();
+    f.add(kSun, faces, false);
     // shadow_fade_complete(): a completely faded shadow has no say in the tile's shadow type.
     const float fade = (view_depth - params_.distances.x) * params_.distances.y;
     const bool faded = fade >= 1.0f;
     const bool fade_uncertain = near_threshold(view_depth, params_.distances.x + 1.0f / params_.distances.y,
                                                depth_margin);
-    if ((faces || faces_uncertain) && (!faded || fade_uncertain)) {
-      add_shadow(pos, f, faces_uncertain || fade_uncertain);
+    if (faces && (!faded || fade_uncertain)) {
+      add_shadow(pos, f, fade_uncertain);
     }
     return f;
   }

@@ -13,8 +13,8 @@
 namespace tilelight {
 
 GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& targets, const GBufferSamples& samples,
-                             VkDescriptorPool pool)
-    : sample_count_(samples.samples) {
+                             const glm::vec4& sun_direction, VkDescriptorPool pool)
+    : sample_count_(samples.samples), sun_direction_(sun_direction) {
   if (!context.features().sample_rate_shading) {
     throw Error("a synthetic G-buffer needs sample-rate shading, which " + context.device_name() + " lacks");
   }
@@ -31,7 +31,7 @@ GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& target
                                              nullptr};
   set_layout_ = create_descriptor_set_layout(context, std::span(&binding, 1), "G-buffer upload set layout");
   const VkDescriptorSetLayout set_layouts[] = {set_layout_.get()};
-  const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, 16};
+  const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(UploadPush)};
   layout_ = create_pipeline_layout(context, set_layouts, std::span(&push, 1), "G-buffer upload layout");
   set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "G-buffer upload set");
   write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, samples_.handle());
@@ -48,8 +48,8 @@ void GBufferUpload::record(VkCommandBuffer cmd, const RenderTargets& targets) co
   targets.begin_gbuffer_pass(cmd);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
-  const std::array<std::uint32_t, 4> size{targets.extent().width, targets.extent().height, sample_count_, 0};
-  vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(size), size.data());
+  const UploadPush push{{targets.extent().width, targets.extent().height, sample_count_, 0}, sun_direction_};
+  vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push), &push);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);
 }

@@ -7,6 +7,11 @@
 #include "tilelight/tile_renderer.h"
 #include "tilelight/vk_handles.h"
 
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+
 namespace tilelight {
 
 class Context;
@@ -14,14 +19,22 @@ class Context;
 class GBufferUpload {
  public:
   // Precondition: `samples` matches the targets' size and sample count, and the device offers
-  // sample-rate shading (checked: tilelight::Error otherwise).
+  // sample-rate shading (checked: tilelight::Error otherwise). `sun_direction` (xyz, towards the
+  // sun) decides the sun-facing bits, as the material shaders do with the scene's.
   GBufferUpload(const Context& context, const RenderTargets& targets, const GBufferSamples& samples,
-                VkDescriptorPool pool);
+                const glm::vec4& sun_direction, VkDescriptorPool pool);
   void record(VkCommandBuffer cmd, const RenderTargets& targets) const;
 
  private:
+  // gbuffer_upload.frag's push constants.
+  struct UploadPush {
+    std::array<std::uint32_t, 4> size;  // width, height, samples, 0
+    glm::vec4 sun_direction;
+  };
+
   Buffer samples_;
   std::uint32_t sample_count_;
+  glm::vec4 sun_direction_;
   UniqueDescriptorSetLayout set_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

@@ -368,6 +368,7 @@ std::vector<float> TileRenderer::read_shadow_map() const {
 
 void TileRenderer::set_gbuffer_override(const GBufferSamples& samples) {
   impl_->gbuffer_upload = std::make_unique<GBufferUpload>(impl_->context, *impl_->targets, samples,
+                                                          impl_->lighting->params().sun_direction,
                                                           impl_->descriptor_pool.get());
 }
 
