@@ -19,7 +19,7 @@ TEST(FailureMessage, VulkanOutOfMemoryNamesTheStageTheObjectAndAWayOut) {
       VulkanError(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory", "G-buffer RT0 (albedo, specular)"));
   EXPECT_EQ(failure_message("creating the renderer (16384x16384)", error),
             "creating the renderer (16384x16384): vkAllocateMemory failed for G-buffer RT0 (albedo, specular): "
-            "VK_ERROR_OUT_OF_DEVICE_MEMORY (out of memory: try a smaller --width/--height or --msaa 1)");
+            "VK_ERROR_OUT_OF_DEVICE_MEMORY (out of memory: try a smaller --width/--height or fewer --msaa samples)");
 }
 
 TEST(FailureMessage, DeviceLostNamesTheFrame) {

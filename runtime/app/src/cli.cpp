@@ -45,10 +45,11 @@ struct Arguments {
 
 std::uint32_t parse_msaa(const std::string& text) {
   if (text == "auto") return 0;
+  // 1 is parsed, so that the renderer's own error says why it is refused.
   for (const char* valid : {"1", "2", "4", "8", "16"}) {
     if (text == valid) return static_cast<std::uint32_t>(std::stoul(text));
   }
-  throw Error("--msaa " + text + ": expected auto, 1, 2, 4, 8 or 16");
+  throw Error("--msaa " + text + ": expected auto, 2, 4, 8 or 16");
 }
 
 // The light targets hold linear radiance; the PNGs get the usual display encoding (gamma 2.2
@@ -74,7 +75,7 @@ std::vector<std::uint8_t> optimised_ids(const std::vector<std::uint8_t>& raw_ids
 void add_options(CLI::App& cli, Arguments& a) {
   cli.add_option("--width", a.width, "frame width in pixels")->capture_default_str();
   cli.add_option("--height", a.height, "frame height in pixels")->capture_default_str();
-  cli.add_option("--msaa", a.msaa, "G-buffer samples: auto (2 where offered, else 4), 1, 2, 4, 8")
+  cli.add_option("--msaa", a.msaa, "G-buffer samples: auto (2 where offered, else 4), 2, 4, 8 (the G-buffer is always multisampled)")
       ->capture_default_str();
   cli.add_option("--path", a.path, "index build: cpu (host patches pre-recorded draws) or gpu (compute)")
       ->check(CLI::IsMember({"cpu", "gpu"}))
