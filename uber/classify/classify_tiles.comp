@@ -6,17 +6,18 @@
 // partial edge blocks get 0xFF.
 //
 // What a tile's ID must promise (lighting.frag): SKY and SUN_LIGHT exactly where some sample is
-// sky / faces the sun (the G-buffer's sun-facing bit, the lighting's own test); MSAA_EDGE, SHADOW_FADE and
-// LIGHT_SCATTERING wherever a pixel needs them -- setting them anywhere else is harmless,
-// because each of those features is an exact identity on the pixels that do not need it; and a
+// sky / faces the sun (the G-buffer's sun-facing bit, the lighting's own test); MSAA_EDGE,
+// SHADOW_FADE and LIGHT_SCATTERING wherever a pixel needs them -- setting them anywhere else is
+// harmless, because each of those features is an exact identity on the pixels that do not need
+// it; and a
 // shadow type that is right for every sun-facing sample whose shadow is not faded out
 // completely: SOLID only if every tap of every such sample is occluded, none if every tap is
 // lit, SOFT (full PCF, right for any sample) otherwise.
 //
 // Per sample the pass reads the depth alone, which says whether the sample is sky, faces the sun
 // (the lighting's own decision, made by the material) or marks an MSAA edge (gbuffer.glsl), and
-// where it lies. Everything that depends on position is decided per TILE, from bounds, because the
-// lighting computes it with a projective map of (pixel centre, depth):
+// where it lies. Everything that depends on position is decided per TILE, from bounds, because
+// the lighting computes it with a projective map of (pixel centre, depth):
 //   (x, y, d) -> h = inv_view_proj * (x, y, d, 1) -> world = h.xyz / h.w -> sun map texel P,
 //   receiver depth r, view depth v,
 // and each of P, r, v is a ratio of two affine functions of (x, y, d) with h.w > 0. Such a
