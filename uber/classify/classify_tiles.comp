@@ -9,8 +9,7 @@
 // sky / faces the sun (the G-buffer's sun-facing bit, the lighting's own test); MSAA_EDGE,
 // SHADOW_FADE and LIGHT_SCATTERING wherever a pixel needs them -- setting them anywhere else is
 // harmless, because each of those features is an exact identity on the pixels that do not need
-// it; and a
-// shadow type that is right for every sun-facing sample whose shadow is not faded out
+// it; and a shadow type that is right for every sun-facing sample whose shadow is not faded out
 // completely: SOLID only if every tap of every such sample is occluded, none if every tap is
 // lit, SOFT (full PCF, right for any sample) otherwise.
 //
