@@ -72,6 +72,11 @@ TEST(TilelightCli, WritesTheFourFilesAndTheReportFields) {
   for (const char* t : {"gbuffer", "shadow_map", "classification", "index_build_cpu", "tiled_light", "naive_light"}) {
     ASSERT_TRUE(report["timings_ms"].contains(t)) << t;
     EXPECT_GE(report["timings_ms"][t].get<double>(), 0.0) << t;
+    // One figure per timed frame; with two frames the median is their mean.
+    const auto& frames = report["frame_timings_ms"][t];
+    ASSERT_EQ(frames.size(), 2u) << t;
+    EXPECT_NEAR(report["timings_ms"][t].get<double>(), (frames[0].get<double>() + frames[1].get<double>()) / 2, 0.002)
+        << t;
   }
   EXPECT_EQ(report["equivalence"]["pixels_different"], 0);
   // Nothing temporary left beside the results.

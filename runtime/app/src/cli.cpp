@@ -185,6 +185,7 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   report.primitives_coalesced = last.stats.primitives_coalesced;
   report.rectangles = last.stats.rectangles;
   report.timings = median_timings(timings);
+  report.frame_timings = timings;
   report.equivalence = compare_frames(classified, naive);
 
   const RgbaImage shown = display_encoded(classified);

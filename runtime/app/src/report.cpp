@@ -111,6 +111,22 @@ std::string report_json(const FrameReport& r) {
   timings["tiled_light"] = round3(r.timings.tiled_light);
   timings["naive_light"] = round3(r.timings.naive_light);
   j["timings_ms"] = timings;
+  // Every frame's figures, so that a benchmark can take other statistics than the median, or
+  // ratios within one frame (on a machine whose speed drifts, the steadier figure).
+  nlohmann::ordered_json frames;
+  const auto per_frame = [&](const char* name, double FrameTimings::*field) {
+    nlohmann::ordered_json values = nlohmann::ordered_json::array();
+    for (const FrameTimings& f : r.frame_timings) values.push_back(round3(f.*field));
+    frames[name] = values;
+  };
+  per_frame("gbuffer", &FrameTimings::gbuffer);
+  per_frame("shadow_map", &FrameTimings::shadow_map);
+  per_frame("classification", &FrameTimings::classification);
+  per_frame("index_build_cpu", &FrameTimings::index_build_cpu);
+  per_frame("index_build_gpu", &FrameTimings::index_build_gpu);
+  per_frame("tiled_light", &FrameTimings::tiled_light);
+  per_frame("naive_light", &FrameTimings::naive_light);
+  j["frame_timings_ms"] = frames;
   j["equivalence"] = {{"max_abs_difference", r.equivalence.max_abs_difference},
                       {"pixels_different", r.equivalence.pixels_different}};
   j["process"] = {{"peak_rss_mib", std::round(r.process.peak_rss_mib * 10.0) / 10.0},

@@ -43,6 +43,7 @@ struct FrameReport {
   std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0;
   std::uint32_t rectangles = 0;  // after coalescing; a non-square one is drawn as one point per tile
   MedianTimings timings;
+  std::vector<FrameTimings> frame_timings;  // every timed frame, in order (timings: their medians)
   Equivalence equivalence;
   ProcessFigures process;
 };
