@@ -196,7 +196,7 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
         GDepthSample first = gbuffer_load_depth(pixel, 0);
         uint edge = uint(first.msaa_edge);
         [[unroll]] for (int s = 1; s < GBUFFER_SAMPLES; ++s) {
-            edge |= uint(gbuffer_load_msaa_edge_bit(pixel, s));
+            edge |= uint(gbuffer_load_depth(pixel, s).msaa_edge);
         }
         depth[k] = first.depth;
         needs_offset |= uint(add_sample_flags(tile, first)) << k;
@@ -215,10 +215,10 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
     if (edge_pixels != 0u) {
         tile.flags |= TILE_FLAG_EDGE;
     }
-    // Samples 1.. of the edge pixels (none without MSAA), one (edge pixel, sample) pair per
-    // pass, so that the pass the loop always runs once more (masked) costs one sample's
-    // fetches, not a pixel's.
-    uint pending = GBUFFER_SAMPLES > 1 ? edge_pixels : 0u;
+    // Samples 1.. of the edge pixels (the G-buffer always has 2 or more), one (edge pixel,
+    // sample) pair per pass, so that the pass the loop always runs once more (masked) costs one
+    // sample's fetches, not a pixel's.
+    uint pending = edge_pixels;
     int s = 1;
     while (pending != 0u) {
         uint k = uint(findLSB(pending));

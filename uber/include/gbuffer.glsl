@@ -248,10 +248,6 @@ GDepthSample gbuffer_load_depth(ivec2 pixel, int sample_index)
     return gbuffer_decode_depth(texelFetch(gbuffer_depth, pixel, sample_index).r);
 }
 
-bool gbuffer_load_msaa_edge_bit(ivec2 pixel, int sample_index)
-{
-    return gbuffer_decode_msaa_edge_bit(texelFetch(gbuffer_depth, pixel, sample_index).r);
-}
 
 #endif // GBUFFER_ENCODE_ONLY
 

@@ -4,18 +4,16 @@
 //
 // Exactness contract: where the surface does not face the sun (the G-buffer's
 // sun-facing bit, set by the material where N.L > 0) the sun term (diffuse AND
-// specular) is exactly vec3(0), by an early return rather than a smooth falloff. A tile
-// whose non-sky pixels all face away from the sun (SUN_LIGHT bit clear) then
-// gets exactly prelit from the full shader too, so its permutation may drop
-// the sun code without changing a single pixel.
+// specular) is exactly vec3(0), by an early return rather than a smooth
+// falloff. A tile whose non-sky pixels all face away from the sun (SUN_LIGHT
+// bit clear) then gets exactly prelit from the full shader too, so its
+// permutation may drop the sun code without changing a single pixel. The
+// classifier reads the same bit (gbuffer.glsl), so it and the lighting cannot
+// disagree about which pixels face the sun.
 //
 // The specular lobe is scaled by N.L like the diffuse one, so the whole term
-// also goes to 0 continuously at the terminator: where a classifier and the
-// lighting could round N.L differently (N.L ~ 0), the two disagree by noise,
-// not by a highlight popping in or out.
-//
-// The classifier reads the same bit (gbuffer.glsl), so it and the lighting
-// cannot disagree about which pixels face the sun.
+// also goes to 0 continuously at the terminator: a normal the bit calls facing
+// whose renormalised N.L rounds to 0 gets no highlight popping in.
 
 #ifndef UBER_SUN_LIGHTING_GLSL
 #define UBER_SUN_LIGHTING_GLSL

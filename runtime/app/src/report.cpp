@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 
 namespace tilelight::app {
 namespace {
@@ -19,6 +21,17 @@ double median(std::vector<double> values) {
 }
 
 double round3(double value) { return std::round(value * 1000.0) / 1000.0; }
+
+// Every timed stage, by its report.json name, in the report's order.
+constexpr std::array<std::pair<const char*, double FrameTimings::*>, 7> kStages{{
+    {"gbuffer", &FrameTimings::gbuffer},
+    {"shadow_map", &FrameTimings::shadow_map},
+    {"classification", &FrameTimings::classification},
+    {"index_build_cpu", &FrameTimings::index_build_cpu},
+    {"index_build_gpu", &FrameTimings::index_build_gpu},
+    {"tiled_light", &FrameTimings::tiled_light},
+    {"naive_light", &FrameTimings::naive_light},
+}};
 
 }  // namespace
 
@@ -45,19 +58,12 @@ void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids) 
 }
 
 MedianTimings median_timings(const std::vector<FrameTimings>& frames) {
-  auto pick = [&](double FrameTimings::*field) {
+  MedianTimings m;
+  for (const auto& [name, field] : kStages) {
     std::vector<double> values;
     for (const FrameTimings& f : frames) values.push_back(f.*field);
-    return median(values);
-  };
-  MedianTimings m;
-  m.gbuffer = pick(&FrameTimings::gbuffer);
-  m.shadow_map = pick(&FrameTimings::shadow_map);
-  m.classification = pick(&FrameTimings::classification);
-  m.index_build_cpu = pick(&FrameTimings::index_build_cpu);
-  m.index_build_gpu = pick(&FrameTimings::index_build_gpu);
-  m.tiled_light = pick(&FrameTimings::tiled_light);
-  m.naive_light = pick(&FrameTimings::naive_light);
+    m.*field = median(values);
+  }
   return m;
 }
 
@@ -102,30 +108,16 @@ std::string report_json(const FrameReport& r) {
   j["primitives"] = {{"uncoalesced", r.primitives_uncoalesced},
                      {"coalesced", r.primitives_coalesced},
                      {"rectangles", r.rectangles}};
-  nlohmann::ordered_json timings;
-  timings["gbuffer"] = round3(r.timings.gbuffer);
-  timings["shadow_map"] = round3(r.timings.shadow_map);
-  timings["classification"] = round3(r.timings.classification);
-  timings["index_build_cpu"] = round3(r.timings.index_build_cpu);
-  timings["index_build_gpu"] = round3(r.timings.index_build_gpu);
-  timings["tiled_light"] = round3(r.timings.tiled_light);
-  timings["naive_light"] = round3(r.timings.naive_light);
-  j["timings_ms"] = timings;
-  // Every frame's figures, so that a benchmark can take other statistics than the median, or
-  // ratios within one frame (on a machine whose speed drifts, the steadier figure).
-  nlohmann::ordered_json frames;
-  const auto per_frame = [&](const char* name, double FrameTimings::*field) {
+  // The medians, and every frame's figures, so that a benchmark can take other statistics than
+  // the median, or ratios within one frame (on a machine whose speed drifts, the steadier figure).
+  nlohmann::ordered_json timings, frames;
+  for (const auto& [name, field] : kStages) {
+    timings[name] = round3(r.timings.*field);
     nlohmann::ordered_json values = nlohmann::ordered_json::array();
     for (const FrameTimings& f : r.frame_timings) values.push_back(round3(f.*field));
     frames[name] = values;
-  };
-  per_frame("gbuffer", &FrameTimings::gbuffer);
-  per_frame("shadow_map", &FrameTimings::shadow_map);
-  per_frame("classification", &FrameTimings::classification);
-  per_frame("index_build_cpu", &FrameTimings::index_build_cpu);
-  per_frame("index_build_gpu", &FrameTimings::index_build_gpu);
-  per_frame("tiled_light", &FrameTimings::tiled_light);
-  per_frame("naive_light", &FrameTimings::naive_light);
+  }
+  j["timings_ms"] = timings;
   j["frame_timings_ms"] = frames;
   j["equivalence"] = {{"max_abs_difference", r.equivalence.max_abs_difference},
                       {"pixels_different", r.equivalence.pixels_different}};

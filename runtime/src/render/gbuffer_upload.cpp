@@ -14,7 +14,7 @@ namespace tilelight {
 
 GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& targets, const GBufferSamples& samples,
                              const glm::vec4& sun_direction, VkDescriptorPool pool)
-    : sample_count_(samples.samples), sun_direction_(sun_direction) {
+    : push_{{targets.extent().width, targets.extent().height, samples.samples, 0}, sun_direction} {
   if (!context.features().sample_rate_shading) {
     throw Error("a synthetic G-buffer needs sample-rate shading, which " + context.device_name() + " lacks");
   }
@@ -48,8 +48,7 @@ void GBufferUpload::record(VkCommandBuffer cmd, const RenderTargets& targets) co
   targets.begin_gbuffer_pass(cmd);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
-  const UploadPush push{{targets.extent().width, targets.extent().height, sample_count_, 0}, sun_direction_};
-  vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push), &push);
+  vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push_), &push_);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);
 }

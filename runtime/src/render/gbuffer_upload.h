@@ -32,9 +32,8 @@ class GBufferUpload {
     glm::vec4 sun_direction;
   };
 
+  UploadPush push_;
   Buffer samples_;
-  std::uint32_t sample_count_;
-  glm::vec4 sun_direction_;
   UniqueDescriptorSetLayout set_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

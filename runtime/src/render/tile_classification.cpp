@@ -32,7 +32,7 @@ SpecConstants classification_constants(std::uint32_t tile_size, std::uint32_t sa
 
 }  // namespace
 
-TileClassification::TileClassification(const Context& context, const TileGrid& grid, std::uint32_t samples,
+TileClassification::TileClassification(const Context& context, const TileGrid& grid, const RenderTargets& targets,
                                        const LightingInterface& lighting, VkDescriptorPool pool)
     : lighting_(&lighting), grid_(grid) {
   ids_ = Buffer(context, {grid.id_bytes(),
@@ -43,7 +43,7 @@ TileClassification::TileClassification(const Context& context, const TileGrid& g
   ids_set_ = allocate_descriptor_set(context, pool, lighting.storage_set_layout(), "tile ID output set");
   write_buffer_descriptor(context, ids_set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ids_.handle());
   classify_ = create_compute_pipeline(context, lighting.compute_layout(), companion_spirv("classify_tiles"),
-                                      classification_constants(grid.tile_size, samples), "tile classification");
+                                      classification_constants(grid.tile_size, static_cast<std::uint32_t>(targets.samples())), "tile classification");
 }
 
 void TileClassification::record(VkCommandBuffer cmd) const {

@@ -5,6 +5,7 @@
 // reference classifier and the tests.
 
 #include "lighting_interface.h"
+#include "render_targets.h"
 #include "tilelight/buffer.h"
 #include "tilelight/tile_grid.h"
 #include "tilelight/vk_handles.h"
@@ -18,8 +19,9 @@ class Context;
 
 class TileClassification {
  public:
-  // `samples`: samples per pixel of the G-buffer that `lighting` binds.
-  TileClassification(const Context& context, const TileGrid& grid, std::uint32_t samples,
+  // `targets`: the G-buffer that `lighting` binds (the classifier is specialised to its sample
+  // count).
+  TileClassification(const Context& context, const TileGrid& grid, const RenderTargets& targets,
                      const LightingInterface& lighting, VkDescriptorPool pool);
 
   // Dispatches classification and copies the IDs to host memory. Afterwards the device ID

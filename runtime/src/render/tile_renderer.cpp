@@ -136,8 +136,7 @@ struct TileRenderer::Impl {
     scene_passes = std::make_unique<ScenePasses>(ctx, scene, camera, *targets, descriptor_pool.get());
     lighting = std::make_unique<LightingInterface>(ctx, make_lighting_params(scene, camera, opts.width, opts.height),
                                                    *targets, descriptor_pool.get());
-    classification = std::make_unique<TileClassification>(ctx, grid, static_cast<std::uint32_t>(samples), *lighting,
-                                                          descriptor_pool.get());
+    classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());
     light_passes = std::make_unique<LightingPasses>(
         ctx, grid, *targets, *lighting, opts.raw_permutations ? PermutationSet::raw : PermutationSet::optimised,
         primitive);

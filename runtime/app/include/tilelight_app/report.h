@@ -20,10 +20,8 @@ struct RunDescription {
   std::string primitive;         // "points" | "triangles": what the tile pass drew
 };
 
-struct MedianTimings {  // milliseconds, medians over the frames
-  double gbuffer = 0, shadow_map = 0, classification = 0, index_build_cpu = 0, index_build_gpu = 0;
-  double tiled_light = 0, naive_light = 0;
-};
+// Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).
+using MedianTimings = FrameTimings;
 
 struct Equivalence {
   double max_abs_difference = 0;       // over every channel of every pixel
