@@ -1,16 +1,18 @@
-# shadergen_add_permutations(<target> DOMAIN <spec> [NAMESPACE <ns>] [CACHE_DIR <dir>] [JOBS <n>])
+# shadergen_add_permutations(<target> DOMAIN <spec> [NAMESPACE <ns>] [CACHE_DIR <dir>] [JOBS <n>]
+#                            [DEFINES <NAME=VALUE|NAME>...])
 #
 # Creates a static library <target> holding every permutation of the domain <spec> as SPIR-V,
 # the raw -> optimised lookup table and a registry, with the header <target>.h on its include
 # path (namespace <ns>, default: the target name). shadergen runs at build time and writes only
 # into the build tree; its depfile lists the spec and every GLSL file it read, so editing any
-# of them reruns it and nothing else does. Files whose bytes did not change keep their
+# of them reruns it and nothing else does. DEFINES are passed as `--define` arguments: fixed
+# defines for every shader of the domain, on top of the spec's own "defines". Files whose bytes did not change keep their
 # timestamps, so nothing downstream recompiles after an edit that changes no SPIR-V.
 #
 # Needs SHADERGEN_EXECUTABLE to name the shadergen executable target (the project sets it; the
 # package config sets it to the imported shadergen::shadergen).
 function(shadergen_add_permutations target)
-  cmake_parse_arguments(PARSE_ARGV 1 SG "" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS" "")
+  cmake_parse_arguments(PARSE_ARGV 1 SG "" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS" "DEFINES")
   if(SG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "shadergen_add_permutations(${target}): unknown arguments: ${SG_UNPARSED_ARGUMENTS}")
   endif()
@@ -42,6 +44,9 @@ function(shadergen_add_permutations target)
   if(SG_JOBS)
     list(APPEND extra -j "${SG_JOBS}")
   endif()
+  foreach(define IN LISTS SG_DEFINES)
+    list(APPEND extra --define "${define}")
+  endforeach()
   add_custom_command(
     OUTPUT "${out}/${target}.h" "${out}/${target}.cpp" "${out}/manifest.json"
     COMMAND "$<TARGET_FILE:${SHADERGEN_EXECUTABLE}>" build "${spec}" --out "${out}" --cpp-name "${target}"

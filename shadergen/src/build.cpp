@@ -5,6 +5,7 @@
 #include "cache.h"
 #include "codegen.h"
 #include "compiled_domain.h"
+#include "defines.h"
 #include "file_io.h"
 #include "input_cache.h"
 #include "manifest.h"
@@ -39,6 +40,36 @@ StagedOutput outputs_for(const BuildOptions& options, const CompiledDomain& doma
     staged.add(cpp_name + ".cpp", std::move(cpp.source));
     if (options.write_stats) staged.add("stats.json", write_stats(domain, seconds));
     return staged;
+}
+
+// The command line's defines on top of the spec's. A feature's define is refused: the
+// permutations without the feature would have it on.
+Status apply_command_line_defines(DomainSpec& spec, const std::vector<std::string>& arguments) {
+    Diagnostics errors;
+    std::vector<std::string> parsed;
+    for (const std::string& argument : arguments) {
+        auto define = parse_define_argument(argument);
+        if (!define) {
+            errors.push_back(define.errors().front());
+            continue;
+        }
+        for (const RawFeature& feature : spec.raw_features)
+            if (feature.define == define_name(*define))
+                errors.push_back(make_error("--define " + argument + ": " + feature.define +
+                                            " is the define of raw feature " + feature.name + " of " +
+                                            spec.spec_path.string() + "; a fixed define cannot also be a feature"));
+        parsed.push_back(std::move(define).value());
+    }
+    if (!errors.empty()) return errors;
+    spec.defines = override_defines(std::move(spec.defines), parsed);
+    return Ok{};
+}
+
+// The preprocessing settings that the spec's bytes do not hold, for the input-set key.
+std::string preprocessing_settings(const DomainSpec& spec) {
+    std::string text = "defines";
+    for (const std::string& define : spec.defines) text += "\n" + define;
+    return text;
 }
 
 BuildSummary summarise(const CompiledDomain& d) {
@@ -79,6 +110,7 @@ Result<BuildSummary> build(const BuildOptions& given) {
     std::string cpp_name = options.cpp_name.empty() ? spec->name : options.cpp_name;
     std::string ns = options.cpp_namespace.empty() ? spec->name : options.cpp_namespace;
     if (Status ok = check_names(options, cpp_name, ns); !ok) return std::move(ok).take_errors();
+    if (Status ok = apply_command_line_defines(*spec, options.defines); !ok) return std::move(ok).take_errors();
     auto plan = expand(*spec);
     if (!plan) return std::move(plan).take_errors();
     clock.lap("parse spec");
@@ -93,7 +125,7 @@ Result<BuildSummary> build(const BuildOptions& given) {
                                    options.log, options.cancelled};
     if (inputs.enabled() && !loaded->digest.empty()) {
         compile_options.inputs = &inputs;
-        compile_options.input_key = input_set_key(options.spec_path, loaded->digest);
+        compile_options.input_key = input_set_key(options.spec_path, loaded->digest, preprocessing_settings(*spec));
     }
     auto domain = compile_domain(std::move(spec).value(), std::move(plan).value(), compile_options);
     if (!domain) return std::move(domain).take_errors();

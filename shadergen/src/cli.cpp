@@ -79,6 +79,7 @@ std::optional<std::uint32_t> parse_raw_id(const DomainSpec& spec, const std::str
 
 struct BuildArgs {
     std::string spec, out, cache_dir, depfile, cpp_name, ns;
+    std::vector<std::string> defines;
     unsigned jobs = 0;
     bool no_cache = false, stats = false, verbose = false;
 };
@@ -93,6 +94,7 @@ int run_build(const BuildArgs& a, std::ostream& out, std::ostream& err) {
     options.depfile = a.depfile;
     options.cpp_name = a.cpp_name;
     options.cpp_namespace = a.ns;
+    options.defines = a.defines;
     options.write_stats = a.stats;
     options.verbose = a.verbose;
     options.log = [&err](const std::string& line) { err << "shadergen: " << line << std::endl; };
@@ -150,6 +152,10 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     build_cmd->add_option("--depfile", b.depfile, "Write a Make-style depfile listing the spec and every GLSL file read");
     build_cmd->add_option("--cpp-name", b.cpp_name, "Base name of the generated .h/.cpp (default: the domain name)");
     build_cmd->add_option("--namespace", b.ns, "C++ namespace of the generated code (default: the domain name)");
+    build_cmd->add_option("-D,--define", b.defines,
+                          "NAME=VALUE (or NAME, meaning 1) for every shader of the domain; repeatable; adds to and "
+                          "replaces the spec's \"defines\"")
+        ->allow_extra_args(false);
     build_cmd->add_flag("--stats", b.stats, "Also write stats.json: per-stage counts and per-permutation timings");
     build_cmd->add_flag("-v,--verbose", b.verbose, "One progress line per compiled source");
 

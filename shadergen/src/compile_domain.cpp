@@ -8,6 +8,7 @@
 
 #include "cache.h"
 #include "compiled_domain.h"
+#include "defines.h"
 #include "error_grouping.h"
 #include "glsl_compiler.h"
 #include "input_cache.h"
@@ -69,8 +70,15 @@ std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan&
     return jobs;
 }
 
+// The domain's fixed defines, less those the job sets itself (a companion's own value wins).
 GlslSource source_of(const DomainSpec& spec, const CompileJob& job) {
-    return GlslSource{job.path, job.stage, spec.include_dirs, job.defines};
+    GlslSource source{job.path, job.stage, spec.include_dirs, job.defines, {}};
+    for (const std::string& fixed : spec.defines) {
+        bool own = std::any_of(job.defines.begin(), job.defines.end(),
+                               [&](const std::string& d) { return define_name(d) == define_name(fixed); });
+        if (!own) source.fixed_defines.push_back(fixed);
+    }
+    return source;
 }
 
 class DomainCompiler {

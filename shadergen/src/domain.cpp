@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "defines.h"
 #include "json.h"
 
 namespace shadergen {
@@ -38,13 +39,6 @@ namespace {
 
 using json::Type;
 using json::Value;
-
-bool is_identifier(std::string_view text) {
-    if (text.empty() || text.size() > 64) return false;
-    if (!(std::isalpha(static_cast<unsigned char>(text[0])) || text[0] == '_')) return false;
-    return std::all_of(text.begin(), text.end(),
-                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-}
 
 // Walks the JSON tree, checking shapes and collecting every problem with its line.
 class SpecReader {
@@ -179,14 +173,17 @@ public:
             return std::move(spec_);
         }
         reader_.only_keys(root, "spec",
-                          {"format", "name", "description", "uber_shader", "include_dirs", "companions", "raw",
-                           "optimised"});
+                          {"format", "name", "description", "uber_shader", "include_dirs", "defines", "companions",
+                           "raw", "optimised"});
         read_header(root);
         if (const Value* uber = reader_.member(root, "spec", "uber_shader", Type::object))
             spec_.uber = read_shader_file(*uber, "uber_shader");
         read_include_dirs(root);
+        if (const Value* defines = reader_.member(root, "spec", "defines", Type::object, false))
+            spec_.defines = read_define_map(*defines, "defines");
         read_companions(root);
         if (const Value* raw = reader_.member(root, "spec", "raw", Type::object)) read_raw(*raw);
+        check_fixed_defines(root);
         if (const Value* optimised = reader_.member(root, "spec", "optimised", Type::object))
             read_optimised(*optimised);
         return std::move(spec_);
@@ -253,12 +250,59 @@ private:
             else if (!companion.name.empty() && !names.insert(companion.name).second)
                 reader_.error(*item.find("name"), where + ".name", "companion \"" + companion.name + "\" is declared twice");
             companion.file = read_shader_file(item, where);
-            if (const Value* defines = reader_.member(item, where, "defines", Type::array, false))
-                companion.defines = read_identifier_list(*defines, where + ".defines");
+            if (const Value* defines = item.find("defines")) companion.defines = read_companion_defines(*defines, where);
             if (const Value* shared = reader_.member(item, where, "shared_layout", Type::boolean, false))
                 companion.shared_layout = shared->boolean;
             spec_.companions.push_back(std::move(companion));
         }
+    }
+
+    // {"NAME": "VALUE", ...} as "NAME=VALUE" strings, in the file's order.
+    std::vector<std::string> read_define_map(const Value& map, const std::string& where) {
+        std::vector<std::string> out;
+        for (const json::Member& m : map.object) {
+            std::string at = SpecReader::join(where, m.first);
+            std::string problem = define_name_problem(m.first);
+            if (!problem.empty()) {
+                reader_.error(m.second, at, problem);
+                continue;
+            }
+            if (m.second.type != Type::string) {
+                reader_.error(m.second, at,
+                              std::string("expected a string value, found ") + json::type_name(m.second.type) +
+                                  " (write \"" + m.first + "\": \"1\")");
+                continue;
+            }
+            if (problem = define_value_problem(m.second.string); !problem.empty()) {
+                reader_.error(m.second, at, problem);
+                continue;
+            }
+            out.push_back(m.first + "=" + m.second.string);
+        }
+        return out;
+    }
+
+    // A companion's "defines": identifiers (each = 1) or an object of values.
+    std::vector<std::string> read_companion_defines(const Value& defines, const std::string& where) {
+        if (defines.type == Type::object) return read_define_map(defines, where + ".defines");
+        if (defines.type == Type::array) return read_identifier_list(defines, where + ".defines");
+        reader_.error(defines, where + ".defines",
+                      std::string("expected an array of identifiers or an object of values, found ") +
+                          json::type_name(defines.type));
+        return {};
+    }
+
+    // A fixed define on a feature's macro would fight the feature: the feature's permutations
+    // would redefine it, and the others would have it on.
+    void check_fixed_defines(const Value& root) {
+        const Value* map = root.find("defines");
+        if (!map || map->type != Type::object) return;
+        for (const json::Member& m : map->object)
+            for (const RawFeature& feature : spec_.raw_features)
+                if (feature.define == m.first)
+                    reader_.error(m.second, SpecReader::join("defines", m.first),
+                                  m.first + " is the define of raw feature " + feature.name +
+                                      "; a fixed define cannot also be a feature");
     }
 
     std::vector<std::string> read_identifier_list(const Value& list, const std::string& where) {

@@ -9,6 +9,7 @@
 #include <regex>
 #include <sstream>
 
+#include "defines.h"
 #include "file_io.h"
 #include "sha256.h"
 
@@ -83,10 +84,11 @@ private:
     std::vector<InputRead> reads_;
 };
 
-std::string make_preamble(const std::vector<std::string>& defines) {
+std::string make_preamble(const GlslSource& source) {
     // The include extension is switched on here so that shader files need not name it.
     std::string preamble = "#extension GL_GOOGLE_include_directive : require\n";
-    for (const std::string& define : defines) preamble += "#define " + define + " 1\n";
+    for (const std::string& define : source.fixed_defines) preamble += define_line(define);
+    for (const std::string& define : source.defines) preamble += define_line(define);
     return preamble;
 }
 
@@ -129,7 +131,7 @@ constexpr auto kMessages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulka
 struct ShaderJob {
     explicit ShaderJob(const GlslSource& source)
         : name(source.path.lexically_normal().string()),
-          preamble(make_preamble(source.defines)),
+          preamble(make_preamble(source)),
           includer(source.path, source.include_dirs),
           shader(std::make_unique<glslang::TShader>(to_glslang(source.stage))) {}
 

@@ -20,7 +20,9 @@ struct GlslSource {
     std::filesystem::path path;                      // the shader file
     Stage stage = Stage::fragment;
     std::vector<std::filesystem::path> include_dirs; // searched after the including file's folder
-    std::vector<std::string> defines;                // each becomes `#define NAME 1`
+    std::vector<std::string> defines;                // "NAME" (= 1) or "NAME=VALUE" (defines.h)
+    // The domain's fixed defines, same form, ahead of `defines`; none has a name in `defines`.
+    std::vector<std::string> fixed_defines;
 };
 
 // One file the preprocessor looked at: opened (with the SHA-256 of the bytes it read) or

@@ -63,7 +63,8 @@ Result<LoadedSpec> load_spec_with_digest(const std::filesystem::path& spec_path)
     return LoadedSpec{std::move(spec).value(), bytes ? sha256_hex(*bytes) : std::string()};
 }
 
-std::string input_set_key(const std::filesystem::path& spec_path, std::string_view spec_digest) {
+std::string input_set_key(const std::filesystem::path& spec_path, std::string_view spec_digest,
+                          std::string_view settings) {
     std::error_code ec;
     std::filesystem::path cwd = std::filesystem::current_path(ec);
     return Sha256()
@@ -75,6 +76,7 @@ std::string input_set_key(const std::filesystem::path& spec_path, std::string_vi
         .field(ec ? std::string() : cwd.string())
         .field(spec_path.string())
         .field(spec_digest)
+        .field(settings)
         .finish_hex();
 }
 

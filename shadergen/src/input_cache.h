@@ -39,8 +39,11 @@ struct LoadedSpec {
 Result<LoadedSpec> load_spec_with_digest(const std::filesystem::path& spec_path);
 
 // The entry key of a build of the spec at `spec_path` (as given) whose bytes hash to
-// `spec_digest`, run from the current working folder by this version of the tools.
-std::string input_set_key(const std::filesystem::path& spec_path, std::string_view spec_digest);
+// `spec_digest`, run from the current working folder by this version of the tools with
+// `settings`: the text of every build option that changes preprocessing but is not in the
+// spec's bytes (the `--define`s), so that a build with other options never reuses the keys.
+std::string input_set_key(const std::filesystem::path& spec_path, std::string_view spec_digest,
+                          std::string_view settings);
 
 // Merges the reads of every preprocessed job into one sorted list. Fails (nullopt) when two
 // jobs saw different bytes for one path: a file changed during the build, so nothing may be

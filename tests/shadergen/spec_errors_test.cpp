@@ -75,7 +75,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "spec.json:9:42: error: raw.features[2].define: define HAS_A is already used by feature A"},
         ErrorCase{"unknown_key", replace(kBase, "\"format\": 1", "\"formats\": 1"),
                   "spec.json:2:14: error: spec: unknown key \"formats\" (expected one of: format, name, description, "
-                  "uber_shader, include_dirs, companions, raw, optimised)"},
+                  "uber_shader, include_dirs, defines, companions, raw, optimised)"},
         ErrorCase{"bit_out_of_range", replace(kBase, "\"C\", \"bit\": 2", "\"C\", \"bit\": 3"),
                   "spec.json:9:29: error: raw.features[2].bit: bit must be an integer from 0 to 2, found 3"},
         // Once undefined behaviour (a double far outside int64 converted before the range test).
@@ -99,6 +99,25 @@ INSTANTIATE_TEST_SUITE_P(
                   "spec.json:11:62: error: expected a quoted key"},
         ErrorCase{"nesting_limit", std::string(40, '[') + std::string(40, ']'),
                   "spec.json:1:33: error: nesting deeper than 32 levels"},
+        ErrorCase{"define_value_not_a_string", replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"N\": 4 },"),
+                  "spec.json:2:34: error: defines.N: expected a string value, found a number (write \"N\": \"1\")"},
+        ErrorCase{"define_name_not_an_identifier",
+                  replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"A-B\": \"1\" },"),
+                  "spec.json:2:36: error: defines.A-B: \"A-B\" is not an identifier ([A-Za-z_][A-Za-z0-9_]*, at most 64)"},
+        ErrorCase{"define_name_reserved",
+                  replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"GL_X\": \"1\" },"),
+                  "spec.json:2:37: error: defines.GL_X: \"GL_X\" is reserved by GLSL (a GL_ prefix or a double "
+                  "underscore)"},
+        ErrorCase{"define_value_two_lines",
+                  replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"X\": \"1\\n2\" },"),
+                  "spec.json:2:34: error: defines.X: the value holds a line break or another control character; it "
+                  "must fit on the #define line"},
+        ErrorCase{"define_of_a_feature",
+                  replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"HAS_B\": \"1\" },"),
+                  "spec.json:2:38: error: defines.HAS_B: HAS_B is the define of raw feature B; a fixed define cannot "
+                  "also be a feature"},
+        ErrorCase{"defines_not_an_object", replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": [\"X\"],"),
+                  "spec.json:2:27: error: spec.defines: expected an object, found an array"},
         ErrorCase{"impossible_optimised_variant",
                   replace(kBase, "\"raw_features\": [\"A\", \"C\"]", "\"raw_features\": [\"A\", \"B\"]"),
                   "(no error)"}),

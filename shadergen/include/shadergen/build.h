@@ -21,6 +21,10 @@ struct BuildOptions {
     std::filesystem::path depfile;    // empty: none. Make syntax, target = the generated header
     std::string cpp_name;             // base name of the generated .h/.cpp; empty: the domain name
     std::string cpp_namespace;        // C++ namespace of the generated code; empty: the domain name
+    // `--define` arguments, "NAME=VALUE" or "NAME" (= 1): they add to and replace the spec's
+    // top-level "defines", so they reach every shader of the domain. They change the outputs
+    // only through the preprocessed text, which is what the content cache is keyed on.
+    std::vector<std::string> defines;
     bool write_stats = false;         // also write <out>/stats.json (timings: not deterministic)
     bool verbose = false;             // one progress line per compiled source
     // Receives progress lines (the CLI prints them on stderr). May be empty.

@@ -71,6 +71,7 @@ struct ShaderFile {
 struct CompanionSpec {
     std::string name;
     ShaderFile file;
+    // "NAME" (= 1) or "NAME=VALUE"; they replace a top-level define of the same name.
     std::vector<std::string> defines;
     // True: the companion runs in the uber-shader's pipeline layout (a tile vertex shader), so
     // it takes part in the cross-permutation layout check and the merged layout. False: it
@@ -84,6 +85,9 @@ struct DomainSpec {
     std::string description;
     ShaderFile uber;
     std::vector<std::filesystem::path> include_dirs;
+    // Fixed defines, "NAME=VALUE", in spec order: every shader of the domain (uber-shader and
+    // companions) is compiled with them. None names a raw feature's define.
+    std::vector<std::string> defines;
     std::vector<CompanionSpec> companions;
     std::vector<RawFeature> raw_features;      // indexed by bit
     std::vector<ImpossibleSet> impossible;

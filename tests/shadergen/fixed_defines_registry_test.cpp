@@ -1,0 +1,21 @@
+// The fixed-defines fixture built by the CMake function with DEFINES (tests/shadergen/CMakeLists.txt:
+// shadergen_add_permutations(fixed_defines_permutations ... DEFINES MAX_LIGHTS=2 GROUP_SIZE=16)):
+// the arguments reach shadergen as --define and every shader is compiled with them.
+#include <gtest/gtest.h>
+
+#include <fixed_defines_permutations.h>
+
+namespace {
+
+TEST(FixedDefinesRegistry, CMakeDefinesReachEveryShader) {
+    const shadergen::Registry& r = fixed::registry();
+    ASSERT_EQ(r.push_constants.size(), 1u);
+    EXPECT_EQ(r.push_constants[0].size, 2u * 16u) << "DEFINES MAX_LIGHTS=2 replaced the spec's 4";
+    const shadergen::CompanionShader* prepass = r.companion("prepass");
+    const shadergen::CompanionShader* cull = r.companion("cull");
+    ASSERT_TRUE(prepass && cull);
+    EXPECT_EQ(prepass->shader.reflection.local_size[0], 16u) << "DEFINES GROUP_SIZE=16 replaced the spec's 64";
+    EXPECT_EQ(cull->shader.reflection.local_size[0], 256u) << "the companion's own GROUP_SIZE still wins";
+}
+
+}  // namespace
