@@ -2,8 +2,8 @@
 // in one process (issue 4, target 2). For each comparison it prints a markdown table on stdout
 // and writes a bar chart; DIR/results.json holds every number. Progress goes to stderr.
 //
-//   tilelight_sweep [--frames N] [--out DIR] [--sizes 720p,1080p,1440p] [--device ...] [--quick]
-//                   [--update-doc docs/results.md]
+//   tilelight_sweep [--frames N] [--out DIR] [--sizes 720p,1080p,1440p] [--cameras default,...]
+//                   [--msaa auto,1] [--only ID,...] [--device ...] [--quick] [--update-doc docs/results.md]
 
 #include "sweep/doc_update.h"
 #include "sweep/measurement.h"
@@ -21,6 +21,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -83,6 +84,32 @@ std::map<std::string, std::string> report_comparisons(const SweepPlan& plan, con
   return sections;
 }
 
+// Round-robin within each frame size (the sizes in the order they first appear): every renderer
+// of a group is alive at once, and a group of 1440p or 4K renderers at every MSAA mode and camera
+// is as much memory as should be held together.
+std::vector<Measurement> measure_by_size(const Context& context, const std::vector<RendererOptions>& configurations,
+                                         std::uint32_t frames) {
+  const Scene scene = make_demo_scene();
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> sizes;
+  for (const RendererOptions& o : configurations) {
+    if (std::find(sizes.begin(), sizes.end(), std::pair(o.width, o.height)) == sizes.end()) {
+      sizes.emplace_back(o.width, o.height);
+    }
+  }
+  std::vector<Measurement> measurements;
+  for (const auto& [width, height] : sizes) {
+    std::vector<RendererOptions> group;
+    for (const RendererOptions& o : configurations) {
+      if (o.width == width && o.height == height) group.push_back(o);
+    }
+    std::cerr << fmt::format("{}x{}: {} configuration(s)\n", width, height, group.size());
+    for (Measurement& m : measure_round_robin(context, scene, group, frames, std::cerr)) {
+      measurements.push_back(std::move(m));
+    }
+  }
+  return measurements;
+}
+
 int run_sweep(const SweepOptions& options) {
   ContextOptions context_options;
   context_options.device = options.device;
@@ -93,13 +120,12 @@ int run_sweep(const SweepOptions& options) {
   if (!options.update_doc.empty()) {
     (void)replace_marked_sections(read_document(options.update_doc), empty_sections(plan), options.update_doc);
   }
-  const std::vector<Measurement> measurements =
-      measure_round_robin(context, make_demo_scene(), plan.configurations, options.frames, std::cerr);
+  const std::vector<Measurement> measurements = measure_by_size(context, plan.configurations, options.frames);
 
   const char* threads = std::getenv("LP_NUM_THREADS");
   const std::string run_line = fmt::format(
-      "Device: {}, {}x MSAA, median of {} frame(s) after 1 warm-up frame (configurations measured round-robin), "
-      "LP_NUM_THREADS={}\n",
+      "Device: {}, {}x MSAA where no row says otherwise, median of {} frame(s) after 1 warm-up frame "
+      "(configurations of one frame size measured round-robin), LP_NUM_THREADS={}\n",
       context.device_name(), measurements.front().msaa_samples, options.frames,
       threads != nullptr ? threads : "(default)");
   const std::map<std::string, std::string> sections = report_comparisons(plan, measurements, run_line, files);

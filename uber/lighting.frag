@@ -14,6 +14,14 @@
 //                    all samples are equal and sample 0 alone gives the same average.
 // Each feature is one call into the include library with the same arguments in every
 // permutation, so the arithmetic that does run is identical to the full shader's.
+//
+// DYNAMIC_BRANCHING builds the per-pixel baseline instead (tilelight's "dynamic" light pass):
+// every feature compiled in, as in the naive pass, but each taken only where this pixel needs
+// it, decided per pixel with the same tests the tile classifier applies per tile: no sun term
+// and no shadow lookups where the pixel does not face the sun, every sample shaded only where
+// the pixel's samples may differ (its MSAA-edge bits). Sky, fade and scattering already branch
+// per pixel inside their functions. Skipped work is exactly the identity there (the same
+// contract the permutations rely on), so the result equals the naive pass.
 
 // shadergen enables #include itself; naming it here keeps the file compilable by plain
 // glslangValidator -I<include dir> as well.
@@ -27,6 +35,18 @@
 #include "world_position.glsl"
 
 layout(location = 0) out vec4 out_color;
+
+#ifdef DYNAMIC_BRANCHING
+#define SUN_LIGHT
+#define SOFT_SHADOW
+#define SHADOW_FADE
+#define LIGHT_SCATTERING
+#define MSAA_EDGE
+#define SKY
+const bool PER_PIXEL_BRANCHES = true;
+#else
+const bool PER_PIXEL_BRANCHES = false; // the tile's class decided: every test below folds away
+#endif
 
 #if defined(SOLID_SHADOW) && defined(SOFT_SHADOW)
 #error "SOLID_SHADOW and SOFT_SHADOW are mutually exclusive: such a tile is impossible"
@@ -54,8 +74,10 @@ vec3 shade_geometry(GSample g, ivec2 pixel)
     float view_depth = linear_view_depth(world_pos);
     vec3 colour = g.prelit;
 #ifdef SUN_LIGHT
-    vec3 sun = sun_surface_radiance(g.albedo, g.faces_sun, g.normal, world_pos, g.spec_amount, g.spec_power);
-    colour += sun * sun_visibility(world_pos, view_depth);
+    if (!PER_PIXEL_BRANCHES || g.faces_sun) {
+        vec3 sun = sun_surface_radiance(g.albedo, g.faces_sun, g.normal, world_pos, g.spec_amount, g.spec_power);
+        colour += sun * sun_visibility(world_pos, view_depth);
+    }
 #endif
 #ifdef LIGHT_SCATTERING
     colour = light_scattering_apply(colour, view_depth);
@@ -95,7 +117,8 @@ void main()
 {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
 #ifdef MSAA_EDGE
-    vec3 colour = shade_all_samples(pixel);
+    vec3 colour = !PER_PIXEL_BRANCHES || gbuffer_pixel_is_edge(pixel) ? shade_all_samples(pixel)
+                                                                       : shade_sample(pixel, 0);
 #else
     vec3 colour = shade_sample(pixel, 0);
 #endif

@@ -12,7 +12,7 @@ if(NOT rc EQUAL 0)
 endif()
 
 foreach(name IN ITEMS results.json permutations.png tile_size.png index_path.png coalescing.png
-                      primitive.png resolution.png stages.png)
+                      primitive.png resolution.png stages.png baselines.png)
   if(NOT EXISTS "${OUT}/${name}")
     message(FATAL_ERROR "tilelight_sweep --quick did not write ${OUT}/${name}")
   endif()
@@ -26,7 +26,9 @@ foreach(heading IN ITEMS "### Optimised vs raw permutations (64x36)" "### Tile s
                          "### CPU patching vs GPU-driven index build (64x36)"
                          "### Coalesced vs uncoalesced tiles (64x36)" "### Point sprites vs triangle pairs (64x36)"
                          "### Resolution scaling, naive vs classified"
-                         "### Per-stage cost, naive vs classified (64x36)" "| 96x54 |")
+                         "### Per-stage cost, naive vs classified (64x36)" "| 96x54 |"
+                         "### Classified vs per-pixel branching (dynamic) vs naive" "| 1x | 96x54 | closeup |"
+                         "| 4x MSAA, 96x54 | 6 |")
   string(FIND "${stdout}" "${heading}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "tilelight_sweep --quick printed no '${heading}'\nstdout:\n${stdout}")
@@ -47,7 +49,7 @@ if(NOT at EQUAL -1)
   message(FATAL_ERROR "tilelight_sweep --update-doc left a 1280x720 row in ${OUT}/results.md")
 endif()
 
-# Every configuration must still draw the classified frame equal to the naive one.
+# Every configuration must still draw the classified frame, and the dynamic one, equal to the naive one.
 file(READ "${OUT}/results.json" json)
 string(JSON count LENGTH "${json}" configurations)
 math(EXPR last "${count} - 1")
@@ -56,5 +58,9 @@ foreach(i RANGE ${last})
   string(JSON differ GET "${json}" configurations ${i} equivalence pixels_different)
   if(NOT differ EQUAL 0)
     message(FATAL_ERROR "tilelight_sweep --quick: ${key}: ${differ} pixels differ between classified and naive")
+  endif()
+  string(JSON differ GET "${json}" configurations ${i} dynamic_equivalence pixels_different)
+  if(NOT differ EQUAL 0)
+    message(FATAL_ERROR "tilelight_sweep --quick: ${key}: ${differ} pixels differ between dynamic and naive")
   endif()
 endforeach()

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <split_second_shaders.h>
+
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
@@ -31,7 +34,12 @@ Measurement finish(const Run& run, const RendererOptions& options, std::uint32_t
   m.primitives_coalesced = run.last.stats.primitives_coalesced;
   m.rectangles = run.last.stats.rectangles;
   m.primitive = run.renderer->tile_primitive();
-  m.equivalence = app::compare_frames(run.renderer->read_classified(), run.renderer->read_naive());
+  const std::vector<std::uint8_t> ids = run.renderer->raw_tile_ids();
+  m.sky_tiles = static_cast<std::uint32_t>(
+      std::count_if(ids.begin(), ids.end(), [](std::uint8_t id) { return (id & split_second::raw_bit::SKY) != 0; }));
+  const RgbaImage naive = run.renderer->read_naive();
+  m.equivalence = app::compare_frames(run.renderer->read_classified(), naive);
+  m.dynamic_equivalence = app::compare_frames(run.renderer->read_dynamic(), naive);
   return m;
 }
 
@@ -42,10 +50,16 @@ double Measurement::speedup() const {
   return classified > 0 ? timings.naive_light / classified : 0.0;
 }
 
+double Measurement::speedup_over_dynamic() const {
+  const double classified = classified_light();
+  return classified > 0 ? timings.dynamic_light / classified : 0.0;
+}
+
 std::string configuration_key(const RendererOptions& o) {
-  return fmt::format("{}x{} tile {} {} {} {} {}", o.width, o.height, o.tile_size,
+  return fmt::format("{}x{} tile {} {} {} {} {} camera {} msaa {}", o.width, o.height, o.tile_size,
                      o.path == IndexPath::gpu ? "gpu" : "cpu", o.raw_permutations ? "raw" : "optimised",
-                     o.coalesce ? "coalesced" : "uncoalesced", o.primitive ? to_string(*o.primitive) : "auto");
+                     o.coalesce ? "coalesced" : "uncoalesced", o.primitive ? to_string(*o.primitive) : "auto",
+                     o.camera, o.msaa == 0 ? std::string("auto") : std::to_string(o.msaa));
 }
 
 std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,
@@ -75,8 +89,8 @@ std::vector<Measurement> measure_round_robin(const Context& context, const Scene
   for (std::size_t i = 0; i < n; ++i) {
     measurements.push_back(finish(runs[i], configurations[i], frames));
     const Measurement& m = measurements.back();
-    progress << fmt::format("[{}/{}] {}: speed-up {:.2f}x, {} pixels differ\n", i + 1, n, m.key, m.speedup(),
-                            m.equivalence.pixels_different);
+    progress << fmt::format("[{}/{}] {}: speed-up {:.2f}x over naive, {:.2f}x over dynamic; {} pixels differ\n",
+                            i + 1, n, m.key, m.speedup(), m.speedup_over_dynamic(), m.equivalence.pixels_different);
     runs[i].renderer.reset();  // its memory is not needed any more
   }
   return measurements;

@@ -23,8 +23,10 @@ struct Measurement {
   std::uint32_t tiles = 0;
   TilePrimitive primitive = TilePrimitive::triangles;  // what the tile pass drew (auto resolved)
   std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0, rectangles = 0;
+  std::uint32_t sky_tiles = 0;  // tiles with the SKY property: cheap for every method
   app::MedianTimings timings;
-  app::Equivalence equivalence;
+  app::Equivalence equivalence;          // classified vs naive
+  app::Equivalence dynamic_equivalence;  // dynamic vs naive
 
   // The index build of whichever path ran (the other one is 0).
   double index_build() const { return timings.index_build_cpu + timings.index_build_gpu; }
@@ -32,10 +34,13 @@ struct Measurement {
   double classified_light() const { return timings.classification + index_build() + timings.tiled_light; }
   // naive light / classified_light(); 0 when nothing was timed.
   double speedup() const;
+  // dynamic light / classified_light(): the speed-up over per-pixel branching.
+  double speedup_over_dynamic() const;
 };
 
-// "1280x720 tile 4 cpu optimised coalesced auto": names a configuration in keys and progress
-// lines; the last word is the primitive asked for (auto, points or triangles).
+// "1280x720 tile 4 cpu optimised coalesced auto camera default msaa auto": names a configuration
+// in keys and progress lines; the word after "coalesced" is the primitive asked for (auto, points
+// or triangles).
 std::string configuration_key(const RendererOptions& options);
 
 // Makes one renderer per configuration and renders one untimed warm-up frame with each, then

@@ -11,6 +11,7 @@ constexpr const char* kValueAxis = "median time per frame (ms)";
 Rgba8 colour(std::size_t palette_index) { return plot::series_colour(palette_index); }
 const Rgba8 kClassified = colour(3);
 const Rgba8 kNaive = colour(4);
+const Rgba8 kDynamic = colour(5);
 
 std::string with_speedup(const Comparison& c, const Measurement& m) {
   return fmt::format("{}: {:.2f}x", row_label(c.facet, m), m.speedup());
@@ -45,6 +46,21 @@ plot::BarChart totals_per_size(const Comparison& c, const std::vector<const Meas
   return chart;
 }
 
+plot::BarChart three_methods(const Comparison& c, const std::vector<const Measurement*>& rows) {
+  plot::BarChart chart;
+  chart.title = c.title;
+  chart.category_axis = "MSAA, size, camera: speed-up over naive / over dynamic";
+  chart.value_axis = kValueAxis;
+  chart.series = {"classified (classification + index build + tiled light)", "dynamic light", "naive light"};
+  chart.colours = {kClassified, kDynamic, kNaive};
+  for (const Measurement* m : rows) {
+    chart.categories.push_back(
+        fmt::format("{}: {:.2f}x / {:.2f}x", row_label(c.facet, *m), m->speedup(), m->speedup_over_dynamic()));
+    chart.values.push_back({m->classified_light(), m->timings.dynamic_light, m->timings.naive_light});
+  }
+  return chart;
+}
+
 plot::BarChart table_4_2(const Comparison& c, const Measurement& m) {
   plot::BarChart chart;
   chart.title = fmt::format("{}: {:.2f}x", c.title, m.speedup());
@@ -67,6 +83,7 @@ plot::BarChart comparison_chart(const Comparison& comparison, const std::vector<
   switch (comparison.facet) {
     case Facet::resolution: return totals_per_size(comparison, rows);
     case Facet::stages: return table_4_2(comparison, *rows.front());
+    case Facet::baselines: return three_methods(comparison, rows);
     default: return stage_breakdown(comparison, rows);
   }
 }

@@ -20,6 +20,7 @@ Json timings_json(const app::MedianTimings& t) {
   j["index_build_gpu"] = round3(t.index_build_gpu);
   j["tiled_light"] = round3(t.tiled_light);
   j["naive_light"] = round3(t.naive_light);
+  j["dynamic_light"] = round3(t.dynamic_light);
   return j;
 }
 
@@ -30,6 +31,8 @@ Json measurement_json(const Measurement& m) {
   j["width"] = o.width;
   j["height"] = o.height;
   j["msaa_samples"] = m.msaa_samples;
+  j["camera"] = o.camera;
+  j["sky_tiles"] = m.sky_tiles;
   j["tile_size"] = o.tile_size;
   j["path"] = o.path == IndexPath::gpu ? "gpu" : "cpu";
   j["permutations"] = o.raw_permutations ? "raw" : "optimised";
@@ -42,8 +45,11 @@ Json measurement_json(const Measurement& m) {
   j["timings_ms"] = timings_json(m.timings);
   j["classified_light_ms"] = round3(m.classified_light());
   j["speedup"] = std::round(m.speedup() * 100.0) / 100.0;
+  j["speedup_over_dynamic"] = std::round(m.speedup_over_dynamic() * 100.0) / 100.0;
   j["equivalence"] = {{"pixels_different", m.equivalence.pixels_different},
                       {"max_abs_difference", m.equivalence.max_abs_difference}};
+  j["dynamic_equivalence"] = {{"pixels_different", m.dynamic_equivalence.pixels_different},
+                              {"max_abs_difference", m.dynamic_equivalence.max_abs_difference}};
   return j;
 }
 

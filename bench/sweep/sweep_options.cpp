@@ -43,6 +43,21 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
   cli.add_option("--sizes", sizes, "frame sizes: 720p, 1080p, 1440p or WxH; the first is the comparisons' size")
       ->delimiter(',')
       ->capture_default_str();
+  std::vector<std::string> msaa{"auto", "1"};
+  options.cameras = {"default", "low", "street", "closeup", "shadow", "sky"};
+  cli.add_option("--cameras", options.cameras, "cameras of the baseline comparison (tilelight --list-cameras)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cli.add_option("--msaa", msaa, "G-buffer sample counts of the baseline comparison: auto, 1, 2, 4, 8, 16")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"auto", "1", "2", "4", "8", "16"}))
+      ->capture_default_str();
+  cli.add_option("--only", options.only,
+                 "run only these comparisons: permutations, tile_size, index_path, coalescing, primitive, "
+                 "resolution, stages, baselines (default: all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"permutations", "tile_size", "index_path", "coalescing", "primitive", "resolution",
+                             "stages", "baselines"}));
   cli.add_option("--device", options.device, "Vulkan device: index or name substring (default: lavapipe)");
   cli.add_option("--update-doc", options.update_doc,
                  "markdown file whose <!-- sweep:ID --> sections get the new tables (docs/results.md)");
@@ -60,6 +75,8 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
   }
   options.sizes.clear();
   for (const std::string& s : sizes) options.sizes.push_back(parse_frame_size(s));
+  options.msaa.clear();
+  for (const std::string& m : msaa) options.msaa.push_back(m == "auto" ? 0u : static_cast<std::uint32_t>(std::stoul(m)));
   return true;
 }
 

@@ -19,6 +19,12 @@ struct SweepOptions {
   // The first size is the one every design-choice comparison runs at; all of them make the
   // resolution comparison.
   std::vector<FrameSize> sizes;
+  // The baseline comparison (classified vs dynamic vs naive) runs at every size, for every one
+  // of these cameras and G-buffer sample counts (0 = auto, as tilelight --msaa auto).
+  std::vector<std::string> cameras;
+  std::vector<std::uint32_t> msaa;
+  // The comparisons to run, by id (sweep_plan.h); empty = all.
+  std::vector<std::string> only;
   std::string device;  // as tilelight --device: "" = lavapipe, an index or a name substring
   bool quick = false;
   // A markdown file whose marked sections (see doc_update.h) get the new tables; "" = none.

@@ -9,12 +9,13 @@ namespace {
 
 class PlanBuilder {
  public:
-  explicit PlanBuilder(RendererOptions base) : base_(std::move(base)) {}
+  PlanBuilder(RendererOptions base, std::vector<std::string> only) : base_(std::move(base)), only_(std::move(only)) {}
 
   // Adds a comparison whose rows are the base configuration changed by each of `variants`.
   template <typename Variant>
   void compare(Facet facet, std::string id, std::string title, const std::vector<Variant>& variants,
                void (*apply)(RendererOptions&, const Variant&)) {
+    if (!only_.empty() && std::find(only_.begin(), only_.end(), id) == only_.end()) return;
     Comparison c{facet, std::move(id), std::move(title), {}};
     for (const Variant& v : variants) {
       RendererOptions o = base_;
@@ -36,6 +37,7 @@ class PlanBuilder {
   }
 
   RendererOptions base_;
+  std::vector<std::string> only_;
   SweepPlan plan_;
 };
 
@@ -46,7 +48,7 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
   base.width = options.sizes.front().width;
   base.height = options.sizes.front().height;
   const std::string at = fmt::format(" ({}x{})", base.width, base.height);
-  PlanBuilder b(base);
+  PlanBuilder b(base, options.only);
   b.compare<bool>(Facet::permutations, "permutations", "Optimised vs raw permutations" + at, {false, true},
                   [](RendererOptions& o, const bool& raw) { o.raw_permutations = raw; });
   b.compare<std::uint32_t>(Facet::tile_size, "tile_size", "Tile size 4 vs 8 vs 16" + at, {4, 8, 16},
@@ -69,6 +71,25 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
                        });
   b.compare<bool>(Facet::stages, "stages", "Per-stage cost, naive vs classified" + at, {true},
                   [](RendererOptions&, const bool&) {});
+  // Every MSAA mode, size and camera: the rows are grouped by MSAA mode, then size.
+  struct View {
+    std::uint32_t msaa;
+    FrameSize size;
+    std::string camera;
+  };
+  std::vector<View> views;
+  for (std::uint32_t msaa : options.msaa) {
+    for (const FrameSize& size : options.sizes) {
+      for (const std::string& camera : options.cameras) views.push_back({msaa, size, camera});
+    }
+  }
+  b.compare<View>(Facet::baselines, "baselines", "Classified vs per-pixel branching (dynamic) vs naive", views,
+                  [](RendererOptions& o, const View& v) {
+                    o.msaa = v.msaa;
+                    o.width = v.size.width;
+                    o.height = v.size.height;
+                    o.camera = v.camera;
+                  });
   return b.take();
 }
 
@@ -83,6 +104,7 @@ std::string row_label(Facet facet, const Measurement& m) {
       return fmt::format("{} ({})", to_string(m.primitive), o.primitive ? "asked for" : "auto");
     case Facet::resolution:
     case Facet::stages: return fmt::format("{}x{}", o.width, o.height);
+    case Facet::baselines: return fmt::format("{}x {}x{} {}", m.msaa_samples, o.width, o.height, o.camera);
   }
   return m.key;
 }

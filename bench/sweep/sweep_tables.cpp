@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 namespace tilelight::sweep {
 namespace {
 
@@ -39,10 +43,51 @@ std::string stages_table(const Measurement& m) {
   return out;
 }
 
+double median_of(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t mid = values.size() / 2;
+  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+std::string min_median_max(const std::vector<double>& values) {
+  return fmt::format("{:.2f}x / {:.2f}x / {:.2f}x", *std::min_element(values.begin(), values.end()),
+                     median_of(values), *std::max_element(values.begin(), values.end()));
+}
+
+// Classified vs dynamic vs naive per row, then per MSAA mode and size the spread over cameras.
+std::string baselines_table(const std::vector<const Measurement*>& rows) {
+  std::string out =
+      "| MSAA | size | camera | sky tiles | naive light | dynamic light | classified total | vs naive | "
+      "vs dynamic | pixels differ (classified, dynamic) |\n"
+      "|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  // (MSAA, size) -> speed-ups over the cameras, in row order.
+  std::vector<std::pair<std::string, std::pair<std::vector<double>, std::vector<double>>>> groups;
+  for (const Measurement* m : rows) {
+    const RendererOptions& o = m->options;
+    out += fmt::format("| {}x | {}x{} | {} | {:.0f} % | {} | {} | {} | {:.2f}x | {:.2f}x | {}, {} |\n", m->msaa_samples,
+                       o.width, o.height, o.camera, m->tiles > 0 ? 100.0 * m->sky_tiles / m->tiles : 0.0,
+                       ms(m->timings.naive_light), ms(m->timings.dynamic_light), ms(m->classified_light()),
+                       m->speedup(), m->speedup_over_dynamic(), m->equivalence.pixels_different,
+                       m->dynamic_equivalence.pixels_different);
+    const std::string group = fmt::format("{}x MSAA, {}x{}", m->msaa_samples, o.width, o.height);
+    if (groups.empty() || groups.back().first != group) groups.push_back({group, {}});
+    groups.back().second.first.push_back(m->speedup());
+    groups.back().second.second.push_back(m->speedup_over_dynamic());
+  }
+  out += "\nSpeed-up of the classified light path over the cameras, min / median / max:\n\n"
+         "| MSAA, size | cameras | vs naive | vs dynamic |\n|---|---:|---|---|\n";
+  for (const auto& [group, speedups] : groups) {
+    out += fmt::format("| {} | {} | {} | {} |\n", group, speedups.first.size(), min_median_max(speedups.first),
+                       min_median_max(speedups.second));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string markdown_table(const Comparison& comparison, const std::vector<const Measurement*>& rows) {
   if (comparison.facet == Facet::stages && !rows.empty()) return stages_table(*rows.front());
+  if (comparison.facet == Facet::baselines && !rows.empty()) return baselines_table(rows);
   return configurations_table(comparison, rows);
 }
 

@@ -31,9 +31,15 @@ CliResult run_cli(std::vector<std::string> args) {
   return {code, out.str(), err.str()};
 }
 
-const char* const kOutputs[] = {"frame_classified.png", "frame_naive.png", "tile_classes.png", "report.json"};
+const char* const kOutputs[] = {"frame_classified.png", "frame_naive.png", "frame_dynamic.png", "tile_classes.png",
+                                "report.json"};
 
-TEST(TilelightCli, WritesTheFourFilesAndTheReportFields) {
+nlohmann::json read_report(const fs::path& out) {
+  std::ifstream file(out / "report.json");
+  return nlohmann::json::parse(file);
+}
+
+TEST(TilelightCli, WritesTheFiveFilesAndTheReportFields) {
   const fs::path out = scratch_dir() / "out";
   const CliResult r = run_cli({"--width", "200", "--height", "120", "--frames", "2", "--validation", "--out",
                                out.string()});
@@ -69,7 +75,8 @@ TEST(TilelightCli, WritesTheFourFilesAndTheReportFields) {
   EXPECT_NE(r.out.find(fmt::format("tiles 1500, points 1500 -> {} coalesced ({} rectangles);", coalesced, rectangles)),
             std::string::npos)
       << r.out;
-  for (const char* t : {"gbuffer", "shadow_map", "classification", "index_build_cpu", "tiled_light", "naive_light"}) {
+  for (const char* t :
+       {"gbuffer", "shadow_map", "classification", "index_build_cpu", "tiled_light", "naive_light", "dynamic_light"}) {
     ASSERT_TRUE(report["timings_ms"].contains(t)) << t;
     EXPECT_GE(report["timings_ms"][t].get<double>(), 0.0) << t;
     // One figure per timed frame; with two frames the median is their mean.
@@ -78,11 +85,69 @@ TEST(TilelightCli, WritesTheFourFilesAndTheReportFields) {
     EXPECT_NEAR(report["timings_ms"][t].get<double>(), (frames[0].get<double>() + frames[1].get<double>()) / 2, 0.002)
         << t;
   }
+  EXPECT_GT(report["timings_ms"]["dynamic_light"].get<double>(), 0.0);
+  EXPECT_EQ(report["baselines"], "both");
   EXPECT_EQ(report["equivalence"]["pixels_different"], 0);
+  EXPECT_EQ(report["equivalence"]["reference"], "naive");
+  EXPECT_EQ(report["dynamic_equivalence"]["pixels_different"], 0);
+  for (const char* column : {"naive", "dynamic", "classified"}) {
+    EXPECT_NE(r.out.find(column), std::string::npos) << r.out;
+  }
+  EXPECT_NE(r.out.find("speed-up of the light pass vs naive: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("speed-up of the light pass vs dynamic: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; dynamic vs naive: 0 differ (max 0)"), std::string::npos) << r.out;
   // Nothing temporary left beside the results.
   for (const auto& entry : fs::directory_iterator(out)) {
     EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
   }
+}
+
+// No MSAA: a single-sampled G-buffer read by the split_second_1x shaders, validation clean, the
+// same frame from every method and no tile with the MSAA_EDGE property.
+TEST(TilelightCli, NoMsaaRendersSingleSampledAndEqual) {
+  const fs::path out = scratch_dir() / "out";
+  const CliResult r = run_cli({"--width", "200", "--height", "120", "--msaa", "1", "--path", "gpu", "--validation",
+                               "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json report = read_report(out);
+  EXPECT_EQ(report["msaa_samples"], 1);
+  EXPECT_EQ(report["raw_property_tiles"]["MSAA_EDGE"], 0);
+  EXPECT_GT(report["raw_property_tiles"]["SUN_LIGHT"].get<int>(), 0);
+  EXPECT_EQ(report["equivalence"]["pixels_different"], 0);
+  EXPECT_EQ(report["dynamic_equivalence"]["pixels_different"], 0);
+  EXPECT_NE(r.out.find("200x120, 1x MSAA"), std::string::npos) << r.out;
+}
+
+// --baseline chooses the full-screen passes: one alone writes only its own frame and times only
+// its own column; the classified frame is compared with whichever ran.
+TEST(TilelightCli, BaselineChoosesThePassesTimed) {
+  const fs::path naive_out = scratch_dir() / "naive";
+  const CliResult naive = run_cli({"--width", "96", "--height", "64", "--baseline", "naive", "--out", naive_out.string()});
+  ASSERT_EQ(naive.exit_code, 0) << naive.err;
+  const nlohmann::json naive_report = read_report(naive_out);
+  EXPECT_EQ(naive_report["baselines"], "naive");
+  EXPECT_EQ(naive_report["timings_ms"]["dynamic_light"], 0.0);
+  EXPECT_GT(naive_report["timings_ms"]["naive_light"].get<double>(), 0.0);
+  EXPECT_TRUE(naive_report["dynamic_equivalence"].is_null());
+  EXPECT_EQ(naive_report["equivalence"]["reference"], "naive");
+  EXPECT_TRUE(fs::exists(naive_out / "frame_naive.png"));
+  EXPECT_FALSE(fs::exists(naive_out / "frame_dynamic.png"));
+  EXPECT_EQ(naive.out.find("vs dynamic"), std::string::npos) << naive.out;
+
+  const fs::path dynamic_out = scratch_dir() / "dynamic";
+  const CliResult dynamic =
+      run_cli({"--width", "96", "--height", "64", "--baseline", "dynamic", "--out", dynamic_out.string()});
+  ASSERT_EQ(dynamic.exit_code, 0) << dynamic.err;
+  const nlohmann::json dynamic_report = read_report(dynamic_out);
+  EXPECT_EQ(dynamic_report["timings_ms"]["naive_light"], 0.0);
+  EXPECT_GT(dynamic_report["timings_ms"]["dynamic_light"].get<double>(), 0.0);
+  EXPECT_EQ(dynamic_report["equivalence"]["reference"], "dynamic");
+  EXPECT_EQ(dynamic_report["equivalence"]["pixels_different"], 0);
+  EXPECT_FALSE(fs::exists(dynamic_out / "frame_naive.png"));
+  EXPECT_TRUE(fs::exists(dynamic_out / "frame_dynamic.png"));
+  EXPECT_NE(dynamic.out.find("classified vs dynamic: 0 pixels differ"), std::string::npos) << dynamic.out;
+
+  EXPECT_EQ(run_cli({"--baseline", "fastest", "--out", (scratch_dir() / "bad").string()}).exit_code, 2);
 }
 
 // Forced triangles: each rectangle is one primitive (a pair of triangles), so the report's
@@ -163,9 +228,9 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, TilelightBadInput,
     ::testing::Values(BadInput{"zero_width", {"--width", "0"}, "--width 0: the frame must be at least 1 pixel"},
                       BadInput{"huge_height", {"--height", "999999"}, "--height 999999: exceeds the maximum"},
-                      BadInput{"msaa_lavapipe_lacks", {"--msaa", "2"}, "--msaa 2: MSAA 2x is not supported by this device (supported for the G-buffer: 4x)"},
-                      BadInput{"msaa_single_sample", {"--msaa", "1"}, "--msaa 1: MSAA 1x is not available: the G-buffer is multisampled by design"},
-                      BadInput{"msaa_not_a_count", {"--msaa", "3"}, "--msaa 3"},
+                      BadInput{"msaa_lavapipe_lacks", {"--msaa", "2"},
+                               "--msaa 2: MSAA 2x is not supported by this device (supported for the G-buffer: 1x, 4x)"},
+                      BadInput{"msaa_not_a_count", {"--msaa", "3"}, "--msaa 3: expected auto, 1, 2, 4, 8 or 16"},
                       BadInput{"unknown_device", {"--device", "no-such-gpu"}, "no-such-gpu"},
                       BadInput{"unknown_camera", {"--camera", "moon"}, "unknown camera 'moon'"},
                       BadInput{"bad_path", {"--path", "fpga"}, "--path"},

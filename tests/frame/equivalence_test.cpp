@@ -1,6 +1,8 @@
 // Correctness criterion of the whole technique (DESIGN.md §1): for every pixel, the classified
 // render equals the naive render. One comparison checks classification conservativeness, the
 // LUT, every permutation drawn, the index buffers and the deferred draw patching together.
+// The dynamic baseline (one full-screen pass branching per pixel) must give the naive render
+// too: its skipped work is the same exact identity the permutations rely on.
 #include "frame_support.h"
 #include "test_support.h"
 #include "tilelight/scene.h"
@@ -9,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <numeric>
 #include <optional>
 
@@ -24,6 +27,7 @@ struct Case {
   const char* camera;
   std::uint32_t tile_size = 4;
   std::optional<TilePrimitive> primitive = std::nullopt;  // empty: auto, which is points on lavapipe
+  std::uint32_t msaa = 0;                                 // 0: auto, which is 4x on lavapipe
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
@@ -45,14 +49,29 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
   options.camera = c.camera;
   options.tile_size = c.tile_size;
   options.primitive = c.primitive;
+  options.msaa = c.msaa;
   TileRenderer renderer(context(), scene, options);
   ASSERT_EQ(renderer.tile_primitive(), c.primitive.value_or(TilePrimitive::points));
+  ASSERT_EQ(renderer.msaa_samples(), c.msaa == 0 ? 4u : c.msaa);
   const FrameResult frame = renderer.render_frame();
 
-  const FrameComparison cmp = compare(renderer.read_classified(), renderer.read_naive(), kEquivalenceTolerance);
+  const RgbaImage naive = renderer.read_naive();
+  const FrameComparison cmp = compare(renderer.read_classified(), naive, kEquivalenceTolerance);
   EXPECT_EQ(cmp.magenta_pixels, 0u) << "tiles left undrawn";
   EXPECT_EQ(cmp.pixels_over_tolerance, 0u) << cmp.first_difference << " (max difference " << cmp.max_abs_difference
                                            << ")";
+  const FrameComparison dynamic = compare(renderer.read_dynamic(), naive, kEquivalenceTolerance);
+  EXPECT_EQ(dynamic.magenta_pixels, 0u) << "dynamic pass left pixels undrawn";
+  EXPECT_EQ(dynamic.pixels_over_tolerance, 0u)
+      << "dynamic vs naive: " << dynamic.first_difference << " (max difference " << dynamic.max_abs_difference << ")";
+  EXPECT_GT(frame.timings.dynamic_light, 0.0);
+  if (renderer.msaa_samples() == 1) {
+    // One sample per pixel never differs from itself: no tile may need the MSAA-edge shader.
+    const std::vector<std::uint8_t> ids = renderer.raw_tile_ids();
+    EXPECT_EQ(std::count_if(ids.begin(), ids.end(),
+                            [](std::uint8_t id) { return (id & split_second::raw_bit::MSAA_EDGE) != 0; }),
+              0);
+  }
   // Every tile drawn exactly once: the per-class tile counts add up to the grid.
   const std::uint32_t drawn = std::accumulate(frame.stats.class_tiles.begin(), frame.stats.class_tiles.end(), 0u);
   EXPECT_EQ(drawn, renderer.grid().tile_count());
@@ -103,7 +122,17 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"cpu_triangles", 320, 180, IndexPath::cpu, false, true, "default", 4,
                            TilePrimitive::triangles},
                       Case{"gpu_triangles_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4,
-                           TilePrimitive::triangles}),
+                           TilePrimitive::triangles},
+                      // The views with little or no sky.
+                      Case{"cpu_street", 240, 136, IndexPath::cpu, false, true, "street"},
+                      Case{"gpu_closeup", 240, 136, IndexPath::gpu, false, true, "closeup"},
+                      // No MSAA: the single-sampled G-buffer and the split_second_1x shaders.
+                      Case{"cpu_1x", 320, 180, IndexPath::cpu, false, true, "default", 4, std::nullopt, 1},
+                      Case{"gpu_1x_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4, std::nullopt, 1},
+                      Case{"cpu_1x_raw", 256, 144, IndexPath::cpu, true, true, "default", 4, std::nullopt, 1},
+                      Case{"gpu_1x_low", 257, 131, IndexPath::gpu, false, true, "low", 4, std::nullopt, 1},
+                      Case{"cpu_1x_triangles", 200, 120, IndexPath::cpu, false, true, "closeup", 4,
+                           TilePrimitive::triangles, 1}),
     case_name);
 
 }  // namespace

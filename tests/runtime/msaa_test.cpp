@@ -1,5 +1,5 @@
-// MSAA choice: 2x where the device has it, else 4x; explicit requests the device lacks fail, and
-// so does 1x (the G-buffer is always multisampled).
+// MSAA choice: 2x where the device has it, else 4x, else 1x; 1x on request; explicit requests
+// the device lacks fail.
 #include "tilelight/context.h"
 #include "tilelight/error.h"
 #include "tilelight/msaa.h"
@@ -25,22 +25,17 @@ TEST(Msaa, AutoPrefersTwoThenFourThenMore) {
   EXPECT_EQ(choose_msaa(kFour | VK_SAMPLE_COUNT_2_BIT | VK_SAMPLE_COUNT_8_BIT, 0), VK_SAMPLE_COUNT_2_BIT);
   EXPECT_EQ(choose_msaa(kFour | VK_SAMPLE_COUNT_8_BIT, 0), VK_SAMPLE_COUNT_4_BIT);
   EXPECT_EQ(choose_msaa(VK_SAMPLE_COUNT_8_BIT, 0), VK_SAMPLE_COUNT_8_BIT);
-  EXPECT_EQ(error_of(0, 0),
-            "the device offers no multisampled G-buffer (colour and depth attachments that can also be sampled "
-            "with 2 or more samples)");
+  EXPECT_EQ(choose_msaa(VK_SAMPLE_COUNT_1_BIT, 0), VK_SAMPLE_COUNT_1_BIT);
 }
 
 TEST(Msaa, ExplicitRequestNamesValueAndSupportedCounts) {
-  EXPECT_EQ(choose_msaa(kFour, 4), VK_SAMPLE_COUNT_4_BIT);
-  EXPECT_EQ(error_of(kFour, 1),
-            "MSAA 1x is not available: the G-buffer is multisampled by design (the lighting and the "
-            "classification read it as sampler2DMS, and MSAA_EDGE is one of the tile features); supported for "
-            "the G-buffer: 4x");
-  EXPECT_EQ(error_of(kFour, 2), "MSAA 2x is not supported by this device (supported for the G-buffer: 4x)");
-  EXPECT_EQ(error_of(kFour, 3),
-            "MSAA 3x is not a sample count (use 0 for auto, or 2, 4, 8, 16, 32, 64; "
-            "supported for the G-buffer: 4x)");
-  EXPECT_NE(error_of(kFour, 128).find("not a sample count"), std::string::npos);
+  EXPECT_EQ(choose_msaa(kOneFour, 4), VK_SAMPLE_COUNT_4_BIT);
+  EXPECT_EQ(choose_msaa(kOneFour, 1), VK_SAMPLE_COUNT_1_BIT);
+  EXPECT_EQ(error_of(kOneFour, 2), "MSAA 2x is not supported by this device (supported for the G-buffer: 1x, 4x)");
+  EXPECT_EQ(error_of(kOneFour, 3),
+            "MSAA 3x is not a sample count (use 0 for auto, or 1, 2, 4, 8, 16, 32, 64; "
+            "supported for the G-buffer: 1x, 4x)");
+  EXPECT_NE(error_of(kOneFour, 128).find("not a sample count"), std::string::npos);
 }
 
 TEST(Msaa, SupportedCountsNeedEveryUse) {
@@ -49,13 +44,14 @@ TEST(Msaa, SupportedCountsNeedEveryUse) {
   limits.framebuffer_depth_samples = kOneFour | VK_SAMPLE_COUNT_2_BIT;
   limits.sampled_color_samples = kOneFour | VK_SAMPLE_COUNT_2_BIT;
   limits.sampled_depth_samples = kOneFour;  // no 2x for sampled depth
-  EXPECT_EQ(msaa_supported_counts(limits), kFour);  // and never 1x
+  EXPECT_EQ(msaa_supported_counts(limits), kOneFour);
 }
 
 TEST(MsaaOnLavapipe, AutoIsFourAndTwoOrEightFail) {
   Context context;
-  EXPECT_EQ(context.msaa_counts(), kFour);  // lavapipe: 1x and 4x only, and 1x is no G-buffer
+  EXPECT_EQ(context.msaa_counts(), kOneFour);  // lavapipe: 1x and 4x only
   EXPECT_EQ(context.choose_msaa(0), VK_SAMPLE_COUNT_4_BIT);
+  EXPECT_EQ(context.choose_msaa(1), VK_SAMPLE_COUNT_1_BIT);
   EXPECT_EQ(context.choose_msaa(4), VK_SAMPLE_COUNT_4_BIT);
   EXPECT_THROW(context.choose_msaa(2), Error);
   try {
@@ -63,7 +59,7 @@ TEST(MsaaOnLavapipe, AutoIsFourAndTwoOrEightFail) {
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(),
-                 "MSAA 8x is not supported by this device (supported for the G-buffer: 4x)");
+                 "MSAA 8x is not supported by this device (supported for the G-buffer: 1x, 4x)");
   }
 }
 

@@ -1,8 +1,8 @@
 #version 450
-// gbuffer_dump.comp -- copies every sample of the multisampled G-buffer into a buffer, as
-// stored, so the CPU reference classifier and tests can read it (multisampled images cannot be
-// copied to the host directly). Layout per pixel: for each sample, rt0, rt1, rt2, then
-// vec4(depth, 0, 0, 0): 16 floats per sample, pixels row-major.
+// gbuffer_dump.comp -- copies every sample of the G-buffer into a buffer, as stored, so the CPU
+// reference classifier and tests can read it (multisampled images cannot be copied to the host
+// directly; the single-sampled build reads its one sample the same way). Layout per pixel: for
+// each sample, rt0, rt1, rt2, then vec4(depth, 0, 0, 0): 16 floats per sample, pixels row-major.
 #extension GL_GOOGLE_include_directive : require
 #include "lighting_params.glsl"
 
@@ -19,13 +19,13 @@ void main()
     if (pixel.x >= size.x || pixel.y >= size.y) {
         return;
     }
-    int samples = textureSamples(gbuffer_normal_motion);
+    int samples = gbuffer_samples();
     uint base = uint((pixel.y * size.x + pixel.x) * samples) * 4u;
     for (int s = 0; s < samples; ++s) {
         uint at = base + uint(s) * 4u;
-        dump.texels[at + 0u] = texelFetch(gbuffer_albedo_spec, pixel, s);
-        dump.texels[at + 1u] = texelFetch(gbuffer_normal_motion, pixel, s);
-        dump.texels[at + 2u] = texelFetch(gbuffer_prelit_power, pixel, s);
-        dump.texels[at + 3u] = vec4(texelFetch(gbuffer_depth, pixel, s).r, 0.0, 0.0, 0.0);
+        dump.texels[at + 0u] = gbuffer_fetch(gbuffer_albedo_spec, pixel, s);
+        dump.texels[at + 1u] = gbuffer_fetch(gbuffer_normal_motion, pixel, s);
+        dump.texels[at + 2u] = gbuffer_fetch(gbuffer_prelit_power, pixel, s);
+        dump.texels[at + 3u] = vec4(gbuffer_fetch(gbuffer_depth, pixel, s).r, 0.0, 0.0, 0.0);
     }
 }

@@ -223,7 +223,7 @@ GSample gbuffer_decode(vec4 rt0, vec4 rt1, vec4 rt2, float depth)
 }
 
 // ---------------------------------------------------------------------------
-// Loading from the bound multisampled G-buffer (lighting and classification).
+// Loading from the bound G-buffer (lighting and classification).
 
 #ifndef GBUFFER_ENCODE_ONLY
 
@@ -231,21 +231,32 @@ GSample gbuffer_decode(vec4 rt0, vec4 rt1, vec4 rt2, float depth)
 
 int gbuffer_sample_count()
 {
-    return textureSamples(gbuffer_normal_motion);
+    return gbuffer_samples();
 }
 
 GSample gbuffer_load(ivec2 pixel, int sample_index)
 {
-    return gbuffer_decode(texelFetch(gbuffer_albedo_spec, pixel, sample_index),
-                          texelFetch(gbuffer_normal_motion, pixel, sample_index),
-                          texelFetch(gbuffer_prelit_power, pixel, sample_index),
-                          texelFetch(gbuffer_depth, pixel, sample_index).r);
+    return gbuffer_decode(gbuffer_fetch(gbuffer_albedo_spec, pixel, sample_index),
+                          gbuffer_fetch(gbuffer_normal_motion, pixel, sample_index),
+                          gbuffer_fetch(gbuffer_prelit_power, pixel, sample_index),
+                          gbuffer_fetch(gbuffer_depth, pixel, sample_index).r);
 }
 
 // The depth target alone (classification).
 GDepthSample gbuffer_load_depth(ivec2 pixel, int sample_index)
 {
-    return gbuffer_decode_depth(texelFetch(gbuffer_depth, pixel, sample_index).r);
+    return gbuffer_decode_depth(gbuffer_fetch(gbuffer_depth, pixel, sample_index).r);
+}
+
+// True when some sample of `pixel` carries the MSAA-edge bit: the pixel's samples may differ.
+// False means they are bit-identical, so sample 0 alone shades the pixel (see above).
+bool gbuffer_pixel_is_edge(ivec2 pixel)
+{
+    bool edge = false;
+    for (int s = 0; s < gbuffer_sample_count(); ++s) {
+        edge = edge || gbuffer_load_depth(pixel, s).msaa_edge;
+    }
+    return edge;
 }
 
 

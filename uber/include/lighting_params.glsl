@@ -24,10 +24,26 @@ layout(set = 0, binding = 0, std140) uniform LightingParams {
     vec4 viewport;        // xy framebuffer size in pixels, zw 1/size
 } params;
 
+// The G-buffer is multisampled, or single-sampled when the domain is built with
+// GBUFFER_SINGLE_SAMPLED defined (tilelight --msaa 1): a single-sampled image may not be bound
+// to a sampler2DMS, so that build declares sampler2D and reads mip level 0. Every reader goes
+// through gbuffer_fetch() and gbuffer_samples(), which hide the difference.
+#ifdef GBUFFER_SINGLE_SAMPLED
+layout(set = 0, binding = 1) uniform sampler2D gbuffer_albedo_spec;   // RT0
+layout(set = 0, binding = 2) uniform sampler2D gbuffer_normal_motion; // RT1
+layout(set = 0, binding = 3) uniform sampler2D gbuffer_prelit_power;  // RT2
+layout(set = 0, binding = 4) uniform sampler2D gbuffer_depth;
+// The one sample of `pixel`; `sample_index` is 0 by the caller's loop bounds.
+#define gbuffer_fetch(target, pixel, sample_index) texelFetch(target, pixel, 0)
+#define gbuffer_samples() 1
+#else
 layout(set = 0, binding = 1) uniform sampler2DMS gbuffer_albedo_spec;   // RT0
 layout(set = 0, binding = 2) uniform sampler2DMS gbuffer_normal_motion; // RT1
 layout(set = 0, binding = 3) uniform sampler2DMS gbuffer_prelit_power;  // RT2
 layout(set = 0, binding = 4) uniform sampler2DMS gbuffer_depth;
+#define gbuffer_fetch(target, pixel, sample_index) texelFetch(target, pixel, sample_index)
+#define gbuffer_samples() textureSamples(gbuffer_normal_motion)
+#endif
 layout(set = 0, binding = 5) uniform sampler2D shadow_map;   // texelFetch / textureGather, no filtering
 
 #endif // UBER_LIGHTING_PARAMS_GLSL

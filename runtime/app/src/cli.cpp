@@ -34,6 +34,7 @@ struct Arguments {
   std::string permutations = "optimised";
   std::string camera = "default";
   std::string primitive = "auto";
+  std::string baseline = "both";
   std::string device;
   std::string out = "tilelight-out";
   bool validation = false;
@@ -45,11 +46,16 @@ struct Arguments {
 
 std::uint32_t parse_msaa(const std::string& text) {
   if (text == "auto") return 0;
-  // 1 is parsed, so that the renderer's own error says why it is refused.
   for (const char* valid : {"1", "2", "4", "8", "16"}) {
     if (text == valid) return static_cast<std::uint32_t>(std::stoul(text));
   }
-  throw Error("--msaa " + text + ": expected auto, 2, 4, 8 or 16");
+  throw Error("--msaa " + text + ": expected auto, 1, 2, 4, 8 or 16");
+}
+
+Baselines parse_baselines(const std::string& text) {
+  if (text == "naive") return Baselines::naive;
+  if (text == "dynamic") return Baselines::dynamic;
+  return Baselines::both;
 }
 
 // The light targets hold linear radiance; the PNGs get the usual display encoding (gamma 2.2
@@ -75,7 +81,8 @@ std::vector<std::uint8_t> optimised_ids(const std::vector<std::uint8_t>& raw_ids
 void add_options(CLI::App& cli, Arguments& a) {
   cli.add_option("--width", a.width, "frame width in pixels")->capture_default_str();
   cli.add_option("--height", a.height, "frame height in pixels")->capture_default_str();
-  cli.add_option("--msaa", a.msaa, "G-buffer samples: auto (2 where offered, else 4), 2, 4, 8 (the G-buffer is always multisampled)")
+  cli.add_option("--msaa", a.msaa,
+                 "G-buffer samples: auto (2 where offered, else 4), 1 (no MSAA: single-sampled G-buffer), 2, 4, 8, 16")
       ->capture_default_str();
   cli.add_option("--path", a.path, "index build: cpu (host patches pre-recorded draws) or gpu (compute)")
       ->check(CLI::IsMember({"cpu", "gpu"}))
@@ -83,7 +90,7 @@ void add_options(CLI::App& cli, Arguments& a) {
   cli.add_option("--permutations", a.permutations, "lighting shaders: optimised (32) or raw (96 of 128)")
       ->check(CLI::IsMember({"optimised", "raw"}))
       ->capture_default_str();
-  cli.add_option("--camera", a.camera, "camera: default, sky, shadow, low (--list-cameras)")->capture_default_str();
+  cli.add_option("--camera", a.camera, "camera: default, sky, shadow, low, street, closeup (--list-cameras)")->capture_default_str();
   cli.add_option("--frames", a.frames, "timed frames (after one warm-up frame); timings are medians over them")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -93,6 +100,11 @@ void add_options(CLI::App& cli, Arguments& a) {
                  "tile pass primitive: points (a point sprite per square of tiles), triangles (two per "
                  "rectangle), auto (points where the device draws them)")
       ->check(CLI::IsMember({"auto", "points", "triangles"}))
+      ->capture_default_str();
+  cli.add_option("--baseline", a.baseline,
+                 "full-screen passes timed against the classified one: naive (every feature on every pixel), "
+                 "dynamic (one pass branching per pixel), both")
+      ->check(CLI::IsMember({"naive", "dynamic", "both"}))
       ->capture_default_str();
   cli.add_option("--device", a.device, "Vulkan device: index or name substring (default: the CPU device, lavapipe)");
   cli.add_flag("--validation", a.validation, "enable the Khronos validation layer; any message fails the run");
@@ -120,6 +132,7 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   options.coalesce = !a.no_coalesce;
   if (a.primitive != "auto") options.primitive = parse_tile_primitive(a.primitive);
   options.camera = a.camera;
+  options.baselines = parse_baselines(a.baseline);
   options.timeout = Seconds(a.timeout_s);
   stage = "choosing the camera";
   (void)scene.camera(a.camera);  // an unknown camera fails before any Vulkan work
@@ -170,7 +183,10 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   const double rss_after_frames = current_rss_mib();
   stage = "reading back the frames";
   const RgbaImage classified = renderer.read_classified();
-  const RgbaImage naive = renderer.read_naive();
+  const std::optional<RgbaImage> naive =
+      options.baselines != Baselines::dynamic ? std::optional(renderer.read_naive()) : std::nullopt;
+  const std::optional<RgbaImage> dynamic =
+      options.baselines != Baselines::naive ? std::optional(renderer.read_dynamic()) : std::nullopt;
   const std::vector<std::uint8_t> raw_ids = renderer.raw_tile_ids();
   if (a.validation) context.require_no_validation_messages("tilelight");
 
@@ -179,18 +195,23 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   const char* threads = std::getenv("LP_NUM_THREADS");
   report.run = {context.device_name(), a.width, a.height, renderer.msaa_samples(), a.tile_size, a.frames, a.path,
                 a.permutations, a.camera, options.coalesce, threads != nullptr ? threads : "",
-                std::string(to_string(renderer.tile_primitive()))};
+                std::string(to_string(renderer.tile_primitive())), a.baseline};
   count_tiles(report, raw_ids);
   report.primitives_uncoalesced = last.stats.primitives_uncoalesced;
   report.primitives_coalesced = last.stats.primitives_coalesced;
   report.rectangles = last.stats.rectangles;
   report.timings = median_timings(timings);
   report.frame_timings = timings;
-  report.equivalence = compare_frames(classified, naive);
+  report.equivalence = compare_with_baselines(classified, naive, dynamic);
 
   const RgbaImage shown = display_encoded(classified);
   files.stage("frame_classified.png", [&](const std::filesystem::path& p) { write_png(p, shown); });
-  files.stage("frame_naive.png", [&](const std::filesystem::path& p) { write_png(p, display_encoded(naive)); });
+  if (naive) {
+    files.stage("frame_naive.png", [&](const std::filesystem::path& p) { write_png(p, display_encoded(*naive)); });
+  }
+  if (dynamic) {
+    files.stage("frame_dynamic.png", [&](const std::filesystem::path& p) { write_png(p, display_encoded(*dynamic)); });
+  }
   files.stage("tile_classes.png", [&](const std::filesystem::path& p) {
     const Rgba8Canvas canvas = compose_tile_class_image(shown, a.tile_size, optimised_ids(raw_ids));
     write_png_rgba8(p, canvas.width, canvas.height, canvas.pixels);
@@ -202,8 +223,8 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   files.commit();
 
   out << timing_table(report);
-  out << "wrote " << (files.folder() / "frame_classified.png").string() << ", frame_naive.png, tile_classes.png, "
-      << "report.json\n";
+  out << "wrote " << (files.folder() / "frame_classified.png").string() << (naive ? ", frame_naive.png" : "")
+      << (dynamic ? ", frame_dynamic.png" : "") << ", tile_classes.png, report.json\n";
   return 0;
 }
 

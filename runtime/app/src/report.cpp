@@ -23,7 +23,7 @@ double median(std::vector<double> values) {
 double round3(double value) { return std::round(value * 1000.0) / 1000.0; }
 
 // Every timed stage, by its report.json name, in the report's order.
-constexpr std::array<std::pair<const char*, double FrameTimings::*>, 7> kStages{{
+constexpr std::array<std::pair<const char*, double FrameTimings::*>, 8> kStages{{
     {"gbuffer", &FrameTimings::gbuffer},
     {"shadow_map", &FrameTimings::shadow_map},
     {"classification", &FrameTimings::classification},
@@ -31,7 +31,12 @@ constexpr std::array<std::pair<const char*, double FrameTimings::*>, 7> kStages{
     {"index_build_gpu", &FrameTimings::index_build_gpu},
     {"tiled_light", &FrameTimings::tiled_light},
     {"naive_light", &FrameTimings::naive_light},
+    {"dynamic_light", &FrameTimings::dynamic_light},
 }};
+
+nlohmann::ordered_json equivalence_json(const Equivalence& e) {
+  return {{"max_abs_difference", e.max_abs_difference}, {"pixels_different", e.pixels_different}};
+}
 
 }  // namespace
 
@@ -85,6 +90,15 @@ Equivalence compare_frames(const RgbaImage& classified, const RgbaImage& naive) 
   return e;
 }
 
+Equivalences compare_with_baselines(const RgbaImage& classified, const std::optional<RgbaImage>& naive,
+                                    const std::optional<RgbaImage>& dynamic) {
+  Equivalences e;
+  e.reference = naive ? "naive" : "dynamic";
+  e.classified = compare_frames(classified, naive ? *naive : *dynamic);
+  if (naive && dynamic) e.dynamic = compare_frames(*dynamic, *naive);
+  return e;
+}
+
 std::string report_json(const FrameReport& r) {
   nlohmann::ordered_json j;
   j["device"] = r.run.device;
@@ -97,6 +111,7 @@ std::string report_json(const FrameReport& r) {
   j["camera"] = r.run.camera;
   j["coalesce"] = r.run.coalesce;
   j["primitive"] = r.run.primitive;
+  j["baselines"] = r.run.baselines;
   j["frames"] = r.run.frames;
   j["lavapipe_threads"] = r.run.lavapipe_threads.empty() ? nlohmann::ordered_json(nullptr)
                                                          : nlohmann::ordered_json(r.run.lavapipe_threads);
@@ -119,8 +134,12 @@ std::string report_json(const FrameReport& r) {
   }
   j["timings_ms"] = timings;
   j["frame_timings_ms"] = frames;
-  j["equivalence"] = {{"max_abs_difference", r.equivalence.max_abs_difference},
-                      {"pixels_different", r.equivalence.pixels_different}};
+  // `equivalence`: the classified frame against `reference`; `dynamic_equivalence`: the dynamic
+  // frame against the naive one (null unless both ran).
+  j["equivalence"] = equivalence_json(r.equivalence.classified);
+  j["equivalence"]["reference"] = r.equivalence.reference;
+  j["dynamic_equivalence"] = r.equivalence.dynamic ? equivalence_json(*r.equivalence.dynamic)
+                                                   : nlohmann::ordered_json(nullptr);
   j["process"] = {{"peak_rss_mib", std::round(r.process.peak_rss_mib * 10.0) / 10.0},
                   {"rss_after_frames_mib", std::round(r.process.rss_after_frames_mib * 10.0) / 10.0}};
   return j.dump(2) + "\n";
@@ -128,30 +147,42 @@ std::string report_json(const FrameReport& r) {
 
 std::string timing_table(const FrameReport& r) {
   const MedianTimings& t = r.timings;
+  const bool naive = r.run.baselines != "dynamic";
+  const bool dynamic = r.run.baselines != "naive";
   const double classified_light = t.classification + t.index_build_cpu + t.index_build_gpu + t.tiled_light;
+  auto cell = [](bool ran, double ms) { return ran ? fmt::format("{:.3f}", ms) : std::string("-"); };
   std::string out;
   out += fmt::format("{}x{}, {}x MSAA, {}, path {}, {} permutations, camera {}, median of {} frame(s)\n",
                      r.run.width, r.run.height, r.run.msaa_samples, r.run.device, r.run.path, r.run.permutations,
                      r.run.camera, r.run.frames);
-  out += fmt::format("{:<28}{:>12}{:>16}\n", "stage (ms)", "naive", "classified");
-  auto row = [&](const char* name, double naive, double classified, bool in_naive) {
-    out += fmt::format("{:<28}{:>12}{:>16.3f}\n", name, in_naive ? fmt::format("{:.3f}", naive) : std::string("-"),
-                       classified);
+  out += fmt::format("{:<28}{:>12}{:>12}{:>14}\n", "stage (ms)", "naive", "dynamic", "classified");
+  auto row = [&](const char* name, bool in_baselines, double naive_ms, double dynamic_ms, double classified_ms) {
+    out += fmt::format("{:<28}{:>12}{:>12}{:>14.3f}\n", name, cell(naive && in_baselines, naive_ms),
+                       cell(dynamic && in_baselines, dynamic_ms), classified_ms);
   };
-  row("shadow map", t.shadow_map, t.shadow_map, true);
-  row("G-buffer", t.gbuffer, t.gbuffer, true);
-  row("classification (GPU)", 0, t.classification, false);
-  if (r.run.path == "cpu") row("index build (CPU)", 0, t.index_build_cpu, false);
-  else row("index build (GPU)", 0, t.index_build_gpu, false);
-  row("global light", t.naive_light, t.tiled_light, true);
-  out += fmt::format("{:<28}{:>12.3f}{:>16.3f}\n", "light total", t.naive_light, classified_light);
-  const double speedup = classified_light > 0 ? t.naive_light / classified_light : 0.0;
-  out += fmt::format("speed-up of the light pass: {:.2f}x (naive / classification + index build + tiled light)\n",
-                     speedup);
-  out += fmt::format("tiles {}, {} {} -> {} coalesced ({} rectangles); classified vs naive: {} pixels differ (max {:.3g})\n",
+  row("shadow map", true, t.shadow_map, t.shadow_map, t.shadow_map);
+  row("G-buffer", true, t.gbuffer, t.gbuffer, t.gbuffer);
+  row("classification (GPU)", false, 0, 0, t.classification);
+  if (r.run.path == "cpu") row("index build (CPU)", false, 0, 0, t.index_build_cpu);
+  else row("index build (GPU)", false, 0, 0, t.index_build_gpu);
+  row("global light", true, t.naive_light, t.dynamic_light, t.tiled_light);
+  row("light total", true, t.naive_light, t.dynamic_light, classified_light);
+  auto speedup = [&](const char* baseline, double baseline_ms) {
+    const double ratio = classified_light > 0 ? baseline_ms / classified_light : 0.0;
+    out += fmt::format("speed-up of the light pass vs {}: {:.2f}x ({} / classification + index build + tiled light)\n",
+                       baseline, ratio, baseline);
+  };
+  if (naive) speedup("naive", t.naive_light);
+  if (dynamic) speedup("dynamic", t.dynamic_light);
+  out += fmt::format("tiles {}, {} {} -> {} coalesced ({} rectangles); classified vs {}: {} pixels differ (max {:.3g})",
                      r.tiles, r.run.primitive, r.primitives_uncoalesced, r.primitives_coalesced, r.rectangles,
-                     r.equivalence.pixels_different, r.equivalence.max_abs_difference);
-  return out;
+                     r.equivalence.reference, r.equivalence.classified.pixels_different,
+                     r.equivalence.classified.max_abs_difference);
+  if (r.equivalence.dynamic) {
+    out += fmt::format("; dynamic vs naive: {} differ (max {:.3g})", r.equivalence.dynamic->pixels_different,
+                       r.equivalence.dynamic->max_abs_difference);
+  }
+  return out + "\n";
 }
 
 }  // namespace tilelight::app

@@ -6,7 +6,7 @@
 //   submit A  shadow map -> G-buffer -> classification -> copy IDs to host memory
 //             [--path gpu: + LUT, counts, prefix sum, index fill, indirect records in compute]
 //             signals timeline value 2k-1
-//   submit B  the tile pass and the naive pass, recorded ONCE at start-up, before any
+//   submit B  the tile pass and the baseline passes (naive, dynamic), recorded ONCE at start-up, before any
 //             classification ran; --path cpu: waits for timeline value 2k, which the host
 //             signals after it built the index buffer and patched the indirect records
 //             (submitted before that signal: wait-before-signal)
@@ -34,11 +34,16 @@ namespace tilelight {
 
 enum class IndexPath { cpu, gpu };
 
+// The full-screen passes the classified frame is measured against: naive (the uber-shader with
+// every feature, on every pixel) and dynamic (every feature compiled in, each taken only where
+// the pixel needs it: per-pixel branching).
+enum class Baselines { naive, dynamic, both };
+
 
 struct RendererOptions {
   std::uint32_t width = 1280;
   std::uint32_t height = 720;
-  std::uint32_t msaa = 0;       // 0: automatic (2x where offered, else 4x); else 1, 2, 4, 8
+  std::uint32_t msaa = 0;       // 0: automatic (2x where offered, else 4x); else 1, 2, 4, 8, 16
   std::uint32_t tile_size = 4;  // pixels: 4, 8 or 16
   IndexPath path = IndexPath::cpu;
   bool raw_permutations = false;  // draw the 96 raw permutations instead of the 32 optimised ones
@@ -47,6 +52,7 @@ struct RendererOptions {
   // draws them (largePoints, a whole block's width), else triangles.
   std::optional<TilePrimitive> primitive;
   std::string camera = "default";
+  Baselines baselines = Baselines::both;  // which full-screen passes run (and are timed) each frame
   Seconds timeout = kDefaultGpuTimeout;
 };
 
@@ -55,6 +61,7 @@ struct FrameTimings {  // milliseconds
   double index_build_cpu = 0;  // host clock, CPU path only
   double index_build_gpu = 0;  // GPU timestamps, GPU path only
   double tiled_light = 0, naive_light = 0;
+  double dynamic_light = 0;  // the per-pixel-branching pass; 0 when it did not run (RendererOptions::baselines)
 };
 
 struct FrameStats {
@@ -102,7 +109,8 @@ class TileRenderer {
   // Results of the last frame.
   std::vector<std::uint8_t> raw_tile_ids() const;  // row-major, tiles_x * tiles_y
   RgbaImage read_classified() const;
-  RgbaImage read_naive() const;
+  RgbaImage read_naive() const;    // precondition: the naive pass runs (RendererOptions::baselines)
+  RgbaImage read_dynamic() const;  // precondition: the dynamic pass runs
   GBufferSamples read_gbuffer();
   std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major
 

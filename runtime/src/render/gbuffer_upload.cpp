@@ -1,6 +1,6 @@
 #include "gbuffer_upload.h"
 
-#include "companion_shaders.h"
+#include "shader_registry.h"
 #include "descriptors.h"
 #include "tilelight/context.h"
 #include "tilelight/error.h"
@@ -37,8 +37,9 @@ GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& target
   write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, samples_.handle());
 
   GraphicsPipelineDesc desc = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer upload");
-  desc.vertex_spirv = companion_spirv("sky_vertex");  // a full-screen triangle
-  desc.fragment_spirv = companion_spirv("gbuffer_upload");
+  const shadergen::Registry& shaders = shaders_for(targets.samples());
+  desc.vertex_spirv = companion_spirv(shaders, "sky_vertex");  // a full-screen triangle
+  desc.fragment_spirv = companion_spirv(shaders, "gbuffer_upload");
   desc.depth_write = true;
   desc.depth_compare = VK_COMPARE_OP_ALWAYS;
   pipeline_ = create_graphics_pipeline(context, desc);

@@ -1,6 +1,6 @@
 #include "gpu_index_build.h"
 
-#include "companion_shaders.h"
+#include "shader_registry.h"
 #include "descriptors.h"
 #include "tilelight/barriers.h"
 #include "tilelight/context.h"
@@ -24,7 +24,7 @@ constexpr std::uint32_t kBlocksPerGroup = 128;  // local_size_x of tile_rects.co
 
 }  // namespace
 
-GpuIndexBuild::GpuIndexBuild(const Context& context, const TileGrid& grid,
+GpuIndexBuild::GpuIndexBuild(const Context& context, const shadergen::Registry& shaders, const TileGrid& grid,
                              std::span<const std::uint8_t> class_for_raw, std::span<const bool> pruned,
                              std::uint32_t class_count, bool coalesce, TilePrimitive primitive,
                              const Buffer& tile_ids, VkDescriptorPool pool)
@@ -67,12 +67,12 @@ GpuIndexBuild::GpuIndexBuild(const Context& context, const TileGrid& grid,
   }
 
   const std::uint32_t points = primitive == TilePrimitive::points ? 1 : 0;
-  count_ = create_compute_pipeline(context, layout_.get(), companion_spirv("tile_rects"),
+  count_ = create_compute_pipeline(context, layout_.get(), companion_spirv(shaders, "tile_rects"),
                                    SpecConstants{}.set(0, 0).set(1, coalesce ? 1 : 0).set(2, points),
                                    "GPU index build: count");
-  prefix_ = create_compute_pipeline(context, layout_.get(), companion_spirv("tile_prefix"),
+  prefix_ = create_compute_pipeline(context, layout_.get(), companion_spirv(shaders, "tile_prefix"),
                                     SpecConstants{}.set(2, points), "GPU index build: prefix sum");
-  fill_ = create_compute_pipeline(context, layout_.get(), companion_spirv("tile_rects"),
+  fill_ = create_compute_pipeline(context, layout_.get(), companion_spirv(shaders, "tile_rects"),
                                   SpecConstants{}.set(0, 1).set(1, coalesce ? 1 : 0).set(2, points),
                                   "GPU index build: fill");
 }

@@ -9,6 +9,8 @@
 #include "tilelight/tile_primitive.h"
 #include "tilelight/vk_handles.h"
 
+#include <shadergen/registry.h>
+
 #include <cstdint>
 #include <span>
 
@@ -19,11 +21,11 @@ class Context;
 class GpuIndexBuild {
  public:
   // class_for_raw: raw ID -> draw class (optimised ID, or the raw ID for raw permutations);
-  // pruned raw IDs are impossible. class_count: 32 or 128.
-  GpuIndexBuild(const Context& context, const TileGrid& grid, std::span<const std::uint8_t> class_for_raw,
-                std::span<const bool> pruned, std::uint32_t class_count, bool coalesce, TilePrimitive primitive,
-                const Buffer& tile_ids,
-                VkDescriptorPool pool);
+  // pruned raw IDs are impossible. class_count: 32 or 128. `shaders`: the frame's registry
+  // (shader_registry.h), whose tile_rects and tile_prefix companions it runs.
+  GpuIndexBuild(const Context& context, const shadergen::Registry& shaders, const TileGrid& grid,
+                std::span<const std::uint8_t> class_for_raw, std::span<const bool> pruned, std::uint32_t class_count,
+                bool coalesce, TilePrimitive primitive, const Buffer& tile_ids, VkDescriptorPool pool);
 
   // Clears the counters, counts, prefix-sums and fills; ends with a barrier that makes the
   // index buffer and the indirect records visible to the draw stages.

@@ -5,8 +5,6 @@
 #include "tilelight/error.h"
 #include "tilelight/pipelines.h"
 
-#include <split_second_shaders.h>
-
 #include <array>
 #include <string>
 
@@ -21,8 +19,8 @@ constexpr std::array<std::uint32_t, 5> kImageBindings{1, 2, 3, 4, 5};
 
 LightingInterface::LightingInterface(const Context& context, const LightingParamsBlock& params,
                                      const RenderTargets& targets, VkDescriptorPool pool)
-    : params_block_(params) {
-  const shadergen::Registry& registry = split_second::registry();
+    : shaders_(&shaders_for(targets.samples())), params_block_(params) {
+  const shadergen::Registry& registry = *shaders_;
   params_ = Buffer(context, {sizeof(LightingParamsBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::HostUpload,
                              "lighting parameters"});
   params_.write_values(std::span<const LightingParamsBlock>(&params_block_, 1));

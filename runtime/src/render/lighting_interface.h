@@ -5,6 +5,7 @@
 // compute passes that write a result (classification, the G-buffer dump).
 
 #include "render_targets.h"
+#include "shader_registry.h"
 #include "tilelight/buffer.h"
 #include "tilelight/sampler.h"
 #include "tilelight/uniform_blocks.h"
@@ -27,8 +28,12 @@ class LightingInterface {
   // Compute passes: set 0, set 1 (one storage buffer), 32 bytes of push constants.
   VkPipelineLayout compute_layout() const { return compute_layout_.get(); }
   const LightingParamsBlock& params() const { return params_block_; }
+  // The shaders that read this G-buffer (shaders_for() its sample count): every pass that binds
+  // set 0 takes its pipelines from here.
+  const shadergen::Registry& shaders() const { return *shaders_; }
 
  private:
+  const shadergen::Registry* shaders_;
   LightingParamsBlock params_block_;
   Buffer params_;
   Sampler sampler_;

@@ -1,12 +1,10 @@
 #include "lighting_passes.h"
 
-#include "companion_shaders.h"
+#include "shader_registry.h"
 #include "tilelight/barriers.h"
 #include "tilelight/context.h"
 #include "tilelight/error.h"
 #include "tilelight/pipelines.h"
-
-#include <split_second_shaders.h>
 
 #include <array>
 #include <string>
@@ -28,12 +26,12 @@ UniquePipeline create_light_pipeline(const Context& context, const RenderTargets
   desc.fragment_spirv = fragment;
   if (primitive == TilePrimitive::points) {
     // tile_point.vert computes each point from its index; binding 1 holds the grid's shape.
-    desc.vertex_spirv = companion_spirv("tile_point");
+    desc.vertex_spirv = companion_spirv(lighting.shaders(), "tile_point");
     desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
     desc.vertex_bindings = {{kGridBinding, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_INSTANCE}};
     desc.vertex_attributes = {{0, kGridBinding, VK_FORMAT_R32G32_SFLOAT, 0}};
   } else {
-    desc.vertex_spirv = companion_spirv("tile");
+    desc.vertex_spirv = companion_spirv(lighting.shaders(), "tile");
     desc.vertex_bindings = {{kCornerBinding, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, kCornerBinding, VK_FORMAT_R32G32_SFLOAT, 0}};
   }
@@ -62,11 +60,11 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
       grid.vertex_index(0, 0),           grid.vertex_index(grid.tiles_x, 0),
       grid.vertex_index(0, grid.tiles_y), grid.vertex_index(grid.tiles_x, 0),
       grid.vertex_index(grid.tiles_x, grid.tiles_y), grid.vertex_index(0, grid.tiles_y)};
-  naive_indices_ = Buffer(context, {sizeof(whole_frame), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::HostUpload,
-                                    "naive pass indices"});
-  naive_indices_.write_values(std::span<const std::uint32_t>(whole_frame));
+  full_screen_indices_ = Buffer(context, {sizeof(whole_frame), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                          MemoryUse::HostUpload, "full-screen pass indices"});
+  full_screen_indices_.write_values(std::span<const std::uint32_t>(whole_frame));
 
-  const shadergen::Registry& registry = split_second::registry();
+  const shadergen::Registry& registry = lighting.shaders();
   if (permutations == PermutationSet::optimised) {
     for (const shadergen::Permutation& p : registry.optimised) {
       pipelines_.push_back(create_light_pipeline(context, targets, lighting, p.spirv, primitive,
@@ -82,6 +80,8 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
   // The whole frame is not a square: two triangles, whose one diagonal costs little.
   naive_pipeline_ = create_light_pipeline(context, targets, lighting, registry.optimised[kNaiveOptimisedId].spirv,
                                           TilePrimitive::triangles, "lighting naive (optimised 31)");
+  dynamic_pipeline_ = create_light_pipeline(context, targets, lighting, companion_spirv(registry, "lighting_dynamic"),
+                                            TilePrimitive::triangles, "lighting dynamic (per-pixel branches)");
 }
 
 std::uint32_t LightingPasses::pipeline_count() const {
@@ -141,9 +141,18 @@ void LightingPasses::record_tiled(VkCommandBuffer cmd, const RenderTargets& targ
 }
 
 void LightingPasses::record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const {
-  begin(cmd, targets, targets.naive_framebuffer());
-  vkCmdBindIndexBuffer(cmd, naive_indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, naive_pipeline_.get());
+  record_full_screen(cmd, targets, targets.naive_framebuffer(), naive_pipeline_.get());
+}
+
+void LightingPasses::record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const {
+  record_full_screen(cmd, targets, targets.dynamic_framebuffer(), dynamic_pipeline_.get());
+}
+
+void LightingPasses::record_full_screen(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer,
+                                        VkPipeline pipeline) const {
+  begin(cmd, targets, framebuffer);
+  vkCmdBindIndexBuffer(cmd, full_screen_indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
   vkCmdDrawIndexed(cmd, 6, 1, 0, 0, 0);
   vkCmdEndRenderPass(cmd);
 }

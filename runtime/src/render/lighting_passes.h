@@ -4,7 +4,9 @@
 // indirect indexed draw per draw class, reading index and indirect buffers that are filled in
 // later each frame (by the host, or by the GPU-driven build). Its primitives are triangle pairs
 // or point sprites (tile_primitive.h). The naive pass draws optimised ID 31 (every feature) over
-// the whole frame as two triangles.
+// the whole frame as two triangles; the dynamic pass draws the per-pixel-branching build of the
+// uber-shader (companion lighting_dynamic: every feature, each taken where the pixel needs it)
+// the same way, the baseline that tile classification must beat on a real engine.
 
 #include "lighting_interface.h"
 #include "render_targets.h"
@@ -37,16 +39,19 @@ class LightingPasses {
   void record_tiled(VkCommandBuffer cmd, const RenderTargets& targets, const Buffer& indices,
                     const Buffer& draws) const;
   void record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const;
+  void record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const;
 
  private:
   void begin(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer) const;
+  void record_full_screen(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer,
+                          VkPipeline pipeline) const;
 
   const LightingInterface* lighting_;
   Buffer corners_;        // the prebuilt grid of tile corners (pixels): triangles
-  Buffer grid_shape_;     // tiles_x + 1 and the tile size: points        // the prebuilt grid of tile corners (pixels)
-  Buffer naive_indices_;  // two triangles over the whole frame
+  Buffer grid_shape_;     // tiles_x + 1 and the tile size: points
+  Buffer full_screen_indices_;  // two triangles over the whole frame (naive and dynamic passes)
   std::vector<UniquePipeline> pipelines_;  // per draw class; empty for pruned raw IDs
-  UniquePipeline naive_pipeline_;
+  UniquePipeline naive_pipeline_, dynamic_pipeline_;
   VkExtent2D extent_{};    // the frame
   VkExtent2D viewport_{};  // whole tiles: >= the frame
 };

@@ -107,10 +107,12 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                 VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_DEPTH_BIT, "sun shadow map"});
   const VkImageUsageFlags light_usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-  classified_ = Image(context, {extent, kLightFormat, light_usage, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
-                                "light target (classified)"});
-  naive_ = Image(context, {extent, kLightFormat, light_usage, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
-                           "light target (naive)"});
+  auto light_target = [&](const char* name) {
+    return Image(context, {extent, kLightFormat, light_usage, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT, name});
+  };
+  classified_ = light_target("light target (classified)");
+  naive_ = light_target("light target (naive)");
+  dynamic_ = light_target("light target (dynamic)");
 
   const VkImageLayout read_only = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   const std::array<VkAttachmentDescription, 4> gbuffer_attachments{
@@ -132,11 +134,13 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   gbuffer_framebuffer_ = create_framebuffer(context, gbuffer_pass_.get(), gbuffer_views, extent, "G-buffer");
   const std::array<VkImageView, 1> shadow_views{shadow_map_.view()};
   shadow_framebuffer_ = create_framebuffer(context, shadow_pass_.get(), shadow_views, shadow_extent(), "shadow map");
-  const std::array<VkImageView, 1> classified_views{classified_.view()};
-  classified_framebuffer_ =
-      create_framebuffer(context, light_pass_.get(), classified_views, extent, "light target (classified)");
-  const std::array<VkImageView, 1> naive_views{naive_.view()};
-  naive_framebuffer_ = create_framebuffer(context, light_pass_.get(), naive_views, extent, "light target (naive)");
+  auto light_framebuffer = [&](const Image& target, const char* name) {
+    const std::array<VkImageView, 1> views{target.view()};
+    return create_framebuffer(context, light_pass_.get(), views, extent, name);
+  };
+  classified_framebuffer_ = light_framebuffer(classified_, "light target (classified)");
+  naive_framebuffer_ = light_framebuffer(naive_, "light target (naive)");
+  dynamic_framebuffer_ = light_framebuffer(dynamic_, "light target (dynamic)");
 }
 
 GraphicsPipelineDesc RenderTargets::gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name) const {

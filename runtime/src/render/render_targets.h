@@ -1,7 +1,7 @@
 #pragma once
 // The images one frame renders into, with their render passes and framebuffers:
 // the multisampled G-buffer (Table 4.1), the sun shadow map and the two light targets
-// (classified and naive), which the frame reads back for comparison and the PNGs.
+// (classified, naive and dynamic), which the frame reads back for comparison and the PNGs.
 
 #include "tilelight/image.h"
 #include "tilelight/pipelines.h"
@@ -42,6 +42,7 @@ class RenderTargets {
   const Image& shadow_map() const { return shadow_map_; }
   const Image& classified() const { return classified_; }
   const Image& naive() const { return naive_; }
+  const Image& dynamic() const { return dynamic_; }
 
   VkRenderPass gbuffer_pass() const { return gbuffer_pass_.get(); }
   VkRenderPass shadow_pass() const { return shadow_pass_.get(); }
@@ -50,6 +51,7 @@ class RenderTargets {
   VkFramebuffer shadow_framebuffer() const { return shadow_framebuffer_.get(); }
   VkFramebuffer classified_framebuffer() const { return classified_framebuffer_.get(); }
   VkFramebuffer naive_framebuffer() const { return naive_framebuffer_.get(); }
+  VkFramebuffer dynamic_framebuffer() const { return dynamic_framebuffer_.get(); }
   VkExtent2D shadow_extent() const { return {shadow_map_size_, shadow_map_size_}; }
 
   // Begins the G-buffer render pass (every target cleared; depth to 1) and sets the viewport.
@@ -64,9 +66,10 @@ class RenderTargets {
   VkExtent2D extent_;
   VkSampleCountFlagBits samples_;
   std::uint32_t shadow_map_size_;
-  Image rt0_, rt1_, rt2_, depth_, shadow_map_, classified_, naive_;
+  Image rt0_, rt1_, rt2_, depth_, shadow_map_, classified_, naive_, dynamic_;
   UniqueRenderPass gbuffer_pass_, shadow_pass_, light_pass_;
-  UniqueFramebuffer gbuffer_framebuffer_, shadow_framebuffer_, classified_framebuffer_, naive_framebuffer_;
+  UniqueFramebuffer gbuffer_framebuffer_, shadow_framebuffer_, classified_framebuffer_, naive_framebuffer_,
+      dynamic_framebuffer_;
 };
 
 }  // namespace tilelight

@@ -1,6 +1,6 @@
 #include "scene_passes.h"
 
-#include "companion_shaders.h"
+#include "shader_registry.h"
 #include "descriptors.h"
 #include "tilelight/context.h"
 #include "tilelight/error.h"
@@ -65,24 +65,25 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "scene descriptor set");
   write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
 
+  const shadergen::Registry& shaders = shaders_for(targets.samples());
   GraphicsPipelineDesc gbuffer = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials");
-  gbuffer.vertex_spirv = companion_spirv("scene");
-  gbuffer.fragment_spirv = companion_spirv("gbuffer");
+  gbuffer.vertex_spirv = companion_spirv(shaders, "scene");
+  gbuffer.fragment_spirv = companion_spirv(shaders, "gbuffer");
   gbuffer.vertex_bindings = scene_bindings();
   gbuffer.vertex_attributes = scene_attributes();
   gbuffer.depth_write = true;
   gbuffer_pipeline_ = create_graphics_pipeline(context, gbuffer);
 
   GraphicsPipelineDesc sky = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer sky");
-  sky.vertex_spirv = companion_spirv("sky_vertex");
-  sky.fragment_spirv = companion_spirv("sky");
+  sky.vertex_spirv = companion_spirv(shaders, "sky_vertex");
+  sky.fragment_spirv = companion_spirv(shaders, "sky");
   sky.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
   sky_pipeline_ = create_graphics_pipeline(context, sky);
 
   GraphicsPipelineDesc shadow;
   shadow.layout = layout_.get();
   shadow.render_pass = targets.shadow_pass();
-  shadow.vertex_spirv = companion_spirv("shadow");
+  shadow.vertex_spirv = companion_spirv(shaders, "shadow");
   shadow.vertex_bindings = scene_bindings();
   // Only what shadow.vert reads: position and the model matrix (unused attributes are a
   // validation performance warning).

@@ -1,6 +1,6 @@
 #include "tile_classification.h"
 
-#include "companion_shaders.h"
+#include "shader_registry.h"
 #include "descriptors.h"
 #include "tilelight/barriers.h"
 #include "tilelight/context.h"
@@ -42,7 +42,7 @@ TileClassification::TileClassification(const Context& context, const TileGrid& g
                                "tile IDs (host copy)"});
   ids_set_ = allocate_descriptor_set(context, pool, lighting.storage_set_layout(), "tile ID output set");
   write_buffer_descriptor(context, ids_set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ids_.handle());
-  classify_ = create_compute_pipeline(context, lighting.compute_layout(), companion_spirv("classify_tiles"),
+  classify_ = create_compute_pipeline(context, lighting.compute_layout(), companion_spirv(lighting.shaders(), "classify_tiles"),
                                       classification_constants(grid.tile_size, static_cast<std::uint32_t>(targets.samples())), "tile classification");
 }
 
@@ -81,7 +81,7 @@ void TileClassification::enable_gbuffer_dump(const Context& context, VkDescripto
                            "G-buffer dump"});
   dump_set_ = allocate_descriptor_set(context, pool, lighting_->storage_set_layout(), "G-buffer dump set");
   write_buffer_descriptor(context, dump_set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, dump_.handle());
-  dump_pipeline_ = create_compute_pipeline(context, lighting_->compute_layout(), companion_spirv("gbuffer_dump"), {},
+  dump_pipeline_ = create_compute_pipeline(context, lighting_->compute_layout(), companion_spirv(lighting_->shaders(), "gbuffer_dump"), {},
                                            "G-buffer dump");
 }
 

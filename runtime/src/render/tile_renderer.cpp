@@ -72,16 +72,15 @@ TilePrimitive choose_primitive(const Context& context, const TileGrid& grid, std
 }
 
 // raw ID -> draw class: the generated LUT, or the identity when drawing raw permutations.
-std::vector<std::uint8_t> draw_classes(bool raw_permutations) {
-  const shadergen::Registry& registry = split_second::registry();
+std::vector<std::uint8_t> draw_classes(const shadergen::Registry& registry, bool raw_permutations) {
   std::vector<std::uint8_t> classes(registry.raw_to_optimised.begin(), registry.raw_to_optimised.end());
   if (raw_permutations) std::iota(classes.begin(), classes.end(), std::uint8_t{0});
   return classes;
 }
 
-std::array<bool, split_second::kRawCount> pruned_raw_ids() {
+std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Registry& registry) {
   std::array<bool, split_second::kRawCount> pruned{};
-  for (const shadergen::Permutation& p : split_second::registry().raw) pruned[p.id] = p.pruned;
+  for (const shadergen::Permutation& p : registry.raw) pruned[p.id] = p.pruned;
   return pruned;
 }
 
@@ -141,8 +140,8 @@ struct TileRenderer::Impl {
         ctx, grid, *targets, *lighting, opts.raw_permutations ? PermutationSet::raw : PermutationSet::optimised,
         primitive);
 
-    class_for_raw = draw_classes(opts.raw_permutations);
-    pruned = pruned_raw_ids();
+    class_for_raw = draw_classes(lighting->shaders(), opts.raw_permutations);
+    pruned = pruned_raw_ids(lighting->shaders());
     const std::uint32_t classes = light_passes->class_count();
     if (opts.path == IndexPath::cpu) {
       cpu_builder = std::make_unique<TileIndexBuilder>(grid, class_for_raw, pruned, classes, primitive);
@@ -152,7 +151,7 @@ struct TileRenderer::Impl {
                                MemoryUse::HostUpload, "indirect draws (host-patched)"});
       clear_draws();
     } else {
-      gpu_build = std::make_unique<GpuIndexBuild>(ctx, grid, class_for_raw, pruned, classes, opts.coalesce,
+      gpu_build = std::make_unique<GpuIndexBuild>(ctx, lighting->shaders(), grid, class_for_raw, pruned, classes, opts.coalesce,
                                                   primitive, classification->device_ids(), descriptor_pool.get());
     }
 
@@ -165,6 +164,9 @@ struct TileRenderer::Impl {
     record_tile_pass();
   }
 
+  bool runs_naive() const { return options.baselines != Baselines::dynamic; }
+  bool runs_dynamic() const { return options.baselines != Baselines::naive; }
+
   const Buffer& tile_indices() const { return gpu_build ? gpu_build->indices() : cpu_indices; }
   const Buffer& tile_draws() const { return gpu_build ? gpu_build->draws() : cpu_draws; }
 
@@ -176,8 +178,14 @@ struct TileRenderer::Impl {
     tile_queries.write(cmd, "start");
     light_passes->record_tiled(cmd, *targets, tile_indices(), tile_draws());
     tile_queries.write(cmd, "tiled");
-    light_passes->record_naive(cmd, *targets);
-    tile_queries.write(cmd, "naive");
+    if (runs_naive()) {
+      light_passes->record_naive(cmd, *targets);
+      tile_queries.write(cmd, "naive");
+    }
+    if (runs_dynamic()) {
+      light_passes->record_dynamic(cmd, *targets);
+      tile_queries.write(cmd, "dynamic");
+    }
     end_commands(cmd, "tile pass");
   }
 
@@ -273,7 +281,7 @@ struct TileRenderer::Impl {
     } else {
       submit(context, {std::span(&b, 1), {}, {}, frame_done.handle()}, "tile pass (submit B)");
     }
-    frame_done.wait("the tile and naive light passes", options.timeout);
+    frame_done.wait("the tile and baseline light passes", options.timeout);
     if (gpu_build) result.stats = gpu_stats();
     read_timings(result.timings);
     return result;
@@ -294,14 +302,16 @@ struct TileRenderer::Impl {
   // One query-pool read per pool; stamps are in the order they were written.
   void read_timings(FrameTimings& t) const {
     const std::vector<Timestamp> frame_stamps = frame_queries.read();  // start shadow gbuffer classified [built]
-    const std::vector<Timestamp> tile_stamps = tile_queries.read();    // start tiled naive
+    const std::vector<Timestamp> tile_stamps = tile_queries.read();    // start tiled [naive] [dynamic]
     auto between = [](const std::vector<Timestamp>& stamps, std::size_t i) { return stamps[i + 1].ms - stamps[i].ms; };
     t.shadow_map = between(frame_stamps, 0);
     t.gbuffer = between(frame_stamps, 1);
     t.classification = between(frame_stamps, 2);
     if (gpu_build) t.index_build_gpu = between(frame_stamps, 3);
     t.tiled_light = between(tile_stamps, 0);
-    t.naive_light = between(tile_stamps, 1);
+    std::size_t next = 1;
+    if (runs_naive()) t.naive_light = between(tile_stamps, next++);
+    if (runs_dynamic()) t.dynamic_light = between(tile_stamps, next++);
   }
 };
 
@@ -336,7 +346,14 @@ RgbaImage TileRenderer::read_classified() const {
 }
 
 RgbaImage TileRenderer::read_naive() const {
+  if (!impl_->runs_naive()) throw Error("read_naive: this renderer does not run the naive pass (baselines dynamic)");
   return read_image_rgba(impl_->context, impl_->pool, impl_->targets->naive(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         impl_->options.timeout);
+}
+
+RgbaImage TileRenderer::read_dynamic() const {
+  if (!impl_->runs_dynamic()) throw Error("read_dynamic: this renderer does not run the dynamic pass (baselines naive)");
+  return read_image_rgba(impl_->context, impl_->pool, impl_->targets->dynamic(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                          impl_->options.timeout);
 }
 

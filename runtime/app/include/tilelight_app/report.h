@@ -4,6 +4,7 @@
 #include "tilelight/tile_renderer.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct RunDescription {
   bool coalesce = true;
   std::string lavapipe_threads;  // LP_NUM_THREADS as set, or "" (driver default)
   std::string primitive;         // "points" | "triangles": what the tile pass drew
+  std::string baselines;         // "naive" | "dynamic" | "both": the full-screen passes that ran
 };
 
 // Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).
@@ -26,6 +28,14 @@ using MedianTimings = FrameTimings;
 struct Equivalence {
   double max_abs_difference = 0;       // over every channel of every pixel
   std::uint64_t pixels_different = 0;  // pixels with any channel differing
+};
+
+// What the classified frame was compared with: the naive pass where it ran, else the dynamic
+// one; and the dynamic pass against the naive one, where both ran.
+struct Equivalences {
+  std::string reference;  // "naive" | "dynamic"
+  Equivalence classified;
+  std::optional<Equivalence> dynamic;  // dynamic vs naive
 };
 
 struct ProcessFigures {
@@ -42,7 +52,7 @@ struct FrameReport {
   std::uint32_t rectangles = 0;  // after coalescing; a non-square one is drawn as one point per tile
   MedianTimings timings;
   std::vector<FrameTimings> frame_timings;  // every timed frame, in order (timings: their medians)
-  Equivalence equivalence;
+  Equivalences equivalence;
   ProcessFigures process;
 };
 
@@ -53,6 +63,11 @@ void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids);
 MedianTimings median_timings(const std::vector<FrameTimings>& frames);
 
 Equivalence compare_frames(const RgbaImage& classified, const RgbaImage& naive);
+
+// The classified frame against the naive one where it ran, else the dynamic one; the dynamic
+// frame against the naive one where both ran. Precondition: at least one baseline image.
+Equivalences compare_with_baselines(const RgbaImage& classified, const std::optional<RgbaImage>& naive,
+                                    const std::optional<RgbaImage>& dynamic);
 
 std::string report_json(const FrameReport& report);
 

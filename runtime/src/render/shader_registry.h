@@ -1,0 +1,27 @@
+#pragma once
+// Every shader the runtime runs comes from a registry that shadergen generated at build time
+// from permutations/split_second.json: the 32 optimised and 128 raw lighting permutations and
+// the non-permuted companions (classification, index build, scene, tile vertex shaders).
+//
+// The domain is built twice: as it is, for a multisampled G-buffer (split_second), and with
+// GBUFFER_SINGLE_SAMPLED defined (split_second_1x), whose shaders read the G-buffer as
+// sampler2D, since a single-sampled image may not be bound to a sampler2DMS. Both builds share
+// the spec, so their lookup tables and raw/optimised IDs are the same; only the blobs differ.
+
+#include <shadergen/registry.h>
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace tilelight {
+
+// The registry whose shaders read a G-buffer of `gbuffer_samples` samples per pixel.
+const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples);
+
+// The SPIR-V of companion `name` in `registry`; throws tilelight::Error if it has none by that name.
+std::span<const std::uint32_t> companion_spirv(const shadergen::Registry& registry, std::string_view name);
+
+}  // namespace tilelight
