@@ -173,12 +173,13 @@ std::vector<Camera> demo_cameras(const SunAndAtmosphere& sun) {
                      {-30.0f, 1.8f, 5.0f}, {10.0f, 3.0f, -60.0f}, {0, 1, 0}, 70.0f, {-5.0f, 0.0f, -35.0f}});
   // The two views below show little or no sky, where every tile needs lighting: the default
   // camera's 36 % sky flatters tile classification (a sky tile costs almost nothing).
-  // Down the gap between two columns of boxes and pillars, pitched down 18 degrees.
-  cameras.push_back({"street", "down the street between the boxes and pillars, pitched down: little sky",
-                     {3.5f, 2.2f, 2.0f}, {3.5f, -13.1f, -45.0f}, {0, 1, 0}, 50.0f, {3.5f, 0.0f, -30.0f}});
-  // A canopy leg and the ground around it, all inside the canopy's shadow but for the far edge.
+  // Inside the field, down the gap between two columns of boxes and pillars, pitched down 12 degrees.
+  cameras.push_back({"street", "down the street between the boxes and pillars: little sky",
+                     {3.5f, 1.7f, -9.0f}, {3.5f, -8.9f, -59.0f}, {0, 1, 0}, 60.0f, {3.5f, 0.0f, -40.0f}});
+  // A canopy leg from 8 m, pitched down 25 degrees: the leg and the ground at its foot, all in the
+  // canopy's shadow but for the far edge.
   cameras.push_back({"closeup", "close-up of a canopy leg in the canopy's shadow: no sky, mostly shadowed",
-                     {160.0f, 4.0f, 30.0f}, {168.0f, -5.2f, 12.0f}, {0, 1, 0}, 45.0f, {166.0f, 0.0f, 20.0f}});
+                     {163.0f, 3.0f, 19.0f}, {168.0f, -0.8f, 12.0f}, {0, 1, 0}, 40.0f, {166.0f, 0.0f, 18.0f}});
   return cameras;
 }
 
