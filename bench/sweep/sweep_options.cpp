@@ -52,6 +52,10 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
       ->delimiter(',')
       ->check(CLI::IsMember({"auto", "1", "2", "4", "8", "16"}))
       ->capture_default_str();
+  std::string path = "cpu";
+  cli.add_option("--path", path, "index build of the baseline comparison: cpu (host patching) or gpu (compute)")
+      ->check(CLI::IsMember({"cpu", "gpu"}))
+      ->capture_default_str();
   cli.add_option("--only", options.only,
                  "run only these comparisons: permutations, tile_size, index_path, coalescing, primitive, "
                  "resolution, stages, baselines (default: all)")
@@ -75,6 +79,7 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
   }
   options.sizes.clear();
   for (const std::string& s : sizes) options.sizes.push_back(parse_frame_size(s));
+  options.gpu_path = path == "gpu";
   options.msaa.clear();
   for (const std::string& m : msaa) options.msaa.push_back(m == "auto" ? 0u : static_cast<std::uint32_t>(std::stoul(m)));
   return true;

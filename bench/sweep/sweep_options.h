@@ -23,6 +23,7 @@ struct SweepOptions {
   // of these cameras and G-buffer sample counts (0 = auto, as tilelight --msaa auto).
   std::vector<std::string> cameras;
   std::vector<std::uint32_t> msaa;
+  bool gpu_path = false;  // the index build of the baseline comparison: false = CPU patching
   // The comparisons to run, by id (sweep_plan.h); empty = all.
   std::vector<std::string> only;
   std::string device;  // as tilelight --device: "" = lavapipe, an index or a name substring

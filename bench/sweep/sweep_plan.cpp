@@ -76,11 +76,14 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
     std::uint32_t msaa;
     FrameSize size;
     std::string camera;
+    IndexPath path;
   };
   std::vector<View> views;
   for (std::uint32_t msaa : options.msaa) {
     for (const FrameSize& size : options.sizes) {
-      for (const std::string& camera : options.cameras) views.push_back({msaa, size, camera});
+      for (const std::string& camera : options.cameras) {
+        views.push_back({msaa, size, camera, options.gpu_path ? IndexPath::gpu : IndexPath::cpu});
+      }
     }
   }
   b.compare<View>(Facet::baselines, "baselines", "Classified vs per-pixel branching (dynamic) vs naive", views,
@@ -89,6 +92,7 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
                     o.width = v.size.width;
                     o.height = v.size.height;
                     o.camera = v.camera;
+                    o.path = v.path;
                   });
   return b.take();
 }
