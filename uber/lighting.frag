@@ -12,6 +12,7 @@
 //   LIGHT_SCATTERING some pixel lies beyond the scattering start; before it, the identity.
 //   MSAA_EDGE        some pixel's samples differ: shade every sample and average; otherwise
 //                    all samples are equal and sample 0 alone gives the same average.
+// (Built with GBUFFER_SINGLE_SAMPLED, the G-buffer has one sample and MSAA_EDGE adds nothing.)
 // Each feature is one call into the include library with the same arguments in every
 // permutation, so the arithmetic that does run is identical to the full shader's.
 //
@@ -98,14 +99,15 @@ vec3 shade_sample(ivec2 pixel, int sample_index)
     return shade_geometry(g, pixel);
 }
 
-// The average of every sample, as a running mean. A component equal to the mean so far is kept
-// as it is (a select, no arithmetic), so a pixel whose samples all shade alike averages to
-// exactly its sample-0 colour for any sample count, Inf included; a plain sum would not
-// (v + v + v rounds, Inf - Inf is NaN). That is what lets a non-edge tile shade sample 0 alone.
-vec3 shade_all_samples(ivec2 pixel)
+// The average of every sample, as a running mean, given sample 0's colour. A component equal to
+// the mean so far is kept as it is (a select, no arithmetic), so a pixel whose samples all shade
+// alike averages to exactly its sample-0 colour for any sample count, Inf included; a plain sum
+// would not (v + v + v rounds, Inf - Inf is NaN). That is what lets a non-edge tile shade sample
+// 0 alone. (With one sample per pixel there is nothing to add: the loop runs no pass.)
+vec3 add_other_samples(ivec2 pixel, vec3 sample0_colour)
 {
     int samples = gbuffer_sample_count();
-    vec3 mean = shade_sample(pixel, 0);
+    vec3 mean = sample0_colour;
     for (int s = 1; s < samples; ++s) {
         vec3 colour = shade_sample(pixel, s);
         mean = mix(mean + (colour - mean) / float(s + 1), mean, equal(colour, mean));
@@ -116,11 +118,11 @@ vec3 shade_all_samples(ivec2 pixel)
 void main()
 {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-#ifdef MSAA_EDGE
-    vec3 colour = !PER_PIXEL_BRANCHES || gbuffer_pixel_is_edge(pixel) ? shade_all_samples(pixel)
-                                                                       : shade_sample(pixel, 0);
-#else
     vec3 colour = shade_sample(pixel, 0);
+#ifdef MSAA_EDGE
+    if (!PER_PIXEL_BRANCHES || gbuffer_pixel_is_edge(pixel)) {
+        colour = add_other_samples(pixel, colour);
+    }
 #endif
     out_color = vec4(colour, 1.0);
 }
