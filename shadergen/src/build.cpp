@@ -1,6 +1,7 @@
 #include "shadergen/build.h"
 
 #include <chrono>
+#include <memory>
 
 #include "cache.h"
 #include "codegen.h"
@@ -11,6 +12,7 @@
 #include "manifest.h"
 #include "output_dir.h"
 #include "phase_clock.h"
+#include "remote_cache.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
 
@@ -24,6 +26,8 @@ Status check_names(const BuildOptions& options, const std::string& cpp_name, con
         cpp_name.front() == '.')
         return make_error("--cpp-name: \"" + cpp_name + "\" is not a plain file name");
     if (options.out_dir.empty()) return make_error("--out: no output folder given");
+    if (!options.remote_cache_url.empty() && !is_remote_cache_url(options.remote_cache_url))
+        return make_error("--remote-cache: \"" + options.remote_cache_url + "\" is not an http:// or https:// URL (set by the option or SHADERGEN_REMOTE_CACHE)");
     return Ok{};
 }
 
@@ -85,6 +89,10 @@ BuildSummary summarise(const CompiledDomain& d) {
     s.inputs_reused = d.inputs_reused;
     s.unique_blobs = static_cast<std::uint32_t>(d.blobs.size());
     for (const Blob& b : d.blobs) s.optimiser_fallbacks += b.fell_back;
+    if (d.remote) {
+        s.remote_cache = true;
+        s.remote_fetched = d.remote->fetched, s.remote_uploaded = d.remote->uploaded, s.remote_failed = d.remote->failed;
+    }
     return s;
 }
 
@@ -95,6 +103,12 @@ BuildOptions normalised(BuildOptions options) {
         out = out.parent_path();
     options.out_dir = out;
     return options;
+}
+
+std::unique_ptr<RemoteCache> remote_cache_for(const BuildOptions& options) {
+    if (!options.use_cache || options.remote_cache_url.empty()) return nullptr;
+    return std::make_unique<RemoteCache>(options.remote_cache_url, options.remote_cache_read_only,
+                                         make_curl_http_client(), options.log);
 }
 
 }  // namespace
@@ -123,6 +137,8 @@ Result<BuildSummary> build(const BuildOptions& given) {
     }
     CompileOptions compile_options{options.jobs, cache.enabled() ? &cache : nullptr, nullptr, {}, options.verbose,
                                    options.log, options.cancelled};
+    std::unique_ptr<RemoteCache> remote = remote_cache_for(options);
+    compile_options.remote = remote.get();
     if (inputs.enabled() && !loaded->digest.empty()) {
         compile_options.inputs = &inputs;
         compile_options.input_key = input_set_key(options.spec_path, loaded->digest, preprocessing_settings(*spec));
@@ -130,6 +146,7 @@ Result<BuildSummary> build(const BuildOptions& given) {
     auto domain = compile_domain(std::move(spec).value(), std::move(plan).value(), compile_options);
     if (!domain) return std::move(domain).take_errors();
     phases.insert(phases.end(), domain->phases.begin(), domain->phases.end());
+    if (remote) domain->remote = remote->stats();
     clock.restart();
 
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -82,7 +82,16 @@ struct BuildArgs {
     std::vector<std::string> defines;
     unsigned jobs = 0;
     bool no_cache = false, stats = false, verbose = false;
+    std::string remote_cache;
+    bool remote_cache_readonly = false;
 };
+
+// "; remote: 13 fetched, 0 uploaded, 0 failed" inside the summary's parentheses, with a remote cache.
+std::string remote_counts(const BuildSummary& s) {
+    if (!s.remote_cache) return {};
+    return "; remote: " + std::to_string(s.remote_fetched) + " fetched, " + std::to_string(s.remote_uploaded) +
+           " uploaded, " + std::to_string(s.remote_failed) + " failed";
+}
 
 int run_build(const BuildArgs& a, std::ostream& out, std::ostream& err) {
     BuildOptions options;
@@ -97,6 +106,8 @@ int run_build(const BuildArgs& a, std::ostream& out, std::ostream& err) {
     options.defines = a.defines;
     options.write_stats = a.stats;
     options.verbose = a.verbose;
+    options.remote_cache_url = a.remote_cache;
+    options.remote_cache_read_only = a.remote_cache_readonly;
     options.log = [&err](const std::string& line) { err << "shadergen: " << line << std::endl; };
     options.cancelled = [] { return g_interrupted.load(); };
     auto summary = build(options);
@@ -110,7 +121,7 @@ int run_build(const BuildArgs& a, std::ostream& out, std::ostream& err) {
     const BuildSummary& s = *summary;
     out << "shadergen: " << a.out << ": " << s.raw << " raw (" << s.pruned << " pruned), " << s.optimised
         << " optimised, " << s.companions << " companion" << (s.companions == 1 ? "" : "s") << " -> "
-        << s.unique_sources << " distinct sources (" << s.compiled << " compiled, " << s.cache_hits << " cached), "
+        << s.unique_sources << " distinct sources (" << s.compiled << " compiled, " << s.cache_hits << " cached" << remote_counts(s) << "), "
         << s.unique_blobs << " SPIR-V blobs" << (s.output_changed ? "" : "; output unchanged");
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, " in %.2f s\n", s.seconds);
@@ -158,6 +169,12 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
         ->allow_extra_args(false);
     build_cmd->add_flag("--stats", b.stats, "Also write stats.json: per-stage counts and per-permutation timings");
     build_cmd->add_flag("-v,--verbose", b.verbose, "One progress line per compiled source");
+    build_cmd
+        ->add_option("--remote-cache", b.remote_cache,
+                     "Content cache shared over HTTP, asked after the local one: GET/PUT URL/<key-prefix>/<key>")
+        ->envname("SHADERGEN_REMOTE_CACHE");
+    build_cmd->add_flag("--remote-cache-readonly", b.remote_cache_readonly,
+                        "Only read the remote cache, never upload to it (developer machines)");
 
     std::string spec_path;
     CLI::App* lut_cmd = app.add_subcommand("lut", "Print the raw -> optimised lookup table");

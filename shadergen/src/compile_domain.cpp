@@ -13,6 +13,7 @@
 #include "glsl_compiler.h"
 #include "input_cache.h"
 #include "phase_clock.h"
+#include "remote_cache.h"
 #include "sha256.h"
 #include "source_key.h"
 #include "spirv_passes.h"
@@ -175,12 +176,27 @@ private:
         return Ok{};
     }
 
+    // Locally, then remotely; a remote entry is kept locally so the next build needs no network.
+    std::optional<CachedBlob> load_cached(SourceRecord& record) {
+        std::optional<CachedBlob> hit;
+        if (options_.cache) hit = options_.cache->load(record.key);
+        if (!hit && options_.remote && (hit = options_.remote->load(record.key))) {
+            record.remote_hit = true;
+            store_local(record.key, *hit);
+        }
+        record.cache_hit = hit.has_value();
+        return hit;
+    }
+
+    void store_local(const std::string& key, const CachedBlob& blob) {
+        if (!options_.cache) return;
+        // A cache that cannot be written only costs time later; the build itself is fine.
+        if (Status stored = options_.cache->store(key, blob); !stored)
+            log("warning: " + stored.errors().front().to_string());
+    }
+
     Result<CachedBlob> compile_one(SourceRecord& record) {
-        if (options_.cache)
-            if (auto hit = options_.cache->load(record.key)) {
-                record.cache_hit = true;
-                return std::move(*hit);
-            }
+        if (auto hit = load_cached(record)) return std::move(*hit);
         auto start = Clock::now();
         auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
         if (!words) return std::move(words).take_errors();
@@ -188,11 +204,8 @@ private:
         if (!optimised) return std::move(optimised).take_errors();
         record.compile_ms = milliseconds_since(start);
         CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
-        if (options_.cache) {
-            // A cache that cannot be written only costs time later; the build itself is fine.
-            if (Status stored = options_.cache->store(record.key, blob); !stored)
-                log("warning: " + stored.errors().front().to_string());
-        }
+        store_local(record.key, blob);
+        if (options_.remote) options_.remote->store(record.key, blob);
         return blob;
     }
 
@@ -233,7 +246,7 @@ private:
                 defines += d;
             }
             log("[" + std::to_string(finished) + "/" + std::to_string(total) + "] " +
-                (record.cache_hit ? "cached   " : "compiled ") + job.label() + (defines.empty() ? "" : ":" + defines));
+                (record.remote_hit ? "remote   " : record.cache_hit ? "cached   " : "compiled ") + job.label() + (defines.empty() ? "" : ":" + defines));
         } else if (total >= 8 && finished % (total / 4) == 0 && finished != total) {
             log(std::to_string(finished) + "/" + std::to_string(total) + " sources done");
         }

@@ -4,10 +4,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "layout_check.h"
+#include "remote_cache.h"
 #include "reflection.h"
 #include "shadergen/diagnostic.h"
 #include "shadergen/build.h"
@@ -18,6 +20,7 @@ namespace shadergen {
 
 class ContentCache;
 class InputCache;
+class RemoteCache;
 
 // One distinct SPIR-V blob; permutations with equal words share it.
 struct Blob {
@@ -51,6 +54,7 @@ struct SourceRecord {
     bool cache_hit = false;
     double compile_ms = 0.0;
     int blob = -1;
+    bool remote_hit = false;  // the cache hit came from the remote cache
 };
 
 struct CompiledDomain {
@@ -63,6 +67,7 @@ struct CompiledDomain {
     std::vector<std::filesystem::path> dependencies;  // spec, shaders, includes; sorted, unique
     bool inputs_reused = false;       // source keys came from the input-set cache, no preprocessing
     std::vector<PhaseTime> phases;    // preprocess (or input check), compile or load, reflect, layout
+    std::optional<RemoteCacheStats> remote;  // with a remote cache only
 
     // Blob of raw ID `id`, or nullptr when pruned. Likewise for optimised IDs and companions.
     const Blob* raw_blob(std::uint32_t id) const;
@@ -78,6 +83,7 @@ struct CompileOptions {
     bool verbose = false;
     std::function<void(const std::string&)> log;
     std::function<bool()> cancelled;
+    RemoteCache* remote = nullptr;        // nullptr: no remote cache; else asked after a local miss
 };
 
 // Preprocesses, deduplicates, compiles (or loads from the cache), optimises, validates and

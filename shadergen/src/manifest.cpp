@@ -159,6 +159,15 @@ std::string write_stats(const CompiledDomain& d, double seconds) {
     w.key("recompiled_permutations"), w.value(recompiled);
     w.key("reused_permutations"), w.value(static_cast<std::uint32_t>(d.jobs.size()) - recompiled);
     w.key("inputs_reused"), w.value(d.inputs_reused);
+    if (d.remote) {
+        w.key("remote_cache");
+        w.begin_object();
+        w.key("fetched"), w.value(d.remote->fetched);
+        w.key("missed"), w.value(d.remote->missed);
+        w.key("uploaded"), w.value(d.remote->uploaded);
+        w.key("failed"), w.value(d.remote->failed);
+        w.end_object();
+    }
     w.key("phases_ms");
     w.begin_object();
     for (const PhaseTime& phase : d.phases) w.key(phase.name), w.value(phase.ms);

@@ -27,6 +27,11 @@ struct BuildOptions {
     std::vector<std::string> defines;
     bool write_stats = false;         // also write <out>/stats.json (timings: not deterministic)
     bool verbose = false;             // one progress line per compiled source
+    // A content cache shared over HTTP: GET/PUT <url>/<key[0:2]>/<key>, asked after a local miss,
+    // given every entry compiled here unless read-only. Empty: none; unused without use_cache.
+    // Precondition: empty or an http:// or https:// URL (else build() fails naming it).
+    std::string remote_cache_url;
+    bool remote_cache_read_only = false;
     // Receives progress lines (the CLI prints them on stderr). May be empty.
     std::function<void(const std::string&)> log;
     // Polled between jobs; when it returns true the build stops and fails, output untouched.
@@ -54,6 +59,10 @@ struct BuildSummary {
     std::uint32_t reused = 0;          // of which taken from the cache
     bool inputs_reused = false;        // every input unchanged: preprocessing was skipped
     bool output_changed = false;       // false when every output file already had these bytes
+    bool remote_cache = false;         // a remote cache was configured; then the three counts:
+    std::uint32_t remote_fetched = 0;  // of cache_hits, entries taken from the remote cache
+    std::uint32_t remote_uploaded = 0;
+    std::uint32_t remote_failed = 0;   // requests without a usable answer, and rejected entries
     double seconds = 0.0;
     std::vector<PhaseTime> phases;     // in order; their sum is close to `seconds`
 };
