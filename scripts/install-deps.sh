@@ -6,7 +6,8 @@ PACKAGES="cmake ninja-build g++ pkg-config
 glslang-dev glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev
 libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
 libglm-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
-libcli11-dev nlohmann-json3-dev libstb-dev"
+libcli11-dev nlohmann-json3-dev libstb-dev
+libcurl4-openssl-dev nginx"
 
 missing=""
 for package in $PACKAGES; do

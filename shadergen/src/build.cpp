@@ -27,7 +27,8 @@ Status check_names(const BuildOptions& options, const std::string& cpp_name, con
         return make_error("--cpp-name: \"" + cpp_name + "\" is not a plain file name");
     if (options.out_dir.empty()) return make_error("--out: no output folder given");
     if (!options.remote_cache_url.empty() && !is_remote_cache_url(options.remote_cache_url))
-        return make_error("--remote-cache: \"" + options.remote_cache_url + "\" is not an http:// or https:// URL (set by the option or SHADERGEN_REMOTE_CACHE)");
+        return make_error("--remote-cache: \"" + options.remote_cache_url +
+                          "\" is not an http:// or https:// URL (set by the option or SHADERGEN_REMOTE_CACHE)");
     return Ok{};
 }
 
