@@ -1,5 +1,6 @@
 # shadergen_add_permutations(<target> DOMAIN <spec> [NAMESPACE <ns>] [CACHE_DIR <dir>] [JOBS <n>]
-#                            [DEFINES <NAME=VALUE|NAME>...])
+#                            [DEFINES <NAME=VALUE|NAME>...]
+#                            [REMOTE_CACHE <url> [REMOTE_CACHE_READONLY]])
 #
 # Creates a static library <target> holding every permutation of the domain <spec> as SPIR-V,
 # the raw -> optimised lookup table and a registry, with the header <target>.h on its include
@@ -9,10 +10,13 @@
 # defines for every shader of the domain, on top of the spec's own "defines". Files whose bytes did not change keep their
 # timestamps, so nothing downstream recompiles after an edit that changes no SPIR-V.
 #
+# REMOTE_CACHE passes --remote-cache (without it, shadergen still reads SHADERGEN_REMOTE_CACHE
+# from the build's environment); REMOTE_CACHE_READONLY passes --remote-cache-readonly.
+#
 # Needs SHADERGEN_EXECUTABLE to name the shadergen executable target (the project sets it; the
 # package config sets it to the imported shadergen::shadergen).
 function(shadergen_add_permutations target)
-  cmake_parse_arguments(PARSE_ARGV 1 SG "" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS" "DEFINES")
+  cmake_parse_arguments(PARSE_ARGV 1 SG "REMOTE_CACHE_READONLY" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS;REMOTE_CACHE" "DEFINES")
   if(SG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "shadergen_add_permutations(${target}): unknown arguments: ${SG_UNPARSED_ARGUMENTS}")
   endif()
@@ -47,6 +51,12 @@ function(shadergen_add_permutations target)
   foreach(define IN LISTS SG_DEFINES)
     list(APPEND extra --define "${define}")
   endforeach()
+  if(SG_REMOTE_CACHE)
+    list(APPEND extra --remote-cache "${SG_REMOTE_CACHE}")
+  endif()
+  if(SG_REMOTE_CACHE_READONLY)
+    list(APPEND extra --remote-cache-readonly)
+  endif()
   add_custom_command(
     OUTPUT "${out}/${target}.h" "${out}/${target}.cpp" "${out}/manifest.json"
     COMMAND "$<TARGET_FILE:${SHADERGEN_EXECUTABLE}>" build "${spec}" --out "${out}" --cpp-name "${target}"
