@@ -30,11 +30,16 @@
 #include <unistd.h>
 
 #include "shadergen/domain.h"
+#include "timed_process.h"
 #include "shadergen/permutations.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using bench::median;
+using bench::output_files;
+using bench::read_text;
+using bench::Run;
 
 struct Options {
     fs::path spec = SHADERGEN_SOURCE_DIR "/permutations/split_second.json";
@@ -67,40 +72,7 @@ std::optional<Options> parse_args(int argc, char** argv) {
     return o;
 }
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
-
-std::string quote(const std::string& text) {
-    std::string out = "'";
-    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-struct Run {
-    bool ok = false;
-    double seconds = 0.0;
-    std::string out;  // stdout and stderr
-};
-
-// Runs a command line through the shell, timed from start to exit, output captured.
-Run run(const std::vector<std::string>& args, const fs::path& log) {
-    std::string command;
-    for (const std::string& arg : args) command += (command.empty() ? "" : " ") + quote(arg);
-    command += " >" + quote(log.string()) + " 2>&1 </dev/null";
-    auto start = std::chrono::steady_clock::now();
-    int status = std::system(command.c_str());
-    Run r;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.ok = status == 0;
-    r.out = read_text(log);
-    return r;
-}
 
 // The copy: the folders of the spec, the shaders and the include dirs, below their common
 // ancestor, so the spec's relative paths still resolve and the original files stay untouched.
@@ -214,21 +186,6 @@ std::optional<int> number_after(const std::string& text, const std::string& patt
     return std::stoi(m[1]);
 }
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2.0;
-}
-
-// Every file of an output folder but stats.json.
-std::map<std::string, std::string> output_files(const fs::path& dir) {
-    std::map<std::string, std::string> files;
-    for (const auto& entry : fs::recursive_directory_iterator(dir))
-        if (entry.is_regular_file() && entry.path().filename() != "stats.json")
-            files[entry.path().lexically_relative(dir).generic_string()] = read_text(entry.path());
-    return files;
-}
-
 class Bench {
 public:
     Bench(Options o, shadergen::DomainSpec spec, std::vector<Job> jobs, std::string define)
@@ -255,18 +212,9 @@ public:
                     warm, cold / warm);
         std::printf("  (d) after an edit inside #ifdef %s: rebuild                %8.3f s  %d of %zu permutations recompiled (%zu define %s)\n",
                     define_.c_str(), edit, recompiled_, jobs_.size(), expected_, define_.c_str());
-        std::printf("  every run (s): (a) %s; (b) %s; (c) %s; (d) %s\n", list(script_s_).c_str(), list(cold_s_).c_str(),
-                    list(warm_s_).c_str(), list(edit_s_).c_str());
-    }
-
-    static std::string list(const std::vector<double>& values) {
-        std::string out;
-        char number[32];
-        for (double v : values) {
-            std::snprintf(number, sizeof number, "%s%.3f", out.empty() ? "" : " ", v);
-            out += number;
-        }
-        return out;
+        std::printf("  every run (s): (a) %s; (b) %s; (c) %s; (d) %s\n", bench::seconds_list(script_s_).c_str(),
+                    bench::seconds_list(cold_s_).c_str(), bench::seconds_list(warm_s_).c_str(),
+                    bench::seconds_list(edit_s_).c_str());
     }
 
 private:
@@ -280,7 +228,7 @@ private:
     }
 
     Run step(const std::string& what, const std::vector<std::string>& args) const {
-        Run r = run(args, o_.work / "step.log");
+        Run r = bench::run(args, o_.work / "step.log");
         if (!r.ok) std::cerr << "shadergen_build_bench: " << what << " failed:\n" << r.out;
         return r;
     }
