@@ -126,7 +126,11 @@ private:
         auto child = std::make_unique<Child>(
             nginx, std::vector<std::string>{"-p", root_.string(), "-e", (root_ / "logs" / "error.log").string(), "-c",
                                             config.string()});
-        for (int i = 0; i < 1000 && child->started() && !exited(child->pid()); ++i) {
+        if (!child->started()) {  // never signal pid -1: that would reach every process we may signal
+            error_ = "cannot start " + nginx.string() + " (fork or pipe failed)";
+            return;
+        }
+        for (int i = 0; i < 1000 && !exited(child->pid()); ++i) {
             if (accepts_connections(port_)) {
                 child_ = std::move(child);
                 return;
