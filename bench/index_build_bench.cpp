@@ -6,8 +6,8 @@
 // stand-in for the generated one so the benchmark does not depend on generated code; what the
 // builder costs depends on how often neighbouring tiles share an optimised ID, not on the mapping.
 
-#include "tilelight/tile_grid.h"
-#include "tilelight/tile_index_builder.h"
+#include "tilelight/tiles/tile_grid.h"
+#include "tilelight/tiles/tile_index_builder.h"
 
 #include <benchmark/benchmark.h>
 
@@ -94,7 +94,7 @@ void BM_IndexBuild(benchmark::State& state) {
   const std::array<bool, kRawClassCount> pruned = synthetic_pruned();
   tilelight::TileIndexBuilder builder(grid, lut, pruned, kOptimisedClassCount, primitive);
   std::vector<std::uint32_t> indices(grid.max_index_count());
-  std::array<VkDrawIndexedIndirectCommand, kOptimisedClassCount> draws{};
+  std::array<tilelight::DrawRecord, kOptimisedClassCount> draws{};
 
   tilelight::IndexBuildStats stats;
   for (auto _ : state) {

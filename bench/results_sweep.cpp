@@ -14,10 +14,12 @@
 #include "sweep/sweep_tables.h"
 
 #include "plot/bar_chart.h"
-#include "tilelight/context.h"
-#include "tilelight/error.h"
-#include "tilelight/scene.h"
-#include "tilelight_app/output_files.h"
+#include "tilelight/app/output_files.h"
+#include "tilelight/base/error.h"
+#include "tilelight/base/staged_file.h"
+#include "tilelight/picture/png.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/vulkan/context.h"
 
 #include <fmt/format.h>
 
@@ -62,9 +64,7 @@ void update_document(const std::filesystem::path& path, std::map<std::string, st
   // Blank lines around each section keep the markers (HTML comments) apart from the tables.
   for (auto& [id, content] : sections) content = "\n" + content + "\n";
   const std::string text = replace_marked_sections(read_document(path), sections, path.string());
-  app::OutputFiles folder(path.has_parent_path() ? path.parent_path() : ".");
-  folder.stage_text(path.filename().string(), text);
-  folder.commit();
+  write_file_atomically(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
 }
 
 // Prints the run line and every comparison's table on stdout and stages its chart in `files`;
@@ -77,9 +77,8 @@ std::map<std::string, std::string> report_comparisons(const SweepPlan& plan, con
     const std::vector<const Measurement*> rows = rows_of(c, measurements);
     sections[c.id] = markdown_table(c, rows);
     std::cout << "\n### " << c.title << "\n\n" << sections[c.id];
-    files.stage(c.id + ".png", [&](const std::filesystem::path& p) {
-      plot::write_bar_chart_png(p, comparison_chart(c, rows));
-    });
+    const Rgba8Canvas chart = plot::draw_bar_chart(comparison_chart(c, rows));
+    files.stage(c.id + ".png", encode_png(chart.width, chart.height, chart.pixels));
   }
   return sections;
 }

@@ -38,12 +38,6 @@ Run run(const std::vector<std::string>& args, const std::filesystem::path& log) 
     return r;
 }
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2.0;
-}
-
 std::string seconds_list(const std::vector<double>& values) {
     std::string out;
     char number[32];

@@ -2,6 +2,8 @@
 // timed from start to exit, medians, and an output folder read back for comparison.
 #pragma once
 
+#include "tilelight/base/median.h"
+
 #include <filesystem>
 #include <map>
 #include <string>
@@ -18,8 +20,8 @@ struct Run {
 // Runs `args` (quoted for the shell) with stdin from /dev/null and both outputs into `log`.
 Run run(const std::vector<std::string>& args, const std::filesystem::path& log);
 
-// Precondition: `values` is not empty.
-double median(std::vector<double> values);
+// The runtime's median (tilelight/base/median.h): one definition for every timing table.
+using tilelight::median;
 
 // "1.234 1.198 1.305": every run, in order, for the report.
 std::string seconds_list(const std::vector<double>& values);

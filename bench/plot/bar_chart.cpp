@@ -1,8 +1,7 @@
 #include "bar_chart.h"
 
-#include "tilelight/bitmap_font.h"
-#include "tilelight/error.h"
-#include "tilelight/png.h"
+#include "tilelight/picture/bitmap_font.h"
+#include "tilelight/base/error.h"
 
 #include <fmt/format.h>
 
@@ -201,11 +200,6 @@ Rgba8Canvas draw_bar_chart(const BarChart& chart) {
   draw_value_axis(canvas, chart, l);
   draw_groups(canvas, chart, l);  // last: bars cover the grid lines
   return canvas;
-}
-
-void write_bar_chart_png(const std::filesystem::path& path, const BarChart& chart) {
-  const Rgba8Canvas canvas = draw_bar_chart(chart);
-  write_png_rgba8(path, canvas.width, canvas.height, canvas.pixels);
 }
 
 Rgba8 series_colour(std::size_t index) {

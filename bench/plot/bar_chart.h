@@ -9,9 +9,8 @@
 // vertical grid lines; the value-axis label. The category-axis label stands above the category
 // names. Bars start at zero; every value must be finite and >= 0.
 
-#include "tilelight/tile_class_image.h"
+#include "tilelight/picture/tile_class_image.h"
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -48,9 +47,6 @@ void check_bar_chart(const BarChart& chart);
 
 // Draws the chart on a white canvas sized to fit it. Checks it first (check_bar_chart).
 Rgba8Canvas draw_bar_chart(const BarChart& chart);
-
-// draw_bar_chart() written as a PNG at `path` (atomically; the parent folder must exist).
-void write_bar_chart_png(const std::filesystem::path& path, const BarChart& chart);
 
 // The colour of series `index` (a colour-blind-safe palette, repeating after 7 series).
 Rgba8 series_colour(std::size_t index);

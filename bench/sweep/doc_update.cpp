@@ -1,6 +1,6 @@
 #include "doc_update.h"
 
-#include "tilelight/error.h"
+#include "tilelight/base/error.h"
 
 namespace tilelight::sweep {
 namespace {

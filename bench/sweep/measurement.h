@@ -2,10 +2,10 @@
 // One configuration of the renderer measured: medians of every stage over the timed frames,
 // the primitive counts, and whether the classified frame still equals the naive one.
 
-#include "tilelight/context.h"
-#include "tilelight/scene.h"
-#include "tilelight/tile_renderer.h"
-#include "tilelight_app/report.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/render/tile_renderer.h"
+#include "tilelight/app/report.h"
 
 #include <cstdint>
 #include <ostream>

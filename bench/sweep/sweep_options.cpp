@@ -1,6 +1,6 @@
 #include "sweep_options.h"
 
-#include "tilelight/error.h"
+#include "tilelight/vulkan/error.h"
 
 #include <CLI/CLI.hpp>
 

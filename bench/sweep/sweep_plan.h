@@ -7,7 +7,7 @@
 #include "measurement.h"
 #include "sweep_options.h"
 
-#include "tilelight/tile_renderer.h"
+#include "tilelight/render/tile_renderer.h"
 
 #include <string>
 #include <vector>

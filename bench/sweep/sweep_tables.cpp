@@ -1,5 +1,7 @@
 #include "sweep_tables.h"
 
+#include "tilelight/base/median.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -43,15 +45,9 @@ std::string stages_table(const Measurement& m) {
   return out;
 }
 
-double median_of(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t mid = values.size() / 2;
-  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
-
 std::string min_median_max(const std::vector<double>& values) {
   return fmt::format("{:.2f}x / {:.2f}x / {:.2f}x", *std::min_element(values.begin(), values.end()),
-                     median_of(values), *std::max_element(values.begin(), values.end()));
+                     median(values), *std::max_element(values.begin(), values.end()));
 }
 
 // Classified vs dynamic vs naive per row, then per MSAA mode and size the spread over cameras.

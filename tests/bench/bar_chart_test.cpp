@@ -3,7 +3,7 @@
 
 #include "plot/bar_chart.h"
 
-#include "tilelight/error.h"
+#include "tilelight/base/error.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 
 #include "sweep/doc_update.h"
 
-#include "tilelight/error.h"
+#include "tilelight/base/error.h"
 
 #include <gtest/gtest.h>
 

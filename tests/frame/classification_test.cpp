@@ -1,9 +1,9 @@
 // GPU classification against the CPU reference classifier, and the properties each camera's
 // frame is built to have.
 #include "frame_support.h"
-#include "test_support.h"
-#include "tilelight/cpu_classifier.h"
-#include "tilelight/scene.h"
+#include "tilelight_testing/test_support.h"
+#include "tilelight_testing/cpu_classifier.h"
+#include "tilelight/scene/scene.h"
 
 #include <split_second_shaders.h>
 

@@ -1,6 +1,6 @@
 // The tilelight command line, run in-process: its files, its report and its errors.
-#include "test_support.h"
-#include "tilelight_app/cli.h"
+#include "tilelight_testing/test_support.h"
+#include "tilelight/app/cli.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -98,7 +98,7 @@ TEST(TilelightCli, WritesTheFiveFilesAndTheReportFields) {
   EXPECT_NE(r.out.find("; dynamic vs naive: 0 differ (max 0)"), std::string::npos) << r.out;
   // Nothing temporary left beside the results.
   for (const auto& entry : fs::directory_iterator(out)) {
-    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
   }
 }
 

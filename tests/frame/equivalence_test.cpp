@@ -4,8 +4,8 @@
 // The dynamic baseline (one full-screen pass branching per pixel) must give the naive render
 // too: its skipped work is the same exact identity the permutations rely on.
 #include "frame_support.h"
-#include "test_support.h"
-#include "tilelight/scene.h"
+#include "tilelight_testing/test_support.h"
+#include "tilelight/scene/scene.h"
 
 #include <split_second_shaders.h>
 

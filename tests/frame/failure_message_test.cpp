@@ -1,8 +1,8 @@
 // What tilelight prints when a run fails: the stage, the cause, and a hint for the failures a
 // user can do something about. Every exception type the runtime, the driver or the C++ library
 // can throw has a message; none ends the program without one.
-#include "tilelight/error.h"
-#include "tilelight_app/failure.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/app/failure.h"
 
 #include <gtest/gtest.h>
 

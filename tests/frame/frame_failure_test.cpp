@@ -1,9 +1,10 @@
 // The tile pass is submitted before the host signals it. A failure in between must not leave
 // the queue blocked: the renderer empties the draws, signals, waits, then reports the error.
-#include "test_support.h"
-#include "tilelight/error.h"
-#include "tilelight/scene.h"
-#include "tilelight/tile_renderer.h"
+#include "tilelight_testing/test_support.h"
+#include "tilelight/base/error.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/render/tile_renderer.h"
+#include "tilelight_testing/renderer_test_seam.h"
 
 namespace tilelight::test {
 namespace {
@@ -17,7 +18,7 @@ TEST_F(FrameFailure, ErrorBeforeTheHostSignalStillReleasesTheGpu) {
   options.height = 64;
   options.timeout = Seconds(20);
   TileRenderer renderer(context(), scene, options);
-  renderer.set_before_host_signal([] { throw Error("injected failure in the index build"); });
+  TileRendererTestSeam::set_before_host_signal(renderer, [] { throw Error("injected failure in the index build"); });
   try {
     renderer.render_frame();
     FAIL() << "render_frame() did not report the injected failure";
@@ -27,7 +28,7 @@ TEST_F(FrameFailure, ErrorBeforeTheHostSignalStillReleasesTheGpu) {
   // The queue is free again: this would time out if the tile pass were still waiting.
   EXPECT_NO_THROW(context().wait_idle("after the injected failure", Seconds(20)));
   // And the renderer still works.
-  renderer.set_before_host_signal({});
+  TileRendererTestSeam::set_before_host_signal(renderer, {});
   EXPECT_NO_THROW(renderer.render_frame());
 }
 

@@ -1,10 +1,10 @@
 #pragma once
 // Helpers for the frame tests: render one frame with given options and compare.
 
-#include "tilelight/cpu_classifier.h"
-#include "tilelight/readback.h"
-#include "tilelight/scene.h"
-#include "tilelight/tile_renderer.h"
+#include "tilelight_testing/cpu_classifier.h"
+#include "tilelight/vulkan/readback.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/render/tile_renderer.h"
 
 #include <cstdint>
 #include <set>

@@ -4,7 +4,7 @@
 // names the stage, never abort or die on a signal, and must write no output.
 #include "child_process.h"
 #include "sanitizer.h"
-#include "test_support.h"
+#include "tilelight_testing/test_support.h"
 
 #include <gtest/gtest.h>
 

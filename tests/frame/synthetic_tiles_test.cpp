@@ -7,9 +7,10 @@
 // takes the next of the 16 combinations for its original class, so every class of the scene
 // is combined with every edit. The edited G-buffer is uploaded and the frame rendered again.
 #include "frame_support.h"
-#include "test_support.h"
-#include "tilelight/cpu_classifier.h"
-#include "tilelight/scene.h"
+#include "tilelight_testing/test_support.h"
+#include "tilelight_testing/cpu_classifier.h"
+#include "tilelight_testing/renderer_test_seam.h"
+#include "tilelight/scene/scene.h"
 
 #include <split_second_shaders.h>
 
@@ -124,7 +125,7 @@ std::set<std::uint32_t> check_edited_frame(const Context& context, const Scene& 
   renderer.render_frame();
   const GBufferSamples edited =
       edit_tiles(renderer.read_gbuffer(), renderer.grid(), renderer.lighting_params(), renderer.raw_tile_ids());
-  renderer.set_gbuffer_override(edited);
+  TileRendererTestSeam::set_gbuffer_override(renderer, edited);
   const FrameResult frame = renderer.render_frame();
 
   // The upload reproduced the edited G-buffer (up to the targets' 8-bit and half precision).

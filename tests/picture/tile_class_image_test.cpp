@@ -1,8 +1,8 @@
 // The tile-class picture: palette, labels, tinting, outlines, legend and argument checks.
-#include "tilelight/tile_class_image.h"
+#include "tilelight/picture/tile_class_image.h"
 
-#include "tilelight/error.h"
-#include "tilelight/png.h"
+#include "tilelight/base/error.h"
+#include "tilelight/picture/png.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // Buffers: persistent mapping, bounds-checked host access, GPU writes visible after readback.
-#include "test_support.h"
+#include "tilelight_testing/test_support.h"
 
-#include "tilelight/barriers.h"
-#include "tilelight/buffer.h"
-#include "tilelight/error.h"
-#include "tilelight/submit.h"
+#include "tilelight/vulkan/barriers.h"
+#include "tilelight/vulkan/buffer.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/vulkan/submit.h"
 
 #include <gtest/gtest.h>
 

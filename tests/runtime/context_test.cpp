@@ -1,7 +1,7 @@
 // The context on lavapipe: validation on and silent, limits read, the log really records.
-#include "test_support.h"
+#include "tilelight_testing/test_support.h"
 
-#include "tilelight/error.h"
+#include "tilelight/vulkan/error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Device selection: the rules on made-up device lists, then the real lavapipe instance.
-#include "tilelight/context.h"
-#include "tilelight/device_selection.h"
-#include "tilelight/error.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/device_selection.h"
+#include "tilelight/vulkan/error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Error texts: they are what a user sees when a run fails, so their exact form is tested.
-#include "tilelight/error.h"
-#include "tilelight/timeout.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/vulkan/timeout.h"
 
 #include <gtest/gtest.h>
 

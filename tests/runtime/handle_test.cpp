@@ -1,5 +1,5 @@
 // Handle: move-only ownership, exactly-once destruction.
-#include "tilelight/handle.h"
+#include "tilelight/vulkan/handle.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Images: creation with a clear reason when the device lacks a combination; samplers.
-#include "test_support.h"
+#include "tilelight_testing/test_support.h"
 
-#include "tilelight/error.h"
-#include "tilelight/image.h"
-#include "tilelight/sampler.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/vulkan/image.h"
+#include "tilelight/vulkan/sampler.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Memory-type choice on a made-up device with typical discrete-GPU memory types.
-#include "tilelight/error.h"
-#include "tilelight/memory.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/vulkan/memory.h"
 
 #include <gtest/gtest.h>
 

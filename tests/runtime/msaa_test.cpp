@@ -1,8 +1,8 @@
 // MSAA choice: 2x where the device has it, else 4x, else 1x; 1x on request; explicit requests
 // the device lacks fail.
-#include "tilelight/context.h"
-#include "tilelight/error.h"
-#include "tilelight/msaa.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/vulkan/msaa.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Device memory that cannot be had: the error is a VulkanError that names the call, the object
 // and VK_ERROR_OUT_OF_DEVICE_MEMORY, and nothing is left half-built.
-#include "tilelight/buffer.h"
-#include "tilelight/context.h"
-#include "tilelight/error.h"
+#include "tilelight/vulkan/buffer.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // PNG output: correct pixels, atomic replacement, errors that name the path.
-#include "test_support.h"
+#include "tilelight_testing/test_support.h"
 
-#include "tilelight/error.h"
-#include "tilelight/png.h"
+#include "tilelight/base/error.h"
+#include "tilelight/picture/png.h"
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>

@@ -1,13 +1,13 @@
 // Readback: exact values after vkCmdClearColorImage, row order after an upload, the decoders,
 // and the preconditions that are checked.
-#include "test_support.h"
+#include "tilelight_testing/test_support.h"
 
-#include "tilelight/barriers.h"
-#include "tilelight/buffer.h"
-#include "tilelight/error.h"
-#include "tilelight/image.h"
-#include "tilelight/readback.h"
-#include "tilelight/submit.h"
+#include "tilelight/vulkan/barriers.h"
+#include "tilelight/vulkan/buffer.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/vulkan/image.h"
+#include "tilelight/vulkan/readback.h"
+#include "tilelight/vulkan/submit.h"
 
 #include <gtest/gtest.h>
 

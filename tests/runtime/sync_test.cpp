@@ -1,12 +1,12 @@
 // Fences and timeline semaphores: host signals, bounded waits, and a submit that waits for a
 // host signal (the draw-patching mechanism of DESIGN.md section 1, step 6).
-#include "test_support.h"
+#include "tilelight_testing/test_support.h"
 
-#include "tilelight/barriers.h"
-#include "tilelight/buffer.h"
-#include "tilelight/error.h"
-#include "tilelight/submit.h"
-#include "tilelight/sync.h"
+#include "tilelight/vulkan/barriers.h"
+#include "tilelight/vulkan/buffer.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/vulkan/submit.h"
+#include "tilelight/vulkan/sync.h"
 
 #include <gtest/gtest.h>
 

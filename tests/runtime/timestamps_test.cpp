@@ -1,12 +1,12 @@
 // Named timestamps: milliseconds in write order, an error for a full pool. (Reading results
 // before the work finished cannot be tested on lavapipe: vkGetQueryPoolResults blocks there
 // until the queue is idle.)
-#include "test_support.h"
+#include "tilelight_testing/test_support.h"
 
-#include "tilelight/buffer.h"
-#include "tilelight/error.h"
-#include "tilelight/submit.h"
-#include "tilelight/timestamps.h"
+#include "tilelight/vulkan/buffer.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/vulkan/submit.h"
+#include "tilelight/vulkan/timestamps.h"
 
 #include <gtest/gtest.h>
 

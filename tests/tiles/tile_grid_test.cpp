@@ -1,5 +1,5 @@
-#include "tilelight/error.h"
-#include "tilelight/tile_grid.h"
+#include "tilelight/base/error.h"
+#include "tilelight/tiles/tile_grid.h"
 
 #include <gtest/gtest.h>
 

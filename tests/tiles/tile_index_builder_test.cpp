@@ -1,7 +1,7 @@
-#include "tilelight/error.h"
-#include "tilelight/tile_grid.h"
-#include "tilelight/tile_index_builder.h"
-#include "tilelight/tile_primitive.h"
+#include "tilelight/base/error.h"
+#include "tilelight/tiles/tile_grid.h"
+#include "tilelight/tiles/tile_index_builder.h"
+#include "tilelight/tiles/tile_primitive.h"
 
 #include <gtest/gtest.h>
 
@@ -57,7 +57,7 @@ constexpr std::uint32_t kUnwritten = 0xDEADBEEFu;  // what build_row_major() fil
 struct Built {
   IndexBuildStats stats;
   std::vector<std::uint32_t> indices;
-  std::vector<VkDrawIndexedIndirectCommand> draws = std::vector<VkDrawIndexedIndirectCommand>(kOptimisedClassCount);
+  std::vector<DrawRecord> draws = std::vector<DrawRecord>(kOptimisedClassCount);
 };
 
 Built build_row_major(const TileGrid& grid, const std::vector<std::uint8_t>& row_major, bool coalesce,
@@ -146,7 +146,7 @@ void verify_build(const TileGrid& grid, const std::vector<std::uint8_t>& rm, con
   std::vector<int> coverage(grid.tile_count(), 0);
   std::array<std::uint32_t, kMaxDrawClasses> tiles_per_class{};
   for (std::uint32_t id = 0; id < class_count; ++id) {
-    const VkDrawIndexedIndirectCommand& d = b.draws[id];
+    const DrawRecord& d = b.draws[id];
     EXPECT_EQ(d.instanceCount, 1u);
     EXPECT_EQ(d.vertexOffset, 0);
     EXPECT_EQ(d.firstInstance, 0u);
@@ -371,7 +371,7 @@ TEST(TileIndexBuilder, PaddingSlotsAreNotRead) {
   const std::vector<std::uint8_t> lut = test_lut();
   TileIndexBuilder builder(grid, lut, test_pruned());
   std::vector<std::uint32_t> indices(grid.max_index_count());
-  std::array<VkDrawIndexedIndirectCommand, kOptimisedClassCount> draws{};
+  std::array<DrawRecord, kOptimisedClassCount> draws{};
   const IndexBuildStats stats = builder.build(blocked, true, indices, draws);
   EXPECT_EQ(stats.rectangles, expected_counts(grid, ids, true).rects);
 }
@@ -395,7 +395,7 @@ TEST(TileIndexBuilder, EmptyPrunedSetAllowsEveryRawId) {
   TileIndexBuilder builder(grid, lut, {});
   const std::vector<std::uint8_t> ids(grid.tile_count(), 3);
   std::vector<std::uint32_t> indices(grid.max_index_count());
-  std::array<VkDrawIndexedIndirectCommand, kOptimisedClassCount> draws{};
+  std::array<DrawRecord, kOptimisedClassCount> draws{};
   EXPECT_EQ(builder.build(to_blocked(grid, ids), true, indices, draws).rectangles[3], 1u);
 }
 
@@ -546,7 +546,7 @@ std::string build_error(const TileGrid& grid, std::vector<std::uint8_t> blocked,
   const std::vector<std::uint8_t> lut = test_lut();
   TileIndexBuilder builder(grid, lut, test_pruned());
   std::vector<std::uint32_t> indices(index_count, 0x12345678u);
-  std::vector<VkDrawIndexedIndirectCommand> draws(draw_count, VkDrawIndexedIndirectCommand{7, 7, 7, 7, 7});
+  std::vector<DrawRecord> draws(draw_count, DrawRecord{7, 7, 7, 7, 7});
   try {
     (void)builder.build(blocked, true, indices, draws);
   } catch (const Error& e) {

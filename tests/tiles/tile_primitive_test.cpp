@@ -1,6 +1,6 @@
 // The point encoding the CPU and GPU index builds share with uber/tile_point.vert, and how many
 // primitives a rectangle of tiles becomes (tile_primitive.h).
-#include "tilelight/tile_primitive.h"
+#include "tilelight/tiles/tile_primitive.h"
 
 #include <gtest/gtest.h>
 

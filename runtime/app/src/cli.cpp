@@ -1,15 +1,15 @@
-#include "tilelight_app/cli.h"
+#include "tilelight/app/cli.h"
 
-#include "tilelight/context.h"
-#include "tilelight/error.h"
-#include "tilelight/png.h"
-#include "tilelight/scene.h"
-#include "tilelight/tile_class_image.h"
-#include "tilelight/tile_renderer.h"
-#include "tilelight_app/failure.h"
-#include "tilelight_app/output_files.h"
-#include "tilelight_app/process_stats.h"
-#include "tilelight_app/report.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/picture/png.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/picture/tile_class_image.h"
+#include "tilelight/render/tile_renderer.h"
+#include "tilelight/app/failure.h"
+#include "tilelight/app/output_files.h"
+#include "tilelight/app/process_stats.h"
+#include "tilelight/app/report.h"
 
 #include <split_second_shaders.h>
 
@@ -205,17 +205,13 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   report.equivalence = compare_with_baselines(classified, naive, dynamic);
 
   const RgbaImage shown = display_encoded(classified);
-  files.stage("frame_classified.png", [&](const std::filesystem::path& p) { write_png(p, shown); });
-  if (naive) {
-    files.stage("frame_naive.png", [&](const std::filesystem::path& p) { write_png(p, display_encoded(*naive)); });
-  }
-  if (dynamic) {
-    files.stage("frame_dynamic.png", [&](const std::filesystem::path& p) { write_png(p, display_encoded(*dynamic)); });
-  }
-  files.stage("tile_classes.png", [&](const std::filesystem::path& p) {
+  files.stage("frame_classified.png", encode_png(shown));
+  if (naive) files.stage("frame_naive.png", encode_png(display_encoded(*naive)));
+  if (dynamic) files.stage("frame_dynamic.png", encode_png(display_encoded(*dynamic)));
+  {
     const Rgba8Canvas canvas = compose_tile_class_image(shown, a.tile_size, optimised_ids(raw_ids));
-    write_png_rgba8(p, canvas.width, canvas.height, canvas.pixels);
-  });
+    files.stage("tile_classes.png", encode_png(canvas.width, canvas.height, canvas.pixels));
+  }
   // Measured last, so the figure covers every frame, the read-back and the PNG encoding.
   report.process.peak_rss_mib = peak_rss_mib();
   report.process.rss_after_frames_mib = rss_after_frames;

@@ -1,6 +1,6 @@
-#include "tilelight_app/failure.h"
+#include "tilelight/app/failure.h"
 
-#include "tilelight/error.h"
+#include "tilelight/vulkan/error.h"
 
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 // tilelight: thin entry point; the command line lives in the tilelight_app library.
-#include "tilelight_app/cli.h"
+#include "tilelight/app/cli.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "tilelight_app/process_stats.h"
+#include "tilelight/app/process_stats.h"
 
 #include <sys/resource.h>
 #include <unistd.h>

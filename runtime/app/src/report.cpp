@@ -1,4 +1,6 @@
-#include "tilelight_app/report.h"
+#include "tilelight/app/report.h"
+
+#include "tilelight/base/median.h"
 
 #include <split_second_shaders.h>
 
@@ -12,13 +14,6 @@
 
 namespace tilelight::app {
 namespace {
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const std::size_t mid = values.size() / 2;
-  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
 
 double round3(double value) { return std::round(value * 1000.0) / 1000.0; }
 

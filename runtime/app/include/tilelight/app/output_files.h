@@ -1,0 +1,37 @@
+#pragma once
+// The run's output set: every file is written first under its temporary name in the output
+// folder (tilelight/base/staged_file.h), and renamed into place only once all of them were
+// written. So a failed run (any error up to and including the last write) changes nothing in
+// the folder: earlier results stay, no partial file is left. The renames themselves happen one
+// file at a time: only a crash between two of them could leave new and earlier files side by
+// side.
+
+#include "tilelight/base/staged_file.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tilelight::app {
+
+class OutputFiles {
+ public:
+  // Creates `folder` if needed and proves it writable; throws tilelight::Error naming it.
+  explicit OutputFiles(std::filesystem::path folder);
+
+  // Writes `name`'s bytes under its temporary name; throws tilelight::Error naming that file.
+  void stage(const std::string& name, std::span<const std::uint8_t> bytes);
+  void stage_text(const std::string& name, std::string_view text);
+  // Renames every staged file into place, in the order staged.
+  void commit();
+  const std::filesystem::path& folder() const { return folder_; }
+
+ private:
+  std::filesystem::path folder_;
+  std::vector<StagedFile> staged_;  // their destructors remove what was never committed
+};
+
+}  // namespace tilelight::app

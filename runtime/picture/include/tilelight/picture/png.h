@@ -1,0 +1,35 @@
+#pragma once
+// PNG output. Files are written atomically (tilelight/base/staged_file.h), so a crashed or
+// concurrent run never leaves a half-written image that a later comparison would read.
+
+#include "tilelight/picture/rgba_image.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+namespace tilelight {
+
+// Float RGBA -> 8-bit RGBA: clamp to [0, 1], scale by 255, round to nearest; NaN -> 0. No
+// gamma is applied (the values are written as they are).
+std::vector<std::uint8_t> to_rgba8(const RgbaImage& image);
+
+// The PNG file bytes of 8-bit RGBA pixels (rows top to bottom, width * height * 4 bytes).
+// Throws tilelight::Error "<w>x<h> RGBA needs <n> bytes, got <m>", "<w>x<h> is too large" or
+// "out of host memory while encoding <w>x<h>".
+std::vector<std::uint8_t> encode_png(std::uint32_t width, std::uint32_t height, std::span<const std::uint8_t> rgba);
+
+// encode_png() of to_rgba8(image).
+std::vector<std::uint8_t> encode_png(const RgbaImage& image);
+
+// Writes `image` (through to_rgba8) as an RGBA PNG at `path`. The parent folder must exist.
+// Throws tilelight::Error naming the path (and the OS reason) on failure; no temporary file is
+// left behind either way.
+void write_png(const std::filesystem::path& path, const RgbaImage& image);
+
+// Writes 8-bit RGBA pixels (rows top to bottom, width * height * 4 bytes) as a PNG at `path`.
+void write_png_rgba8(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                     std::span<const std::uint8_t> rgba);
+
+}  // namespace tilelight

@@ -1,0 +1,136 @@
+#pragma once
+// One renderer = one camera, one frame size, one configuration: the whole tile-classified
+// deferred frame of Split/Second on Vulkan.
+//
+// Per frame (docs/architecture.md has the diagram):
+//   submit A  shadow map -> G-buffer -> classification -> copy IDs to host memory
+//             [--path gpu: + LUT, counts, prefix sum, index fill, indirect records in compute]
+//             signals timeline value 2k-1
+//   submit B  the tile pass and the baseline passes (naive, dynamic), recorded ONCE at start-up,
+//             before any classification ran; --path cpu: waits for timeline value 2k, which the host
+//             signals after it built the index buffer and patched the indirect records
+//             (submitted before that signal: wait-before-signal)
+//   host      waits for 2k-1, maps IDs through the generated LUT, builds the index buffer
+//             (3 passes + coalescing), writes the indirect records, signals 2k
+// Every wait is bounded (`timeout`); a failure between submit B and the host signal still
+// signals (with empty draws) so the queue is never left blocked.
+
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/readback.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/tiles/tile_grid.h"
+#include "tilelight/tiles/tile_primitive.h"
+#include "tilelight/vulkan/timeout.h"
+#include "tilelight/scene/uniform_blocks.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tilelight {
+
+enum class IndexPath { cpu, gpu };
+
+// The full-screen passes the classified frame is measured against: naive (the uber-shader with
+// every feature, on every pixel) and dynamic (every feature compiled in, each taken only where
+// the pixel needs it: per-pixel branching).
+enum class Baselines { naive, dynamic, both };
+
+
+struct RendererOptions {
+  std::uint32_t width = 1280;
+  std::uint32_t height = 720;
+  std::uint32_t msaa = 0;       // 0: automatic (2x where offered, else 4x); else 1, 2, 4, 8, 16
+  std::uint32_t tile_size = 4;  // pixels: 4, 8 or 16
+  IndexPath path = IndexPath::cpu;
+  bool raw_permutations = false;  // draw the 96 raw permutations instead of the 32 optimised ones
+  bool coalesce = true;
+  // How the tile pass draws its rectangles (tile_primitive.h); empty: points where the device
+  // draws them (largePoints, a whole block's width), else triangles.
+  std::optional<TilePrimitive> primitive;
+  std::string camera = "default";
+  Baselines baselines = Baselines::both;  // which full-screen passes run (and are timed) each frame
+  Seconds timeout = kDefaultGpuTimeout;
+};
+
+struct FrameTimings {  // milliseconds
+  double shadow_map = 0, gbuffer = 0, classification = 0;
+  double index_build_cpu = 0;  // host clock, CPU path only
+  double index_build_gpu = 0;  // GPU timestamps, GPU path only
+  double tiled_light = 0, naive_light = 0;
+  double dynamic_light = 0;  // the per-pixel-branching pass; 0 when it did not run (RendererOptions::baselines)
+};
+
+struct FrameStats {
+  std::vector<std::uint32_t> class_tiles;       // per draw class (32 optimised or 128 raw)
+  std::vector<std::uint32_t> class_rectangles;  // per draw class
+  std::vector<std::uint32_t> class_primitives;  // per draw class
+  std::uint32_t primitives_uncoalesced = 0;     // one primitive per tile
+  std::uint32_t primitives_coalesced = 0;       // primitives drawn (points, or rectangles as triangle pairs)
+  std::uint32_t rectangles = 0;                 // rectangles after coalescing
+};
+
+struct FrameResult {
+  FrameTimings timings;
+  FrameStats stats;
+};
+
+// Every G-buffer sample as stored (see uber/include/gbuffer.glsl).
+struct GBufferSamples {
+  std::uint32_t width = 0, height = 0, samples = 0;
+  std::vector<float> values;  // per pixel (row-major), per sample: rt0.rgba, rt1.rgba, rt2.rgba, depth, 0, 0, 0
+  // Precondition: x < width, y < height, s < samples. Points at 16 floats.
+  const float* at(std::uint32_t x, std::uint32_t y, std::uint32_t s) const {
+    return values.data() + ((static_cast<std::size_t>(y) * width + x) * samples + s) * 16;
+  }
+};
+
+class TileRenderer {
+ public:
+  // Throws tilelight::Error naming the value for a size of 0 or beyond the device's limits,
+  // an MSAA count the device lacks, an unknown camera or tile size.
+  TileRenderer(const Context& context, const Scene& scene, const RendererOptions& options);
+  ~TileRenderer();
+  TileRenderer(const TileRenderer&) = delete;
+  TileRenderer& operator=(const TileRenderer&) = delete;
+
+  FrameResult render_frame();
+
+  const TileGrid& grid() const;
+  std::uint32_t msaa_samples() const;
+  std::uint32_t draw_class_count() const;  // 32 or 128
+  TilePrimitive tile_primitive() const;     // the one chosen (RendererOptions::primitive)
+  std::uint32_t pipeline_count() const;    // 32 or 96
+  const LightingParamsBlock& lighting_params() const;
+
+  // Results of the last frame.
+  std::vector<std::uint8_t> raw_tile_ids() const;  // row-major, tiles_x * tiles_y
+  RgbaImage read_classified() const;
+  RgbaImage read_naive() const;    // precondition: the naive pass runs (RendererOptions::baselines)
+  RgbaImage read_dynamic() const;  // precondition: the dynamic pass runs
+  GBufferSamples read_gbuffer();
+  std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major
+
+
+ private:
+  // The tests' seam (tests/support/tilelight_testing/renderer_test_seam.h) and the only caller
+  // of the two hooks below; production code has no way to reach them.
+  friend class TileRendererTestSeam;
+
+  // Later frames take their G-buffer from `samples` (the layout read_gbuffer() returns) instead
+  // of rendering the scene; the shadow map still comes from the scene. Needs sample-rate
+  // shading. Precondition: size and sample count match this renderer.
+  void set_gbuffer_override(const GBufferSamples& samples);
+
+  // Called on the host after the tile pass was submitted and before the host signals it; an
+  // exception thrown here must still leave the GPU unblocked (the failure path).
+  void set_before_host_signal(std::function<void()> hook);
+
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tilelight

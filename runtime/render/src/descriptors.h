@@ -1,0 +1,27 @@
+#pragma once
+// Descriptor pool and set allocation, and the two kinds of writes the runtime makes.
+
+#include "tilelight/vulkan/vk_handles.h"
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string_view>
+
+namespace tilelight {
+
+class Context;
+
+// A pool big enough for every set one renderer allocates (sets are freed with the pool).
+UniqueDescriptorPool create_descriptor_pool(const Context& context, std::uint32_t max_sets, std::string_view name);
+
+VkDescriptorSet allocate_descriptor_set(const Context& context, VkDescriptorPool pool, VkDescriptorSetLayout layout,
+                                        std::string_view name);
+
+void write_buffer_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding,
+                             VkDescriptorType type, VkBuffer buffer);
+
+void write_image_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkSampler sampler,
+                            VkImageView view, VkImageLayout layout);
+
+}  // namespace tilelight

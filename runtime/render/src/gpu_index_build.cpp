@@ -1,0 +1,124 @@
+#include "gpu_index_build.h"
+
+#include "shader_registry.h"
+#include "descriptors.h"
+#include "tilelight/vulkan/barriers.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
+#include "pipelines.h"
+
+#include <split_second_shaders.h>
+
+#include <array>
+
+namespace tilelight {
+namespace {
+
+// Mirrors tile_rects.glsl.
+constexpr std::uint32_t kMaxDrawClasses = 128;
+constexpr std::uint32_t kNoClass = 0xFF;
+// primitives, rectangles, tiles, cursor (kMaxDrawClasses each), invalid_tiles.
+constexpr VkDeviceSize kCountersBytes = (4 * kMaxDrawClasses + 1) * sizeof(std::uint32_t);
+constexpr VkDeviceSize kDrawRecordBytes = sizeof(VkDrawIndexedIndirectCommand);
+constexpr std::uint32_t kBlocksPerGroup = 128;  // local_size_x of tile_rects.comp
+
+}  // namespace
+
+GpuIndexBuild::GpuIndexBuild(const Context& context, const shadergen::Registry& shaders, const TileGrid& grid,
+                             std::span<const std::uint8_t> class_for_raw, std::span<const bool> pruned,
+                             std::uint32_t class_count, bool coalesce, TilePrimitive primitive,
+                             const Buffer& tile_ids, VkDescriptorPool pool)
+    : grid_(grid), class_count_(class_count) {
+  if (class_count > kMaxDrawClasses) throw Error("the GPU index build supports at most 128 draw classes");
+  // Byte -> class; 0xFF for impossible or out-of-range raw IDs (and the padding byte 0xFF).
+  std::array<std::uint32_t, 256> lut{};
+  lut.fill(kNoClass);
+  for (std::size_t raw = 0; raw < class_for_raw.size(); ++raw) {
+    if (!pruned[raw]) lut[raw] = class_for_raw[raw];
+  }
+  lut_ = Buffer(context, {sizeof(lut), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, "GPU build LUT"});
+  lut_.write_values(std::span<const std::uint32_t>(lut));
+  counters_ = Buffer(context, {kCountersBytes,
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                               MemoryUse::DeviceLocal, "GPU build counters"});
+  host_counters_ = Buffer(context, {kCountersBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback,
+                                    "GPU build counters (host copy)"});
+  indices_ = Buffer(context, {std::max<VkDeviceSize>(grid.max_index_count(), 6) * sizeof(std::uint32_t),
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                              MemoryUse::DeviceLocal, "tile indices (GPU-built)"});
+  draws_ = Buffer(context, {kMaxDrawClasses * kDrawRecordBytes,
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                            MemoryUse::DeviceLocal, "indirect draws (GPU-built)"});
+
+  std::array<VkDescriptorSetLayoutBinding, 5> bindings{};
+  for (std::uint32_t i = 0; i < bindings.size(); ++i) {
+    bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+  }
+  set_layout_ = create_descriptor_set_layout(context, bindings, "GPU index build set layout");
+  const VkDescriptorSetLayout set_layouts[] = {set_layout_.get()};
+  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, 32};
+  layout_ = create_pipeline_layout(context, set_layouts, std::span(&push, 1), "GPU index build layout");
+  set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "GPU index build set");
+  const std::array<VkBuffer, 5> buffers{tile_ids.handle(), lut_.handle(), counters_.handle(), indices_.handle(),
+                                        draws_.handle()};
+  for (std::uint32_t i = 0; i < buffers.size(); ++i) {
+    write_buffer_descriptor(context, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
+  }
+
+  const std::uint32_t points = primitive == TilePrimitive::points ? 1 : 0;
+  count_ = create_compute_pipeline(context, layout_.get(), companion_spirv(shaders, "tile_rects"),
+                                   SpecConstants{}.set(0, 0).set(1, coalesce ? 1 : 0).set(2, points),
+                                   "GPU index build: count");
+  prefix_ = create_compute_pipeline(context, layout_.get(), companion_spirv(shaders, "tile_prefix"),
+                                    SpecConstants{}.set(2, points), "GPU index build: prefix sum");
+  fill_ = create_compute_pipeline(context, layout_.get(), companion_spirv(shaders, "tile_rects"),
+                                  SpecConstants{}.set(0, 1).set(1, coalesce ? 1 : 0).set(2, points),
+                                  "GPU index build: fill");
+}
+
+void GpuIndexBuild::record(VkCommandBuffer cmd) const {
+  const Scope compute_rw{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+  vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+  buffer_barrier(cmd, counters_.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT}, compute_rw);
+
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &set_, 0, nullptr);
+  const std::array<std::uint32_t, 8> push{grid_.tiles_x, grid_.tiles_y, grid_.blocks_x, grid_.blocks_y,
+                                          class_count_, 0, 0, 0};
+  vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), push.data());
+  const std::uint32_t groups = (grid_.block_count() + kBlocksPerGroup - 1) / kBlocksPerGroup;
+
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, count_.get());
+  vkCmdDispatch(cmd, groups, 1, 1);
+  memory_barrier(cmd, compute_rw, compute_rw);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, prefix_.get());
+  vkCmdDispatch(cmd, 1, 1, 1);
+  memory_barrier(cmd, compute_rw, compute_rw);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, fill_.get());
+  vkCmdDispatch(cmd, groups, 1, 1);
+
+  memory_barrier(cmd, compute_rw,
+                 {VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+                      VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT});
+  const VkBufferCopy copy{0, 0, kCountersBytes};
+  vkCmdCopyBuffer(cmd, counters_.handle(), host_counters_.handle(), 1, &copy);
+  buffer_barrier(cmd, host_counters_.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                 {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
+}
+
+GpuIndexBuild::Counts GpuIndexBuild::read_counts() const {
+  const std::span<const std::uint32_t> values = host_counters_.as<const std::uint32_t>();
+  Counts counts;
+  const auto per_class = [&](std::uint32_t array) {
+    const auto first = values.begin() + array * kMaxDrawClasses;
+    return std::vector<std::uint32_t>(first, first + class_count_);
+  };
+  counts.primitives = per_class(0);
+  counts.rectangles = per_class(1);
+  counts.tiles = per_class(2);
+  counts.invalid_tiles = values[4 * kMaxDrawClasses];
+  return counts;
+}
+
+}  // namespace tilelight

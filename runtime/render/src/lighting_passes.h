@@ -1,0 +1,59 @@
+#pragma once
+// The global light pass, tiled and naive. The tiled pass is recorded ONCE, before any
+// classification has run (Split/Second, Sections 4.7 and 4.9): one pipeline bind and one
+// indirect indexed draw per draw class, reading index and indirect buffers that are filled in
+// later each frame (by the host, or by the GPU-driven build). Its primitives are triangle pairs
+// or point sprites (tile_primitive.h). The naive pass draws optimised ID 31 (every feature) over
+// the whole frame as two triangles; the dynamic pass draws the per-pixel-branching build of the
+// uber-shader (companion lighting_dynamic: every feature, each taken where the pixel needs it)
+// the same way, the baseline that tile classification must beat on a real engine.
+
+#include "lighting_interface.h"
+#include "render_targets.h"
+#include "tilelight/vulkan/buffer.h"
+#include "tilelight/tiles/tile_grid.h"
+#include "tilelight/tiles/tile_primitive.h"
+#include "tilelight/vulkan/vk_handles.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace tilelight {
+
+class Context;
+
+enum class PermutationSet { optimised, raw };
+
+class LightingPasses {
+ public:
+  LightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
+                 const LightingInterface& lighting, PermutationSet permutations, TilePrimitive primitive);
+
+  // 32 (optimised) or 128 (raw; the 32 pruned raw IDs have no pipeline and are never drawn).
+  std::uint32_t class_count() const { return static_cast<std::uint32_t>(pipelines_.size()); }
+  std::uint32_t pipeline_count() const;
+
+  // The tile pass: starts with a barrier that makes host AND compute writes of `indices` and
+  // `draws` visible to the draw stages, so the same recording serves the CPU patching and the
+  // GPU-driven path.
+  void record_tiled(VkCommandBuffer cmd, const RenderTargets& targets, const Buffer& indices,
+                    const Buffer& draws) const;
+  void record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const;
+  void record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const;
+
+ private:
+  void begin(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer) const;
+  void record_full_screen(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer,
+                          VkPipeline pipeline) const;
+
+  const LightingInterface* lighting_;
+  Buffer corners_;        // the prebuilt grid of tile corners (pixels): triangles
+  Buffer grid_shape_;     // tiles_x + 1 and the tile size: points
+  Buffer full_screen_indices_;  // two triangles over the whole frame (naive and dynamic passes)
+  std::vector<UniquePipeline> pipelines_;  // per draw class; empty for pruned raw IDs
+  UniquePipeline naive_pipeline_, dynamic_pipeline_;
+  VkExtent2D extent_{};    // the frame
+  VkExtent2D viewport_{};  // whole tiles: >= the frame
+};
+
+}  // namespace tilelight

@@ -1,0 +1,192 @@
+#include "pipelines.h"
+
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
+
+#include <shadergen/registry.h>
+
+#include <array>
+
+namespace tilelight {
+
+UniqueShaderModule create_shader_module(const Context& context, std::span<const std::uint32_t> spirv,
+                                        std::string_view name) {
+  if (spirv.empty()) throw Error("shader '" + std::string(name) + "' has no SPIR-V");
+  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  info.codeSize = spirv.size_bytes();
+  info.pCode = spirv.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  check(vkCreateShaderModule(context.device(), &info, nullptr, &module), "vkCreateShaderModule", name);
+  UniqueShaderModule owned(module, {context.device()});
+  context.name_object(module, name);
+  return owned;
+}
+
+UniqueDescriptorSetLayout create_descriptor_set_layout(
+    const Context& context, std::span<const VkDescriptorSetLayoutBinding> bindings, std::string_view name) {
+  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  info.bindingCount = static_cast<std::uint32_t>(bindings.size());
+  info.pBindings = bindings.data();
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  check(vkCreateDescriptorSetLayout(context.device(), &info, nullptr, &layout),
+        "vkCreateDescriptorSetLayout", name);
+  UniqueDescriptorSetLayout owned(layout, {context.device()});
+  context.name_object(layout, name);
+  return owned;
+}
+
+std::vector<VkDescriptorSetLayoutBinding> layout_bindings_for_set(
+    std::span<const shadergen::DescriptorBinding> bindings, std::uint32_t set) {
+  std::vector<VkDescriptorSetLayoutBinding> out;
+  for (const shadergen::DescriptorBinding& b : bindings) {
+    if (b.set != set) continue;
+    VkDescriptorSetLayoutBinding binding{};
+    binding.binding = b.binding;
+    binding.descriptorType = static_cast<VkDescriptorType>(b.kind);
+    binding.descriptorCount = b.count;
+    binding.stageFlags = b.stages;
+    out.push_back(binding);
+  }
+  return out;
+}
+
+UniquePipelineLayout create_pipeline_layout(const Context& context,
+                                            std::span<const VkDescriptorSetLayout> set_layouts,
+                                            std::span<const VkPushConstantRange> push_constants,
+                                            std::string_view name) {
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = static_cast<std::uint32_t>(set_layouts.size());
+  info.pSetLayouts = set_layouts.data();
+  info.pushConstantRangeCount = static_cast<std::uint32_t>(push_constants.size());
+  info.pPushConstantRanges = push_constants.data();
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  check(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout), "vkCreatePipelineLayout", name);
+  UniquePipelineLayout owned(layout, {context.device()});
+  context.name_object(layout, name);
+  return owned;
+}
+
+SpecConstants& SpecConstants::set(std::uint32_t constant_id, std::uint32_t value) {
+  const auto offset = static_cast<std::uint32_t>(values_.size() * sizeof(std::uint32_t));
+  entries_.push_back({constant_id, offset, sizeof(std::uint32_t)});
+  values_.push_back(value);
+  return *this;
+}
+
+const VkSpecializationInfo* SpecConstants::info() {
+  if (entries_.empty()) return nullptr;
+  info_.mapEntryCount = static_cast<std::uint32_t>(entries_.size());
+  info_.pMapEntries = entries_.data();
+  info_.dataSize = values_.size() * sizeof(std::uint32_t);
+  info_.pData = values_.data();
+  return &info_;
+}
+
+UniquePipeline create_compute_pipeline(const Context& context, VkPipelineLayout layout,
+                                       std::span<const std::uint32_t> spirv, SpecConstants spec,
+                                       std::string_view name) {
+  const UniqueShaderModule module = create_shader_module(context, spirv, name);
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = module.get();
+  info.stage.pName = "main";
+  info.stage.pSpecializationInfo = spec.info();
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  check(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        "vkCreateComputePipelines", name);
+  UniquePipeline owned(pipeline, {context.device()});
+  context.name_object(pipeline, name);
+  return owned;
+}
+
+UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPipelineDesc& desc) {
+  const UniqueShaderModule vertex = create_shader_module(context, desc.vertex_spirv, desc.name + " (vertex)");
+  UniqueShaderModule fragment;
+  SpecConstants fragment_constants = desc.fragment_constants;  // info() points into it
+  std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT,
+               vertex.get(), "main", nullptr};
+  std::uint32_t stage_count = 1;
+  if (!desc.fragment_spirv.empty()) {
+    fragment = create_shader_module(context, desc.fragment_spirv, desc.name + " (fragment)");
+    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT,
+                 fragment.get(), "main", fragment_constants.info()};
+    stage_count = 2;
+  }
+
+  VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  vertex_input.vertexBindingDescriptionCount = static_cast<std::uint32_t>(desc.vertex_bindings.size());
+  vertex_input.pVertexBindingDescriptions = desc.vertex_bindings.data();
+  vertex_input.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(desc.vertex_attributes.size());
+  vertex_input.pVertexAttributeDescriptions = desc.vertex_attributes.data();
+
+  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology = desc.topology;
+
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+
+  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  raster.depthBiasEnable = desc.depth_bias ? VK_TRUE : VK_FALSE;
+  raster.depthBiasConstantFactor = desc.depth_bias ? 1.25f : 0.0f;
+  raster.depthBiasSlopeFactor = desc.depth_bias ? 1.75f : 0.0f;
+
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = desc.samples;
+
+  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = desc.depth_test ? VK_TRUE : VK_FALSE;
+  depth.depthWriteEnable = desc.depth_write ? VK_TRUE : VK_FALSE;
+  depth.depthCompareOp = desc.depth_compare;
+
+  std::vector<VkPipelineColorBlendAttachmentState> blend(desc.color_attachments);
+  for (VkPipelineColorBlendAttachmentState& b : blend) {
+    b.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                       VK_COLOR_COMPONENT_A_BIT;
+  }
+  VkPipelineColorBlendStateCreateInfo color_blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  color_blend.attachmentCount = desc.color_attachments;
+  color_blend.pAttachments = blend.data();
+
+  const std::array<VkDynamicState, 2> dynamic_states{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = static_cast<std::uint32_t>(dynamic_states.size());
+  dynamic.pDynamicStates = dynamic_states.data();
+
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.stageCount = stage_count;
+  info.pStages = stages.data();
+  info.pVertexInputState = &vertex_input;
+  info.pInputAssemblyState = &assembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &color_blend;
+  info.pDynamicState = &dynamic;
+  info.layout = desc.layout;
+  info.renderPass = desc.render_pass;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  check(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        "vkCreateGraphicsPipelines", desc.name);
+  UniquePipeline owned(pipeline, {context.device()});
+  context.name_object(pipeline, desc.name);
+  return owned;
+}
+
+void set_viewport_and_scissor(VkCommandBuffer cmd, VkExtent2D extent) {
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height),
+                            0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, extent};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+}  // namespace tilelight

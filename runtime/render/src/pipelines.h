@@ -1,0 +1,80 @@
+#pragma once
+// Shader modules, layouts and pipelines: thin checked wrappers that return RAII handles.
+
+#include "tilelight/vulkan/vk_handles.h"
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shadergen {
+struct DescriptorBinding;
+}
+
+namespace tilelight {
+
+class Context;
+
+// Precondition: `spirv` is a validated SPIR-V module (shadergen validates every blob).
+UniqueShaderModule create_shader_module(const Context& context, std::span<const std::uint32_t> spirv,
+                                        std::string_view name);
+
+UniqueDescriptorSetLayout create_descriptor_set_layout(
+    const Context& context, std::span<const VkDescriptorSetLayoutBinding> bindings, std::string_view name);
+
+// The bindings of descriptor set `set` among `bindings` (a registry's reflection), as Vulkan
+// layout bindings: the registry is the one source of the lighting interface.
+std::vector<VkDescriptorSetLayoutBinding> layout_bindings_for_set(
+    std::span<const shadergen::DescriptorBinding> bindings, std::uint32_t set);
+
+UniquePipelineLayout create_pipeline_layout(const Context& context,
+                                            std::span<const VkDescriptorSetLayout> set_layouts,
+                                            std::span<const VkPushConstantRange> push_constants,
+                                            std::string_view name);
+
+// 32-bit specialization constants, collected by constant ID.
+class SpecConstants {
+ public:
+  SpecConstants& set(std::uint32_t constant_id, std::uint32_t value);
+  // Valid until this object changes or dies; nullptr when empty.
+  const VkSpecializationInfo* info();
+
+ private:
+  std::vector<VkSpecializationMapEntry> entries_;
+  std::vector<std::uint32_t> values_;
+  VkSpecializationInfo info_{};
+};
+
+UniquePipeline create_compute_pipeline(const Context& context, VkPipelineLayout layout,
+                                       std::span<const std::uint32_t> spirv, SpecConstants spec,
+                                       std::string_view name);
+
+struct GraphicsPipelineDesc {
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+  std::span<const std::uint32_t> vertex_spirv;
+  std::span<const std::uint32_t> fragment_spirv;  // empty: depth-only pipeline
+  SpecConstants fragment_constants;                 // specialisation of the fragment stage
+  std::vector<VkVertexInputBindingDescription> vertex_bindings;
+  std::vector<VkVertexInputAttributeDescription> vertex_attributes;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  std::uint32_t color_attachments = 1;
+  bool depth_test = false;
+  bool depth_write = false;
+  VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
+  bool depth_bias = false;  // constant 1.25, slope 1.75: against shadow acne
+  VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  std::string name;
+};
+
+// Viewport and scissor are dynamic state: set them when recording.
+UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPipelineDesc& desc);
+
+// Full-framebuffer viewport and scissor.
+void set_viewport_and_scissor(VkCommandBuffer cmd, VkExtent2D extent);
+
+}  // namespace tilelight

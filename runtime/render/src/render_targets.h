@@ -1,0 +1,75 @@
+#pragma once
+// The images one frame renders into, with their render passes and framebuffers:
+// the multisampled G-buffer (Table 4.1), the sun shadow map and the two light targets
+// (classified, naive and dynamic), which the frame reads back for comparison and the PNGs.
+
+#include "tilelight/vulkan/image.h"
+#include "pipelines.h"
+#include "tilelight/vulkan/vk_handles.h"
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+
+namespace tilelight {
+
+class Context;
+
+inline constexpr VkFormat kGBufferRt0Format = VK_FORMAT_R8G8B8A8_UNORM;
+inline constexpr VkFormat kGBufferRt1Format = VK_FORMAT_R16G16B16A16_SFLOAT;
+inline constexpr VkFormat kGBufferRt2Format = VK_FORMAT_R16G16B16A16_SFLOAT;
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+inline constexpr VkFormat kLightFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+
+class RenderTargets {
+ public:
+  // Preconditions: the caller checked extent against the device limits and `samples` against
+  // the device's G-buffer sample counts.
+  RenderTargets(const Context& context, VkExtent2D extent, VkSampleCountFlagBits samples,
+                std::uint32_t shadow_map_size);
+
+  VkExtent2D extent() const { return extent_; }
+  VkSampleCountFlagBits samples() const { return samples_; }
+
+  // After the G-buffer pass every G-buffer image is in SHADER_READ_ONLY_OPTIMAL (sampled by
+  // classification and lighting), the shadow map likewise, and the light targets are in
+  // TRANSFER_SRC_OPTIMAL (read back).
+  const Image& rt0() const { return rt0_; }
+  const Image& rt1() const { return rt1_; }
+  const Image& rt2() const { return rt2_; }
+  const Image& depth() const { return depth_; }
+  const Image& shadow_map() const { return shadow_map_; }
+  const Image& classified() const { return classified_; }
+  const Image& naive() const { return naive_; }
+  const Image& dynamic() const { return dynamic_; }
+
+  VkRenderPass gbuffer_pass() const { return gbuffer_pass_.get(); }
+  VkRenderPass shadow_pass() const { return shadow_pass_.get(); }
+  VkRenderPass light_pass() const { return light_pass_.get(); }
+  VkFramebuffer gbuffer_framebuffer() const { return gbuffer_framebuffer_.get(); }
+  VkFramebuffer shadow_framebuffer() const { return shadow_framebuffer_.get(); }
+  VkFramebuffer classified_framebuffer() const { return classified_framebuffer_.get(); }
+  VkFramebuffer naive_framebuffer() const { return naive_framebuffer_.get(); }
+  VkFramebuffer dynamic_framebuffer() const { return dynamic_framebuffer_.get(); }
+  VkExtent2D shadow_extent() const { return {shadow_map_size_, shadow_map_size_}; }
+
+  // Begins the G-buffer render pass (every target cleared; depth to 1) and sets the viewport.
+  void begin_gbuffer_pass(VkCommandBuffer cmd) const;
+
+  // What every pipeline writing the G-buffer shares: this render pass and sample count, the
+  // three colour targets, the depth test, and GBUFFER_SAMPLES (fragment specialization
+  // constant 0, see gbuffer.glsl) for the MSAA-edge bit. Callers add shaders and depth state.
+  GraphicsPipelineDesc gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name) const;
+
+ private:
+  VkExtent2D extent_;
+  VkSampleCountFlagBits samples_;
+  std::uint32_t shadow_map_size_;
+  Image rt0_, rt1_, rt2_, depth_, shadow_map_, classified_, naive_, dynamic_;
+  UniqueRenderPass gbuffer_pass_, shadow_pass_, light_pass_;
+  UniqueFramebuffer gbuffer_framebuffer_, shadow_framebuffer_, classified_framebuffer_, naive_framebuffer_,
+      dynamic_framebuffer_;
+};
+
+}  // namespace tilelight

@@ -1,0 +1,139 @@
+#include "scene_passes.h"
+
+#include "shader_registry.h"
+#include "descriptors.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
+#include "pipelines.h"
+#include "tilelight/scene/uniform_blocks.h"
+
+#include <split_second_shaders.h>
+
+#include <array>
+
+namespace tilelight {
+namespace {
+
+template <typename T>
+Buffer upload_buffer(const Context& context, std::span<const T> data, VkBufferUsageFlags usage, std::string name) {
+  Buffer buffer(context, {std::max<VkDeviceSize>(data.size_bytes(), 4), usage, MemoryUse::HostUpload, std::move(name)});
+  buffer.write_values(data);
+  return buffer;
+}
+
+std::vector<VkVertexInputBindingDescription> scene_bindings() {
+  return {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(Instance), VK_VERTEX_INPUT_RATE_INSTANCE}};
+}
+
+std::vector<VkVertexInputAttributeDescription> scene_attributes() {
+  std::vector<VkVertexInputAttributeDescription> a{
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)}};
+  for (std::uint32_t column = 0; column < 4; ++column) {
+    a.push_back({2 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
+                 static_cast<std::uint32_t>(offsetof(Instance, model) + column * sizeof(glm::vec4))});
+  }
+  a.push_back({6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, albedo_spec)});
+  a.push_back({7, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, material)});
+  return a;
+}
+
+}  // namespace
+
+ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camera& camera,
+                         const RenderTargets& targets, VkDescriptorPool pool)
+    : batches_(scene.batches) {
+  for (const Mesh& mesh : scene.meshes) {
+    MeshBuffers buffers;
+    buffers.vertices = upload_buffer<MeshVertex>(context, mesh.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                                 "mesh " + mesh.name + " vertices");
+    buffers.indices = upload_buffer<std::uint32_t>(context, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                                   "mesh " + mesh.name + " indices");
+    buffers.index_count = static_cast<std::uint32_t>(mesh.indices.size());
+    meshes_.push_back(std::move(buffers));
+  }
+  instances_ = upload_buffer<Instance>(context, scene.instances, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene instances");
+  const SceneParamsBlock block = make_scene_params(scene, camera, targets.extent().width, targets.extent().height);
+  params_ = upload_buffer<SceneParamsBlock>(context, std::span(&block, 1), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                            "scene parameters");
+
+  const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
+                                             VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+  set_layout_ = create_descriptor_set_layout(context, std::span(&binding, 1), "scene set layout");
+  const VkDescriptorSetLayout set_layouts[] = {set_layout_.get()};
+  layout_ = create_pipeline_layout(context, set_layouts, {}, "scene pipeline layout");
+  set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "scene descriptor set");
+  write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
+
+  const shadergen::Registry& shaders = shaders_for(targets.samples());
+  GraphicsPipelineDesc gbuffer = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials");
+  gbuffer.vertex_spirv = companion_spirv(shaders, "scene");
+  gbuffer.fragment_spirv = companion_spirv(shaders, "gbuffer");
+  gbuffer.vertex_bindings = scene_bindings();
+  gbuffer.vertex_attributes = scene_attributes();
+  gbuffer.depth_write = true;
+  gbuffer_pipeline_ = create_graphics_pipeline(context, gbuffer);
+
+  GraphicsPipelineDesc sky = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer sky");
+  sky.vertex_spirv = companion_spirv(shaders, "sky_vertex");
+  sky.fragment_spirv = companion_spirv(shaders, "sky");
+  sky.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+  sky_pipeline_ = create_graphics_pipeline(context, sky);
+
+  GraphicsPipelineDesc shadow;
+  shadow.layout = layout_.get();
+  shadow.render_pass = targets.shadow_pass();
+  shadow.vertex_spirv = companion_spirv(shaders, "shadow");
+  shadow.vertex_bindings = scene_bindings();
+  // Only what shadow.vert reads: position and the model matrix (unused attributes are a
+  // validation performance warning).
+  for (const VkVertexInputAttributeDescription& a : scene_attributes()) {
+    if (a.location == 0 || (a.location >= 2 && a.location <= 5)) shadow.vertex_attributes.push_back(a);
+  }
+  shadow.color_attachments = 0;
+  shadow.depth_test = true;
+  shadow.depth_write = true;
+  shadow.depth_bias = true;
+  shadow.name = "sun shadow map";
+  shadow_pipeline_ = create_graphics_pipeline(context, shadow);
+}
+
+void ScenePasses::draw_batches(VkCommandBuffer cmd) const {
+  for (const MeshBatch& batch : batches_) {
+    const MeshBuffers& mesh = meshes_[batch.mesh];
+    const std::array<VkBuffer, 2> buffers{mesh.vertices.handle(), instances_.handle()};
+    const std::array<VkDeviceSize, 2> offsets{0, 0};
+    vkCmdBindVertexBuffers(cmd, 0, 2, buffers.data(), offsets.data());
+    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, mesh.index_count, batch.instance_count, 0, 0, batch.first_instance);
+  }
+}
+
+void ScenePasses::record_shadow_map(VkCommandBuffer cmd, const RenderTargets& targets) const {
+  VkClearValue clear{};
+  clear.depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = targets.shadow_pass();
+  begin.framebuffer = targets.shadow_framebuffer();
+  begin.renderArea = {{0, 0}, targets.shadow_extent()};
+  begin.clearValueCount = 1;
+  begin.pClearValues = &clear;
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  set_viewport_and_scissor(cmd, targets.shadow_extent());
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadow_pipeline_.get());
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
+  draw_batches(cmd);
+  vkCmdEndRenderPass(cmd);
+}
+
+void ScenePasses::record_gbuffer(VkCommandBuffer cmd, const RenderTargets& targets) const {
+  targets.begin_gbuffer_pass(cmd);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, gbuffer_pipeline_.get());
+  draw_batches(cmd);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_pipeline_.get());
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  vkCmdEndRenderPass(cmd);
+}
+
+}  // namespace tilelight

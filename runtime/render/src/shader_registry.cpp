@@ -1,0 +1,31 @@
+#include "shader_registry.h"
+
+#include "tilelight/vulkan/error.h"
+
+#include <split_second_1x_shaders.h>
+#include <split_second_shaders.h>
+
+#include <string>
+
+namespace tilelight {
+
+// The two builds come from one spec; the generated constants must agree for the runtime to use
+// either one's LUT with the other's blobs.
+static_assert(split_second::kRawCount == split_second_1x::kRawCount);
+static_assert(split_second::kOptimisedCount == split_second_1x::kOptimisedCount);
+static_assert(split_second::kRawToOptimised == split_second_1x::kRawToOptimised);
+
+const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples) {
+  return gbuffer_samples == VK_SAMPLE_COUNT_1_BIT ? split_second_1x::registry() : split_second::registry();
+}
+
+std::span<const std::uint32_t> companion_spirv(const shadergen::Registry& registry, std::string_view name) {
+  const shadergen::CompanionShader* shader = registry.companion(name);
+  if (shader == nullptr) {
+    throw Error("the shader registry " + std::string(registry.name) + " has no companion shader '" +
+                std::string(name) + "'");
+  }
+  return shader->shader.spirv;
+}
+
+}  // namespace tilelight

@@ -1,0 +1,50 @@
+#pragma once
+// Classification on the GPU (uber/classify/classify_tiles.comp): one invocation per row of a
+// block of 4x4 tiles writes the raw IDs in the blocked layout, then the IDs are copied to host
+// memory for the CPU index builder (and the report). Also the G-buffer dump used by the CPU
+// reference classifier and the tests.
+
+#include "lighting_interface.h"
+#include "render_targets.h"
+#include "tilelight/vulkan/buffer.h"
+#include "tilelight/tiles/tile_grid.h"
+#include "tilelight/vulkan/vk_handles.h"
+
+#include <cstdint>
+#include <span>
+
+namespace tilelight {
+
+class Context;
+
+class TileClassification {
+ public:
+  // `targets`: the G-buffer that `lighting` binds (the classifier is specialised to its sample
+  // count).
+  TileClassification(const Context& context, const TileGrid& grid, const RenderTargets& targets,
+                     const LightingInterface& lighting, VkDescriptorPool pool);
+
+  // Dispatches classification and copies the IDs to host memory. Afterwards the device ID
+  // buffer is readable by compute shaders and the host copy by the host.
+  void record(VkCommandBuffer cmd) const;
+  // The device-side blocked raw IDs (input of the GPU-driven index build).
+  const Buffer& device_ids() const { return ids_; }
+  // The host copy; valid once the submission that ran record() has completed.
+  std::span<const std::uint8_t> host_ids() const;
+
+  // Every sample of the G-buffer as stored: per pixel (row-major), per sample, 16 floats
+  // (rt0, rt1, rt2, depth, 0, 0, 0). enable_gbuffer_dump() allocates the buffer (64 bytes per
+  // sample) and must precede record_gbuffer_dump().
+  void enable_gbuffer_dump(const Context& context, VkDescriptorPool pool, std::uint32_t samples);
+  void record_gbuffer_dump(VkCommandBuffer cmd) const;
+  std::span<const float> host_gbuffer_dump() const;
+
+ private:
+  const LightingInterface* lighting_;
+  TileGrid grid_;
+  Buffer ids_, host_ids_, dump_;
+  VkDescriptorSet ids_set_ = VK_NULL_HANDLE, dump_set_ = VK_NULL_HANDLE;
+  UniquePipeline classify_, dump_pipeline_;
+};
+
+}  // namespace tilelight

@@ -1,0 +1,403 @@
+#include "tilelight/render/tile_renderer.h"
+
+#include "gbuffer_upload.h"
+#include "gpu_index_build.h"
+#include "lighting_interface.h"
+#include "lighting_passes.h"
+#include "render_targets.h"
+#include "scene_passes.h"
+#include "descriptors.h"
+#include "tile_classification.h"
+#include "tilelight/vulkan/buffer.h"
+#include "tilelight/vulkan/commands.h"
+#include "tilelight/vulkan/error.h"
+#include "tilelight/vulkan/submit.h"
+#include "tilelight/vulkan/sync.h"
+#include "tilelight/tiles/tile_index_builder.h"
+#include "tilelight/vulkan/timestamps.h"
+
+#include <split_second_shaders.h>
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstring>
+#include <numeric>
+#include <optional>
+#include <string>
+
+namespace tilelight {
+
+// The CPU index builder fills the mapped indirect buffer through tiles' Vulkan-free DrawRecord.
+static_assert(sizeof(DrawRecord) == sizeof(VkDrawIndexedIndirectCommand));
+static_assert(offsetof(DrawRecord, indexCount) == offsetof(VkDrawIndexedIndirectCommand, indexCount));
+static_assert(offsetof(DrawRecord, instanceCount) == offsetof(VkDrawIndexedIndirectCommand, instanceCount));
+static_assert(offsetof(DrawRecord, firstIndex) == offsetof(VkDrawIndexedIndirectCommand, firstIndex));
+static_assert(offsetof(DrawRecord, vertexOffset) == offsetof(VkDrawIndexedIndirectCommand, vertexOffset));
+static_assert(offsetof(DrawRecord, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance));
+
+namespace {
+
+void check_size(const Context& context, const RendererOptions& options) {
+  const DeviceLimits& limits = context.limits();
+  auto check_one = [&](const char* what, std::uint32_t value, std::uint32_t limit) {
+    if (value == 0) throw Error(std::string(what) + " 0: the frame must be at least 1 pixel");
+    if (value > limit) {
+      throw Error(std::string(what) + " " + std::to_string(value) + ": exceeds the maximum of " +
+                  std::to_string(limit) + " on " + context.device_name());
+    }
+  };
+  check_one("width", options.width, std::min(limits.max_framebuffer_width, limits.max_image_dimension_2d));
+  check_one("height", options.height, std::min(limits.max_framebuffer_height, limits.max_image_dimension_2d));
+}
+
+TileGrid checked_grid(const Context& context, const RendererOptions& options) {
+  check_size(context, options);
+  return TileGrid::make(options.width, options.height, options.tile_size);
+}
+
+// Points need large point sprites up to a whole block (4 tiles) and a viewport of whole tiles.
+std::optional<std::string> points_unsupported(const Context& context, const TileGrid& grid) {
+  const DeviceLimits& limits = context.limits();
+  const float largest = static_cast<float>(kBlockTiles * grid.tile_size);
+  if (!context.features().large_points) return "the device lacks the largePoints feature";
+  if (limits.max_point_size < largest) {
+    return "the device's largest point is " + std::to_string(limits.max_point_size) + " pixels, " +
+           std::to_string(static_cast<int>(largest)) + " are needed";
+  }
+  if (grid.tiles_x * grid.tile_size > limits.max_viewport_width ||
+      grid.tiles_y * grid.tile_size > limits.max_viewport_height) {
+    return "a viewport of whole tiles exceeds the device's largest viewport";
+  }
+  return std::nullopt;
+}
+
+TilePrimitive choose_primitive(const Context& context, const TileGrid& grid, std::optional<TilePrimitive> asked) {
+  const std::optional<std::string> why_not = points_unsupported(context, grid);
+  if (!asked) return why_not ? TilePrimitive::triangles : TilePrimitive::points;
+  if (*asked == TilePrimitive::points && why_not) {
+    throw Error("primitive points: not available on " + context.device_name() + ": " + *why_not);
+  }
+  return *asked;
+}
+
+// raw ID -> draw class: the generated LUT, or the identity when drawing raw permutations.
+std::vector<std::uint8_t> draw_classes(const shadergen::Registry& registry, bool raw_permutations) {
+  std::vector<std::uint8_t> classes(registry.raw_to_optimised.begin(), registry.raw_to_optimised.end());
+  if (raw_permutations) std::iota(classes.begin(), classes.end(), std::uint8_t{0});
+  return classes;
+}
+
+std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Registry& registry) {
+  std::array<bool, split_second::kRawCount> pruned{};
+  for (const shadergen::Permutation& p : registry.raw) pruned[p.id] = p.pruned;
+  return pruned;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+struct TileRenderer::Impl {
+  const Context& context;
+  RendererOptions options;
+  TileGrid grid;
+  TilePrimitive primitive;
+  VkSampleCountFlagBits samples;
+  CommandPool pool;
+  UniqueDescriptorPool descriptor_pool;
+  std::unique_ptr<RenderTargets> targets;
+  std::unique_ptr<ScenePasses> scene_passes;
+  std::unique_ptr<LightingInterface> lighting;
+  std::unique_ptr<TileClassification> classification;
+  std::unique_ptr<LightingPasses> light_passes;
+  std::unique_ptr<GpuIndexBuild> gpu_build;
+  std::unique_ptr<GBufferUpload> gbuffer_upload;  // replaces the scene's G-buffer when set
+
+  // The CPU path's draw list: one preallocated index buffer and one indirect record per class,
+  // host-visible and coherent, written after the tile pass was submitted.
+  std::vector<std::uint8_t> class_for_raw;
+  std::array<bool, split_second::kRawCount> pruned{};
+  std::unique_ptr<TileIndexBuilder> cpu_builder;
+  Buffer cpu_indices, cpu_draws;
+
+  UniqueCommandBuffer frame_commands;  // submit A, re-recorded each frame
+  UniqueCommandBuffer tile_commands;   // submit B, recorded once
+  TimestampQueries frame_queries, tile_queries;
+  TimelineSemaphore timeline;
+  Fence frame_done;
+  std::uint64_t frame = 0;
+  std::function<void()> before_host_signal;
+
+  Impl(const Context& ctx, const Scene& scene, const RendererOptions& opts)
+      : context(ctx),
+        options(opts),
+        grid(checked_grid(ctx, opts)),
+        primitive(choose_primitive(ctx, grid, opts.primitive)),
+        samples(ctx.choose_msaa(opts.msaa)),
+        pool(ctx, "tilelight frame") {
+    const Camera& camera = scene.camera(opts.camera);
+    descriptor_pool = create_descriptor_pool(ctx, 16, "tilelight descriptors");
+    targets = std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples,
+                                              scene.sun.shadow_map_size);
+    scene_passes = std::make_unique<ScenePasses>(ctx, scene, camera, *targets, descriptor_pool.get());
+    lighting = std::make_unique<LightingInterface>(ctx, make_lighting_params(scene, camera, opts.width, opts.height),
+                                                   *targets, descriptor_pool.get());
+    classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());
+    light_passes = std::make_unique<LightingPasses>(
+        ctx, grid, *targets, *lighting, opts.raw_permutations ? PermutationSet::raw : PermutationSet::optimised,
+        primitive);
+
+    class_for_raw = draw_classes(lighting->shaders(), opts.raw_permutations);
+    pruned = pruned_raw_ids(lighting->shaders());
+    const std::uint32_t classes = light_passes->class_count();
+    if (opts.path == IndexPath::cpu) {
+      cpu_builder = std::make_unique<TileIndexBuilder>(grid, class_for_raw, pruned, classes, primitive);
+      cpu_indices = Buffer(ctx, {std::max<VkDeviceSize>(grid.max_index_count(), 6) * sizeof(std::uint32_t),
+                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::HostUpload, "tile indices (host-built)"});
+      cpu_draws = Buffer(ctx, {classes * sizeof(VkDrawIndexedIndirectCommand), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                               MemoryUse::HostUpload, "indirect draws (host-patched)"});
+      clear_draws();
+    } else {
+      gpu_build = std::make_unique<GpuIndexBuild>(ctx, lighting->shaders(), grid, class_for_raw, pruned, classes, opts.coalesce,
+                                                  primitive, classification->device_ids(), descriptor_pool.get());
+    }
+
+    frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
+    tile_queries = TimestampQueries(ctx, "tile pass timestamps", 4);
+    timeline = TimelineSemaphore(ctx, "classification/patch timeline", 0);
+    frame_done = Fence(ctx, "frame done");
+    frame_commands = pool.allocate("frame (submit A)");
+    tile_commands = pool.allocate("tile pass (submit B, pre-recorded)");
+    record_tile_pass();
+  }
+
+  bool runs_naive() const { return options.baselines != Baselines::dynamic; }
+  bool runs_dynamic() const { return options.baselines != Baselines::naive; }
+
+  const Buffer& tile_indices() const { return gpu_build ? gpu_build->indices() : cpu_indices; }
+  const Buffer& tile_draws() const { return gpu_build ? gpu_build->draws() : cpu_draws; }
+
+  // Recorded once, before any classification: the draws it holds are patched every frame.
+  void record_tile_pass() {
+    VkCommandBuffer cmd = tile_commands.get();
+    begin_commands(cmd, "tile pass", 0);
+    tile_queries.reset(cmd);
+    tile_queries.write(cmd, "start");
+    light_passes->record_tiled(cmd, *targets, tile_indices(), tile_draws());
+    tile_queries.write(cmd, "tiled");
+    if (runs_naive()) {
+      light_passes->record_naive(cmd, *targets);
+      tile_queries.write(cmd, "naive");
+    }
+    if (runs_dynamic()) {
+      light_passes->record_dynamic(cmd, *targets);
+      tile_queries.write(cmd, "dynamic");
+    }
+    end_commands(cmd, "tile pass");
+  }
+
+  void record_frame() {
+    VkCommandBuffer cmd = frame_commands.get();
+    check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", "frame (submit A)");
+    begin_commands(cmd, "frame");
+    frame_queries.reset(cmd);
+    frame_queries.write(cmd, "start");
+    scene_passes->record_shadow_map(cmd, *targets);
+    frame_queries.write(cmd, "shadow");
+    if (gbuffer_upload) {
+      gbuffer_upload->record(cmd, *targets);
+    } else {
+      scene_passes->record_gbuffer(cmd, *targets);
+    }
+    frame_queries.write(cmd, "gbuffer");
+    classification->record(cmd);
+    frame_queries.write(cmd, "classified");
+    if (gpu_build) {
+      gpu_build->record(cmd);
+      frame_queries.write(cmd, "built");
+    }
+    end_commands(cmd, "frame");
+  }
+
+  void clear_draws() {
+    std::span<DrawRecord> draws = cpu_draws.as<DrawRecord>();
+    for (DrawRecord& d : draws) d = {0, 1, 0, 0, 0};
+  }
+
+  // The host's part of the CPU path: wait for classification, build, patch, signal.
+  FrameStats build_and_patch(std::uint64_t classified_value, std::uint64_t patched_value, double& build_ms) {
+    timeline.wait(classified_value, "classification", options.timeout);
+    const auto start = std::chrono::steady_clock::now();
+    const IndexBuildStats built =
+        cpu_builder->build(classification->host_ids(), options.coalesce, cpu_indices.as<std::uint32_t>(),
+                           cpu_draws.as<DrawRecord>());
+    build_ms = milliseconds_since(start);
+    if (before_host_signal) before_host_signal();
+    timeline.signal(patched_value);
+    FrameStats stats;
+    // One entry per draw class, like the GPU path's counts.
+    const std::size_t classes = light_passes->class_count();
+    stats.class_tiles.assign(built.class_tiles.begin(), built.class_tiles.begin() + classes);
+    stats.class_rectangles.assign(built.rectangles.begin(), built.rectangles.begin() + classes);
+    stats.class_primitives.assign(built.primitives.begin(), built.primitives.begin() + classes);
+    stats.primitives_uncoalesced = built.primitives_uncoalesced;
+    stats.primitives_coalesced = built.primitives_coalesced;
+    stats.rectangles = built.rectangles_coalesced;
+    return stats;
+  }
+
+  FrameStats gpu_stats() const {
+    const GpuIndexBuild::Counts counts = gpu_build->read_counts();
+    if (counts.invalid_tiles != 0) {
+      throw Error(std::to_string(counts.invalid_tiles) +
+                  " tiles were classified with an impossible raw ID (GPU-driven index build)");
+    }
+    FrameStats stats;
+    stats.class_tiles = counts.tiles;
+    stats.class_rectangles = counts.rectangles;
+    stats.class_primitives = counts.primitives;
+    stats.primitives_uncoalesced = std::accumulate(counts.tiles.begin(), counts.tiles.end(), 0u);
+    stats.primitives_coalesced = std::accumulate(counts.primitives.begin(), counts.primitives.end(), 0u);
+    stats.rectangles = std::accumulate(counts.rectangles.begin(), counts.rectangles.end(), 0u);
+    return stats;
+  }
+
+  FrameResult render_frame() {
+    ++frame;
+    const std::uint64_t classified_value = 2 * frame - 1;
+    const std::uint64_t patched_value = 2 * frame;
+    record_frame();
+    frame_done.reset();
+
+    const VkCommandBuffer a = frame_commands.get();
+    const SemaphoreSignal classified{timeline.handle(), classified_value};
+    submit(context, {std::span(&a, 1), {}, std::span(&classified, 1), VK_NULL_HANDLE}, "frame (submit A)");
+
+    const VkCommandBuffer b = tile_commands.get();
+    FrameResult result;
+    if (cpu_builder) {
+      // Submitted before the host has built anything: the GPU holds it until the signal.
+      const SemaphoreWait patched{timeline.handle(), patched_value, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT};
+      submit(context, {std::span(&b, 1), std::span(&patched, 1), {}, frame_done.handle()}, "tile pass (submit B)");
+      try {
+        result.stats = build_and_patch(classified_value, patched_value, result.timings.index_build_cpu);
+      } catch (...) {
+        release_blocked_tile_pass(patched_value);
+        throw;
+      }
+    } else {
+      submit(context, {std::span(&b, 1), {}, {}, frame_done.handle()}, "tile pass (submit B)");
+    }
+    frame_done.wait("the tile and baseline light passes", options.timeout);
+    if (gpu_build) result.stats = gpu_stats();
+    read_timings(result.timings);
+    return result;
+  }
+
+  // The tile pass is waiting for a signal that will not come: empty every draw, signal, and
+  // wait for the GPU, so nothing is left blocked when the error propagates.
+  void release_blocked_tile_pass(std::uint64_t patched_value) noexcept {
+    try {
+      clear_draws();
+      if (timeline.value() < patched_value) timeline.signal(patched_value);
+      frame_done.wait("the tile pass after a failed index build", options.timeout);
+    } catch (...) {
+      // Already failing: the original error is the one worth reporting.
+    }
+  }
+
+  // One query-pool read per pool; stamps are in the order they were written.
+  void read_timings(FrameTimings& t) const {
+    const std::vector<Timestamp> frame_stamps = frame_queries.read();  // start shadow gbuffer classified [built]
+    const std::vector<Timestamp> tile_stamps = tile_queries.read();    // start tiled [naive] [dynamic]
+    auto between = [](const std::vector<Timestamp>& stamps, std::size_t i) { return stamps[i + 1].ms - stamps[i].ms; };
+    t.shadow_map = between(frame_stamps, 0);
+    t.gbuffer = between(frame_stamps, 1);
+    t.classification = between(frame_stamps, 2);
+    if (gpu_build) t.index_build_gpu = between(frame_stamps, 3);
+    t.tiled_light = between(tile_stamps, 0);
+    std::size_t next = 1;
+    if (runs_naive()) t.naive_light = between(tile_stamps, next++);
+    if (runs_dynamic()) t.dynamic_light = between(tile_stamps, next++);
+  }
+};
+
+TileRenderer::TileRenderer(const Context& context, const Scene& scene, const RendererOptions& options)
+    : impl_(std::make_unique<Impl>(context, scene, options)) {}
+
+TileRenderer::~TileRenderer() {
+  if (impl_) {
+    try {
+      impl_->context.wait_idle("renderer teardown", impl_->options.timeout);
+    } catch (...) {
+      // Destructors must not throw; the context's own teardown waits (bounded) again.
+    }
+  }
+}
+
+FrameResult TileRenderer::render_frame() { return impl_->render_frame(); }
+const TileGrid& TileRenderer::grid() const { return impl_->grid; }
+std::uint32_t TileRenderer::msaa_samples() const { return static_cast<std::uint32_t>(impl_->samples); }
+std::uint32_t TileRenderer::draw_class_count() const { return impl_->light_passes->class_count(); }
+TilePrimitive TileRenderer::tile_primitive() const { return impl_->primitive; }
+std::uint32_t TileRenderer::pipeline_count() const { return impl_->light_passes->pipeline_count(); }
+const LightingParamsBlock& TileRenderer::lighting_params() const { return impl_->lighting->params(); }
+
+std::vector<std::uint8_t> TileRenderer::raw_tile_ids() const {
+  return to_row_major(impl_->grid, impl_->classification->host_ids());
+}
+
+RgbaImage TileRenderer::read_classified() const {
+  return read_image_rgba(impl_->context, impl_->pool, impl_->targets->classified(),
+                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, impl_->options.timeout);
+}
+
+RgbaImage TileRenderer::read_naive() const {
+  if (!impl_->runs_naive()) throw Error("read_naive: this renderer does not run the naive pass (baselines dynamic)");
+  return read_image_rgba(impl_->context, impl_->pool, impl_->targets->naive(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         impl_->options.timeout);
+}
+
+RgbaImage TileRenderer::read_dynamic() const {
+  if (!impl_->runs_dynamic()) throw Error("read_dynamic: this renderer does not run the dynamic pass (baselines naive)");
+  return read_image_rgba(impl_->context, impl_->pool, impl_->targets->dynamic(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         impl_->options.timeout);
+}
+
+GBufferSamples TileRenderer::read_gbuffer() {
+  Impl& impl = *impl_;
+  impl.classification->enable_gbuffer_dump(impl.context, impl.descriptor_pool.get(), msaa_samples());
+  submit_and_wait(
+      impl.context, impl.pool, [&](VkCommandBuffer cmd) { impl.classification->record_gbuffer_dump(cmd); },
+      "G-buffer dump", impl.options.timeout);
+  GBufferSamples out;
+  out.width = impl.grid.width;
+  out.height = impl.grid.height;
+  out.samples = msaa_samples();
+  const std::span<const float> values = impl.classification->host_gbuffer_dump();
+  out.values.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(
+                                                       static_cast<std::size_t>(out.width) * out.height * out.samples * 16));
+  return out;
+}
+
+std::vector<float> TileRenderer::read_shadow_map() const {
+  const std::vector<std::byte> bytes =
+      read_image_bytes(impl_->context, impl_->pool, impl_->targets->shadow_map(),
+                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, impl_->options.timeout);
+  std::vector<float> depths(bytes.size() / sizeof(float));
+  std::memcpy(depths.data(), bytes.data(), depths.size() * sizeof(float));
+  return depths;
+}
+
+void TileRenderer::set_gbuffer_override(const GBufferSamples& samples) {
+  impl_->gbuffer_upload = std::make_unique<GBufferUpload>(impl_->context, *impl_->targets, samples,
+                                                          impl_->lighting->params().sun_direction,
+                                                          impl_->descriptor_pool.get());
+}
+
+void TileRenderer::set_before_host_signal(std::function<void()> hook) { impl_->before_host_signal = std::move(hook); }
+
+}  // namespace tilelight

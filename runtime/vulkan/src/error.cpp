@@ -1,0 +1,74 @@
+#include "tilelight/vulkan/error.h"
+
+#include <fmt/format.h>
+
+namespace tilelight {
+namespace {
+
+std::string vulkan_message(VkResult result, std::string_view call, std::string_view object) {
+  if (object.empty()) {
+    return fmt::format("{} failed: {}", call, result_name(result));
+  }
+  return fmt::format("{} failed for {}: {}", call, object, result_name(result));
+}
+
+}  // namespace
+
+VulkanError::VulkanError(VkResult result, std::string_view call, std::string_view object)
+    : Error(vulkan_message(result, call, object)), result_(result) {}
+
+std::string result_name(VkResult result) {
+  switch (result) {
+#define TILELIGHT_RESULT(name) \
+  case name:                   \
+    return #name;
+    TILELIGHT_RESULT(VK_SUCCESS)
+    TILELIGHT_RESULT(VK_NOT_READY)
+    TILELIGHT_RESULT(VK_TIMEOUT)
+    TILELIGHT_RESULT(VK_EVENT_SET)
+    TILELIGHT_RESULT(VK_EVENT_RESET)
+    TILELIGHT_RESULT(VK_INCOMPLETE)
+    TILELIGHT_RESULT(VK_ERROR_OUT_OF_HOST_MEMORY)
+    TILELIGHT_RESULT(VK_ERROR_OUT_OF_DEVICE_MEMORY)
+    TILELIGHT_RESULT(VK_ERROR_INITIALIZATION_FAILED)
+    TILELIGHT_RESULT(VK_ERROR_DEVICE_LOST)
+    TILELIGHT_RESULT(VK_ERROR_MEMORY_MAP_FAILED)
+    TILELIGHT_RESULT(VK_ERROR_LAYER_NOT_PRESENT)
+    TILELIGHT_RESULT(VK_ERROR_EXTENSION_NOT_PRESENT)
+    TILELIGHT_RESULT(VK_ERROR_FEATURE_NOT_PRESENT)
+    TILELIGHT_RESULT(VK_ERROR_INCOMPATIBLE_DRIVER)
+    TILELIGHT_RESULT(VK_ERROR_TOO_MANY_OBJECTS)
+    TILELIGHT_RESULT(VK_ERROR_FORMAT_NOT_SUPPORTED)
+    TILELIGHT_RESULT(VK_ERROR_FRAGMENTED_POOL)
+    TILELIGHT_RESULT(VK_ERROR_UNKNOWN)
+    TILELIGHT_RESULT(VK_ERROR_OUT_OF_POOL_MEMORY)
+    TILELIGHT_RESULT(VK_ERROR_INVALID_EXTERNAL_HANDLE)
+    TILELIGHT_RESULT(VK_ERROR_FRAGMENTATION)
+    TILELIGHT_RESULT(VK_ERROR_INVALID_OPAQUE_CAPTURE_ADDRESS)
+    TILELIGHT_RESULT(VK_PIPELINE_COMPILE_REQUIRED)
+    TILELIGHT_RESULT(VK_ERROR_SURFACE_LOST_KHR)
+    TILELIGHT_RESULT(VK_ERROR_NATIVE_WINDOW_IN_USE_KHR)
+    TILELIGHT_RESULT(VK_SUBOPTIMAL_KHR)
+    TILELIGHT_RESULT(VK_ERROR_OUT_OF_DATE_KHR)
+    TILELIGHT_RESULT(VK_ERROR_INCOMPATIBLE_DISPLAY_KHR)
+    TILELIGHT_RESULT(VK_ERROR_VALIDATION_FAILED_EXT)
+    TILELIGHT_RESULT(VK_ERROR_INVALID_SHADER_NV)
+    TILELIGHT_RESULT(VK_ERROR_INVALID_DRM_FORMAT_MODIFIER_PLANE_LAYOUT_EXT)
+    TILELIGHT_RESULT(VK_ERROR_NOT_PERMITTED_KHR)
+    TILELIGHT_RESULT(VK_THREAD_IDLE_KHR)
+    TILELIGHT_RESULT(VK_THREAD_DONE_KHR)
+    TILELIGHT_RESULT(VK_OPERATION_DEFERRED_KHR)
+    TILELIGHT_RESULT(VK_OPERATION_NOT_DEFERRED_KHR)
+#undef TILELIGHT_RESULT
+    default:
+      return fmt::format("VkResult({})", static_cast<int>(result));
+  }
+}
+
+void check(VkResult result, std::string_view call, std::string_view object) {
+  if (result != VK_SUCCESS) {
+    throw VulkanError(result, call, object);
+  }
+}
+
+}  // namespace tilelight

@@ -1,0 +1,23 @@
+#pragma once
+// The tests' way into TileRenderer's hooks, which are private members: TileRenderer befriends
+// this class, and only the test-support library defines it, so production code cannot call
+// them while the frame tests still drive the real render path.
+
+#include "tilelight/render/tile_renderer.h"
+
+#include <functional>
+
+namespace tilelight {
+
+class TileRendererTestSeam {
+ public:
+  // Later frames take their G-buffer from `samples` instead of rendering the scene (the shadow
+  // map still comes from the scene). Precondition: size and sample count match `renderer`.
+  static void set_gbuffer_override(TileRenderer& renderer, const GBufferSamples& samples);
+
+  // `hook` runs on the host after the tile pass was submitted and before the host signals it;
+  // an exception it throws must still leave the GPU unblocked. An empty hook removes it.
+  static void set_before_host_signal(TileRenderer& renderer, std::function<void()> hook);
+};
+
+}  // namespace tilelight
