@@ -1,4 +1,4 @@
-// Correctness criterion of the whole technique (DESIGN.md §1): for every pixel, the classified
+// Correctness criterion of the whole technique (docs/design.md): for every pixel, the classified
 // render equals the naive render. One comparison checks classification conservativeness, the
 // LUT, every permutation drawn, the index buffers and the deferred draw patching together.
 // The dynamic baseline (one full-screen pass branching per pixel) must give the naive render

@@ -5,6 +5,7 @@
 #include "tilelight/picture/png.h"
 
 #include <gtest/gtest.h>
+#include <stb/stb_image.h>
 
 #include <cmath>
 #include <filesystem>
@@ -21,6 +22,23 @@ RgbaImage uniform_frame(std::uint32_t width, std::uint32_t height, std::array<fl
   image.pixels.resize(static_cast<std::size_t>(width) * height * 4);
   for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = colour[i % 4];
   return image;
+}
+
+// The RGBA pixels of the PNG at `path`; empty (and a test failure) unless it is width x height.
+std::vector<std::uint8_t> decode_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height) {
+  int w = 0, h = 0, channels = 0;
+  unsigned char* decoded = stbi_load(path.c_str(), &w, &h, &channels, 4);
+  if (decoded == nullptr) {
+    ADD_FAILURE() << path << ": not a PNG stb_image can read";
+    return {};
+  }
+  std::vector<std::uint8_t> pixels(decoded, decoded + std::size_t{static_cast<std::uint32_t>(w)} * h * 4);
+  stbi_image_free(decoded);
+  if (w != static_cast<int>(width) || h != static_cast<int>(height)) {
+    ADD_FAILURE() << path << ": " << w << "x" << h << ", expected " << width << "x" << height;
+    return {};
+  }
+  return pixels;
 }
 
 std::uint32_t tiles_along(std::uint32_t pixels, std::uint32_t tile) {
@@ -382,16 +400,39 @@ std::vector<std::uint8_t> example_ids(std::uint32_t tiles_x, std::uint32_t tiles
   return ids;
 }
 
+// The example pictures (kept in the build folder for a human to look at) are what the demo
+// writes for such a frame: the legend lists exactly the classes present, the PNG decodes to the
+// composed canvas pixel for pixel, and the frame part is the tinted frame.
 TEST(TileClassImage, WritesExamplePictures) {
   const std::filesystem::path out = TILELIGHT_PICTURE_OUT;
   std::filesystem::create_directories(out);
   for (const auto& [name, width, height, tile] :
        {std::tuple<const char*, std::uint32_t, std::uint32_t, std::uint32_t>{"example.png", 320, 180, 4},
         std::tuple<const char*, std::uint32_t, std::uint32_t, std::uint32_t>{"example_720p.png", 1280, 720, 8}}) {
-    const auto ids = example_ids(tiles_along(width, tile), tiles_along(height, tile));
-    const Rgba8Canvas canvas = compose_tile_class_image(example_scene(width, height), tile, ids);
+    SCOPED_TRACE(name);
+    const std::uint32_t tiles_x = tiles_along(width, tile);
+    const auto ids = example_ids(tiles_x, tiles_along(height, tile));
+    const RgbaImage frame = example_scene(width, height);
+    const Rgba8Canvas canvas = compose_tile_class_image(frame, tile, ids);
+    const TileClassLegendLayout layout = tile_class_legend_layout(width, height, tile, ids);
+    // Sky, horizon, ground, two shadows, their edges and the light shaft across them: the
+    // legend has a row for each class present, in ID order, and no other.
+    const std::set<std::uint8_t> present(ids.begin(), ids.end());
+    std::vector<std::uint32_t> listed;
+    for (const TileClassLegendLayout::Row& row : layout.rows) listed.push_back(row.entry.optimised_id);
+    EXPECT_EQ(listed, std::vector<std::uint32_t>(present.begin(), present.end()));
+    EXPECT_EQ(listed.size(), 17u);
+    ASSERT_EQ(canvas.width, layout.canvas_width);
+    ASSERT_EQ(canvas.height, layout.canvas_height);
+    // Inside a tile, away from its outline: the documented tint of the frame and its class.
+    const std::uint32_t x = 5 * tile + tile / 2, y = 3 * tile + tile / 2;
+    const std::vector<std::uint8_t> frame8 = to_rgba8(frame);
+    const std::size_t i = (std::size_t{y} * width + x) * 4;
+    EXPECT_EQ(canvas.pixel(x, y), expected_blend({frame8[i], frame8[i + 1], frame8[i + 2], 255}, ids[3 * tiles_x + 5]));
+
     write_png_rgba8(out / name, canvas.width, canvas.height, canvas.pixels);
-    EXPECT_TRUE(std::filesystem::exists(out / name));
+    const std::vector<std::uint8_t> decoded = decode_png(out / name, canvas.width, canvas.height);
+    EXPECT_TRUE(decoded == canvas.pixels) << "the PNG does not hold the composed picture";
   }
 }
 

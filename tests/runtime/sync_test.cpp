@@ -1,5 +1,5 @@
 // Fences and timeline semaphores: host signals, bounded waits, and a submit that waits for a
-// host signal (the draw-patching mechanism of DESIGN.md section 1, step 6).
+// host signal (the draw-patching mechanism of docs/design.md).
 #include "tilelight_testing/test_support.h"
 
 #include "tilelight/vulkan/barriers.h"
@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <thread>
 
 namespace tilelight {
 namespace {
@@ -37,7 +36,10 @@ TEST_F(VulkanTest, TimelineWaitTimesOutWithTheStageName) {
   } catch (const TimeoutError& e) {
     EXPECT_STREQ(e.what(), "GPU did not finish the classification pass within 0.05 s");
   }
-  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  // The wait really waited for its timeout instead of failing at once. Only this lower bound
+  // holds on a loaded machine; that the wait returns at all is what ctest's TIMEOUT checks.
+  // Half the timeout: Vulkan may round the timeout to its timer's accuracy.
+  EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(25));
 }
 
 TEST_F(VulkanTest, TimelineSignalMustIncrease) {
@@ -118,10 +120,12 @@ TEST_F(VulkanTest, SubmitWaitsForHostSignal) {
   const SemaphoreSignal signal[] = {{timeline.handle(), 2}};
   submit(context(), {buffers, wait, signal, VK_NULL_HANDLE}, "the tile pass");
 
-  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  // No sleep-and-look: the host waits for the batch's own signal. A queue that ran the batch
+  // without the host signal would end this wait early (and the checks below would fail); a
+  // correct one makes it time out, however slow the machine.
+  EXPECT_THROW(timeline.wait(2, "the tile pass", Seconds{0.2}), TimeoutError);
   EXPECT_EQ(timeline.value(), 0u);
   EXPECT_EQ(target.as<std::uint32_t>()[0], 0u);
-  EXPECT_THROW(timeline.wait(2, "the tile pass", Seconds{0.05}), TimeoutError);
 
   timeline.signal(1);  // "draws patched"
   timeline.wait(2, "the tile pass", Seconds{30.0});

@@ -23,7 +23,7 @@ void buffer_barrier(VkCommandBuffer cmd, VkBuffer buffer, Scope src, Scope dst,
                     VkDeviceSize offset = 0, VkDeviceSize size = VK_WHOLE_SIZE);
 
 // A global memory barrier, e.g. HOST/HOST_WRITE -> DRAW_INDIRECT/INDIRECT_COMMAND_READ for
-// records the CPU writes after the submit (DESIGN.md section 6).
+// records the CPU writes after the submit (docs/design.md, deferred draw patching).
 void memory_barrier(VkCommandBuffer cmd, Scope src, Scope dst);
 
 }  // namespace tilelight

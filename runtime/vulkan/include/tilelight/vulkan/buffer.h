@@ -44,7 +44,7 @@ class Buffer {
 
   // The mapped bytes. Precondition: host_visible(). The memory is HOST_COHERENT, so writes need
   // no flush; but writes made after a submit that reads them still need a HOST -> device
-  // barrier in that submit (see DESIGN.md section 6).
+  // barrier in that submit (see docs/design.md, deferred draw patching).
   std::span<std::byte> bytes() const;
 
   // The mapped memory as an array of T. Precondition: host_visible(); T trivially copyable.

@@ -36,7 +36,7 @@ struct Submission {
 
 // One vkQueueSubmit of one batch on the context's queue. A wait on a timeline value that only
 // the host will signal later is allowed (wait-before-signal); a wait on a value that only a
-// later submit on this same queue would signal can deadlock (DESIGN.md section 6).
+// later submit on this same queue would signal can deadlock (docs/design.md, deferred draw patching).
 // `stage` names the work in errors.
 void submit(const Context& context, const Submission& submission, std::string_view stage);
 
