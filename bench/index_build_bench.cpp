@@ -84,8 +84,8 @@ std::vector<std::uint8_t> make_ids(const tilelight::TileGrid& grid, int pattern)
 
 // Args: width, height, pattern, coalesce, primitive (0: triangle pairs, 1: points; tile_primitive.h).
 void BM_IndexBuild(benchmark::State& state) {
-  const auto grid = tilelight::TileGrid::make(static_cast<std::uint32_t>(state.range(0)),
-                                              static_cast<std::uint32_t>(state.range(1)));
+  const auto grid =
+      tilelight::TileGrid::make(static_cast<std::uint32_t>(state.range(0)), static_cast<std::uint32_t>(state.range(1)));
   const int pattern = static_cast<int>(state.range(2));
   const bool coalesce = state.range(3) != 0;
   const auto primitive = state.range(4) != 0 ? tilelight::TilePrimitive::points : tilelight::TilePrimitive::triangles;
@@ -105,8 +105,7 @@ void BM_IndexBuild(benchmark::State& state) {
   }
   state.SetLabel(kPatternNames[pattern]);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * grid.tile_count());
-  state.counters["tiles_per_rect"] =
-      static_cast<double>(stats.tiles) / static_cast<double>(stats.rectangles_coalesced);
+  state.counters["tiles_per_rect"] = static_cast<double>(stats.tiles) / static_cast<double>(stats.rectangles_coalesced);
   state.counters["rects"] = static_cast<double>(stats.rectangles_coalesced);
   state.counters["prims"] = static_cast<double>(stats.primitives_coalesced);
 }

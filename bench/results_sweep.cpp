@@ -69,7 +69,8 @@ void update_document(const std::filesystem::path& path, std::map<std::string, st
 
 // Prints the run line and every comparison's table on stdout and stages its chart in `files`;
 // returns the tables by comparison id, and the run line as "run" (the document's sections).
-std::map<std::string, std::string> report_comparisons(const SweepPlan& plan, const std::vector<Measurement>& measurements,
+std::map<std::string, std::string> report_comparisons(const SweepPlan& plan,
+                                                      const std::vector<Measurement>& measurements,
                                                       const std::string& run_line, app::OutputFiles& files) {
   std::map<std::string, std::string> sections{{"run", run_line}};
   std::cout << run_line;

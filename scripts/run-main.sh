@@ -7,8 +7,8 @@ set -eu
 cd "$(dirname "$0")/.."
 
 ./scripts/install-deps.sh
-cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHADERGEN_BUILD_TESTS=OFF
-cmake --build build/release
+cmake --preset release  # CMakePresets.json: build/release, Release, no tests
+cmake --build --preset release
 
 shadergen=build/release/shadergen/shadergen
 "$shadergen" lut permutations/split_second.json

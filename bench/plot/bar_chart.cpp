@@ -1,7 +1,7 @@
 #include "bar_chart.h"
 
-#include "tilelight/picture/bitmap_font.h"
 #include "tilelight/base/error.h"
+#include "tilelight/picture/bitmap_font.h"
 
 #include <fmt/format.h>
 
@@ -12,7 +12,7 @@
 namespace tilelight::plot {
 namespace {
 
-constexpr int kTextScale = 2;   // body text: 12 x 18 pixel cells, legible at full-page width
+constexpr int kTextScale = 2;  // body text: 12 x 18 pixel cells, legible at full-page width
 constexpr int kTitleScale = 3;
 constexpr int kMargin = 24;
 constexpr int kPlotWidth = 640;  // the longest possible bar
@@ -93,11 +93,10 @@ Layout make_layout(const BarChart& chart) {
 
   // Bars may reach the plot's right end and carry their value label beyond it; the last tick
   // label is centred on that end.
-  const int right = l.plot_x + kPlotWidth +
-                    std::max(6 + widest_value, text_w(tick_label(l.axis.max, l.axis.step)) / 2);
-  l.width = std::max({right + kMargin, text_w(chart.title, kTitleScale) + 2 * kMargin,
-                      legend_width(chart) + 2 * kMargin,
-                      l.plot_x + kPlotWidth / 2 + text_w(chart.value_axis) / 2 + kMargin});
+  const int right = l.plot_x + kPlotWidth + std::max(6 + widest_value, text_w(tick_label(l.axis.max, l.axis.step)) / 2);
+  l.width =
+      std::max({right + kMargin, text_w(chart.title, kTitleScale) + 2 * kMargin, legend_width(chart) + 2 * kMargin,
+                l.plot_x + kPlotWidth / 2 + text_w(chart.value_axis) / 2 + kMargin});
   return l;
 }
 
@@ -172,13 +171,13 @@ void check_bar_chart(const BarChart& chart) {
     throw Error(what + fmt::format("{} colours for {} series", chart.colours.size(), chart.series.size()));
   }
   if (chart.values.size() != chart.categories.size()) {
-    throw Error(what + fmt::format("{} rows of values for {} categories", chart.values.size(),
-                                   chart.categories.size()));
+    throw Error(what +
+                fmt::format("{} rows of values for {} categories", chart.values.size(), chart.categories.size()));
   }
   for (std::size_t c = 0; c < chart.values.size(); ++c) {
     if (chart.values[c].size() != chart.series.size()) {
-      throw Error(what + fmt::format("category {} has {} values, expected {}", c, chart.values[c].size(),
-                                     chart.series.size()));
+      throw Error(
+          what + fmt::format("category {} has {} values, expected {}", c, chart.values[c].size(), chart.series.size()));
     }
     for (std::size_t s = 0; s < chart.series.size(); ++s) {
       const double v = chart.values[c][s];
@@ -193,8 +192,8 @@ void check_bar_chart(const BarChart& chart) {
 Rgba8Canvas draw_bar_chart(const BarChart& chart) {
   check_bar_chart(chart);
   const Layout l = make_layout(chart);
-  Rgba8Canvas canvas = Rgba8Canvas::filled(static_cast<std::uint32_t>(l.width), static_cast<std::uint32_t>(l.height),
-                                           kBackground);
+  Rgba8Canvas canvas =
+      Rgba8Canvas::filled(static_cast<std::uint32_t>(l.width), static_cast<std::uint32_t>(l.height), kBackground);
   draw_text(canvas, kMargin, l.title_y, chart.title, kInk, kTitleScale);
   draw_legend(canvas, chart, l);
   draw_value_axis(canvas, chart, l);

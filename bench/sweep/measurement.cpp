@@ -58,13 +58,13 @@ double Measurement::speedup_over_dynamic() const {
 std::string configuration_key(const RendererOptions& o) {
   return fmt::format("{}x{} tile {} {} {} {} {} camera {} msaa {}", o.width, o.height, o.tile_size,
                      o.path == IndexPath::gpu ? "gpu" : "cpu", o.raw_permutations ? "raw" : "optimised",
-                     o.coalesce ? "coalesced" : "uncoalesced", o.primitive ? to_string(*o.primitive) : "auto",
-                     o.camera, o.msaa == 0 ? std::string("auto") : std::to_string(o.msaa));
+                     o.coalesce ? "coalesced" : "uncoalesced", o.primitive ? to_string(*o.primitive) : "auto", o.camera,
+                     o.msaa == 0 ? std::string("auto") : std::to_string(o.msaa));
 }
 
 std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,
-                                             const std::vector<RendererOptions>& configurations,
-                                             std::uint32_t frames, std::ostream& progress) {
+                                             const std::vector<RendererOptions>& configurations, std::uint32_t frames,
+                                             std::ostream& progress) {
   const std::size_t n = configurations.size();
   std::vector<Run> runs(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -89,8 +89,8 @@ std::vector<Measurement> measure_round_robin(const Context& context, const Scene
   for (std::size_t i = 0; i < n; ++i) {
     measurements.push_back(finish(runs[i], configurations[i], frames));
     const Measurement& m = measurements.back();
-    progress << fmt::format("[{}/{}] {}: speed-up {:.2f}x over naive, {:.2f}x over dynamic; {} pixels differ\n",
-                            i + 1, n, m.key, m.speedup(), m.speedup_over_dynamic(), m.equivalence.pixels_different);
+    progress << fmt::format("[{}/{}] {}: speed-up {:.2f}x over naive, {:.2f}x over dynamic; {} pixels differ\n", i + 1,
+                            n, m.key, m.speedup(), m.speedup_over_dynamic(), m.equivalence.pixels_different);
     runs[i].renderer.reset();  // its memory is not needed any more
   }
   return measurements;

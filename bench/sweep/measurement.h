@@ -2,10 +2,10 @@
 // One configuration of the renderer measured: medians of every stage over the timed frames,
 // the primitive counts, and whether the classified frame still equals the naive one.
 
-#include "tilelight/vulkan/context.h"
-#include "tilelight/scene/scene.h"
-#include "tilelight/render/tile_renderer.h"
 #include "tilelight/app/report.h"
+#include "tilelight/render/tile_renderer.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/vulkan/context.h"
 
 #include <cstdint>
 #include <ostream>
@@ -50,7 +50,7 @@ std::string configuration_key(const RendererOptions& options);
 // of each back and compares them. Progress lines go to `progress`. Results are in the order
 // of `configurations`.
 std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,
-                                             const std::vector<RendererOptions>& configurations,
-                                             std::uint32_t frames, std::ostream& progress);
+                                             const std::vector<RendererOptions>& configurations, std::uint32_t frames,
+                                             std::ostream& progress);
 
 }  // namespace tilelight::sweep

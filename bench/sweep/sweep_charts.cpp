@@ -26,8 +26,8 @@ plot::BarChart stage_breakdown(const Comparison& c, const std::vector<const Meas
   chart.colours = {colour(0), colour(1), colour(2), kClassified, kNaive};
   for (const Measurement* m : rows) {
     chart.categories.push_back(with_speedup(c, *m));
-    chart.values.push_back({m->timings.classification, m->index_build(), m->timings.tiled_light,
-                            m->classified_light(), m->timings.naive_light});
+    chart.values.push_back({m->timings.classification, m->index_build(), m->timings.tiled_light, m->classified_light(),
+                            m->timings.naive_light});
   }
   return chart;
 }
@@ -68,8 +68,9 @@ plot::BarChart table_4_2(const Comparison& c, const Measurement& m) {
   chart.value_axis = kValueAxis;
   chart.series = {"naive", "classification"};
   chart.colours = {kNaive, kClassified};
-  chart.categories = {"tile classification", m.options.path == IndexPath::gpu ? "index build (GPU)" : "index build (CPU)",
-                      "global light pass", "total"};
+  chart.categories = {"tile classification",
+                      m.options.path == IndexPath::gpu ? "index build (GPU)" : "index build (CPU)", "global light pass",
+                      "total"};
   chart.values = {{0.0, m.timings.classification},
                   {0.0, m.index_build()},
                   {m.timings.naive_light, m.timings.tiled_light},

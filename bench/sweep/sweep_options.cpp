@@ -29,12 +29,13 @@ FrameSize parse_frame_size(const std::string& text) {
   throw Error("--sizes " + text + ": expected 720p, 1080p, 1440p or <width>x<height>");
 }
 
-bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& options, int& exit_code,
-                         std::ostream& out, std::ostream& err) {
-  CLI::App cli("tilelight_sweep: every design choice of the tile-classified light pass measured side by side\n"
-               "in one process (medians over --frames after one warm-up frame); writes DIR/results.json,\n"
-               "one PNG chart per comparison, and markdown tables on stdout.",
-               "tilelight_sweep");
+bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& options, int& exit_code, std::ostream& out,
+                         std::ostream& err) {
+  CLI::App cli(
+      "tilelight_sweep: every design choice of the tile-classified light pass measured side by side\n"
+      "in one process (medians over --frames after one warm-up frame); writes DIR/results.json,\n"
+      "one PNG chart per comparison, and markdown tables on stdout.",
+      "tilelight_sweep");
   std::vector<std::string> sizes{"720p", "1080p", "1440p"};
   cli.add_option("--frames", options.frames, "timed frames per configuration")
       ->check(CLI::Range(1u, 10000u))
@@ -60,8 +61,8 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
                  "run only these comparisons: permutations, tile_size, index_path, coalescing, primitive, "
                  "resolution, stages, baselines (default: all)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"permutations", "tile_size", "index_path", "coalescing", "primitive", "resolution",
-                             "stages", "baselines"}));
+      ->check(CLI::IsMember(
+          {"permutations", "tile_size", "index_path", "coalescing", "primitive", "resolution", "stages", "baselines"}));
   cli.add_option("--device", options.device, "Vulkan device: index or name substring (default: lavapipe)");
   cli.add_option("--update-doc", options.update_doc,
                  "markdown file whose <!-- sweep:ID --> sections get the new tables (docs/results.md)");
@@ -81,7 +82,8 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
   for (const std::string& s : sizes) options.sizes.push_back(parse_frame_size(s));
   options.gpu_path = path == "gpu";
   options.msaa.clear();
-  for (const std::string& m : msaa) options.msaa.push_back(m == "auto" ? 0u : static_cast<std::uint32_t>(std::stoul(m)));
+  for (const std::string& m : msaa)
+    options.msaa.push_back(m == "auto" ? 0u : static_cast<std::uint32_t>(std::stoul(m)));
   return true;
 }
 

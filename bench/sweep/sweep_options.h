@@ -38,7 +38,7 @@ FrameSize parse_frame_size(const std::string& text);
 
 // Parses argv. On --help or a usage error it prints to `out` / `err` and sets `exit_code`
 // (0 for help, 2 for a usage error), returning false; true means go on and sweep.
-bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& options, int& exit_code,
-                         std::ostream& out, std::ostream& err);
+bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& options, int& exit_code, std::ostream& out,
+                         std::ostream& err);
 
 }  // namespace tilelight::sweep

@@ -54,16 +54,13 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
   b.compare<std::uint32_t>(Facet::tile_size, "tile_size", "Tile size 4 vs 8 vs 16" + at, {4, 8, 16},
                            [](RendererOptions& o, const std::uint32_t& t) { o.tile_size = t; });
   b.compare<IndexPath>(Facet::index_path, "index_path", "CPU patching vs GPU-driven index build" + at,
-                       {IndexPath::cpu, IndexPath::gpu},
-                       [](RendererOptions& o, const IndexPath& p) { o.path = p; });
+                       {IndexPath::cpu, IndexPath::gpu}, [](RendererOptions& o, const IndexPath& p) { o.path = p; });
   b.compare<bool>(Facet::coalescing, "coalescing", "Coalesced vs uncoalesced tiles" + at, {true, false},
                   [](RendererOptions& o, const bool& c) { o.coalesce = c; });
   // Auto is points wherever the device draws them; triangles is the chapter's two per rectangle.
-  b.compare<std::optional<TilePrimitive>>(Facet::primitive, "primitive", "Point sprites vs triangle pairs" + at,
-                                          {std::nullopt, TilePrimitive::triangles},
-                                          [](RendererOptions& o, const std::optional<TilePrimitive>& p) {
-                                            o.primitive = p;
-                                          });
+  b.compare<std::optional<TilePrimitive>>(
+      Facet::primitive, "primitive", "Point sprites vs triangle pairs" + at, {std::nullopt, TilePrimitive::triangles},
+      [](RendererOptions& o, const std::optional<TilePrimitive>& p) { o.primitive = p; });
   b.compare<FrameSize>(Facet::resolution, "resolution", "Resolution scaling, naive vs classified", options.sizes,
                        [](RendererOptions& o, const FrameSize& s) {
                          o.width = s.width;
@@ -104,8 +101,7 @@ std::string row_label(Facet facet, const Measurement& m) {
     case Facet::tile_size: return fmt::format("tile {}", o.tile_size);
     case Facet::index_path: return o.path == IndexPath::gpu ? "GPU-driven" : "CPU patching";
     case Facet::coalescing: return o.coalesce ? "coalesced" : "uncoalesced";
-    case Facet::primitive:
-      return fmt::format("{} ({})", to_string(m.primitive), o.primitive ? "asked for" : "auto");
+    case Facet::primitive: return fmt::format("{} ({})", to_string(m.primitive), o.primitive ? "asked for" : "auto");
     case Facet::resolution:
     case Facet::stages: return fmt::format("{}x{}", o.width, o.height);
     case Facet::baselines: return fmt::format("{}x {}x{} {}", m.msaa_samples, o.width, o.height, o.camera);

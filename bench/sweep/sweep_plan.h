@@ -19,8 +19,8 @@ enum class Facet { permutations, tile_size, index_path, coalescing, primitive, r
 
 struct Comparison {
   Facet facet;
-  std::string id;     // also the PNG's name: <id>.png
-  std::string title;  // chart title and table heading
+  std::string id;                 // also the PNG's name: <id>.png
+  std::string title;              // chart title and table heading
   std::vector<std::string> keys;  // configuration_key() of each row, in order
 };
 

@@ -40,14 +40,14 @@ std::string stages_table(const Measurement& m) {
   out += fmt::format(
       "\nSpeed-up {:.2f}x; classification is {:.1f}% of the naive pass. Shared by both frames and not in "
       "the totals: shadow map {} ms, G-buffer {} ms. Classified vs naive: {} pixels differ.\n",
-      m.speedup(), t.naive_light > 0 ? 100.0 * t.classification / t.naive_light : 0.0, ms(t.shadow_map),
-      ms(t.gbuffer), m.equivalence.pixels_different);
+      m.speedup(), t.naive_light > 0 ? 100.0 * t.classification / t.naive_light : 0.0, ms(t.shadow_map), ms(t.gbuffer),
+      m.equivalence.pixels_different);
   return out;
 }
 
 std::string min_median_max(const std::vector<double>& values) {
-  return fmt::format("{:.2f}x / {:.2f}x / {:.2f}x", *std::min_element(values.begin(), values.end()),
-                     median(values), *std::max_element(values.begin(), values.end()));
+  return fmt::format("{:.2f}x / {:.2f}x / {:.2f}x", *std::min_element(values.begin(), values.end()), median(values),
+                     *std::max_element(values.begin(), values.end()));
 }
 
 // Classified vs dynamic vs naive per row, then per MSAA mode and size the spread over cameras.
@@ -61,21 +61,21 @@ std::string baselines_table(const std::vector<const Measurement*>& rows) {
   for (const Measurement* m : rows) {
     const RendererOptions& o = m->options;
     const bool gpu = o.path == IndexPath::gpu;
-    out += fmt::format("| {}x | {}x{} | {} | {:.0f} % | {} | {} | {} | {} ({}) | {} | {} | {:.2f}x | {:.2f}x | {}, {} |\n",
-                       m->msaa_samples, o.width, o.height, o.camera,
-                       m->tiles > 0 ? 100.0 * m->sky_tiles / m->tiles : 0.0, ms(m->timings.naive_light),
-                       ms(m->timings.dynamic_light), ms(m->timings.classification), ms(m->index_build()),
-                       gpu ? "GPU" : "CPU", ms(m->timings.tiled_light), ms(m->classified_light()), m->speedup(),
-                       m->speedup_over_dynamic(), m->equivalence.pixels_different,
-                       m->dynamic_equivalence.pixels_different);
-    const std::string group = fmt::format("{}x MSAA, {}x{}, {} index build", m->msaa_samples, o.width, o.height,
-                                          gpu ? "GPU" : "CPU");
+    out += fmt::format(
+        "| {}x | {}x{} | {} | {:.0f} % | {} | {} | {} | {} ({}) | {} | {} | {:.2f}x | {:.2f}x | {}, {} |\n",
+        m->msaa_samples, o.width, o.height, o.camera, m->tiles > 0 ? 100.0 * m->sky_tiles / m->tiles : 0.0,
+        ms(m->timings.naive_light), ms(m->timings.dynamic_light), ms(m->timings.classification), ms(m->index_build()),
+        gpu ? "GPU" : "CPU", ms(m->timings.tiled_light), ms(m->classified_light()), m->speedup(),
+        m->speedup_over_dynamic(), m->equivalence.pixels_different, m->dynamic_equivalence.pixels_different);
+    const std::string group =
+        fmt::format("{}x MSAA, {}x{}, {} index build", m->msaa_samples, o.width, o.height, gpu ? "GPU" : "CPU");
     if (groups.empty() || groups.back().first != group) groups.push_back({group, {}});
     groups.back().second.first.push_back(m->speedup());
     groups.back().second.second.push_back(m->speedup_over_dynamic());
   }
-  out += "\nSpeed-up of the classified light path over the cameras, min / median / max:\n\n"
-         "| MSAA, size | cameras | vs naive | vs dynamic |\n|---|---:|---|---|\n";
+  out +=
+      "\nSpeed-up of the classified light path over the cameras, min / median / max:\n\n"
+      "| MSAA, size | cameras | vs naive | vs dynamic |\n|---|---:|---|---|\n";
   for (const auto& [group, speedups] : groups) {
     out += fmt::format("| {} | {} | {} | {} |\n", group, speedups.first.size(), min_median_max(speedups.first),
                        min_median_max(speedups.second));

@@ -1,9 +1,9 @@
 // GPU classification against the CPU reference classifier, and the properties each camera's
 // frame is built to have.
 #include "frame_support.h"
-#include "tilelight_testing/test_support.h"
-#include "tilelight_testing/cpu_classifier.h"
 #include "tilelight/scene/scene.h"
+#include "tilelight_testing/cpu_classifier.h"
+#include "tilelight_testing/test_support.h"
 
 #include <split_second_shaders.h>
 
@@ -35,9 +35,9 @@ class Classification : public VulkanTest {
 // comparison to mean something.
 void expect_matches_reference(TileRenderer& renderer) {
   const std::vector<std::uint8_t> gpu = renderer.raw_tile_ids();
-  const ReferenceClassification cpu = classify_on_cpu(renderer.grid(), renderer.read_gbuffer(),
-                                                      renderer.read_shadow_map(), renderer.lighting_params(),
-                                                      registry_raw_bits());
+  const ReferenceClassification cpu =
+      classify_on_cpu(renderer.grid(), renderer.read_gbuffer(), renderer.read_shadow_map(), renderer.lighting_params(),
+                      registry_raw_bits());
   const ReferenceComparison cmp = compare_with_reference(gpu, cpu, renderer.grid().tiles_x);
   EXPECT_EQ(cmp.mismatches, 0u) << cmp.first_mismatch;
   EXPECT_LE(cmp.uncertain_tiles, gpu.size() / 100) << "too many tiles near a threshold for the comparison to mean much";
@@ -155,9 +155,13 @@ TEST_F(Classification, DefaultCameraHasAllSevenProperties) {
   auto renderer = render("default", 640, 360);
   std::uint32_t seen = 0;
   for (std::uint8_t id : renderer->raw_tile_ids()) seen |= id;
-  for (const auto& [name, mask] : {std::pair{"SHADOW_SOLID", bit::SHADOW_SOLID}, {"SHADOW_SOFT", bit::SHADOW_SOFT},
-                                   {"SHADOW_FADE", bit::SHADOW_FADE}, {"LIGHT_SCATTERING", bit::LIGHT_SCATTERING},
-                                   {"MSAA_EDGE", bit::MSAA_EDGE}, {"SKY", bit::SKY}, {"SUN_LIGHT", bit::SUN_LIGHT}}) {
+  for (const auto& [name, mask] : {std::pair{"SHADOW_SOLID", bit::SHADOW_SOLID},
+                                   {"SHADOW_SOFT", bit::SHADOW_SOFT},
+                                   {"SHADOW_FADE", bit::SHADOW_FADE},
+                                   {"LIGHT_SCATTERING", bit::LIGHT_SCATTERING},
+                                   {"MSAA_EDGE", bit::MSAA_EDGE},
+                                   {"SKY", bit::SKY},
+                                   {"SUN_LIGHT", bit::SUN_LIGHT}}) {
     EXPECT_NE(seen & mask, 0u) << name << " does not occur in the default frame";
   }
 }

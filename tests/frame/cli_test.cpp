@@ -1,6 +1,6 @@
 // The tilelight command line, run in-process: its files, its report and its errors.
-#include "tilelight_testing/test_support.h"
 #include "tilelight/app/cli.h"
+#include "tilelight_testing/test_support.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -41,8 +41,8 @@ nlohmann::json read_report(const fs::path& out) {
 
 TEST(TilelightCli, WritesTheFiveFilesAndTheReportFields) {
   const fs::path out = scratch_dir() / "out";
-  const CliResult r = run_cli({"--width", "200", "--height", "120", "--frames", "2", "--validation", "--out",
-                               out.string()});
+  const CliResult r =
+      run_cli({"--width", "200", "--height", "120", "--frames", "2", "--validation", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* name : kOutputs) EXPECT_TRUE(fs::exists(out / name)) << name;
   EXPECT_NE(r.out.find("global light"), std::string::npos) << r.out;
@@ -53,8 +53,8 @@ TEST(TilelightCli, WritesTheFiveFilesAndTheReportFields) {
   EXPECT_EQ(report["height"], 120);
   EXPECT_EQ(report["msaa_samples"], 4);  // lavapipe offers 1x and 4x only
   EXPECT_EQ(report["tiles"], 50 * 30);
-  for (const char* p : {"SKY", "SUN_LIGHT", "SOLID_SHADOW", "SOFT_SHADOW", "SHADOW_FADE", "LIGHT_SCATTERING",
-                        "MSAA_EDGE"}) {
+  for (const char* p :
+       {"SKY", "SUN_LIGHT", "SOLID_SHADOW", "SOFT_SHADOW", "SHADOW_FADE", "LIGHT_SCATTERING", "MSAA_EDGE"}) {
     ASSERT_TRUE(report["raw_property_tiles"].contains(p)) << p;
     // At 200x120 no tile lies wholly inside one shadow (Classification.DefaultCameraHasAllSevenProperties).
     if (std::string_view(p) != "SOLID_SHADOW") {
@@ -106,8 +106,8 @@ TEST(TilelightCli, WritesTheFiveFilesAndTheReportFields) {
 // same frame from every method and no tile with the MSAA_EDGE property.
 TEST(TilelightCli, NoMsaaRendersSingleSampledAndEqual) {
   const fs::path out = scratch_dir() / "out";
-  const CliResult r = run_cli({"--width", "200", "--height", "120", "--msaa", "1", "--path", "gpu", "--validation",
-                               "--out", out.string()});
+  const CliResult r = run_cli(
+      {"--width", "200", "--height", "120", "--msaa", "1", "--path", "gpu", "--validation", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json report = read_report(out);
   EXPECT_EQ(report["msaa_samples"], 1);
@@ -122,7 +122,8 @@ TEST(TilelightCli, NoMsaaRendersSingleSampledAndEqual) {
 // its own column; the classified frame is compared with whichever ran.
 TEST(TilelightCli, BaselineChoosesThePassesTimed) {
   const fs::path naive_out = scratch_dir() / "naive";
-  const CliResult naive = run_cli({"--width", "96", "--height", "64", "--baseline", "naive", "--out", naive_out.string()});
+  const CliResult naive =
+      run_cli({"--width", "96", "--height", "64", "--baseline", "naive", "--out", naive_out.string()});
   ASSERT_EQ(naive.exit_code, 0) << naive.err;
   const nlohmann::json naive_report = read_report(naive_out);
   EXPECT_EQ(naive_report["baselines"], "naive");
@@ -163,9 +164,9 @@ TEST(TilelightCli, TrianglesReportOnePrimitivePerRectangle) {
   const int rectangles = report["primitives"]["rectangles"].get<int>();
   EXPECT_EQ(coalesced, rectangles);
   EXPECT_LT(rectangles, 50 * 30) << "nothing was coalesced";
-  EXPECT_NE(r.out.find(fmt::format("tiles 1500, triangles 1500 -> {} coalesced ({} rectangles);", coalesced,
-                                   rectangles)),
-            std::string::npos)
+  EXPECT_NE(
+      r.out.find(fmt::format("tiles 1500, triangles 1500 -> {} coalesced ({} rectangles);", coalesced, rectangles)),
+      std::string::npos)
       << r.out;
 }
 
@@ -226,17 +227,18 @@ TEST_P(TilelightBadInput, FailsWithAClearMessageAndWritesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, TilelightBadInput,
-    ::testing::Values(BadInput{"zero_width", {"--width", "0"}, "--width 0: the frame must be at least 1 pixel"},
-                      BadInput{"huge_height", {"--height", "999999"}, "--height 999999: exceeds the maximum"},
-                      BadInput{"msaa_lavapipe_lacks", {"--msaa", "2"},
-                               "--msaa 2: MSAA 2x is not supported by this device (supported for the G-buffer: 1x, 4x)"},
-                      BadInput{"msaa_not_a_count", {"--msaa", "3"}, "--msaa 3: expected auto, 1, 2, 4, 8 or 16"},
-                      BadInput{"unknown_device", {"--device", "no-such-gpu"}, "no-such-gpu"},
-                      BadInput{"unknown_camera", {"--camera", "moon"}, "unknown camera 'moon'"},
-                      BadInput{"bad_path", {"--path", "fpga"}, "--path"},
-                      BadInput{"bad_primitive", {"--primitive", "bogus"},
-                               "--primitive: bogus not in {auto,points,triangles}"},
-                      BadInput{"bad_tile_size", {"--tile-size", "5"}, "tile_size must be 4, 8 or 16 (got 5)"}),
+    ::testing::Values(
+        BadInput{"zero_width", {"--width", "0"}, "--width 0: the frame must be at least 1 pixel"},
+        BadInput{"huge_height", {"--height", "999999"}, "--height 999999: exceeds the maximum"},
+        BadInput{"msaa_lavapipe_lacks",
+                 {"--msaa", "2"},
+                 "--msaa 2: MSAA 2x is not supported by this device (supported for the G-buffer: 1x, 4x)"},
+        BadInput{"msaa_not_a_count", {"--msaa", "3"}, "--msaa 3: expected auto, 1, 2, 4, 8 or 16"},
+        BadInput{"unknown_device", {"--device", "no-such-gpu"}, "no-such-gpu"},
+        BadInput{"unknown_camera", {"--camera", "moon"}, "unknown camera 'moon'"},
+        BadInput{"bad_path", {"--path", "fpga"}, "--path"},
+        BadInput{"bad_primitive", {"--primitive", "bogus"}, "--primitive: bogus not in {auto,points,triangles}"},
+        BadInput{"bad_tile_size", {"--tile-size", "5"}, "tile_size must be 4, 8 or 16 (got 5)"}),
     [](const ::testing::TestParamInfo<BadInput>& param_info) { return std::string(param_info.param.name); });
 
 TEST(TilelightCli, UnwritableOutFolderIsNamed) {

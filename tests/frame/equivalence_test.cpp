@@ -4,8 +4,8 @@
 // The dynamic baseline (one full-screen pass branching per pixel) must give the naive render
 // too: its skipped work is the same exact identity the permutations rely on.
 #include "frame_support.h"
-#include "tilelight_testing/test_support.h"
 #include "tilelight/scene/scene.h"
+#include "tilelight_testing/test_support.h"
 
 #include <split_second_shaders.h>
 
@@ -58,8 +58,8 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
   const RgbaImage naive = renderer.read_naive();
   const FrameComparison cmp = compare(renderer.read_classified(), naive, kEquivalenceTolerance);
   EXPECT_EQ(cmp.magenta_pixels, 0u) << "tiles left undrawn";
-  EXPECT_EQ(cmp.pixels_over_tolerance, 0u) << cmp.first_difference << " (max difference " << cmp.max_abs_difference
-                                           << ")";
+  EXPECT_EQ(cmp.pixels_over_tolerance, 0u)
+      << cmp.first_difference << " (max difference " << cmp.max_abs_difference << ")";
   const FrameComparison dynamic = compare(renderer.read_dynamic(), naive, kEquivalenceTolerance);
   EXPECT_EQ(dynamic.magenta_pixels, 0u) << "dynamic pass left pixels undrawn";
   EXPECT_EQ(dynamic.pixels_over_tolerance, 0u)
@@ -95,44 +95,42 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
 
 INSTANTIATE_TEST_SUITE_P(
     Frames, Equivalence,
-    ::testing::Values(Case{"cpu_default", 320, 180, IndexPath::cpu, false, true, "default"},
-                      Case{"gpu_default", 320, 180, IndexPath::gpu, false, true, "default"},
-                      Case{"cpu_odd_size", 333, 197, IndexPath::cpu, false, true, "default"},
-                      Case{"gpu_odd_size", 333, 197, IndexPath::gpu, false, true, "default"},
-                      Case{"cpu_uncoalesced", 161, 93, IndexPath::cpu, false, false, "default"},
-                      Case{"gpu_uncoalesced", 161, 93, IndexPath::gpu, false, false, "default"},
-                      Case{"cpu_raw", 256, 144, IndexPath::cpu, true, true, "default"},
-                      Case{"gpu_raw", 256, 144, IndexPath::gpu, true, true, "default"},
-                      Case{"cpu_sky", 200, 120, IndexPath::cpu, false, true, "sky"},
-                      Case{"gpu_sky", 200, 120, IndexPath::gpu, false, true, "sky"},
-                      Case{"cpu_shadow", 200, 120, IndexPath::cpu, false, true, "shadow"},
-                      Case{"gpu_shadow", 200, 120, IndexPath::gpu, false, true, "shadow"},
-                      Case{"cpu_low", 257, 131, IndexPath::cpu, false, true, "low"},
-                      // Larger tiles: one depth-plane prism spans 8x8 / 16x16 pixels.
-                      Case{"cpu_tile8", 320, 180, IndexPath::cpu, false, true, "default", 8},
-                      Case{"gpu_tile16_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 16},
-                      // Partial tiles 6 px wide and tall: their points' centres (8 px in) lie
-                      // outside the frame, inside the tile pass's whole-tile viewport. (lavapipe
-                      // draws such points even without that viewport, so this cannot show the
-                      // culling the Vulkan spec allows; it does check their coverage.)
-                      Case{"cpu_tile16_narrow_partials", 326, 198, IndexPath::cpu, false, true, "default", 16},
-                      // Thin prisms at 55-85 m, where the rounding margins decide most.
-                      Case{"cpu_telephoto", 320, 180, IndexPath::cpu, false, true, "telephoto"},
-                      // The chapter's two triangles per rectangle, where auto would choose points.
-                      Case{"cpu_triangles", 320, 180, IndexPath::cpu, false, true, "default", 4,
-                           TilePrimitive::triangles},
-                      Case{"gpu_triangles_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4,
-                           TilePrimitive::triangles},
-                      // The views with little or no sky.
-                      Case{"cpu_street", 240, 136, IndexPath::cpu, false, true, "street"},
-                      Case{"gpu_closeup", 240, 136, IndexPath::gpu, false, true, "closeup"},
-                      // No MSAA: the single-sampled G-buffer and the split_second_1x shaders.
-                      Case{"cpu_1x", 320, 180, IndexPath::cpu, false, true, "default", 4, std::nullopt, 1},
-                      Case{"gpu_1x_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4, std::nullopt, 1},
-                      Case{"cpu_1x_raw", 256, 144, IndexPath::cpu, true, true, "default", 4, std::nullopt, 1},
-                      Case{"gpu_1x_low", 257, 131, IndexPath::gpu, false, true, "low", 4, std::nullopt, 1},
-                      Case{"cpu_1x_triangles", 200, 120, IndexPath::cpu, false, true, "closeup", 4,
-                           TilePrimitive::triangles, 1}),
+    ::testing::Values(
+        Case{"cpu_default", 320, 180, IndexPath::cpu, false, true, "default"},
+        Case{"gpu_default", 320, 180, IndexPath::gpu, false, true, "default"},
+        Case{"cpu_odd_size", 333, 197, IndexPath::cpu, false, true, "default"},
+        Case{"gpu_odd_size", 333, 197, IndexPath::gpu, false, true, "default"},
+        Case{"cpu_uncoalesced", 161, 93, IndexPath::cpu, false, false, "default"},
+        Case{"gpu_uncoalesced", 161, 93, IndexPath::gpu, false, false, "default"},
+        Case{"cpu_raw", 256, 144, IndexPath::cpu, true, true, "default"},
+        Case{"gpu_raw", 256, 144, IndexPath::gpu, true, true, "default"},
+        Case{"cpu_sky", 200, 120, IndexPath::cpu, false, true, "sky"},
+        Case{"gpu_sky", 200, 120, IndexPath::gpu, false, true, "sky"},
+        Case{"cpu_shadow", 200, 120, IndexPath::cpu, false, true, "shadow"},
+        Case{"gpu_shadow", 200, 120, IndexPath::gpu, false, true, "shadow"},
+        Case{"cpu_low", 257, 131, IndexPath::cpu, false, true, "low"},
+        // Larger tiles: one depth-plane prism spans 8x8 / 16x16 pixels.
+        Case{"cpu_tile8", 320, 180, IndexPath::cpu, false, true, "default", 8},
+        Case{"gpu_tile16_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 16},
+        // Partial tiles 6 px wide and tall: their points' centres (8 px in) lie
+        // outside the frame, inside the tile pass's whole-tile viewport. (lavapipe
+        // draws such points even without that viewport, so this cannot show the
+        // culling the Vulkan spec allows; it does check their coverage.)
+        Case{"cpu_tile16_narrow_partials", 326, 198, IndexPath::cpu, false, true, "default", 16},
+        // Thin prisms at 55-85 m, where the rounding margins decide most.
+        Case{"cpu_telephoto", 320, 180, IndexPath::cpu, false, true, "telephoto"},
+        // The chapter's two triangles per rectangle, where auto would choose points.
+        Case{"cpu_triangles", 320, 180, IndexPath::cpu, false, true, "default", 4, TilePrimitive::triangles},
+        Case{"gpu_triangles_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4, TilePrimitive::triangles},
+        // The views with little or no sky.
+        Case{"cpu_street", 240, 136, IndexPath::cpu, false, true, "street"},
+        Case{"gpu_closeup", 240, 136, IndexPath::gpu, false, true, "closeup"},
+        // No MSAA: the single-sampled G-buffer and the split_second_1x shaders.
+        Case{"cpu_1x", 320, 180, IndexPath::cpu, false, true, "default", 4, std::nullopt, 1},
+        Case{"gpu_1x_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4, std::nullopt, 1},
+        Case{"cpu_1x_raw", 256, 144, IndexPath::cpu, true, true, "default", 4, std::nullopt, 1},
+        Case{"gpu_1x_low", 257, 131, IndexPath::gpu, false, true, "low", 4, std::nullopt, 1},
+        Case{"cpu_1x_triangles", 200, 120, IndexPath::cpu, false, true, "closeup", 4, TilePrimitive::triangles, 1}),
     case_name);
 
 }  // namespace

@@ -1,8 +1,8 @@
 // What tilelight prints when a run fails: the stage, the cause, and a hint for the failures a
 // user can do something about. Every exception type the runtime, the driver or the C++ library
 // can throw has a message; none ends the program without one.
-#include "tilelight/vulkan/error.h"
 #include "tilelight/app/failure.h"
+#include "tilelight/vulkan/error.h"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,8 @@ TEST(FailureMessage, OurOtherErrorsGetTheStage) {
 TEST(FailureMessage, AnyOtherExceptionStillSaysWhere) {
   EXPECT_EQ(failure_message("the warm-up frame", std::make_exception_ptr(std::length_error("vector::reserve"))),
             "the warm-up frame: vector::reserve");
-  EXPECT_EQ(failure_message("the warm-up frame", std::make_exception_ptr(42)), "the warm-up frame: an unknown exception");
+  EXPECT_EQ(failure_message("the warm-up frame", std::make_exception_ptr(42)),
+            "the warm-up frame: an unknown exception");
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 // The tile pass is submitted before the host signals it. A failure in between must not leave
 // the queue blocked: the renderer empties the draws, signals, waits, then reports the error.
-#include "tilelight_testing/test_support.h"
 #include "tilelight/base/error.h"
-#include "tilelight/scene/scene.h"
 #include "tilelight/render/tile_renderer.h"
+#include "tilelight/scene/scene.h"
 #include "tilelight_testing/renderer_test_seam.h"
+#include "tilelight_testing/test_support.h"
 
 namespace tilelight::test {
 namespace {

@@ -41,12 +41,17 @@ std::set<std::uint32_t> optimised_ids_of(const std::vector<std::uint8_t>& raw_id
 }
 
 Camera telephoto_camera() {
-  return {"telephoto", "10 degrees onto the boxes from 70 m", {0.0f, 12.0f, 45.0f}, {0.0f, 1.5f, -25.0f},
-          {0, 1, 0}, 10.0f, {0.0f, 0.0f, -20.0f}};
+  return {"telephoto",
+          "10 degrees onto the boxes from 70 m",
+          {0.0f, 12.0f, 45.0f},
+          {0.0f, 1.5f, -25.0f},
+          {0, 1, 0},
+          10.0f,
+          {0.0f, 0.0f, -20.0f}};
 }
 
-ReferenceComparison compare_with_reference(const std::vector<std::uint8_t>& gpu,
-                                           const ReferenceClassification& cpu, std::uint32_t tiles_x) {
+ReferenceComparison compare_with_reference(const std::vector<std::uint8_t>& gpu, const ReferenceClassification& cpu,
+                                           std::uint32_t tiles_x) {
   namespace bit = split_second::raw_bit;
   const std::uint32_t shadow_bits = bit::SHADOW_SOLID | bit::SHADOW_SOFT;
   const std::uint32_t exact_bits = bit::SKY | bit::SUN_LIGHT;

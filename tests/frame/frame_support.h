@@ -1,10 +1,10 @@
 #pragma once
 // Helpers for the frame tests: render one frame with given options and compare.
 
-#include "tilelight_testing/cpu_classifier.h"
-#include "tilelight/vulkan/readback.h"
-#include "tilelight/scene/scene.h"
 #include "tilelight/render/tile_renderer.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/vulkan/readback.h"
+#include "tilelight_testing/cpu_classifier.h"
 
 #include <cstdint>
 #include <set>
@@ -35,9 +35,9 @@ FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, dou
 // occluded tap (see classify_tiles.comp).
 struct ReferenceComparison {
   std::size_t mismatches = 0;
-  std::string first_mismatch;      // "tile (x, y): GPU raw ID ..., CPU ...: why"
+  std::string first_mismatch;  // "tile (x, y): GPU raw ID ..., CPU ...: why"
   std::size_t uncertain_tiles = 0;
-  std::size_t soft_by_bounds = 0;  // sunlit tiles the reference calls SOLID or lit, the GPU SOFT
+  std::size_t soft_by_bounds = 0;     // sunlit tiles the reference calls SOLID or lit, the GPU SOFT
   std::size_t settled_by_bounds = 0;  // sunlit tiles the reference calls SOLID or lit, and so does the GPU
 };
 

@@ -1,9 +1,9 @@
 // The GPU index build (tile_rects.comp, tile_prefix.comp) against the CPU one (TileIndexBuilder)
 // on the same frame: given the same raw tile IDs, both must find the same rectangles and draw
 // them with the same primitives, class by class.
-#include "tilelight_testing/test_support.h"
-#include "tilelight/scene/scene.h"
 #include "tilelight/render/tile_renderer.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight_testing/test_support.h"
 
 #include <algorithm>
 #include <cstddef>

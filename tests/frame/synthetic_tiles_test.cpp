@@ -7,10 +7,10 @@
 // takes the next of the 16 combinations for its original class, so every class of the scene
 // is combined with every edit. The edited G-buffer is uploaded and the frame rendered again.
 #include "frame_support.h"
-#include "tilelight_testing/test_support.h"
+#include "tilelight/scene/scene.h"
 #include "tilelight_testing/cpu_classifier.h"
 #include "tilelight_testing/renderer_test_seam.h"
-#include "tilelight/scene/scene.h"
+#include "tilelight_testing/test_support.h"
 
 #include <split_second_shaders.h>
 
@@ -40,8 +40,8 @@ std::array<float, 16> read_pixel(const GBufferSamples& g, std::uint32_t x, std::
 }
 
 // A geometry pixel at view depth `depth` along the pixel's own ray, facing away from the sun.
-std::array<float, 16> far_pixel(const GBufferSamples& g, const LightingParamsBlock& p, std::uint32_t x,
-                                std::uint32_t y, float view_depth) {
+std::array<float, 16> far_pixel(const GBufferSamples& g, const LightingParamsBlock& p, std::uint32_t x, std::uint32_t y,
+                                float view_depth) {
   const glm::mat4 view_proj = glm::inverse(p.inv_view_proj);
   const glm::vec2 ndc{(static_cast<float>(x) + 0.5f) * p.viewport.z * 2.0f - 1.0f,
                       (static_cast<float>(y) + 0.5f) * p.viewport.w * 2.0f - 1.0f};
@@ -51,11 +51,11 @@ std::array<float, 16> far_pixel(const GBufferSamples& g, const LightingParamsBlo
   const glm::vec3 point = camera + direction * (view_depth / glm::dot(direction, glm::vec3(p.camera_forward)));
   const glm::vec4 clip = view_proj * glm::vec4(point, 1.0f);
   std::array<float, 16> v = read_pixel(g, x, y);
-  v[0] = 0.6f;                    // albedo, so the pixel is not black
-  v[4] = -p.sun_direction.x;      // normal away from the sun
+  v[0] = 0.6f;                // albedo, so the pixel is not black
+  v[4] = -p.sun_direction.x;  // normal away from the sun
   v[5] = -p.sun_direction.y;
   v[6] = -p.sun_direction.z;
-  v[7] = 9.0f / 255.0f;           // a geometry motion ID
+  v[7] = 9.0f / 255.0f;  // a geometry motion ID
   // As a material stores it (gbuffer.glsl): a whole pixel, so the depth's edge bit is clear, and
   // facing away, so its sun-facing bit is clear too (the upload would clear it anyway).
   v[12] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(clip.z / clip.w) & ~3u);

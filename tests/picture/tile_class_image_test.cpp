@@ -41,9 +41,7 @@ std::vector<std::uint8_t> decode_png(const std::filesystem::path& path, std::uin
   return pixels;
 }
 
-std::uint32_t tiles_along(std::uint32_t pixels, std::uint32_t tile) {
-  return (pixels + tile - 1) / tile;
-}
+std::uint32_t tiles_along(std::uint32_t pixels, std::uint32_t tile) { return (pixels + tile - 1) / tile; }
 
 // The documented tint: per channel (frame + class + 1) / 2 of the 8-bit values, alpha 255.
 Rgba8 expected_blend(Rgba8 frame8, std::uint32_t id) {
@@ -89,9 +87,7 @@ TEST(TileClassPalette, ThirtyTwoDistinctOpaqueColours) {
 
 TEST(TileClassPalette, SunShadowClassSetsTheHue) {
   // Every colour of a sun/shadow family has the same dominant channel as the family's base.
-  const auto dominant = [](Rgba8 c) {
-    return c[0] >= c[1] && c[0] >= c[2] ? 0 : (c[1] >= c[2] ? 1 : 2);
-  };
+  const auto dominant = [](Rgba8 c) { return c[0] >= c[1] && c[0] >= c[2] ? 0 : (c[1] >= c[2] ? 1 : 2); };
   EXPECT_EQ(dominant(class_colour(0)), 2);   // solid shadow: blue
   EXPECT_EQ(dominant(class_colour(8)), 1);   // solid shadow+fade+sun: green
   EXPECT_EQ(dominant(class_colour(16)), 0);  // sun, no shadow: amber
@@ -108,8 +104,7 @@ TEST(TileClassPalette, SunShadowClassSetsTheHue) {
 }
 
 TEST(TileClassPalette, OutOfRangeIdThrows) {
-  EXPECT_EQ(error_of([] { class_colour(32); }),
-            "class_colour: optimised ID 32 is out of range; IDs must be < 32");
+  EXPECT_EQ(error_of([] { class_colour(32); }), "class_colour: optimised ID 32 is out of range; IDs must be < 32");
 }
 
 TEST(TileClassLabels, BuiltFromTheIdBits) {
@@ -185,8 +180,8 @@ TEST(TileClassImage, UniformTileGetsExactHalfBlend) {
 TEST(TileClassImage, FrameConversionMatchesToRgba8) {
   // Values that round, clamp and NaN: the tint must start from what to_rgba8 gives.
   RgbaImage frame = uniform_frame(4, 1, {0, 0, 0, 1});
-  frame.pixels = {0.5f,  0.00196f, 0.998f, 1.0f,  -1.0f, 2.0f, NAN, 1.0f,
-                  0.25f, 0.75f,    0.1f,   1.0f,  1.0f,  0.0f, 0.3333f, 1.0f};
+  frame.pixels = {0.5f,  0.00196f, 0.998f, 1.0f, -1.0f, 2.0f, NAN,     1.0f,
+                  0.25f, 0.75f,    0.1f,   1.0f, 1.0f,  0.0f, 0.3333f, 1.0f};
   const std::vector<std::uint8_t> bytes = to_rgba8(frame);
   const Rgba8Canvas canvas = compose_tile_class_image(frame, 4, std::vector<std::uint8_t>{13});
   for (std::uint32_t x = 0; x < 4; ++x) {
@@ -220,7 +215,7 @@ TEST(TileClassImage, OutlinesOnlyWhereTheClassChanges) {
     EXPECT_EQ(canvas.pixel(8, y), darker(c16)) << y;  // vertical line: 0 | 16
     EXPECT_EQ(canvas.pixel(7, y), c0) << y;           // one pixel wide
     EXPECT_EQ(canvas.pixel(9, y), c16) << y;
-    EXPECT_EQ(canvas.pixel(4, y), c0) << y;   // border between two class-0 tiles: none
+    EXPECT_EQ(canvas.pixel(4, y), c0) << y;  // border between two class-0 tiles: none
     EXPECT_EQ(canvas.pixel(12, y), c16) << y;
   }
   for (std::uint32_t x = 0; x < 16; ++x) {
@@ -257,8 +252,7 @@ TEST(TileClassImage, LegendListsExactlyThePresentClassesInIdOrder) {
     }
     previous_y = row.swatch_y;
     const std::uint32_t centre = row.swatch_size / 2;
-    EXPECT_EQ(canvas.pixel(row.swatch_x + centre, row.swatch_y + centre),
-              class_colour(expected_ids[i]));
+    EXPECT_EQ(canvas.pixel(row.swatch_x + centre, row.swatch_y + centre), class_colour(expected_ids[i]));
     EXPECT_EQ(canvas.pixel(row.swatch_x, row.swatch_y), class_colour(expected_ids[i]));
     // The row's text is drawn: some ink within its first cell ('#').
     bool ink = false;
@@ -319,15 +313,13 @@ TEST(TileClassImage, WorksForTinyAndLargeFrames) {
     const std::uint32_t tiles_y = tiles_along(height, tile);
     std::vector<std::uint8_t> ids(std::size_t{tiles_x} * tiles_y);
     for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<std::uint8_t>((i / tiles_x / 8) % 32);
-    const Rgba8Canvas canvas =
-        compose_tile_class_image(uniform_frame(width, height, {0, 0, 0, 1}), tile, ids);
+    const Rgba8Canvas canvas = compose_tile_class_image(uniform_frame(width, height, {0, 0, 0, 1}), tile, ids);
     EXPECT_EQ(canvas.height, height);
     EXPECT_GT(canvas.width, width);
     // Tile row 8 (class 1) starts at y = 8 * tile: outlined; one row further down: plain.
     EXPECT_EQ(canvas.pixel(width - 1, 8 * tile), darker(expected_blend({0, 0, 0, 255}, 1)));
     EXPECT_EQ(canvas.pixel(width - 1, 8 * tile + 1), expected_blend({0, 0, 0, 255}, 1));
-    EXPECT_EQ(canvas.pixel(width - 1, height - 1),
-              expected_blend({0, 0, 0, 255}, ids.back()));
+    EXPECT_EQ(canvas.pixel(width - 1, height - 1), expected_blend({0, 0, 0, 255}, ids.back()));
   }
 }
 
@@ -342,8 +334,7 @@ TEST(TileClassImage, RejectsBadArguments) {
   EXPECT_EQ(error_of([&] { tile_class_legend_entries(ids); }),
             "tile class image: tile 12 has optimised ID 32; IDs must be < 32");
   ids[12] = 0;
-  EXPECT_EQ(error_of([&] { compose_tile_class_image(frame, 0, ids); }),
-            "tile class image: tile size must be > 0");
+  EXPECT_EQ(error_of([&] { compose_tile_class_image(frame, 0, ids); }), "tile class image: tile size must be > 0");
   RgbaImage short_frame = frame;
   short_frame.pixels.pop_back();
   EXPECT_EQ(error_of([&] { compose_tile_class_image(short_frame, 4, ids); }),
@@ -382,15 +373,19 @@ std::vector<std::uint8_t> example_ids(std::uint32_t tiles_x, std::uint32_t tiles
       const float v = (static_cast<float>(ty) + 0.5f) / static_cast<float>(tiles_y);
       std::uint32_t id = 0;
       if (v < 0.35f) {
-        id = 4;                              // sky
-        if (v > 0.3f) id = 16 | 4 | 2;       // horizon: sky + sunlit geometry, MSAA edge
+        id = 4;                         // sky
+        if (v > 0.3f) id = 16 | 4 | 2;  // horizon: sky + sunlit geometry, MSAA edge
       } else {
         const float d1 = std::hypot(u - 0.3f, v - 0.65f);  // a shadowed blob
         const float d2 = std::hypot(u - 0.72f, v - 0.7f);  // a soft-shadowed blob
-        if (d1 < 0.12f) id = 0;
-        else if (d1 < 0.17f) id = 8;
-        else if (d2 < 0.15f) id = 24;
-        else id = 16;
+        if (d1 < 0.12f)
+          id = 0;
+        else if (d1 < 0.17f)
+          id = 8;
+        else if (d2 < 0.15f)
+          id = 24;
+        else
+          id = 16;
         if ((d1 > 0.115f && d1 < 0.125f) || (d2 > 0.145f && d2 < 0.155f)) id |= 2;
       }
       if (u > 0.45f && u < 0.6f) id |= 1;  // a shaft of scattering light

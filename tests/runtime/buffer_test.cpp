@@ -18,8 +18,7 @@ namespace {
 using test::VulkanTest;
 
 TEST_F(VulkanTest, MappedBufferWriteThenRead) {
-  Buffer buffer(context(), {256, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::HostUpload,
-                            "tile index buffer"});
+  Buffer buffer(context(), {256, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::HostUpload, "tile index buffer"});
   ASSERT_TRUE(buffer.host_visible());
   EXPECT_EQ(buffer.size(), 256u);
   const std::array<std::uint32_t, 4> values = {1, 2, 3, 0xdeadbeef};
@@ -32,41 +31,34 @@ TEST_F(VulkanTest, MappedBufferWriteThenRead) {
 }
 
 TEST_F(VulkanTest, OutOfRangeAccessNamesTheBuffer) {
-  Buffer buffer(context(), {16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload,
-                            "indirect records"});
+  Buffer buffer(context(), {16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, "indirect records"});
   const std::array<std::byte, 8> data{};
   try {
     buffer.write(data, 12);
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_STREQ(e.what(),
-                 "cannot write 8 bytes at offset 12 of buffer indirect records (16 bytes)");
+    EXPECT_STREQ(e.what(), "cannot write 8 bytes at offset 12 of buffer indirect records (16 bytes)");
   }
   EXPECT_THROW(buffer.write(data, 1u << 20), Error);
 }
 
 TEST_F(VulkanTest, DeviceLocalBufferIsNotMapped) {
-  Buffer buffer(context(),
-                {64, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal, "tile IDs"});
+  Buffer buffer(context(), {64, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal, "tile IDs"});
   EXPECT_FALSE(buffer.host_visible());
   EXPECT_THROW((void)buffer.bytes(), Error);
 }
 
 TEST_F(VulkanTest, ZeroSizedBufferIsRejected) {
-  EXPECT_THROW(
-      Buffer(context(), {0, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, "empty"}),
-      Error);
+  EXPECT_THROW(Buffer(context(), {0, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, "empty"}), Error);
 }
 
 TEST_F(VulkanTest, GpuFillIsVisibleToTheHost) {
-  Buffer buffer(context(),
-                {64, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback, "fill target"});
+  Buffer buffer(context(), {64, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback, "fill target"});
   submit_and_wait(
       context(), pool(),
       [&](VkCommandBuffer cmd) {
         vkCmdFillBuffer(cmd, buffer.handle(), 0, VK_WHOLE_SIZE, 0x01020304u);
-        buffer_barrier(cmd, buffer.handle(),
-                       {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+        buffer_barrier(cmd, buffer.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
                        {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
       },
       "filling a buffer", Seconds{30.0});

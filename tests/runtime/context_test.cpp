@@ -63,9 +63,7 @@ TEST(ContextOnLavapipe, LimitsAndFeatures) {
   EXPECT_TRUE(context.features().multi_draw_indirect);
 }
 
-TEST_F(VulkanTest, WaitIdleWithNothingPendingReturns) {
-  EXPECT_NO_THROW(context().wait_idle("nothing", Seconds{5.0}));
-}
+TEST_F(VulkanTest, WaitIdleWithNothingPendingReturns) { EXPECT_NO_THROW(context().wait_idle("nothing", Seconds{5.0})); }
 
 // The log records what the layer says: an injected message and a real misuse both count, and
 // require_no_validation_messages() turns them into an error.
@@ -81,8 +79,7 @@ TEST_F(VulkanTest, ValidationMessagesAreCountedAndFailTheRun) {
   submit_message(context().instance(), VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
                  VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT, &data);
   ASSERT_GE(log.count(), 1u);
-  EXPECT_NE(log.summary().find("[error] TEST-injected: injected by the test"), std::string::npos)
-      << log.summary();
+  EXPECT_NE(log.summary().find("[error] TEST-injected: injected by the test"), std::string::npos) << log.summary();
 
   // A buffer with no usage flags is invalid (VUID-VkBufferCreateInfo-usage-requiredbitmask);
   // lavapipe creates it anyway, so the call is safe to make.
@@ -103,8 +100,7 @@ TEST_F(VulkanTest, ValidationMessagesAreCountedAndFailTheRun) {
     context().require_no_validation_messages("the test frame");
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("the test frame: the validation layer reported"),
-              std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("the test frame: the validation layer reported"), std::string::npos)
         << e.what();
   }
   log.clear();

@@ -1,6 +1,6 @@
 // Device selection: the rules on made-up device lists, then the real lavapipe instance.
-#include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/device_selection.h"
+#include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
 
 #include <gtest/gtest.h>
@@ -8,8 +8,7 @@
 namespace tilelight {
 namespace {
 
-DeviceInfo device(std::uint32_t index, std::string name, VkPhysicalDeviceType type,
-                  std::string unusable = {}) {
+DeviceInfo device(std::uint32_t index, std::string name, VkPhysicalDeviceType type, std::string unusable = {}) {
   DeviceInfo info;
   info.index = index;
   info.name = std::move(name);
@@ -59,14 +58,12 @@ TEST(DeviceSelection, UnknownNameListsEveryDevice) {
 }
 
 TEST(DeviceSelection, UnusableOrMissingIndexSaysWhy) {
-  EXPECT_NE(error_of(kDevices, "7").find("Vulkan device index 7 does not exist"),
-            std::string::npos);
+  EXPECT_NE(error_of(kDevices, "7").find("Vulkan device index 7 does not exist"), std::string::npos);
   EXPECT_NE(error_of(kDevices, "3")
                 .find("Vulkan device 3 (Old GPU) cannot be used: Vulkan 1.1.0 "
                       "< 1.2"),
             std::string::npos);
-  EXPECT_NE(error_of(kDevices, "old").find("no usable Vulkan device matches \"old\""),
-            std::string::npos);
+  EXPECT_NE(error_of(kDevices, "old").find("no usable Vulkan device matches \"old\""), std::string::npos);
   EXPECT_NE(error_of({}, "").find("no Vulkan devices found"), std::string::npos);
 }
 
@@ -92,8 +89,7 @@ TEST(DeviceSelectionOnLavapipe, UnknownDeviceErrorListsTheRealDevices) {
     FAIL() << "no error";
   } catch (const Error& e) {
     const std::string text = e.what();
-    EXPECT_NE(text.find("no Vulkan device matches \"no-such-gpu\"; available Vulkan devices:\n"),
-              std::string::npos)
+    EXPECT_NE(text.find("no Vulkan device matches \"no-such-gpu\"; available Vulkan devices:\n"), std::string::npos)
         << text;
     EXPECT_NE(text.find("llvmpipe"), std::string::npos) << text;
   }

@@ -29,10 +29,8 @@ TEST(Error, UnknownResultKeepsItsNumber) {
 }
 
 TEST(Timeout, MessageNamesStageAndSeconds) {
-  EXPECT_EQ(timeout_message("the tile pass", Seconds{60.0}),
-            "GPU did not finish the tile pass within 60 s");
-  EXPECT_EQ(timeout_message("classification", Seconds{0.05}),
-            "GPU did not finish classification within 0.05 s");
+  EXPECT_EQ(timeout_message("the tile pass", Seconds{60.0}), "GPU did not finish the tile pass within 60 s");
+  EXPECT_EQ(timeout_message("classification", Seconds{0.05}), "GPU did not finish classification within 0.05 s");
   try {
     throw_timeout("the G-buffer pass", Seconds{2.5});
   } catch (const TimeoutError& e) {

@@ -1,6 +1,6 @@
 // Memory-type choice on a made-up device with typical discrete-GPU memory types.
-#include "tilelight/vulkan/error.h"
 #include "tilelight/vulkan/memory.h"
+#include "tilelight/vulkan/error.h"
 
 #include <gtest/gtest.h>
 
@@ -11,11 +11,9 @@ VkPhysicalDeviceMemoryProperties discrete_gpu() {
   VkPhysicalDeviceMemoryProperties props{};
   props.memoryTypeCount = 4;
   props.memoryTypes[0].propertyFlags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-  props.memoryTypes[1].propertyFlags =
-      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  props.memoryTypes[2].propertyFlags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                       VK_MEMORY_PROPERTY_HOST_COHERENT_BIT |
-                                       VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
+  props.memoryTypes[1].propertyFlags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  props.memoryTypes[2].propertyFlags =
+      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT | VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
   props.memoryTypes[3].propertyFlags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;  // not coherent
   return props;
 }

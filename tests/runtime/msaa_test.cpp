@@ -1,8 +1,8 @@
 // MSAA choice: 2x where the device has it, else 4x, else 1x; 1x on request; explicit requests
 // the device lacks fail.
+#include "tilelight/vulkan/msaa.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
-#include "tilelight/vulkan/msaa.h"
 
 #include <gtest/gtest.h>
 
@@ -58,8 +58,7 @@ TEST(MsaaOnLavapipe, AutoIsFourAndTwoOrEightFail) {
     context.choose_msaa(8);
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_STREQ(e.what(),
-                 "MSAA 8x is not supported by this device (supported for the G-buffer: 1x, 4x)");
+    EXPECT_STREQ(e.what(), "MSAA 8x is not supported by this device (supported for the G-buffer: 1x, 4x)");
   }
 }
 

@@ -29,7 +29,8 @@ TEST(OutOfMemory, ABufferLargerThanEveryHeapFailsNamingTheBuffer) {
   const VkDeviceSize size = largest_heap(context) * 4;
   ASSERT_GT(size, 0u);
   try {
-    const Buffer buffer(context, {size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal, "oversized test buffer"});
+    const Buffer buffer(context,
+                        {size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal, "oversized test buffer"});
     FAIL() << "a " << size << "-byte buffer was created";
   } catch (const VulkanError& e) {
     EXPECT_EQ(e.result(), VK_ERROR_OUT_OF_DEVICE_MEMORY) << e.what();

@@ -42,14 +42,8 @@ TEST(Png, ToRgba8ClampsAndRounds) {
   RgbaImage image;
   image.width = 2;
   image.height = 1;
-  image.pixels = {-1.0f,
-                  0.5f,
-                  2.0f,
-                  std::numeric_limits<float>::quiet_NaN(),
-                  1.0f / 255.0f,
-                  0.499f / 255.0f,
-                  254.5f / 255.0f,
-                  1.0f};
+  image.pixels = {-1.0f,           0.5f, 2.0f, std::numeric_limits<float>::quiet_NaN(), 1.0f / 255.0f, 0.499f / 255.0f,
+                  254.5f / 255.0f, 1.0f};
   EXPECT_EQ(to_rgba8(image), (std::vector<std::uint8_t>{0, 128, 255, 0, 1, 0, 255, 255}));
 }
 

@@ -20,14 +20,10 @@ namespace {
 
 using test::VulkanTest;
 
-constexpr VkImageUsageFlags kTransfer =
-    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+constexpr VkImageUsageFlags kTransfer = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 
-Image make_image(Context& context, VkFormat format, std::uint32_t width, std::uint32_t height,
-                 const char* name) {
-  return Image(
-      context,
-      {{width, height}, format, kTransfer, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT, name});
+Image make_image(Context& context, VkFormat format, std::uint32_t width, std::uint32_t height, const char* name) {
+  return Image(context, {{width, height}, format, kTransfer, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT, name});
 }
 
 // Clears `image` (from UNDEFINED); it is left in TRANSFER_DST_OPTIMAL.
@@ -36,11 +32,10 @@ void clear(Context& context, CommandPool& pool, const Image& image, VkClearColor
       context, pool,
       [&](VkCommandBuffer cmd) {
         const VkImageSubresourceRange range = image.subresource_range();
-        image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_UNDEFINED,
-                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, {VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0},
+        image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      {VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0},
                       {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
-        vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1,
-                             &range);
+        vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1, &range);
       },
       "clearing " + image.name(), Seconds{30.0});
 }
@@ -57,8 +52,7 @@ TEST_F(VulkanTest, ClearRgba8ReadsBackExactly) {
   const Image image = make_image(context(), VK_FORMAT_R8G8B8A8_UNORM, 13, 7, "lit result");
   // Multiples of 1/255 convert to UNORM8 exactly.
   clear(context(), pool(), image, {{51.0f / 255.0f, 102.0f / 255.0f, 1.0f, 0.0f}});
-  const std::vector<std::byte> bytes =
-      read_image_bytes(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  const std::vector<std::byte> bytes = read_image_bytes(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
   ASSERT_EQ(bytes.size(), 13u * 7u * 4u);
   for (std::size_t i = 0; i < bytes.size(); i += 4) {
     ASSERT_EQ(std::to_integer<int>(bytes[i]), 51);
@@ -66,8 +60,7 @@ TEST_F(VulkanTest, ClearRgba8ReadsBackExactly) {
     ASSERT_EQ(std::to_integer<int>(bytes[i + 2]), 255);
     ASSERT_EQ(std::to_integer<int>(bytes[i + 3]), 0);
   }
-  const RgbaImage rgba =
-      read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  const RgbaImage rgba = read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
   expect_every_pixel(rgba, {51.0f / 255.0f, 102.0f / 255.0f, 1.0f, 0.0f});
 }
 
@@ -77,25 +70,23 @@ TEST_F(VulkanTest, ClearFloatFormatsReadBackExactly) {
   for (const VkFormat format : {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT}) {
     const Image image = make_image(context(), format, 5, 3, "HDR target");
     clear(context(), pool(), image, {{colour[0], colour[1], colour[2], colour[3]}});
-    expect_every_pixel(
-        read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL), colour);
+    expect_every_pixel(read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL), colour);
   }
 }
 
 TEST_F(VulkanTest, Bgra8IsSwizzledToRgba) {
   const Image image = make_image(context(), VK_FORMAT_B8G8R8A8_UNORM, 2, 2, "bgra");
   clear(context(), pool(), image, {{1.0f, 0.0f, 51.0f / 255.0f, 1.0f}});
-  expect_every_pixel(
-      read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL),
-      {1.0f, 0.0f, 51.0f / 255.0f, 1.0f});
+  expect_every_pixel(read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL),
+                     {1.0f, 0.0f, 51.0f / 255.0f, 1.0f});
 }
 
 TEST_F(VulkanTest, UploadedPatternComesBackInRowOrder) {
   constexpr std::uint32_t kWidth = 6;
   constexpr std::uint32_t kHeight = 4;
   const Image image = make_image(context(), VK_FORMAT_R8G8B8A8_UNORM, kWidth, kHeight, "pattern");
-  Buffer upload(context(), {kWidth * kHeight * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                            MemoryUse::HostUpload, "pattern upload"});
+  Buffer upload(context(),
+                {kWidth * kHeight * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::HostUpload, "pattern upload"});
   const std::span<std::uint8_t> texels = upload.as<std::uint8_t>();
   for (std::uint32_t y = 0; y < kHeight; ++y) {
     for (std::uint32_t x = 0; x < kWidth; ++x) {
@@ -115,21 +106,18 @@ TEST_F(VulkanTest, UploadedPatternComesBackInRowOrder) {
         VkBufferImageCopy region{};
         region.imageSubresource = image.subresource_layers();
         region.imageExtent = {kWidth, kHeight, 1};
-        vkCmdCopyBufferToImage(cmd, upload.handle(), image.handle(),
-                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        vkCmdCopyBufferToImage(cmd, upload.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
         // Leave it as a sampled image would be, to test the layout round trip.
-        image_barrier(cmd, image.handle(), image.subresource_range(),
-                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                      {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+        image_barrier(cmd, image.handle(), image.subresource_range(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_GENERAL, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
                       {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT});
       },
       "uploading a pattern", Seconds{30.0});
   const RgbaImage rgba = read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_GENERAL);
   for (std::uint32_t y = 0; y < kHeight; ++y) {
     for (std::uint32_t x = 0; x < kWidth; ++x) {
-      const std::array<float, 4> expected = {static_cast<float>(x * 10) / 255.0f,
-                                             static_cast<float>(y * 20) / 255.0f, 7.0f / 255.0f,
-                                             1.0f};
+      const std::array<float, 4> expected = {static_cast<float>(x * 10) / 255.0f, static_cast<float>(y * 20) / 255.0f,
+                                             7.0f / 255.0f, 1.0f};
       ASSERT_EQ(rgba.at(x, y), expected) << "at " << x << "," << y;
     }
   }
@@ -138,13 +126,12 @@ TEST_F(VulkanTest, UploadedPatternComesBackInRowOrder) {
 }
 
 TEST_F(VulkanTest, ReadbackPreconditionsAreChecked) {
-  const Image msaa(context(),
-                   {{4, 4},
-                    VK_FORMAT_R8G8B8A8_UNORM,
-                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                    VK_SAMPLE_COUNT_4_BIT,
-                    VK_IMAGE_ASPECT_COLOR_BIT,
-                    "MSAA target"});
+  const Image msaa(context(), {{4, 4},
+                               VK_FORMAT_R8G8B8A8_UNORM,
+                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                               VK_SAMPLE_COUNT_4_BIT,
+                               VK_IMAGE_ASPECT_COLOR_BIT,
+                               "MSAA target"});
   try {
     read_image_bytes(context(), pool(), msaa, VK_IMAGE_LAYOUT_GENERAL);
     FAIL() << "no error";

@@ -70,8 +70,7 @@ TEST_F(VulkanTest, FenceStatesAndBoundedWait) {
 
 TEST_F(VulkanTest, BinarySemaphoreOrdersTwoSubmits) {
   const Semaphore between(context(), "between");
-  Buffer buffer(context(),
-                {16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback, "ordered"});
+  Buffer buffer(context(), {16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback, "ordered"});
   UniqueCommandBuffer first = pool().allocate("first");
   UniqueCommandBuffer second = pool().allocate("second");
   begin_commands(first.get(), "first");
@@ -79,8 +78,7 @@ TEST_F(VulkanTest, BinarySemaphoreOrdersTwoSubmits) {
   end_commands(first.get(), "first");
   begin_commands(second.get(), "second");
   vkCmdFillBuffer(second.get(), buffer.handle(), 0, 8, 2u);
-  buffer_barrier(second.get(), buffer.handle(),
-                 {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+  buffer_barrier(second.get(), buffer.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
                  {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
   end_commands(second.get(), "second");
 
@@ -103,15 +101,13 @@ TEST_F(VulkanTest, BinarySemaphoreOrdersTwoSubmits) {
 // that only the host signals. Nothing may run before the signal; everything runs after it.
 TEST_F(VulkanTest, SubmitWaitsForHostSignal) {
   const TimelineSemaphore timeline(context(), "draw patching");
-  Buffer target(context(),
-                {64, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback, "patched target"});
+  Buffer target(context(), {64, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback, "patched target"});
   std::fill(target.as<std::uint32_t>().begin(), target.as<std::uint32_t>().end(), 0u);
 
   UniqueCommandBuffer cmd = pool().allocate("pre-recorded tile pass");
   begin_commands(cmd.get(), "pre-recorded tile pass");
   vkCmdFillBuffer(cmd.get(), target.handle(), 0, VK_WHOLE_SIZE, 0xabcd1234u);
-  buffer_barrier(cmd.get(), target.handle(),
-                 {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+  buffer_barrier(cmd.get(), target.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
                  {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
   end_commands(cmd.get(), "pre-recorded tile pass");
 

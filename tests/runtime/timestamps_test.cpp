@@ -23,8 +23,7 @@ TEST(Timestamps, DeltaHandlesWrapAround) {
 
 TEST_F(VulkanTest, TimestampsInWriteOrder) {
   TimestampQueries timings(context(), "frame timings", 4);
-  Buffer scratch(context(),
-                 {1 << 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::DeviceLocal, "timed work"});
+  Buffer scratch(context(), {1 << 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::DeviceLocal, "timed work"});
   submit_and_wait(
       context(), pool(),
       [&](VkCommandBuffer cmd) {

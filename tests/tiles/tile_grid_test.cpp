@@ -1,11 +1,11 @@
-#include "tilelight/base/error.h"
 #include "tilelight/tiles/tile_grid.h"
+#include "tilelight/base/error.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <ostream>
-#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -39,20 +39,16 @@ TEST_P(TileGridSizes, DerivedCounts) {
   EXPECT_EQ(grid.max_index_count(), c.tiles_x * c.tiles_y * 6);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Sizes, TileGridSizes,
-    ::testing::Values(GridCase{1280, 720, 4, 320, 180, 80, 45},
-                      GridCase{1920, 1080, 4, 480, 270, 120, 68},
-                      GridCase{1283, 719, 4, 321, 180, 81, 45},
-                      GridCase{1, 1, 4, 1, 1, 1, 1},
-                      GridCase{5, 3, 4, 2, 1, 1, 1},
-                      GridCase{1280, 720, 8, 160, 90, 40, 23},
-                      GridCase{1280, 720, 16, 80, 45, 20, 12},
-                      GridCase{17, 33, 16, 2, 3, 1, 1},
-                      GridCase{80, 16, 4, 20, 4, 5, 1},
-                      // The widest one-tile-high frame whose corner vertices (2 * 536870911) stay
-                      // below 2^30, as point indices need (tile_primitive.h).
-                      GridCase{2147483640u, 4, 4, 536870910u, 1, 134217728u, 1}));
+INSTANTIATE_TEST_SUITE_P(Sizes, TileGridSizes,
+                         ::testing::Values(GridCase{1280, 720, 4, 320, 180, 80, 45},
+                                           GridCase{1920, 1080, 4, 480, 270, 120, 68},
+                                           GridCase{1283, 719, 4, 321, 180, 81, 45}, GridCase{1, 1, 4, 1, 1, 1, 1},
+                                           GridCase{5, 3, 4, 2, 1, 1, 1}, GridCase{1280, 720, 8, 160, 90, 40, 23},
+                                           GridCase{1280, 720, 16, 80, 45, 20, 12}, GridCase{17, 33, 16, 2, 3, 1, 1},
+                                           GridCase{80, 16, 4, 20, 4, 5, 1},
+                                           // The widest one-tile-high frame whose corner vertices (2 * 536870911) stay
+                                           // below 2^30, as point indices need (tile_primitive.h).
+                                           GridCase{2147483640u, 4, 4, 536870910u, 1, 134217728u, 1}));
 
 TEST(TileGrid, ExactCountsAt720p) {
   const TileGrid grid = TileGrid::make(1280, 720);
@@ -92,9 +88,10 @@ INSTANTIATE_TEST_SUITE_P(
                               "tiles (1152921504606846976)"},
                       // 536870911 tiles pass the index-count and block-storage limits, but their
                       // 2 * 536870912 corner vertices do not fit in a point index's 30 bits.
-                      BadGrid{2147483641u, 4, 4,
-                              "TileGrid: frame 2147483641x4 at tile size 4 has too many tile corners (1073741824, at most "
-                              "1073741823)"}));
+                      BadGrid{
+                          2147483641u, 4, 4,
+                          "TileGrid: frame 2147483641x4 at tile size 4 has too many tile corners (1073741824, at most "
+                          "1073741823)"}));
 
 TEST(TileGrid, BlockedOffsetFollowsTheDocumentedLayout) {
   const TileGrid grid = TileGrid::make(1283, 719);  // 321x180 tiles, 81x45 blocks
@@ -142,12 +139,9 @@ TEST_P(TileGridRoundTrip, RowMajorToBlockedAndBack) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Sizes, TileGridRoundTrip,
-                         ::testing::Values(GridCase{1280, 720, 4, 0, 0, 0, 0},
-                                           GridCase{1283, 719, 4, 0, 0, 0, 0},
-                                           GridCase{1, 1, 4, 0, 0, 0, 0},
-                                           GridCase{5, 3, 4, 0, 0, 0, 0},
-                                           GridCase{100, 70, 8, 0, 0, 0, 0},
-                                           GridCase{200, 90, 16, 0, 0, 0, 0}));
+                         ::testing::Values(GridCase{1280, 720, 4, 0, 0, 0, 0}, GridCase{1283, 719, 4, 0, 0, 0, 0},
+                                           GridCase{1, 1, 4, 0, 0, 0, 0}, GridCase{5, 3, 4, 0, 0, 0, 0},
+                                           GridCase{100, 70, 8, 0, 0, 0, 0}, GridCase{200, 90, 16, 0, 0, 0, 0}));
 
 TEST(TileGrid, ConversionsRejectWrongSizes) {
   const TileGrid grid = TileGrid::make(5, 3);  // 2x1 tiles, one block

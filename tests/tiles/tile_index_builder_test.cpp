@@ -1,6 +1,6 @@
+#include "tilelight/tiles/tile_index_builder.h"
 #include "tilelight/base/error.h"
 #include "tilelight/tiles/tile_grid.h"
-#include "tilelight/tiles/tile_index_builder.h"
 #include "tilelight/tiles/tile_primitive.h"
 
 #include <gtest/gtest.h>
@@ -244,9 +244,8 @@ TEST_P(RandomIds, CoverEveryTileOnceWithItsOptimisedId) {
 
 INSTANTIATE_TEST_SUITE_P(
     Grids, RandomIds,
-    ::testing::Combine(::testing::Values(Size{1280, 720, 4}, Size{1283, 719, 4}, Size{1, 1, 4},
-                                         Size{5, 3, 4}, Size{37, 23, 8}, Size{1920, 1080, 16},
-                                         Size{61, 45, 4}),
+    ::testing::Combine(::testing::Values(Size{1280, 720, 4}, Size{1283, 719, 4}, Size{1, 1, 4}, Size{5, 3, 4},
+                                         Size{37, 23, 8}, Size{1920, 1080, 16}, Size{61, 45, 4}),
                        ::testing::Bool(),
                        // A palette of 2 raw IDs makes uniform blocks and runs likely; 96 makes them rare.
                        ::testing::Values(std::size_t{2}, std::size_t{5}, std::size_t{96})));
@@ -328,7 +327,8 @@ INSTANTIATE_TEST_SUITE_P(
         Pattern{"aab_a", [](std::uint32_t x, std::uint32_t) { return std::uint8_t(x % 4 == 2 ? 9 : 0); }, 12},
         Pattern{"one_odd_tile",
                 [](std::uint32_t x, std::uint32_t y) { return std::uint8_t(x % 4 == 1 && y % 4 == 2 ? 6 : 5); }, 6},
-        Pattern{"same_opt_rows", [](std::uint32_t x, std::uint32_t y) { return std::uint8_t(y % 2 ? 40 + x % 2 * 32 : 8); }, 1}));
+        Pattern{"same_opt_rows",
+                [](std::uint32_t x, std::uint32_t y) { return std::uint8_t(y % 2 ? 40 + x % 2 * 32 : 8); }, 1}));
 
 TEST(TileIndexBuilder, ExactIndicesForATwoTileFrame) {
   const TileGrid grid = TileGrid::make(8, 4);  // 2x1 tiles; corners 3 per row
@@ -428,12 +428,11 @@ TEST_P(RandomIdsAsPoints, CoverEveryTileOnceWithAPointOfItsClass) {
 // The grids of RandomIds, and partial blocks of 2x2 and 3x3 tiles (square, so one point each);
 // palettes of 2 raw IDs make uniform blocks and runs likely, 96 rare; 32 classes merge raw IDs
 // 32 apart, 128 keep every raw ID its own class.
-INSTANTIATE_TEST_SUITE_P(
-    Grids, RandomIdsAsPoints,
-    ::testing::Combine(::testing::Values(Size{1280, 720, 4}, Size{1283, 719, 4}, Size{1, 1, 4}, Size{5, 3, 4},
-                                         Size{37, 23, 8}, Size{1920, 1080, 16}, Size{61, 45, 4}, Size{24, 24, 4},
-                                         Size{12, 12, 4}),
-                       ::testing::Bool()));
+INSTANTIATE_TEST_SUITE_P(Grids, RandomIdsAsPoints,
+                         ::testing::Combine(::testing::Values(Size{1280, 720, 4}, Size{1283, 719, 4}, Size{1, 1, 4},
+                                                              Size{5, 3, 4}, Size{37, 23, 8}, Size{1920, 1080, 16},
+                                                              Size{61, 45, 4}, Size{24, 24, 4}, Size{12, 12, 4}),
+                                            ::testing::Bool()));
 
 // Exact index buffers for small frames (tile size 4, coalescing on, the 32-class LUT).
 struct PointLayout {
@@ -478,29 +477,39 @@ INSTANTIATE_TEST_SUITE_P(
         // 4x4 tiles: one uniform block is one point of side 4.
         PointLayout{"full_block", 16, 16, all_zero, {point_index(0, 4)}, {1}, 1},
         // Raw IDs 0 and 32 share class 0: the block is uniform after the LUT.
-        PointLayout{"full_block_two_raw_ids", 16, 16,
+        PointLayout{"full_block_two_raw_ids",
+                    16,
+                    16,
                     [](std::uint32_t x, std::uint32_t) { return std::uint8_t(x % 2 * 32); },
-                    {point_index(0, 4)}, {1}, 1},
+                    {point_index(0, 4)},
+                    {1},
+                    1},
         PointLayout{"two_blocks", 32, 16, all_zero, {point_index(0, 4), point_index(4, 4)}, {2}, 2},
         // 3x3 tiles: a partial block that is square is still one point.
         PointLayout{"partial_3x3", 12, 12, all_zero, {point_index(0, 3)}, {1}, 1},
         PointLayout{"one_tile", 1, 1, all_zero, {point_index(0, 1)}, {1}, 1},
         // 6x6 tiles, corner stride 7: a 4x4 block, a 2x4 and a 4x2 one (a point per tile, row-major),
         // then the 2x2 corner block, at corner (4, 4) = 32, as one point of side 2.
-        PointLayout{"partial_2x2_corner", 24, 24, all_zero,
-                    {point_index(0, 4),
-                     4, 5, 11, 12, 18, 19, 25, 26,
-                     28, 29, 30, 31, 35, 36, 37, 38,
-                     point_index(32, 2)},
-                    {18}, 4},
+        PointLayout{
+            "partial_2x2_corner",
+            24,
+            24,
+            all_zero,
+            {point_index(0, 4), 4, 5, 11, 12, 18, 19, 25, 26, 28, 29, 30, 31, 35, 36, 37, 38, point_index(32, 2)},
+            {18},
+            4},
         // 5x3 tiles, stride 6: a 4x3 block and a 1x3 block, neither square.
-        PointLayout{"partial_4x3_and_1x3", 20, 12, all_zero,
-                    {0, 1, 2, 3, 6, 7, 8, 9, 12, 13, 14, 15, 4, 10, 16}, {15}, 2},
+        PointLayout{
+            "partial_4x3_and_1x3", 20, 12, all_zero, {0, 1, 2, 3, 6, 7, 8, 9, 12, 13, 14, 15, 4, 10, 16}, {15}, 2},
         // 4x4 tiles, stride 5: tile (3, 0) is class 1, so row 0 is a run of three class-0 tiles (three
         // points of side 1) and rows 1-3 are runs of four (four points each).
-        PointLayout{"row_run_of_three", 16, 16,
+        PointLayout{"row_run_of_three",
+                    16,
+                    16,
                     [](std::uint32_t x, std::uint32_t y) { return std::uint8_t(x == 3 && y == 0 ? 1 : 0); },
-                    {0, 1, 2, 5, 6, 7, 8, 10, 11, 12, 13, 15, 16, 17, 18, point_index(3, 1)}, {15, 1}, 5}),
+                    {0, 1, 2, 5, 6, 7, 8, 10, 11, 12, 13, 15, 16, 17, 18, point_index(3, 1)},
+                    {15, 1},
+                    5}),
     [](const ::testing::TestParamInfo<PointLayout>& param_info) { return std::string(param_info.param.name); });
 
 TEST(TileIndexBuilder, UniformFrameIsOnePointPerBlock) {
@@ -575,8 +584,8 @@ class BadTiles : public ::testing::TestWithParam<BadTile> {};
 TEST_P(BadTiles, NameTheTileAndValue) {
   const BadTile& c = GetParam();
   const TileGrid grid = TileGrid::make(c.width, c.height);
-  std::vector<std::uint8_t> ids = c.coalesce_uniform ? std::vector<std::uint8_t>(grid.tile_count(), 4)
-                                                     : random_ids(grid, 11, 96);
+  std::vector<std::uint8_t> ids =
+      c.coalesce_uniform ? std::vector<std::uint8_t>(grid.tile_count(), 4) : random_ids(grid, 11, 96);
   ids[std::size_t{c.tile_y} * grid.tiles_x + c.tile_x] = c.value;
   EXPECT_EQ(build_error(grid, to_blocked(grid, ids), grid.max_index_count(), kOptimisedClassCount), c.message);
 }
@@ -621,10 +630,8 @@ TEST(TileIndexBuilder, ConstructorRejectsBadTables) {
     }
     return "no error";
   };
-  EXPECT_EQ(message(std::span(lut).first(127), none),
-            "TileIndexBuilder: the LUT must have 128 entries (got 127)");
-  EXPECT_EQ(message(lut, short_pruned),
-            "TileIndexBuilder: the pruned set must have 128 entries or none (got 5)");
+  EXPECT_EQ(message(std::span(lut).first(127), none), "TileIndexBuilder: the LUT must have 128 entries (got 127)");
+  EXPECT_EQ(message(lut, short_pruned), "TileIndexBuilder: the pruned set must have 128 entries or none (got 5)");
   lut[77] = 32;
   EXPECT_EQ(message(lut, none), "TileIndexBuilder: LUT entry 77 is 32, out of range (0..31)");
 }

@@ -40,18 +40,24 @@ struct RectCase {
 };
 
 TEST(TilePrimitive, PrimitivesPerRectangle) {
-  const RectCase cases[] = {
-      {TilePrimitive::points, 1, 1, 1}, {TilePrimitive::points, 2, 2, 1}, {TilePrimitive::points, 3, 3, 1},
-      {TilePrimitive::points, 4, 4, 1},
-      // Not square: one point per tile.
-      {TilePrimitive::points, 3, 1, 3}, {TilePrimitive::points, 4, 1, 4}, {TilePrimitive::points, 1, 4, 4},
-      {TilePrimitive::points, 2, 4, 8}, {TilePrimitive::points, 4, 3, 12},
-      // Triangles: one pair per rectangle, whatever its shape.
-      {TilePrimitive::triangles, 1, 1, 1}, {TilePrimitive::triangles, 4, 4, 1}, {TilePrimitive::triangles, 2, 4, 1},
-      {TilePrimitive::triangles, 4, 1, 1}};
+  const RectCase cases[] = {{TilePrimitive::points, 1, 1, 1},
+                            {TilePrimitive::points, 2, 2, 1},
+                            {TilePrimitive::points, 3, 3, 1},
+                            {TilePrimitive::points, 4, 4, 1},
+                            // Not square: one point per tile.
+                            {TilePrimitive::points, 3, 1, 3},
+                            {TilePrimitive::points, 4, 1, 4},
+                            {TilePrimitive::points, 1, 4, 4},
+                            {TilePrimitive::points, 2, 4, 8},
+                            {TilePrimitive::points, 4, 3, 12},
+                            // Triangles: one pair per rectangle, whatever its shape.
+                            {TilePrimitive::triangles, 1, 1, 1},
+                            {TilePrimitive::triangles, 4, 4, 1},
+                            {TilePrimitive::triangles, 2, 4, 1},
+                            {TilePrimitive::triangles, 4, 1, 1}};
   for (const RectCase& c : cases) {
-    EXPECT_EQ(primitives_for_rect(c.primitive, c.w, c.h), c.primitives) << to_string(c.primitive) << " " << c.w
-                                                                         << "x" << c.h;
+    EXPECT_EQ(primitives_for_rect(c.primitive, c.w, c.h), c.primitives)
+        << to_string(c.primitive) << " " << c.w << "x" << c.h;
   }
 }
 

@@ -1,20 +1,20 @@
 #include "tilelight/app/cli.h"
 
-#include "tilelight/vulkan/context.h"
-#include "tilelight/vulkan/error.h"
-#include "tilelight/picture/png.h"
-#include "tilelight/scene/scene.h"
-#include "tilelight/picture/tile_class_image.h"
-#include "tilelight/render/tile_renderer.h"
 #include "tilelight/app/failure.h"
 #include "tilelight/app/output_files.h"
 #include "tilelight/app/process_stats.h"
 #include "tilelight/app/report.h"
+#include "tilelight/picture/png.h"
+#include "tilelight/picture/tile_class_image.h"
+#include "tilelight/render/tile_renderer.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
 
 #include <split_second_shaders.h>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <cstdlib>
@@ -90,7 +90,8 @@ void add_options(CLI::App& cli, Arguments& a) {
   cli.add_option("--permutations", a.permutations, "lighting shaders: optimised (32) or raw (96 of 128)")
       ->check(CLI::IsMember({"optimised", "raw"}))
       ->capture_default_str();
-  cli.add_option("--camera", a.camera, "camera: default, sky, shadow, low, street, closeup (--list-cameras)")->capture_default_str();
+  cli.add_option("--camera", a.camera, "camera: default, sky, shadow, low, street, closeup (--list-cameras)")
+      ->capture_default_str();
   cli.add_option("--frames", a.frames, "timed frames (after one warm-up frame); timings are medians over them")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -193,9 +194,19 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   stage = "comparing the frames and writing the results to " + a.out;
   FrameReport report;
   const char* threads = std::getenv("LP_NUM_THREADS");
-  report.run = {context.device_name(), a.width, a.height, renderer.msaa_samples(), a.tile_size, a.frames, a.path,
-                a.permutations, a.camera, options.coalesce, threads != nullptr ? threads : "",
-                std::string(to_string(renderer.tile_primitive())), a.baseline};
+  report.run = {context.device_name(),
+                a.width,
+                a.height,
+                renderer.msaa_samples(),
+                a.tile_size,
+                a.frames,
+                a.path,
+                a.permutations,
+                a.camera,
+                options.coalesce,
+                threads != nullptr ? threads : "",
+                std::string(to_string(renderer.tile_primitive())),
+                a.baseline};
   count_tiles(report, raw_ids);
   report.primitives_uncoalesced = last.stats.primitives_uncoalesced;
   report.primitives_coalesced = last.stats.primitives_coalesced;
@@ -227,10 +238,11 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
 }  // namespace
 
 int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  CLI::App cli("tilelight: tile-classified deferred lighting (Split/Second, GPU Pro 2 ch. 4) on Vulkan.\n"
-               "Renders a procedural scene, classifies 4x4 tiles on the GPU, draws each class with its\n"
-               "own uber-shader permutation and compares the result with the naive full-screen pass.",
-               "tilelight");
+  CLI::App cli(
+      "tilelight: tile-classified deferred lighting (Split/Second, GPU Pro 2 ch. 4) on Vulkan.\n"
+      "Renders a procedural scene, classifies 4x4 tiles on the GPU, draws each class with its\n"
+      "own uber-shader permutation and compares the result with the naive full-screen pass.",
+      "tilelight");
   Arguments arguments;
   add_options(cli, arguments);
   try {

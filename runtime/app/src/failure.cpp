@@ -12,12 +12,9 @@ namespace {
 std::string_view hint(VkResult result) {
   switch (result) {
     case VK_ERROR_OUT_OF_DEVICE_MEMORY:
-    case VK_ERROR_OUT_OF_HOST_MEMORY:
-      return " (out of memory: try a smaller --width/--height or fewer --msaa samples)";
-    case VK_ERROR_DEVICE_LOST:
-      return " (the device was lost: a driver fault or a GPU reset; no output was written)";
-    default:
-      return "";
+    case VK_ERROR_OUT_OF_HOST_MEMORY: return " (out of memory: try a smaller --width/--height or fewer --msaa samples)";
+    case VK_ERROR_DEVICE_LOST: return " (the device was lost: a driver fault or a GPU reset; no output was written)";
+    default: return "";
   }
 }
 

@@ -37,14 +37,13 @@ nlohmann::ordered_json equivalence_json(const Equivalence& e) {
 
 void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids) {
   namespace bit = split_second::raw_bit;
-  const std::vector<std::pair<std::string, std::uint32_t>> properties{
-      {"SKY", bit::SKY},
-      {"SUN_LIGHT", bit::SUN_LIGHT},
-      {"SOLID_SHADOW", bit::SHADOW_SOLID},
-      {"SOFT_SHADOW", bit::SHADOW_SOFT},
-      {"SHADOW_FADE", bit::SHADOW_FADE},
-      {"LIGHT_SCATTERING", bit::LIGHT_SCATTERING},
-      {"MSAA_EDGE", bit::MSAA_EDGE}};
+  const std::vector<std::pair<std::string, std::uint32_t>> properties{{"SKY", bit::SKY},
+                                                                      {"SUN_LIGHT", bit::SUN_LIGHT},
+                                                                      {"SOLID_SHADOW", bit::SHADOW_SOLID},
+                                                                      {"SOFT_SHADOW", bit::SHADOW_SOFT},
+                                                                      {"SHADOW_FADE", bit::SHADOW_FADE},
+                                                                      {"LIGHT_SCATTERING", bit::LIGHT_SCATTERING},
+                                                                      {"MSAA_EDGE", bit::MSAA_EDGE}};
   report.tiles = static_cast<std::uint32_t>(raw_ids.size());
   report.raw_property_tiles.clear();
   for (const auto& [name, mask] : properties) {
@@ -108,16 +107,15 @@ std::string report_json(const FrameReport& r) {
   j["primitive"] = r.run.primitive;
   j["baselines"] = r.run.baselines;
   j["frames"] = r.run.frames;
-  j["lavapipe_threads"] = r.run.lavapipe_threads.empty() ? nlohmann::ordered_json(nullptr)
-                                                         : nlohmann::ordered_json(r.run.lavapipe_threads);
+  j["lavapipe_threads"] =
+      r.run.lavapipe_threads.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.run.lavapipe_threads);
   j["tiles"] = r.tiles;
   nlohmann::ordered_json properties = nlohmann::ordered_json::object();
   for (const auto& [name, count] : r.raw_property_tiles) properties[name] = count;
   j["raw_property_tiles"] = properties;
   j["optimised_tiles"] = r.optimised_tiles;
-  j["primitives"] = {{"uncoalesced", r.primitives_uncoalesced},
-                     {"coalesced", r.primitives_coalesced},
-                     {"rectangles", r.rectangles}};
+  j["primitives"] = {
+      {"uncoalesced", r.primitives_uncoalesced}, {"coalesced", r.primitives_coalesced}, {"rectangles", r.rectangles}};
   // The medians, and every frame's figures, so that a benchmark can take other statistics than
   // the median, or ratios within one frame (on a machine whose speed drifts, the steadier figure).
   nlohmann::ordered_json timings, frames;
@@ -133,8 +131,8 @@ std::string report_json(const FrameReport& r) {
   // frame against the naive one (null unless both ran).
   j["equivalence"] = equivalence_json(r.equivalence.classified);
   j["equivalence"]["reference"] = r.equivalence.reference;
-  j["dynamic_equivalence"] = r.equivalence.dynamic ? equivalence_json(*r.equivalence.dynamic)
-                                                   : nlohmann::ordered_json(nullptr);
+  j["dynamic_equivalence"] =
+      r.equivalence.dynamic ? equivalence_json(*r.equivalence.dynamic) : nlohmann::ordered_json(nullptr);
   j["process"] = {{"peak_rss_mib", std::round(r.process.peak_rss_mib * 10.0) / 10.0},
                   {"rss_after_frames_mib", std::round(r.process.rss_after_frames_mib * 10.0) / 10.0}};
   return j.dump(2) + "\n";
@@ -147,9 +145,9 @@ std::string timing_table(const FrameReport& r) {
   const double classified_light = t.classification + t.index_build_cpu + t.index_build_gpu + t.tiled_light;
   auto cell = [](bool ran, double ms) { return ran ? fmt::format("{:.3f}", ms) : std::string("-"); };
   std::string out;
-  out += fmt::format("{}x{}, {}x MSAA, {}, path {}, {} permutations, camera {}, median of {} frame(s)\n",
-                     r.run.width, r.run.height, r.run.msaa_samples, r.run.device, r.run.path, r.run.permutations,
-                     r.run.camera, r.run.frames);
+  out += fmt::format("{}x{}, {}x MSAA, {}, path {}, {} permutations, camera {}, median of {} frame(s)\n", r.run.width,
+                     r.run.height, r.run.msaa_samples, r.run.device, r.run.path, r.run.permutations, r.run.camera,
+                     r.run.frames);
   out += fmt::format("{:<28}{:>12}{:>12}{:>14}\n", "stage (ms)", "naive", "dynamic", "classified");
   auto row = [&](const char* name, bool in_baselines, double naive_ms, double dynamic_ms, double classified_ms) {
     out += fmt::format("{:<28}{:>12}{:>12}{:>14.3f}\n", name, cell(naive && in_baselines, naive_ms),
@@ -158,8 +156,10 @@ std::string timing_table(const FrameReport& r) {
   row("shadow map", true, t.shadow_map, t.shadow_map, t.shadow_map);
   row("G-buffer", true, t.gbuffer, t.gbuffer, t.gbuffer);
   row("classification (GPU)", false, 0, 0, t.classification);
-  if (r.run.path == "cpu") row("index build (CPU)", false, 0, 0, t.index_build_cpu);
-  else row("index build (GPU)", false, 0, 0, t.index_build_gpu);
+  if (r.run.path == "cpu")
+    row("index build (CPU)", false, 0, 0, t.index_build_cpu);
+  else
+    row("index build (GPU)", false, 0, 0, t.index_build_gpu);
   row("global light", true, t.naive_light, t.dynamic_light, t.tiled_light);
   row("light total", true, t.naive_light, t.dynamic_light, classified_light);
   auto speedup = [&](const char* baseline, double baseline_ms) {

@@ -165,8 +165,7 @@ std::array<std::uint8_t, kGlyphHeight> glyph_rows(char c) {
   return kGlyphs[static_cast<std::size_t>(static_cast<unsigned char>(c) - kFirstGlyph)];
 }
 
-void draw_text(Rgba8Canvas& canvas, int x, int y, std::string_view text, Rgba8 colour,
-               int scale) {
+void draw_text(Rgba8Canvas& canvas, int x, int y, std::string_view text, Rgba8 colour, int scale) {
   if (scale < 1) {
     throw Error("draw_text: scale must be >= 1, got " + std::to_string(scale));
   }

@@ -58,8 +58,8 @@ constexpr std::uint32_t kSunShadowShift = 3;
 
 void check_id(std::uint32_t optimised_id, const char* function) {
   if (optimised_id >= kOptimisedClassCount) {
-    throw Error(fmt::format("{}: optimised ID {} is out of range; IDs must be < {}", function,
-                            optimised_id, kOptimisedClassCount));
+    throw Error(fmt::format("{}: optimised ID {} is out of range; IDs must be < {}", function, optimised_id,
+                            kOptimisedClassCount));
   }
 }
 
@@ -75,14 +75,13 @@ void check_tiles(std::uint32_t frame_width, std::uint32_t frame_height, std::uin
   const std::uint32_t tiles_y = tiles_along(frame_height, tile_size);
   const std::size_t expected = static_cast<std::size_t>(tiles_x) * tiles_y;
   if (tile_ids.size() != expected) {
-    throw Error(fmt::format(
-        "tile class image: expected {} tile IDs ({}x{} tiles of {} px for a {}x{} frame), got {}",
-        expected, tiles_x, tiles_y, tile_size, frame_width, frame_height, tile_ids.size()));
+    throw Error(fmt::format("tile class image: expected {} tile IDs ({}x{} tiles of {} px for a {}x{} frame), got {}",
+                            expected, tiles_x, tiles_y, tile_size, frame_width, frame_height, tile_ids.size()));
   }
   for (std::size_t i = 0; i < tile_ids.size(); ++i) {
     if (tile_ids[i] >= kOptimisedClassCount) {
-      throw Error(fmt::format("tile class image: tile ({}, {}) has optimised ID {}; IDs must be < {}",
-                              i % tiles_x, i / tiles_x, tile_ids[i], kOptimisedClassCount));
+      throw Error(fmt::format("tile class image: tile ({}, {}) has optimised ID {}; IDs must be < {}", i % tiles_x,
+                              i / tiles_x, tile_ids[i], kOptimisedClassCount));
     }
   }
 }
@@ -131,8 +130,7 @@ void Rgba8Canvas::fill_rect(int x, int y, int w, int h, Rgba8 colour) {
   for (long long row = y0; row < y1; ++row) {
     for (long long column = x0; column < x1; ++column) {
       const auto offset = static_cast<std::size_t>((row * width + column) * 4);
-      std::copy(colour.begin(), colour.end(),
-                pixels.begin() + static_cast<std::ptrdiff_t>(offset));
+      std::copy(colour.begin(), colour.end(), pixels.begin() + static_cast<std::ptrdiff_t>(offset));
     }
   }
 }
@@ -144,8 +142,8 @@ std::array<std::uint8_t, 4> class_colour(std::uint32_t optimised_id) {
 
 std::string default_class_label(std::uint32_t optimised_id) {
   check_id(optimised_id, "default_class_label");
-  static constexpr const char* kSunShadow[] = {"solid shadow", "solid shadow+fade+sun",
-                                               "sun, no shadow", "soft shadow+fade+sun"};
+  static constexpr const char* kSunShadow[] = {"solid shadow", "solid shadow+fade+sun", "sun, no shadow",
+                                               "soft shadow+fade+sun"};
   const std::uint32_t sun_shadow = optimised_id >> kSunShadowShift;
   const bool sky = (optimised_id & kSkyBit) != 0;
   std::string label;
@@ -166,8 +164,8 @@ std::vector<TileClassLegendEntry> tile_class_legend_entries(std::span<const std:
   std::array<std::uint32_t, kOptimisedClassCount> counts{};
   for (std::size_t i = 0; i < tile_ids.size(); ++i) {
     if (tile_ids[i] >= kOptimisedClassCount) {
-      throw Error(fmt::format("tile class image: tile {} has optimised ID {}; IDs must be < {}", i,
-                              tile_ids[i], kOptimisedClassCount));
+      throw Error(fmt::format("tile class image: tile {} has optimised ID {}; IDs must be < {}", i, tile_ids[i],
+                              kOptimisedClassCount));
     }
     ++counts[tile_ids[i]];
   }
@@ -178,10 +176,8 @@ std::vector<TileClassLegendEntry> tile_class_legend_entries(std::span<const std:
   return entries;
 }
 
-TileClassLegendLayout tile_class_legend_layout(std::uint32_t frame_width,
-                                               std::uint32_t frame_height,
-                                               std::uint32_t tile_size,
-                                               std::span<const std::uint8_t> tile_ids,
+TileClassLegendLayout tile_class_legend_layout(std::uint32_t frame_width, std::uint32_t frame_height,
+                                               std::uint32_t tile_size, std::span<const std::uint8_t> tile_ids,
                                                const ClassLabelFn& class_label) {
   check_tiles(frame_width, frame_height, tile_size, tile_ids);
 
@@ -214,10 +210,9 @@ TileClassLegendLayout tile_class_legend_layout(std::uint32_t frame_width,
     TileClassLegendLayout::Row row;
     row.entry = entry;
     // Right-aligned to the width of "(100.0%)" so the percentages line up too.
-    const std::string percent =
-        fmt::format("({:.1f}%)", 100.0 * static_cast<double>(entry.tiles) / total);
-    row.text = fmt::format("#{:<2}  {:<{}}  {:>{}} {:>8}", entry.optimised_id, entry.label,
-                           label_chars, entry.tiles, count_chars, percent);
+    const std::string percent = fmt::format("({:.1f}%)", 100.0 * static_cast<double>(entry.tiles) / total);
+    row.text = fmt::format("#{:<2}  {:<{}}  {:>{}} {:>8}", entry.optimised_id, entry.label, label_chars, entry.tiles,
+                           count_chars, percent);
     row.swatch_x = frame_width + to_u32(pad);
     row.swatch_y = to_u32(row_y);
     row.swatch_size = to_u32(swatch);
@@ -244,17 +239,15 @@ Rgba8Canvas compose_tile_class_image(const RgbaImage& frame, std::uint32_t tile_
 }
 
 Rgba8Canvas compose_tile_class_image(const RgbaImage& frame, std::uint32_t tile_size,
-                                     std::span<const std::uint8_t> tile_ids,
-                                     const ClassLabelFn& class_label) {
+                                     std::span<const std::uint8_t> tile_ids, const ClassLabelFn& class_label) {
   const std::size_t expected_floats = static_cast<std::size_t>(frame.width) * frame.height * 4;
   if (frame.pixels.size() != expected_floats) {
-    throw Error(fmt::format("tile class image: frame has {} floats, expected {}x{}x4 = {}",
-                            frame.pixels.size(), frame.width, frame.height, expected_floats));
+    throw Error(fmt::format("tile class image: frame has {} floats, expected {}x{}x4 = {}", frame.pixels.size(),
+                            frame.width, frame.height, expected_floats));
   }
   const TileClassLegendLayout layout =
       tile_class_legend_layout(frame.width, frame.height, tile_size, tile_ids, class_label);
-  Rgba8Canvas canvas =
-      Rgba8Canvas::filled(layout.canvas_width, layout.canvas_height, kLegendBackground);
+  Rgba8Canvas canvas = Rgba8Canvas::filled(layout.canvas_width, layout.canvas_height, kLegendBackground);
 
   // Frame: one pass, walking tile spans within each row so the tile lookup and the
   // neighbour comparisons happen once per tile span, not per pixel.
@@ -286,14 +279,12 @@ Rgba8Canvas compose_tile_class_image(const RgbaImage& frame, std::uint32_t tile_
 
   // Legend.
   const int s = layout.scale;
-  draw_text(canvas, static_cast<int>(layout.title_x), static_cast<int>(layout.title_y),
-            layout.title, kLegendText, s);
+  draw_text(canvas, static_cast<int>(layout.title_x), static_cast<int>(layout.title_y), layout.title, kLegendText, s);
   for (const TileClassLegendLayout::Row& row : layout.rows) {
     const int size = static_cast<int>(row.swatch_size);
     canvas.fill_rect(static_cast<int>(row.swatch_x), static_cast<int>(row.swatch_y), size, size,
                      kPalette[row.entry.optimised_id]);
-    draw_text(canvas, static_cast<int>(row.text_x), static_cast<int>(row.text_y), row.text,
-              kLegendText, s);
+    draw_text(canvas, static_cast<int>(row.text_x), static_cast<int>(row.text_y), row.text, kLegendText, s);
   }
   return canvas;
 }

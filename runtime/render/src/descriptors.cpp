@@ -36,8 +36,8 @@ VkDescriptorSet allocate_descriptor_set(const Context& context, VkDescriptorPool
   return set;
 }
 
-void write_buffer_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding,
-                             VkDescriptorType type, VkBuffer buffer) {
+void write_buffer_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type,
+                             VkBuffer buffer) {
   const VkDescriptorBufferInfo info{buffer, 0, VK_WHOLE_SIZE};
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = set;

@@ -18,8 +18,8 @@ UniqueDescriptorPool create_descriptor_pool(const Context& context, std::uint32_
 VkDescriptorSet allocate_descriptor_set(const Context& context, VkDescriptorPool pool, VkDescriptorSetLayout layout,
                                         std::string_view name);
 
-void write_buffer_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding,
-                             VkDescriptorType type, VkBuffer buffer);
+void write_buffer_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type,
+                             VkBuffer buffer);
 
 void write_image_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkSampler sampler,
                             VkImageView view, VkImageLayout layout);

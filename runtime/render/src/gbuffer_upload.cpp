@@ -1,10 +1,10 @@
 #include "gbuffer_upload.h"
 
-#include "shader_registry.h"
 #include "descriptors.h"
+#include "pipelines.h"
+#include "shader_registry.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
-#include "pipelines.h"
 
 #include <split_second_shaders.h>
 

@@ -3,8 +3,8 @@
 // reach classes the scene does not produce). Same render pass and targets as the scene pass.
 
 #include "render_targets.h"
-#include "tilelight/vulkan/buffer.h"
 #include "tilelight/render/tile_renderer.h"
+#include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
 
 #include <glm/glm.hpp>

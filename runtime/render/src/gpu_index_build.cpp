@@ -1,11 +1,11 @@
 #include "gpu_index_build.h"
 
-#include "shader_registry.h"
 #include "descriptors.h"
+#include "pipelines.h"
+#include "shader_registry.h"
 #include "tilelight/vulkan/barriers.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
-#include "pipelines.h"
 
 #include <split_second_shaders.h>
 
@@ -26,8 +26,8 @@ constexpr std::uint32_t kBlocksPerGroup = 128;  // local_size_x of tile_rects.co
 
 GpuIndexBuild::GpuIndexBuild(const Context& context, const shadergen::Registry& shaders, const TileGrid& grid,
                              std::span<const std::uint8_t> class_for_raw, std::span<const bool> pruned,
-                             std::uint32_t class_count, bool coalesce, TilePrimitive primitive,
-                             const Buffer& tile_ids, VkDescriptorPool pool)
+                             std::uint32_t class_count, bool coalesce, TilePrimitive primitive, const Buffer& tile_ids,
+                             VkDescriptorPool pool)
     : grid_(grid), class_count_(class_count) {
   if (class_count > kMaxDrawClasses) throw Error("the GPU index build supports at most 128 draw classes");
   // Byte -> class; 0xFF for impossible or out-of-range raw IDs (and the padding byte 0xFF).
@@ -83,8 +83,8 @@ void GpuIndexBuild::record(VkCommandBuffer cmd) const {
   buffer_barrier(cmd, counters_.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT}, compute_rw);
 
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &set_, 0, nullptr);
-  const std::array<std::uint32_t, 8> push{grid_.tiles_x, grid_.tiles_y, grid_.blocks_x, grid_.blocks_y,
-                                          class_count_, 0, 0, 0};
+  const std::array<std::uint32_t, 8> push{
+      grid_.tiles_x, grid_.tiles_y, grid_.blocks_x, grid_.blocks_y, class_count_, 0, 0, 0};
   vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), push.data());
   const std::uint32_t groups = (grid_.block_count() + kBlocksPerGroup - 1) / kBlocksPerGroup;
 
@@ -97,10 +97,10 @@ void GpuIndexBuild::record(VkCommandBuffer cmd) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, fill_.get());
   vkCmdDispatch(cmd, groups, 1, 1);
 
-  memory_barrier(cmd, compute_rw,
-                 {VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
-                      VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT});
+  memory_barrier(
+      cmd, compute_rw,
+      {VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+       VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT});
   const VkBufferCopy copy{0, 0, kCountersBytes};
   vkCmdCopyBuffer(cmd, counters_.handle(), host_counters_.handle(), 1, &copy);
   buffer_barrier(cmd, host_counters_.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},

@@ -4,9 +4,9 @@
 // tile_prefix.comp), with the same coalescing rule as the CPU builder. No CPU round trip: the
 // pre-recorded tile pass reads the buffers this fills.
 
-#include "tilelight/vulkan/buffer.h"
 #include "tilelight/tiles/tile_grid.h"
 #include "tilelight/tiles/tile_primitive.h"
+#include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
 
 #include <shadergen/registry.h>

@@ -1,9 +1,9 @@
 #include "lighting_interface.h"
 
 #include "descriptors.h"
+#include "pipelines.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
-#include "pipelines.h"
 
 #include <array>
 #include <string>
@@ -48,8 +48,8 @@ LightingInterface::LightingInterface(const Context& context, const LightingParam
   lighting_layout_ = create_pipeline_layout(context, lighting_sets, push, "lighting pipeline layout");
   const std::array<VkDescriptorSetLayout, 2> compute_sets{set0_layout_.get(), storage_set_layout_.get()};
   const VkPushConstantRange compute_push{VK_SHADER_STAGE_COMPUTE_BIT, 0, 32};
-  compute_layout_ = create_pipeline_layout(context, compute_sets, std::span(&compute_push, 1),
-                                           "classification pipeline layout");
+  compute_layout_ =
+      create_pipeline_layout(context, compute_sets, std::span(&compute_push, 1), "classification pipeline layout");
 
   set0_ = allocate_descriptor_set(context, pool, set0_layout_.get(), "lighting set 0");
   write_buffer_descriptor(context, set0_, kParamsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());

@@ -6,9 +6,9 @@
 
 #include "render_targets.h"
 #include "shader_registry.h"
+#include "tilelight/scene/uniform_blocks.h"
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/sampler.h"
-#include "tilelight/scene/uniform_blocks.h"
 #include "tilelight/vulkan/vk_handles.h"
 
 namespace tilelight {

@@ -1,10 +1,10 @@
 #include "lighting_passes.h"
 
+#include "pipelines.h"
 #include "shader_registry.h"
 #include "tilelight/vulkan/barriers.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
-#include "pipelines.h"
 
 #include <array>
 #include <string>
@@ -42,26 +42,27 @@ UniquePipeline create_light_pipeline(const Context& context, const RenderTargets
 }  // namespace
 
 LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
-                               const LightingInterface& lighting, PermutationSet permutations,
-                               TilePrimitive primitive)
+                               const LightingInterface& lighting, PermutationSet permutations, TilePrimitive primitive)
     : lighting_(&lighting),
       extent_(targets.extent()),
       viewport_{grid.tiles_x * grid.tile_size, grid.tiles_y * grid.tile_size} {
   // Exact in float: a frame within the device's framebuffer limits is far below 2^24 tiles across.
   const std::array<float, 2> grid_shape{static_cast<float>(grid.tiles_x + 1), static_cast<float>(grid.tile_size)};
-  grid_shape_ = Buffer(context, {sizeof(grid_shape), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::HostUpload,
-                                 "tile grid shape"});
+  grid_shape_ = Buffer(
+      context, {sizeof(grid_shape), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::HostUpload, "tile grid shape"});
   grid_shape_.write_values(std::span<const float>(grid_shape));
   const std::vector<float> corners = grid.corner_vertices();
-  corners_ = Buffer(context, {corners.size() * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                              MemoryUse::HostUpload, "tile corner grid"});
+  corners_ = Buffer(context, {corners.size() * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUse::HostUpload,
+                              "tile corner grid"});
   corners_.write_values(std::span<const float>(corners));
-  const std::array<std::uint32_t, 6> whole_frame{
-      grid.vertex_index(0, 0),           grid.vertex_index(grid.tiles_x, 0),
-      grid.vertex_index(0, grid.tiles_y), grid.vertex_index(grid.tiles_x, 0),
-      grid.vertex_index(grid.tiles_x, grid.tiles_y), grid.vertex_index(0, grid.tiles_y)};
-  full_screen_indices_ = Buffer(context, {sizeof(whole_frame), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                                          MemoryUse::HostUpload, "full-screen pass indices"});
+  const std::array<std::uint32_t, 6> whole_frame{grid.vertex_index(0, 0),
+                                                 grid.vertex_index(grid.tiles_x, 0),
+                                                 grid.vertex_index(0, grid.tiles_y),
+                                                 grid.vertex_index(grid.tiles_x, 0),
+                                                 grid.vertex_index(grid.tiles_x, grid.tiles_y),
+                                                 grid.vertex_index(0, grid.tiles_y)};
+  full_screen_indices_ = Buffer(context, {sizeof(whole_frame), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::HostUpload,
+                                          "full-screen pass indices"});
   full_screen_indices_.write_values(std::span<const std::uint32_t>(whole_frame));
 
   const shadergen::Registry& registry = lighting.shaders();
@@ -135,7 +136,8 @@ void LightingPasses::record_tiled(VkCommandBuffer cmd, const RenderTargets& targ
     if (!pipelines_[id]) continue;  // a pruned raw ID: the index build rejects it
     // One bind and one draw per class; a class without tiles has indexCount 0: no GPU work.
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_[id].get());
-    vkCmdDrawIndexedIndirect(cmd, draws.handle(), id * kDrawRecordBytes, 1, static_cast<std::uint32_t>(kDrawRecordBytes));
+    vkCmdDrawIndexedIndirect(cmd, draws.handle(), id * kDrawRecordBytes, 1,
+                             static_cast<std::uint32_t>(kDrawRecordBytes));
   }
   vkCmdEndRenderPass(cmd);
 }

@@ -10,9 +10,9 @@
 
 #include "lighting_interface.h"
 #include "render_targets.h"
-#include "tilelight/vulkan/buffer.h"
 #include "tilelight/tiles/tile_grid.h"
 #include "tilelight/tiles/tile_primitive.h"
+#include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
 
 #include <cstdint>
@@ -47,9 +47,9 @@ class LightingPasses {
                           VkPipeline pipeline) const;
 
   const LightingInterface* lighting_;
-  Buffer corners_;        // the prebuilt grid of tile corners (pixels): triangles
-  Buffer grid_shape_;     // tiles_x + 1 and the tile size: points
-  Buffer full_screen_indices_;  // two triangles over the whole frame (naive and dynamic passes)
+  Buffer corners_;                         // the prebuilt grid of tile corners (pixels): triangles
+  Buffer grid_shape_;                      // tiles_x + 1 and the tile size: points
+  Buffer full_screen_indices_;             // two triangles over the whole frame (naive and dynamic passes)
   std::vector<UniquePipeline> pipelines_;  // per draw class; empty for pruned raw IDs
   UniquePipeline naive_pipeline_, dynamic_pipeline_;
   VkExtent2D extent_{};    // the frame

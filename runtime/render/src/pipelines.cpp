@@ -22,14 +22,14 @@ UniqueShaderModule create_shader_module(const Context& context, std::span<const 
   return owned;
 }
 
-UniqueDescriptorSetLayout create_descriptor_set_layout(
-    const Context& context, std::span<const VkDescriptorSetLayoutBinding> bindings, std::string_view name) {
+UniqueDescriptorSetLayout create_descriptor_set_layout(const Context& context,
+                                                       std::span<const VkDescriptorSetLayoutBinding> bindings,
+                                                       std::string_view name) {
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = static_cast<std::uint32_t>(bindings.size());
   info.pBindings = bindings.data();
   VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-  check(vkCreateDescriptorSetLayout(context.device(), &info, nullptr, &layout),
-        "vkCreateDescriptorSetLayout", name);
+  check(vkCreateDescriptorSetLayout(context.device(), &info, nullptr, &layout), "vkCreateDescriptorSetLayout", name);
   UniqueDescriptorSetLayout owned(layout, {context.device()});
   context.name_object(layout, name);
   return owned;
@@ -50,8 +50,7 @@ std::vector<VkDescriptorSetLayoutBinding> layout_bindings_for_set(
   return out;
 }
 
-UniquePipelineLayout create_pipeline_layout(const Context& context,
-                                            std::span<const VkDescriptorSetLayout> set_layouts,
+UniquePipelineLayout create_pipeline_layout(const Context& context, std::span<const VkDescriptorSetLayout> set_layouts,
                                             std::span<const VkPushConstantRange> push_constants,
                                             std::string_view name) {
   VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -106,13 +105,23 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
   UniqueShaderModule fragment;
   SpecConstants fragment_constants = desc.fragment_constants;  // info() points into it
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT,
-               vertex.get(), "main", nullptr};
+  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+               nullptr,
+               0,
+               VK_SHADER_STAGE_VERTEX_BIT,
+               vertex.get(),
+               "main",
+               nullptr};
   std::uint32_t stage_count = 1;
   if (!desc.fragment_spirv.empty()) {
     fragment = create_shader_module(context, desc.fragment_spirv, desc.name + " (fragment)");
-    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT,
-                 fragment.get(), "main", fragment_constants.info()};
+    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                 nullptr,
+                 0,
+                 VK_SHADER_STAGE_FRAGMENT_BIT,
+                 fragment.get(),
+                 "main",
+                 fragment_constants.info()};
     stage_count = 2;
   }
 
@@ -148,8 +157,8 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
 
   std::vector<VkPipelineColorBlendAttachmentState> blend(desc.color_attachments);
   for (VkPipelineColorBlendAttachmentState& b : blend) {
-    b.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                       VK_COLOR_COMPONENT_A_BIT;
+    b.colorWriteMask =
+        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   }
   VkPipelineColorBlendStateCreateInfo color_blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   color_blend.attachmentCount = desc.color_attachments;

@@ -23,18 +23,17 @@ class Context;
 UniqueShaderModule create_shader_module(const Context& context, std::span<const std::uint32_t> spirv,
                                         std::string_view name);
 
-UniqueDescriptorSetLayout create_descriptor_set_layout(
-    const Context& context, std::span<const VkDescriptorSetLayoutBinding> bindings, std::string_view name);
+UniqueDescriptorSetLayout create_descriptor_set_layout(const Context& context,
+                                                       std::span<const VkDescriptorSetLayoutBinding> bindings,
+                                                       std::string_view name);
 
 // The bindings of descriptor set `set` among `bindings` (a registry's reflection), as Vulkan
 // layout bindings: the registry is the one source of the lighting interface.
 std::vector<VkDescriptorSetLayoutBinding> layout_bindings_for_set(
     std::span<const shadergen::DescriptorBinding> bindings, std::uint32_t set);
 
-UniquePipelineLayout create_pipeline_layout(const Context& context,
-                                            std::span<const VkDescriptorSetLayout> set_layouts,
-                                            std::span<const VkPushConstantRange> push_constants,
-                                            std::string_view name);
+UniquePipelineLayout create_pipeline_layout(const Context& context, std::span<const VkDescriptorSetLayout> set_layouts,
+                                            std::span<const VkPushConstantRange> push_constants, std::string_view name);
 
 // 32-bit specialization constants, collected by constant ID.
 class SpecConstants {
@@ -50,15 +49,14 @@ class SpecConstants {
 };
 
 UniquePipeline create_compute_pipeline(const Context& context, VkPipelineLayout layout,
-                                       std::span<const std::uint32_t> spirv, SpecConstants spec,
-                                       std::string_view name);
+                                       std::span<const std::uint32_t> spirv, SpecConstants spec, std::string_view name);
 
 struct GraphicsPipelineDesc {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass render_pass = VK_NULL_HANDLE;
   std::span<const std::uint32_t> vertex_spirv;
   std::span<const std::uint32_t> fragment_spirv;  // empty: depth-only pipeline
-  SpecConstants fragment_constants;                 // specialisation of the fragment stage
+  SpecConstants fragment_constants;               // specialisation of the fragment stage
   std::vector<VkVertexInputBindingDescription> vertex_bindings;
   std::vector<VkVertexInputAttributeDescription> vertex_attributes;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;

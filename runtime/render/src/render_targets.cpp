@@ -1,8 +1,8 @@
 #include "render_targets.h"
 
+#include "pipelines.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
-#include "pipelines.h"
 
 #include <array>
 #include <string>
@@ -31,8 +31,8 @@ VkAttachmentDescription attachment(VkFormat format, VkSampleCountFlagBits sample
 // `reader_access`; the first dependency orders this frame's writes after the previous frame's
 // reads of the same images (write-after-read), the second makes the writes visible.
 UniqueRenderPass create_render_pass(const Context& context, std::span<const VkAttachmentDescription> attachments,
-                                    bool has_depth, VkPipelineStageFlags reader_stages,
-                                    VkAccessFlags reader_access, std::string_view name) {
+                                    bool has_depth, VkPipelineStageFlags reader_stages, VkAccessFlags reader_access,
+                                    std::string_view name) {
   std::vector<VkAttachmentReference> colour;
   const auto colour_count = static_cast<std::uint32_t>(attachments.size() - (has_depth ? 1 : 0));
   for (std::uint32_t i = 0; i < colour_count; ++i) {
@@ -69,9 +69,8 @@ UniqueRenderPass create_render_pass(const Context& context, std::span<const VkAt
   return owned;
 }
 
-UniqueFramebuffer create_framebuffer(const Context& context, VkRenderPass pass,
-                                     std::span<const VkImageView> views, VkExtent2D extent,
-                                     std::string_view name) {
+UniqueFramebuffer create_framebuffer(const Context& context, VkRenderPass pass, std::span<const VkImageView> views,
+                                     VkExtent2D extent, std::string_view name) {
   VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
   info.renderPass = pass;
   info.attachmentCount = static_cast<std::uint32_t>(views.size());
@@ -88,8 +87,8 @@ UniqueFramebuffer create_framebuffer(const Context& context, VkRenderPass pass,
 
 Image gbuffer_image(const Context& context, VkExtent2D extent, VkFormat format, VkSampleCountFlagBits samples,
                     std::string name) {
-  return Image(context, {extent, format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                         samples, VK_IMAGE_ASPECT_COLOR_BIT, std::move(name)});
+  return Image(context, {extent, format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, samples,
+                         VK_IMAGE_ASPECT_COLOR_BIT, std::move(name)});
 }
 
 }  // namespace
@@ -100,12 +99,16 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   rt0_ = gbuffer_image(context, extent, kGBufferRt0Format, samples, "G-buffer RT0 (albedo, specular)");
   rt1_ = gbuffer_image(context, extent, kGBufferRt1Format, samples, "G-buffer RT1 (normal, motion ID)");
   rt2_ = gbuffer_image(context, extent, kGBufferRt2Format, samples, "G-buffer RT2 (prelit, power)");
-  depth_ = Image(context, {extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                           samples, VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth"});
-  shadow_map_ = Image(context, {{shadow_map_size, shadow_map_size}, kDepthFormat,
+  depth_ =
+      Image(context, {extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                      samples, VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth"});
+  shadow_map_ = Image(context, {{shadow_map_size, shadow_map_size},
+                                kDepthFormat,
                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_DEPTH_BIT, "sun shadow map"});
+                                VK_SAMPLE_COUNT_1_BIT,
+                                VK_IMAGE_ASPECT_DEPTH_BIT,
+                                "sun shadow map"});
   const VkImageUsageFlags light_usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   auto light_target = [&](const char* name) {
     return Image(context, {extent, kLightFormat, light_usage, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT, name});
@@ -118,13 +121,13 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   const std::array<VkAttachmentDescription, 4> gbuffer_attachments{
       attachment(kGBufferRt0Format, samples, read_only), attachment(kGBufferRt1Format, samples, read_only),
       attachment(kGBufferRt2Format, samples, read_only), attachment(kDepthFormat, samples, read_only)};
-  gbuffer_pass_ = create_render_pass(context, gbuffer_attachments, true, kShaderReadStages,
-                                     VK_ACCESS_SHADER_READ_BIT, "G-buffer pass");
+  gbuffer_pass_ = create_render_pass(context, gbuffer_attachments, true, kShaderReadStages, VK_ACCESS_SHADER_READ_BIT,
+                                     "G-buffer pass");
   const std::array<VkAttachmentDescription, 1> shadow_attachments{
       attachment(kDepthFormat, VK_SAMPLE_COUNT_1_BIT, read_only)};
-  shadow_pass_ = create_render_pass(context, shadow_attachments, true,
-                                    kShaderReadStages | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT, "shadow map pass");
+  shadow_pass_ =
+      create_render_pass(context, shadow_attachments, true, kShaderReadStages | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT, "shadow map pass");
   const std::array<VkAttachmentDescription, 1> light_attachments{
       attachment(kLightFormat, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL)};
   light_pass_ = create_render_pass(context, light_attachments, false, VK_PIPELINE_STAGE_TRANSFER_BIT,

@@ -3,8 +3,8 @@
 // the multisampled G-buffer (Table 4.1), the sun shadow map and the two light targets
 // (classified, naive and dynamic), which the frame reads back for comparison and the PNGs.
 
-#include "tilelight/vulkan/image.h"
 #include "pipelines.h"
+#include "tilelight/vulkan/image.h"
 #include "tilelight/vulkan/vk_handles.h"
 
 #include <vulkan/vulkan.h>

@@ -1,11 +1,11 @@
 #include "scene_passes.h"
 
-#include "shader_registry.h"
 #include "descriptors.h"
+#include "pipelines.h"
+#include "shader_registry.h"
+#include "tilelight/scene/uniform_blocks.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
-#include "pipelines.h"
-#include "tilelight/scene/uniform_blocks.h"
 
 #include <split_second_shaders.h>
 
@@ -26,9 +26,8 @@ std::vector<VkVertexInputBindingDescription> scene_bindings() {
 }
 
 std::vector<VkVertexInputAttributeDescription> scene_attributes() {
-  std::vector<VkVertexInputAttributeDescription> a{
-      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
-      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)}};
+  std::vector<VkVertexInputAttributeDescription> a{{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
+                                                   {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)}};
   for (std::uint32_t column = 0; column < 4; ++column) {
     a.push_back({2 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                  static_cast<std::uint32_t>(offsetof(Instance, model) + column * sizeof(glm::vec4))});
@@ -40,8 +39,8 @@ std::vector<VkVertexInputAttributeDescription> scene_attributes() {
 
 }  // namespace
 
-ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camera& camera,
-                         const RenderTargets& targets, VkDescriptorPool pool)
+ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
+                         VkDescriptorPool pool)
     : batches_(scene.batches) {
   for (const Mesh& mesh : scene.meshes) {
     MeshBuffers buffers;

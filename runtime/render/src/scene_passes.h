@@ -3,8 +3,8 @@
 // Meshes and instances are uploaded once; the camera is fixed per renderer.
 
 #include "render_targets.h"
-#include "tilelight/vulkan/buffer.h"
 #include "tilelight/scene/scene.h"
+#include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
 
 #include <vector>

@@ -22,8 +22,8 @@ const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples) {
 std::span<const std::uint32_t> companion_spirv(const shadergen::Registry& registry, std::string_view name) {
   const shadergen::CompanionShader* shader = registry.companion(name);
   if (shader == nullptr) {
-    throw Error("the shader registry " + std::string(registry.name) + " has no companion shader '" +
-                std::string(name) + "'");
+    throw Error("the shader registry " + std::string(registry.name) + " has no companion shader '" + std::string(name) +
+                "'");
   }
   return shader->shader.spirv;
 }

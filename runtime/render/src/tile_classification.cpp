@@ -1,11 +1,11 @@
 #include "tile_classification.h"
 
-#include "shader_registry.h"
 #include "descriptors.h"
+#include "pipelines.h"
+#include "shader_registry.h"
 #include "tilelight/vulkan/barriers.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
-#include "pipelines.h"
 
 #include <split_second_shaders.h>
 
@@ -35,15 +35,15 @@ SpecConstants classification_constants(std::uint32_t tile_size, std::uint32_t sa
 TileClassification::TileClassification(const Context& context, const TileGrid& grid, const RenderTargets& targets,
                                        const LightingInterface& lighting, VkDescriptorPool pool)
     : lighting_(&lighting), grid_(grid) {
-  ids_ = Buffer(context, {grid.id_bytes(),
-                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+  ids_ = Buffer(context, {grid.id_bytes(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                           MemoryUse::DeviceLocal, "tile IDs (blocked)"});
-  host_ids_ = Buffer(context, {grid.id_bytes(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback,
-                               "tile IDs (host copy)"});
+  host_ids_ = Buffer(
+      context, {grid.id_bytes(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback, "tile IDs (host copy)"});
   ids_set_ = allocate_descriptor_set(context, pool, lighting.storage_set_layout(), "tile ID output set");
   write_buffer_descriptor(context, ids_set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ids_.handle());
-  classify_ = create_compute_pipeline(context, lighting.compute_layout(), companion_spirv(lighting.shaders(), "classify_tiles"),
-                                      classification_constants(grid.tile_size, static_cast<std::uint32_t>(targets.samples())), "tile classification");
+  classify_ = create_compute_pipeline(
+      context, lighting.compute_layout(), companion_spirv(lighting.shaders(), "classify_tiles"),
+      classification_constants(grid.tile_size, static_cast<std::uint32_t>(targets.samples())), "tile classification");
 }
 
 void TileClassification::record(VkCommandBuffer cmd) const {
@@ -72,17 +72,16 @@ std::span<const std::uint8_t> TileClassification::host_ids() const {
   return {reinterpret_cast<const std::uint8_t*>(bytes.data()), grid_.id_bytes()};
 }
 
-void TileClassification::enable_gbuffer_dump(const Context& context, VkDescriptorPool pool,
-                                             std::uint32_t samples) {
+void TileClassification::enable_gbuffer_dump(const Context& context, VkDescriptorPool pool, std::uint32_t samples) {
   if (dump_pipeline_) return;
   // Large (64 bytes per sample): created only for the tests and tools that ask for it.
   const VkDeviceSize values = static_cast<VkDeviceSize>(grid_.width) * grid_.height * samples * 16;
-  dump_ = Buffer(context, {values * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostReadback,
-                           "G-buffer dump"});
+  dump_ = Buffer(
+      context, {values * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostReadback, "G-buffer dump"});
   dump_set_ = allocate_descriptor_set(context, pool, lighting_->storage_set_layout(), "G-buffer dump set");
   write_buffer_descriptor(context, dump_set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, dump_.handle());
-  dump_pipeline_ = create_compute_pipeline(context, lighting_->compute_layout(), companion_spirv(lighting_->shaders(), "gbuffer_dump"), {},
-                                           "G-buffer dump");
+  dump_pipeline_ = create_compute_pipeline(context, lighting_->compute_layout(),
+                                           companion_spirv(lighting_->shaders(), "gbuffer_dump"), {}, "G-buffer dump");
 }
 
 void TileClassification::record_gbuffer_dump(VkCommandBuffer cmd) const {
@@ -96,8 +95,6 @@ void TileClassification::record_gbuffer_dump(VkCommandBuffer cmd) const {
                  {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
 }
 
-std::span<const float> TileClassification::host_gbuffer_dump() const {
-  return dump_.as<const float>();
-}
+std::span<const float> TileClassification::host_gbuffer_dump() const { return dump_.as<const float>(); }
 
 }  // namespace tilelight

@@ -6,8 +6,8 @@
 
 #include "lighting_interface.h"
 #include "render_targets.h"
-#include "tilelight/vulkan/buffer.h"
 #include "tilelight/tiles/tile_grid.h"
+#include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
 
 #include <cstdint>

@@ -1,19 +1,19 @@
 #include "tilelight/render/tile_renderer.h"
 
+#include "descriptors.h"
 #include "gbuffer_upload.h"
 #include "gpu_index_build.h"
 #include "lighting_interface.h"
 #include "lighting_passes.h"
 #include "render_targets.h"
 #include "scene_passes.h"
-#include "descriptors.h"
 #include "tile_classification.h"
+#include "tilelight/tiles/tile_index_builder.h"
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/commands.h"
 #include "tilelight/vulkan/error.h"
 #include "tilelight/vulkan/submit.h"
 #include "tilelight/vulkan/sync.h"
-#include "tilelight/tiles/tile_index_builder.h"
 #include "tilelight/vulkan/timestamps.h"
 
 #include <split_second_shaders.h>
@@ -140,8 +140,8 @@ struct TileRenderer::Impl {
         pool(ctx, "tilelight frame") {
     const Camera& camera = scene.camera(opts.camera);
     descriptor_pool = create_descriptor_pool(ctx, 16, "tilelight descriptors");
-    targets = std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples,
-                                              scene.sun.shadow_map_size);
+    targets =
+        std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples, scene.sun.shadow_map_size);
     scene_passes = std::make_unique<ScenePasses>(ctx, scene, camera, *targets, descriptor_pool.get());
     lighting = std::make_unique<LightingInterface>(ctx, make_lighting_params(scene, camera, opts.width, opts.height),
                                                    *targets, descriptor_pool.get());
@@ -161,8 +161,9 @@ struct TileRenderer::Impl {
                                MemoryUse::HostUpload, "indirect draws (host-patched)"});
       clear_draws();
     } else {
-      gpu_build = std::make_unique<GpuIndexBuild>(ctx, lighting->shaders(), grid, class_for_raw, pruned, classes, opts.coalesce,
-                                                  primitive, classification->device_ids(), descriptor_pool.get());
+      gpu_build =
+          std::make_unique<GpuIndexBuild>(ctx, lighting->shaders(), grid, class_for_raw, pruned, classes, opts.coalesce,
+                                          primitive, classification->device_ids(), descriptor_pool.get());
     }
 
     frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
@@ -231,9 +232,8 @@ struct TileRenderer::Impl {
   FrameStats build_and_patch(std::uint64_t classified_value, std::uint64_t patched_value, double& build_ms) {
     timeline.wait(classified_value, "classification", options.timeout);
     const auto start = std::chrono::steady_clock::now();
-    const IndexBuildStats built =
-        cpu_builder->build(classification->host_ids(), options.coalesce, cpu_indices.as<std::uint32_t>(),
-                           cpu_draws.as<DrawRecord>());
+    const IndexBuildStats built = cpu_builder->build(classification->host_ids(), options.coalesce,
+                                                     cpu_indices.as<std::uint32_t>(), cpu_draws.as<DrawRecord>());
     build_ms = milliseconds_since(start);
     if (before_host_signal) before_host_signal();
     timeline.signal(patched_value);
@@ -362,7 +362,8 @@ RgbaImage TileRenderer::read_naive() const {
 }
 
 RgbaImage TileRenderer::read_dynamic() const {
-  if (!impl_->runs_dynamic()) throw Error("read_dynamic: this renderer does not run the dynamic pass (baselines naive)");
+  if (!impl_->runs_dynamic())
+    throw Error("read_dynamic: this renderer does not run the dynamic pass (baselines naive)");
   return read_image_rgba(impl_->context, impl_->pool, impl_->targets->dynamic(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                          impl_->options.timeout);
 }
@@ -378,8 +379,8 @@ GBufferSamples TileRenderer::read_gbuffer() {
   out.height = impl.grid.height;
   out.samples = msaa_samples();
   const std::span<const float> values = impl.classification->host_gbuffer_dump();
-  out.values.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(
-                                                       static_cast<std::size_t>(out.width) * out.height * out.samples * 16));
+  out.values.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(out.width) *
+                                                                                 out.height * out.samples * 16));
   return out;
 }
 
@@ -393,9 +394,8 @@ std::vector<float> TileRenderer::read_shadow_map() const {
 }
 
 void TileRenderer::set_gbuffer_override(const GBufferSamples& samples) {
-  impl_->gbuffer_upload = std::make_unique<GBufferUpload>(impl_->context, *impl_->targets, samples,
-                                                          impl_->lighting->params().sun_direction,
-                                                          impl_->descriptor_pool.get());
+  impl_->gbuffer_upload = std::make_unique<GBufferUpload>(
+      impl_->context, *impl_->targets, samples, impl_->lighting->params().sun_direction, impl_->descriptor_pool.get());
 }
 
 void TileRenderer::set_before_host_signal(std::function<void()> hook) { impl_->before_host_signal = std::move(hook); }

@@ -67,8 +67,7 @@ Mesh make_ground(float half_size) {
 struct InstanceMaker {
   std::uint32_t next_motion_id = 1;
 
-  Instance make(const glm::mat4& model, glm::vec3 albedo, float spec_amount, float spec_power,
-                float checker) {
+  Instance make(const glm::mat4& model, glm::vec3 albedo, float spec_amount, float spec_power, float checker) {
     const auto motion = static_cast<float>(next_motion_id);
     next_motion_id = next_motion_id % 127u + 1u;  // 1..127; 0 means sky
     return Instance{model, glm::vec4(albedo, spec_amount), glm::vec4(spec_power, motion, checker, 0.0f)};
@@ -90,14 +89,14 @@ void add_boxes(Scene& scene, InstanceMaker& maker, std::mt19937& rng) {
       const glm::vec3 base{static_cast<float>(column) * 7.0f + (unit(rng) - 0.5f) * 3.0f, 0.0f,
                            -8.0f - static_cast<float>(row) * 7.0f + (unit(rng) - 0.5f) * 3.0f};
       const bool pillar = unit(rng) < 0.3f;
-      const glm::vec3 size = pillar ? glm::vec3(0.8f, 6.0f + unit(rng) * 8.0f, 0.8f)
-                                    : glm::vec3(1.0f + unit(rng) * 2.5f, 0.8f + unit(rng) * 3.5f,
-                                                1.0f + unit(rng) * 2.5f);
-      const glm::vec3 albedo = pillar ? glm::vec3(0.75f, 0.72f, 0.65f)
-                                      : glm::vec3(0.35f + 0.5f * unit(rng), 0.3f + 0.3f * unit(rng),
-                                                  0.25f + 0.3f * unit(rng));
-      scene.instances.push_back(maker.make(box_transform(base, size, unit(rng) * kPi), albedo,
-                                           pillar ? 0.2f : 0.5f, pillar ? 8.0f : 32.0f, 0.0f));
+      const glm::vec3 size = pillar
+                                 ? glm::vec3(0.8f, 6.0f + unit(rng) * 8.0f, 0.8f)
+                                 : glm::vec3(1.0f + unit(rng) * 2.5f, 0.8f + unit(rng) * 3.5f, 1.0f + unit(rng) * 2.5f);
+      const glm::vec3 albedo =
+          pillar ? glm::vec3(0.75f, 0.72f, 0.65f)
+                 : glm::vec3(0.35f + 0.5f * unit(rng), 0.3f + 0.3f * unit(rng), 0.25f + 0.3f * unit(rng));
+      scene.instances.push_back(maker.make(box_transform(base, size, unit(rng) * kPi), albedo, pillar ? 0.2f : 0.5f,
+                                           pillar ? 8.0f : 32.0f, 0.0f));
     }
   }
   // Distant buildings, beyond the shadow-fade and scattering start distances.
@@ -106,19 +105,19 @@ void add_boxes(Scene& scene, InstanceMaker& maker, std::mt19937& rng) {
     const float distance = 130.0f + unit(rng) * 120.0f;
     const glm::vec3 base{std::sin(angle) * distance, 0.0f, -std::cos(angle) * distance};
     const glm::vec3 size{8.0f + unit(rng) * 14.0f, 12.0f + unit(rng) * 30.0f, 8.0f + unit(rng) * 14.0f};
-    scene.instances.push_back(maker.make(box_transform(base, size, unit(rng) * kPi),
-                                         glm::vec3(0.55f, 0.55f, 0.6f), 0.3f, 16.0f, 4.0f));
+    scene.instances.push_back(
+        maker.make(box_transform(base, size, unit(rng) * kPi), glm::vec3(0.55f, 0.55f, 0.6f), 0.3f, 16.0f, 4.0f));
   }
   // The canopy: a wide slab on four legs whose shadow covers a large patch of ground, seen
   // by the "shadow" camera.
   const glm::vec3 canopy{140.0f, 30.0f, 40.0f};
-  scene.instances.push_back(maker.make(box_transform(canopy, {60.0f, 2.0f, 60.0f}, 0.0f),
-                                       glm::vec3(0.4f, 0.4f, 0.45f), 0.1f, 4.0f, 0.0f));
+  scene.instances.push_back(
+      maker.make(box_transform(canopy, {60.0f, 2.0f, 60.0f}, 0.0f), glm::vec3(0.4f, 0.4f, 0.45f), 0.1f, 4.0f, 0.0f));
   for (float dx : {-28.0f, 28.0f}) {
     for (float dz : {-28.0f, 28.0f}) {
-      scene.instances.push_back(maker.make(
-          box_transform({canopy.x + dx, 0.0f, canopy.z + dz}, {1.5f, 30.0f, 1.5f}, 0.0f),
-          glm::vec3(0.4f, 0.4f, 0.45f), 0.1f, 4.0f, 0.0f));
+      scene.instances.push_back(
+          maker.make(box_transform({canopy.x + dx, 0.0f, canopy.z + dz}, {1.5f, 30.0f, 1.5f}, 0.0f),
+                     glm::vec3(0.4f, 0.4f, 0.45f), 0.1f, 4.0f, 0.0f));
     }
   }
 }
@@ -157,6 +156,8 @@ SunAndAtmosphere demo_sun() {
 
 std::vector<Camera> demo_cameras(const SunAndAtmosphere& sun) {
   std::vector<Camera> cameras;
+  // One camera per entry, name and description first.
+  // clang-format off
   cameras.push_back({"default", "over the boxes towards the distant buildings: all seven properties",
                      {0.0f, 7.0f, 22.0f}, {0.0f, 1.5f, -40.0f}, {0, 1, 0}, 60.0f, {0.0f, 0.0f, -30.0f}});
   // Far from every object, looking straight up: nothing but sky.
@@ -180,6 +181,7 @@ std::vector<Camera> demo_cameras(const SunAndAtmosphere& sun) {
   // canopy's shadow but for the far edge.
   cameras.push_back({"closeup", "close-up of a canopy leg in the canopy's shadow: no sky, mostly shadowed",
                      {163.0f, 3.0f, 19.0f}, {168.0f, -0.8f, 12.0f}, {0, 1, 0}, 40.0f, {166.0f, 0.0f, 18.0f}});
+  // clang-format on
   return cameras;
 }
 

@@ -23,8 +23,8 @@ LightingParamsBlock make_lighting_params(const Scene& scene, const Camera& camer
   block.sun_direction = glm::vec4(sun.sun_direction, 0.0f);
   block.sun_color = glm::vec4(sun.sun_color, 1.0f);
   block.fog_color = glm::vec4(sun.fog_color, sun.fog_density);
-  block.distances = glm::vec4(sun.shadow_fade_start, 1.0f / sun.shadow_fade_length, sun.scattering_start,
-                              sun.shadow_depth_bias);
+  block.distances =
+      glm::vec4(sun.shadow_fade_start, 1.0f / sun.shadow_fade_length, sun.scattering_start, sun.shadow_depth_bias);
   const auto map = static_cast<float>(sun.shadow_map_size);
   block.shadow_map_size = glm::vec4(map, map, 1.0f / map, 1.0f / map);
   block.viewport = viewport_vector(width, height);

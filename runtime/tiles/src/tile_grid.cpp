@@ -46,12 +46,12 @@ TileGrid TileGrid::make(std::uint32_t width, std::uint32_t height, std::uint32_t
   const std::uint64_t padded = std::uint64_t{grid.blocks_x} * grid.blocks_y * kBlockTileCount;
   const std::uint64_t corners = std::uint64_t{grid.tiles_x + 1} * (grid.tiles_y + 1);
   if (tiles * 6 > kLimit || padded > kLimit) {
-    throw Error(fmt::format("TileGrid: frame {}x{} at tile size {} has too many tiles ({})", width,
-                            height, tile_size, tiles));
+    throw Error(
+        fmt::format("TileGrid: frame {}x{} at tile size {} has too many tiles ({})", width, height, tile_size, tiles));
   }
   if (corners > kPointCornerMask) {
-    throw Error(fmt::format("TileGrid: frame {}x{} at tile size {} has too many tile corners ({}, at most {})",
-                            width, height, tile_size, corners, kPointCornerMask));
+    throw Error(fmt::format("TileGrid: frame {}x{} at tile size {} has too many tile corners ({}, at most {})", width,
+                            height, tile_size, corners, kPointCornerMask));
   }
   return grid;
 }

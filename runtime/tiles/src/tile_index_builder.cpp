@@ -35,8 +35,8 @@ struct TileIndexBuilder::Counts {
 
   // Appends one rectangle to `out` and counts it in `lane` (< kLanes; neighbours should differ);
   // returns the number of rectangles written (1).
-  std::uint32_t emit(Rect* out, std::uint32_t lane, std::uint32_t v00, std::uint8_t id,
-                     std::uint32_t w, std::uint32_t h) {
+  std::uint32_t emit(Rect* out, std::uint32_t lane, std::uint32_t v00, std::uint8_t id, std::uint32_t w,
+                     std::uint32_t h) {
     *out = Rect{v00, id, static_cast<std::uint8_t>(w), static_cast<std::uint8_t>(h)};
     ++rects[lane][id];
     tiles[lane][id] += w * h;
@@ -55,26 +55,23 @@ struct TileIndexBuilder::Counts {
 };
 
 TileIndexBuilder::TileIndexBuilder(const TileGrid& grid, std::span<const std::uint8_t> lut,
-                                   std::span<const bool> pruned, std::uint32_t class_count,
-                                   TilePrimitive primitive)
+                                   std::span<const bool> pruned, std::uint32_t class_count, TilePrimitive primitive)
     : grid_(grid), class_count_(class_count), primitive_(primitive) {
   if (class_count == 0 || class_count > kMaxDrawClasses) {
-    throw Error(fmt::format("TileIndexBuilder: the class count must be 1..{} (got {})", kMaxDrawClasses,
-                            class_count));
+    throw Error(fmt::format("TileIndexBuilder: the class count must be 1..{} (got {})", kMaxDrawClasses, class_count));
   }
   if (lut.size() != kRawClassCount) {
-    throw Error(fmt::format("TileIndexBuilder: the LUT must have {} entries (got {})",
-                            kRawClassCount, lut.size()));
+    throw Error(fmt::format("TileIndexBuilder: the LUT must have {} entries (got {})", kRawClassCount, lut.size()));
   }
   if (!pruned.empty() && pruned.size() != kRawClassCount) {
-    throw Error(fmt::format("TileIndexBuilder: the pruned set must have {} entries or none (got {})",
-                            kRawClassCount, pruned.size()));
+    throw Error(fmt::format("TileIndexBuilder: the pruned set must have {} entries or none (got {})", kRawClassCount,
+                            pruned.size()));
   }
   map_.fill(kInvalid);
   for (std::uint32_t raw = 0; raw < kRawClassCount; ++raw) {
     if (lut[raw] >= class_count_) {
-      throw Error(fmt::format("TileIndexBuilder: LUT entry {} is {}, out of range (0..{})", raw,
-                              lut[raw], class_count_ - 1));
+      throw Error(
+          fmt::format("TileIndexBuilder: LUT entry {} is {}, out of range (0..{})", raw, lut[raw], class_count_ - 1));
     }
     const bool impossible = !pruned.empty() && pruned[raw];
     if (!impossible) map_[raw] = lut[raw];
@@ -93,8 +90,7 @@ void TileIndexBuilder::throw_bad_tile(const std::uint8_t* raw, std::uint32_t bx,
       const std::uint32_t tx = bx * kBlockTiles + col;
       const std::uint32_t ty = by * kBlockTiles + row;
       if (value >= kRawClassCount) {
-        throw Error(fmt::format("tile ({}, {}): raw ID {} is out of range (0..{})", tx, ty, value,
-                                kRawClassCount - 1));
+        throw Error(fmt::format("tile ({}, {}): raw ID {} is out of range (0..{})", tx, ty, value, kRawClassCount - 1));
       }
       throw Error(fmt::format("tile ({}, {}): raw ID {} is impossible (a pruned class)", tx, ty, value));
     }
@@ -102,8 +98,8 @@ void TileIndexBuilder::throw_bad_tile(const std::uint8_t* raw, std::uint32_t bx,
   throw Error(fmt::format("block ({}, {}): invalid raw ID not found (internal error)", bx, by));
 }
 
-std::uint32_t TileIndexBuilder::full_block(const std::uint8_t* raw, std::uint32_t bx, std::uint32_t by,
-                                           bool coalesce, Rect* out, Counts& counts) const {
+std::uint32_t TileIndexBuilder::full_block(const std::uint8_t* raw, std::uint32_t bx, std::uint32_t by, bool coalesce,
+                                           Rect* out, Counts& counts) const {
   const std::uint32_t stride = grid_.tiles_x + 1;
   const std::uint32_t v00 = by * kBlockTiles * stride + bx * kBlockTiles;
   std::uint32_t rows[kBlockTiles];
@@ -154,9 +150,8 @@ std::uint32_t TileIndexBuilder::full_block(const std::uint8_t* raw, std::uint32_
   return n;
 }
 
-std::uint32_t TileIndexBuilder::partial_block(const std::uint8_t* raw, std::uint32_t bx,
-                                              std::uint32_t by, bool coalesce, Rect* out,
-                                              Counts& counts) const {
+std::uint32_t TileIndexBuilder::partial_block(const std::uint8_t* raw, std::uint32_t bx, std::uint32_t by,
+                                              bool coalesce, Rect* out, Counts& counts) const {
   // Blocks on the right/bottom edge: only the w x h tiles inside the grid count; the padding
   // slots are never read.
   const std::uint32_t w = std::min(kBlockTiles, grid_.tiles_x - bx * kBlockTiles);
@@ -210,8 +205,7 @@ std::uint32_t TileIndexBuilder::find_rects(const std::uint8_t* ids, bool coalesc
 
 void TileIndexBuilder::write_indices(std::uint32_t rect_count,
                                      const std::array<std::uint32_t, kMaxDrawClasses>& primitives,
-                                     std::span<std::uint32_t> indices,
-                                     std::span<DrawRecord> draws) const {
+                                     std::span<std::uint32_t> indices, std::span<DrawRecord> draws) const {
   // Pass 2: exclusive prefix sum of the per-ID index counts gives each ID's first index.
   const std::uint32_t per_primitive = indices_per_primitive(primitive_);
   std::array<std::uint32_t, kMaxDrawClasses> cursor{};
@@ -267,19 +261,17 @@ std::uint32_t* TileIndexBuilder::write_points(const Rect& r, std::uint32_t* dst)
 }
 
 IndexBuildStats TileIndexBuilder::build(std::span<const std::uint8_t> blocked_raw_ids, bool coalesce,
-                                        std::span<std::uint32_t> indices,
-                                        std::span<DrawRecord> draws) {
+                                        std::span<std::uint32_t> indices, std::span<DrawRecord> draws) {
   if (blocked_raw_ids.size() != grid_.id_bytes()) {
-    throw Error(fmt::format("TileIndexBuilder::build: expected {} blocked raw ID bytes, got {}",
-                            grid_.id_bytes(), blocked_raw_ids.size()));
+    throw Error(fmt::format("TileIndexBuilder::build: expected {} blocked raw ID bytes, got {}", grid_.id_bytes(),
+                            blocked_raw_ids.size()));
   }
   if (indices.size() < grid_.max_index_count()) {
-    throw Error(fmt::format("TileIndexBuilder::build: the index buffer holds {} indices, needs {}",
-                            indices.size(), grid_.max_index_count()));
+    throw Error(fmt::format("TileIndexBuilder::build: the index buffer holds {} indices, needs {}", indices.size(),
+                            grid_.max_index_count()));
   }
   if (draws.size() != class_count_) {
-    throw Error(fmt::format("TileIndexBuilder::build: expected {} draw records, got {}",
-                            class_count_, draws.size()));
+    throw Error(fmt::format("TileIndexBuilder::build: expected {} draw records, got {}", class_count_, draws.size()));
   }
   Counts counts;
   counts.primitive = primitive_;

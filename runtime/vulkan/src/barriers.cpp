@@ -2,8 +2,8 @@
 
 namespace tilelight {
 
-void image_barrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range,
-                   VkImageLayout old_layout, VkImageLayout new_layout, Scope src, Scope dst) {
+void image_barrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, VkImageLayout old_layout,
+                   VkImageLayout new_layout, Scope src, Scope dst) {
   VkImageMemoryBarrier barrier{};
   barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
   barrier.srcAccessMask = src.access;

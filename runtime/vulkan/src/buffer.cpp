@@ -27,13 +27,11 @@ Buffer::Buffer(const Context& context, BufferDesc desc) : desc_(std::move(desc))
   VkMemoryRequirements requirements{};
   vkGetBufferMemoryRequirements(context.device(), buffer, &requirements);
   memory_ = allocate_memory(context, requirements, desc_.memory, desc_.name);
-  check(vkBindBufferMemory(context.device(), buffer, memory_.get(), 0), "vkBindBufferMemory",
-        desc_.name);
+  check(vkBindBufferMemory(context.device(), buffer, memory_.get(), 0), "vkBindBufferMemory", desc_.name);
 
   if (is_host_visible(desc_.memory)) {
     void* mapped = nullptr;
-    check(vkMapMemory(context.device(), memory_.get(), 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory",
-          desc_.name);
+    check(vkMapMemory(context.device(), memory_.get(), 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory", desc_.name);
     mapped_ = static_cast<std::byte*>(mapped);
   }
 }
@@ -70,8 +68,8 @@ void Buffer::check_range(VkDeviceSize offset, std::size_t length, const char* wh
     throw Error(fmt::format("cannot {} buffer {}: it is not host-visible", what, desc_.name));
   }
   if (offset > desc_.size || length > desc_.size - offset) {
-    throw Error(fmt::format("cannot {} {} bytes at offset {} of buffer {} ({} bytes)", what, length,
-                            offset, desc_.name, desc_.size));
+    throw Error(fmt::format("cannot {} {} bytes at offset {} of buffer {} ({} bytes)", what, length, offset, desc_.name,
+                            desc_.size));
   }
 }
 

@@ -26,8 +26,7 @@ UniqueCommandBuffer CommandPool::allocate(std::string_view name) const {
   info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   info.commandBufferCount = 1;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
-  check(vkAllocateCommandBuffers(context_->device(), &info, &cmd), "vkAllocateCommandBuffers",
-        name);
+  check(vkAllocateCommandBuffers(context_->device(), &info, &cmd), "vkAllocateCommandBuffers", name);
   UniqueCommandBuffer owned(cmd, {context_->device(), pool_.get()});
   context_->name_object(cmd, name);
   return owned;

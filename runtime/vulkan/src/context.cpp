@@ -16,27 +16,24 @@ constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 bool layer_available(const char* name) {
   std::uint32_t count = 0;
-  check(vkEnumerateInstanceLayerProperties(&count, nullptr), "vkEnumerateInstanceLayerProperties",
-        "the layer list");
+  check(vkEnumerateInstanceLayerProperties(&count, nullptr), "vkEnumerateInstanceLayerProperties", "the layer list");
   std::vector<VkLayerProperties> layers(count);
-  check(vkEnumerateInstanceLayerProperties(&count, layers.data()),
-        "vkEnumerateInstanceLayerProperties", "the layer list");
-  return std::any_of(layers.begin(), layers.begin() + count, [&](const VkLayerProperties& layer) {
-    return std::strcmp(layer.layerName, name) == 0;
-  });
+  check(vkEnumerateInstanceLayerProperties(&count, layers.data()), "vkEnumerateInstanceLayerProperties",
+        "the layer list");
+  return std::any_of(layers.begin(), layers.begin() + count,
+                     [&](const VkLayerProperties& layer) { return std::strcmp(layer.layerName, name) == 0; });
 }
 
 // Instance extensions offered by the loader and drivers (layer == nullptr) or by one layer.
 bool instance_extension_available(const char* layer, const char* name) {
   std::uint32_t count = 0;
-  check(vkEnumerateInstanceExtensionProperties(layer, &count, nullptr),
-        "vkEnumerateInstanceExtensionProperties", "the instance extension list");
+  check(vkEnumerateInstanceExtensionProperties(layer, &count, nullptr), "vkEnumerateInstanceExtensionProperties",
+        "the instance extension list");
   std::vector<VkExtensionProperties> extensions(count);
   check(vkEnumerateInstanceExtensionProperties(layer, &count, extensions.data()),
         "vkEnumerateInstanceExtensionProperties", "the instance extension list");
-  return std::any_of(
-      extensions.begin(), extensions.begin() + count,
-      [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+  return std::any_of(extensions.begin(), extensions.begin() + count,
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
 }  // namespace
@@ -84,20 +81,19 @@ void Context::create_instance(const ContextOptions& options) {
   validation_ = options.validation;
   if (validation_) {
     if (!layer_available(kValidationLayer)) {
-      throw Error(fmt::format(
-          "validation was requested but the Khronos validation layer ({}) is not installed "
-          "(Debian: vulkan-validationlayers)",
-          kValidationLayer));
+      throw Error(
+          fmt::format("validation was requested but the Khronos validation layer ({}) is not installed "
+                      "(Debian: vulkan-validationlayers)",
+                      kValidationLayer));
     }
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     if (options.synchronization_validation) {
-      if (!instance_extension_available(kValidationLayer,
-                                        VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME)) {
-        throw Error(fmt::format(
-            "the installed validation layer does not offer {}, needed for synchronization "
-            "validation",
-            VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME));
+      if (!instance_extension_available(kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME)) {
+        throw Error(
+            fmt::format("the installed validation layer does not offer {}, needed for synchronization "
+                        "validation",
+                        VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME));
       }
       extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
     }
@@ -114,8 +110,7 @@ void Context::create_instance(const ContextOptions& options) {
   // Chained into the create info, the messenger also sees messages from vkCreateInstance and
   // vkDestroyInstance, which the separate messenger below cannot.
   VkDebugUtilsMessengerCreateInfoEXT messenger_info = make_messenger_info(*log_);
-  const VkValidationFeatureEnableEXT sync_validation =
-      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+  const VkValidationFeatureEnableEXT sync_validation = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
   VkValidationFeaturesEXT validation_features{};
   validation_features.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT;
   validation_features.enabledValidationFeatureCount = 1;
@@ -162,8 +157,8 @@ void Context::pick_device(const ContextOptions& options) {
   for (const PhysicalDevice& d : devices) {
     available_devices_.push_back(d.info);
   }
-  const std::size_t chosen = select_device(std::span<const DeviceInfo>(available_devices_),
-                                           DeviceRequest::parse(options.device));
+  const std::size_t chosen =
+      select_device(std::span<const DeviceInfo>(available_devices_), DeviceRequest::parse(options.device));
   physical_device_ = devices[chosen].handle;
   device_info_ = devices[chosen].info;
   queue_family_ = devices[chosen].queue_family;
@@ -232,8 +227,7 @@ VkSampleCountFlagBits Context::choose_msaa(std::uint32_t requested) const {
   return tilelight::choose_msaa(msaa_counts(), requested);
 }
 
-void Context::set_object_name(VkObjectType type, std::uint64_t handle,
-                              std::string_view name) const {
+void Context::set_object_name(VkObjectType type, std::uint64_t handle, std::string_view name) const {
   if (set_object_name_fn_ == nullptr || !device_ || name.empty()) {
     return;
   }

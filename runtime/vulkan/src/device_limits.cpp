@@ -27,8 +27,7 @@ DeviceLimits query_device_limits(VkPhysicalDevice device, std::uint32_t queue_fa
   limits.sampled_color_samples = l.sampledImageColorSampleCounts;
   limits.sampled_depth_samples = l.sampledImageDepthSampleCounts;
   limits.timestamp_period_ns = l.timestampPeriod;
-  limits.timestamp_valid_bits =
-      queue_family < family_count ? families[queue_family].timestampValidBits : 0;
+  limits.timestamp_valid_bits = queue_family < family_count ? families[queue_family].timestampValidBits : 0;
   limits.subgroup_size = subgroup.subgroupSize;
   limits.subgroup_operations = subgroup.supportedOperations;
   limits.subgroup_stages = subgroup.supportedStages;

@@ -85,44 +85,37 @@ std::size_t select_device(std::span<const DeviceInfo> candidates, const DeviceRe
         "lavapipe, the CPU driver)");
   }
   if (request.index && !request.name.empty()) {
-    throw Error(fmt::format("ask for a Vulkan device by index ({}) or by name (\"{}\"), not both",
-                            *request.index, request.name));
+    throw Error(fmt::format("ask for a Vulkan device by index ({}) or by name (\"{}\"), not both", *request.index,
+                            request.name));
   }
 
   if (request.index) {
     const std::uint32_t wanted = *request.index;
-    const auto it = std::find_if(candidates.begin(), candidates.end(),
-                                 [&](const DeviceInfo& c) { return c.index == wanted; });
+    const auto it =
+        std::find_if(candidates.begin(), candidates.end(), [&](const DeviceInfo& c) { return c.index == wanted; });
     if (it == candidates.end()) {
       fail(fmt::format("Vulkan device index {} does not exist", wanted), candidates);
     }
     if (!it->usable()) {
-      fail(fmt::format("Vulkan device {} ({}) cannot be used: {}", wanted, it->name,
-                       it->unusable_reason),
-           candidates);
+      fail(fmt::format("Vulkan device {} ({}) cannot be used: {}", wanted, it->name, it->unusable_reason), candidates);
     }
     return static_cast<std::size_t>(it - candidates.begin());
   }
 
   if (!request.name.empty()) {
-    if (auto found = first_usable(
-            candidates, [&](const DeviceInfo& c) { return contains_ci(c.name, request.name); })) {
+    if (auto found = first_usable(candidates, [&](const DeviceInfo& c) { return contains_ci(c.name, request.name); })) {
       return *found;
     }
-    const bool unusable_match =
-        std::any_of(candidates.begin(), candidates.end(),
-                    [&](const DeviceInfo& c) { return contains_ci(c.name, request.name); });
-    fail(fmt::format("no {}Vulkan device matches \"{}\"", unusable_match ? "usable " : "",
-                     request.name),
-         candidates);
+    const bool unusable_match = std::any_of(candidates.begin(), candidates.end(),
+                                            [&](const DeviceInfo& c) { return contains_ci(c.name, request.name); });
+    fail(fmt::format("no {}Vulkan device matches \"{}\"", unusable_match ? "usable " : "", request.name), candidates);
   }
 
-  if (auto found = first_usable(
-          candidates, [](const DeviceInfo& c) { return contains_ci(c.name, "llvmpipe"); })) {
+  if (auto found = first_usable(candidates, [](const DeviceInfo& c) { return contains_ci(c.name, "llvmpipe"); })) {
     return *found;
   }
-  if (auto found = first_usable(
-          candidates, [](const DeviceInfo& c) { return c.type == VK_PHYSICAL_DEVICE_TYPE_CPU; })) {
+  if (auto found =
+          first_usable(candidates, [](const DeviceInfo& c) { return c.type == VK_PHYSICAL_DEVICE_TYPE_CPU; })) {
     return *found;
   }
   if (auto found = first_usable(candidates, [](const DeviceInfo&) { return true; })) {
@@ -132,8 +125,7 @@ std::size_t select_device(std::span<const DeviceInfo> candidates, const DeviceRe
 }
 
 const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices, std::string_view request) {
-  return devices[select_device(std::span<const DeviceInfo>(devices),
-                               DeviceRequest::parse(request))];
+  return devices[select_device(std::span<const DeviceInfo>(devices), DeviceRequest::parse(request))];
 }
 
 std::string describe_devices(std::span<const DeviceInfo> candidates) {
@@ -154,16 +146,11 @@ std::string describe_devices(std::span<const DeviceInfo> candidates) {
 
 std::string_view device_type_name(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
-      return "integrated GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
-      return "discrete GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
-      return "virtual GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU:
-      return "cpu";
-    default:
-      return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+    default: return "other";
   }
 }
 
@@ -174,13 +161,11 @@ std::string api_version_text(std::uint32_t version) {
 
 std::vector<PhysicalDevice> enumerate_devices(VkInstance instance) {
   std::uint32_t count = 0;
-  check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices",
-        "the device list");
+  check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices", "the device list");
   std::vector<VkPhysicalDevice> handles(count);
   // VK_INCOMPLETE cannot happen here (same count, nothing changes in between), so check() is
   // strict on purpose.
-  check(vkEnumeratePhysicalDevices(instance, &count, handles.data()), "vkEnumeratePhysicalDevices",
-        "the device list");
+  check(vkEnumeratePhysicalDevices(instance, &count, handles.data()), "vkEnumeratePhysicalDevices", "the device list");
   handles.resize(count);
 
   std::vector<PhysicalDevice> devices;
@@ -196,8 +181,7 @@ std::vector<PhysicalDevice> enumerate_devices(VkInstance instance) {
     const auto family = graphics_compute_family(handles[i]);
     if (props.apiVersion < VK_API_VERSION_1_2) {
       // Timeline semaphores and the Vulkan12 feature struct need a 1.2 device.
-      device.info.unusable_reason =
-          fmt::format("Vulkan {} < 1.2", api_version_text(props.apiVersion));
+      device.info.unusable_reason = fmt::format("Vulkan {} < 1.2", api_version_text(props.apiVersion));
     } else if (!family) {
       device.info.unusable_reason = "no queue family with graphics and compute";
     } else if (!has_timeline_semaphores(handles[i])) {

@@ -20,8 +20,7 @@ VulkanError::VulkanError(VkResult result, std::string_view call, std::string_vie
 std::string result_name(VkResult result) {
   switch (result) {
 #define TILELIGHT_RESULT(name) \
-  case name:                   \
-    return #name;
+  case name: return #name;
     TILELIGHT_RESULT(VK_SUCCESS)
     TILELIGHT_RESULT(VK_NOT_READY)
     TILELIGHT_RESULT(VK_TIMEOUT)
@@ -60,8 +59,7 @@ std::string result_name(VkResult result) {
     TILELIGHT_RESULT(VK_OPERATION_DEFERRED_KHR)
     TILELIGHT_RESULT(VK_OPERATION_NOT_DEFERRED_KHR)
 #undef TILELIGHT_RESULT
-    default:
-      return fmt::format("VkResult({})", static_cast<int>(result));
+    default: return fmt::format("VkResult({})", static_cast<int>(result));
   }
 }
 

@@ -16,23 +16,18 @@ struct FormatInfo {
 // Only formats that the runtime creates or reads back; extend as passes need more.
 constexpr FormatInfo kFormats[] = {
 #define TILELIGHT_FORMAT(name, size) {name, #name, size},
-    TILELIGHT_FORMAT(VK_FORMAT_R8_UNORM, 1) TILELIGHT_FORMAT(VK_FORMAT_R8_UINT, 1) TILELIGHT_FORMAT(
-        VK_FORMAT_R8G8_UNORM, 2) TILELIGHT_FORMAT(VK_FORMAT_R8G8B8A8_UNORM, 4)
-        TILELIGHT_FORMAT(VK_FORMAT_R8G8B8A8_SRGB, 4) TILELIGHT_FORMAT(VK_FORMAT_R8G8B8A8_UINT, 4)
-            TILELIGHT_FORMAT(VK_FORMAT_B8G8R8A8_UNORM, 4) TILELIGHT_FORMAT(
-                VK_FORMAT_B8G8R8A8_SRGB, 4) TILELIGHT_FORMAT(VK_FORMAT_A2B10G10R10_UNORM_PACK32, 4)
-                TILELIGHT_FORMAT(VK_FORMAT_R16_SFLOAT, 2) TILELIGHT_FORMAT(VK_FORMAT_R16_UINT, 2)
-                    TILELIGHT_FORMAT(VK_FORMAT_R16G16_SFLOAT, 4)
-                        TILELIGHT_FORMAT(VK_FORMAT_R16G16B16A16_SFLOAT, 8)
-                            TILELIGHT_FORMAT(VK_FORMAT_R16G16B16A16_UNORM, 8) TILELIGHT_FORMAT(
-                                VK_FORMAT_R32_SFLOAT, 4) TILELIGHT_FORMAT(VK_FORMAT_R32_UINT, 4)
-                                TILELIGHT_FORMAT(VK_FORMAT_R32G32_SFLOAT, 8) TILELIGHT_FORMAT(
-                                    VK_FORMAT_R32G32B32A32_SFLOAT, 16)
-                                    TILELIGHT_FORMAT(VK_FORMAT_R32G32B32A32_UINT, 16)
-                                        TILELIGHT_FORMAT(VK_FORMAT_D16_UNORM, 2)
-                                            TILELIGHT_FORMAT(VK_FORMAT_D32_SFLOAT, 4)
-                                                TILELIGHT_FORMAT(VK_FORMAT_X8_D24_UNORM_PACK32, 4)
-                                                    TILELIGHT_FORMAT(VK_FORMAT_D24_UNORM_S8_UINT, 4)
+    TILELIGHT_FORMAT(VK_FORMAT_R8_UNORM, 1) TILELIGHT_FORMAT(VK_FORMAT_R8_UINT, 1)
+        TILELIGHT_FORMAT(VK_FORMAT_R8G8_UNORM, 2) TILELIGHT_FORMAT(VK_FORMAT_R8G8B8A8_UNORM, 4) TILELIGHT_FORMAT(
+            VK_FORMAT_R8G8B8A8_SRGB, 4) TILELIGHT_FORMAT(VK_FORMAT_R8G8B8A8_UINT, 4)
+            TILELIGHT_FORMAT(VK_FORMAT_B8G8R8A8_UNORM, 4) TILELIGHT_FORMAT(VK_FORMAT_B8G8R8A8_SRGB, 4) TILELIGHT_FORMAT(
+                VK_FORMAT_A2B10G10R10_UNORM_PACK32, 4) TILELIGHT_FORMAT(VK_FORMAT_R16_SFLOAT, 2)
+                TILELIGHT_FORMAT(VK_FORMAT_R16_UINT, 2) TILELIGHT_FORMAT(VK_FORMAT_R16G16_SFLOAT, 4) TILELIGHT_FORMAT(
+                    VK_FORMAT_R16G16B16A16_SFLOAT, 8) TILELIGHT_FORMAT(VK_FORMAT_R16G16B16A16_UNORM, 8)
+                    TILELIGHT_FORMAT(VK_FORMAT_R32_SFLOAT, 4) TILELIGHT_FORMAT(VK_FORMAT_R32_UINT, 4) TILELIGHT_FORMAT(
+                        VK_FORMAT_R32G32_SFLOAT, 8) TILELIGHT_FORMAT(VK_FORMAT_R32G32B32A32_SFLOAT, 16)
+                        TILELIGHT_FORMAT(VK_FORMAT_R32G32B32A32_UINT, 16) TILELIGHT_FORMAT(VK_FORMAT_D16_UNORM, 2)
+                            TILELIGHT_FORMAT(VK_FORMAT_D32_SFLOAT, 4) TILELIGHT_FORMAT(VK_FORMAT_X8_D24_UNORM_PACK32, 4)
+                                TILELIGHT_FORMAT(VK_FORMAT_D24_UNORM_S8_UINT, 4)
 #undef TILELIGHT_FORMAT
 };
 
@@ -49,8 +44,7 @@ const FormatInfo* find(VkFormat format) {
 
 std::string format_name(VkFormat format) {
   const FormatInfo* info = find(format);
-  return info != nullptr ? std::string(info->name)
-                         : fmt::format("VkFormat({})", static_cast<int>(format));
+  return info != nullptr ? std::string(info->name) : fmt::format("VkFormat({})", static_cast<int>(format));
 }
 
 std::uint32_t texel_size(VkFormat format) {

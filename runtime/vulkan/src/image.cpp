@@ -15,29 +15,27 @@ namespace {
 // validation complains) for an unsupported combination.
 void check_support(const Context& context, const ImageDesc& desc) {
   if (desc.extent.width == 0 || desc.extent.height == 0) {
-    throw Error(fmt::format("image {} has an empty extent {}x{}", desc.name, desc.extent.width,
-                            desc.extent.height));
+    throw Error(fmt::format("image {} has an empty extent {}x{}", desc.name, desc.extent.width, desc.extent.height));
   }
   VkImageFormatProperties props{};
   const VkResult result = vkGetPhysicalDeviceImageFormatProperties(
-      context.physical_device(), desc.format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL, desc.usage,
-      0, &props);
+      context.physical_device(), desc.format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL, desc.usage, 0, &props);
   if (result == VK_ERROR_FORMAT_NOT_SUPPORTED) {
-    throw Error(fmt::format("image {}: {} is not supported for usage {:#x} on {}", desc.name,
-                            format_name(desc.format), desc.usage, context.device_name()));
+    throw Error(fmt::format("image {}: {} is not supported for usage {:#x} on {}", desc.name, format_name(desc.format),
+                            desc.usage, context.device_name()));
   }
   check(result, "vkGetPhysicalDeviceImageFormatProperties", desc.name);
   if ((props.sampleCounts & desc.samples) == 0) {
     throw Error(
         fmt::format("image {}: {} with usage {:#x} does not support {}x samples "
                     "(supported: {})",
-                    desc.name, format_name(desc.format), desc.usage,
-                    static_cast<unsigned>(desc.samples), sample_counts_text(props.sampleCounts)));
+                    desc.name, format_name(desc.format), desc.usage, static_cast<unsigned>(desc.samples),
+                    sample_counts_text(props.sampleCounts)));
   }
   if (desc.extent.width > props.maxExtent.width || desc.extent.height > props.maxExtent.height) {
-    throw Error(fmt::format("image {}: {}x{} exceeds the maximum {}x{} for {}", desc.name,
-                            desc.extent.width, desc.extent.height, props.maxExtent.width,
-                            props.maxExtent.height, format_name(desc.format)));
+    throw Error(fmt::format("image {}: {}x{} exceeds the maximum {}x{} for {}", desc.name, desc.extent.width,
+                            desc.extent.height, props.maxExtent.width, props.maxExtent.height,
+                            format_name(desc.format)));
   }
 }
 
@@ -70,9 +68,9 @@ Image::Image(const Context& context, ImageDesc desc) : desc_(std::move(desc)) {
   check(vkBindImageMemory(device, image, memory_.get(), 0), "vkBindImageMemory", desc_.name);
 
   constexpr VkImageUsageFlags kViewUsages =
-      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
-      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-      VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT;
+      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT |
+      VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT;
   if ((desc_.usage & kViewUsages) == 0) {
     return;  // a view of a transfer-only image is invalid (VUID-VkImageViewCreateInfo-image-04441)
   }

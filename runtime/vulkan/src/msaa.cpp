@@ -29,10 +29,10 @@ VkSampleCountFlagBits choose_msaa(VkSampleCountFlags supported, std::uint32_t re
     return VK_SAMPLE_COUNT_1_BIT;
   }
   if (requested > 64 || !std::has_single_bit(requested)) {
-    throw Error(fmt::format(
-        "MSAA {}x is not a sample count (use 0 for auto, or 1, 2, 4, 8, 16, 32, 64; supported "
-        "for the G-buffer: {})",
-        requested, sample_counts_text(supported)));
+    throw Error(
+        fmt::format("MSAA {}x is not a sample count (use 0 for auto, or 1, 2, 4, 8, 16, 32, 64; supported "
+                    "for the G-buffer: {})",
+                    requested, sample_counts_text(supported)));
   }
   // Vulkan's sample-count bits have the value of the count they stand for.
   if ((supported & requested) == 0) {

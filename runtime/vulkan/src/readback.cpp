@@ -56,23 +56,20 @@ bool can_decode_rgba(VkFormat format) {
     case VK_FORMAT_R16G16B16A16_SFLOAT:
     case VK_FORMAT_R32G32B32A32_SFLOAT:
     case VK_FORMAT_R32_SFLOAT:
-    case VK_FORMAT_D32_SFLOAT:
-      return true;
-    default:
-      return false;
+    case VK_FORMAT_D32_SFLOAT: return true;
+    default: return false;
   }
 }
 
-RgbaImage decode_rgba(VkFormat format, std::uint32_t width, std::uint32_t height,
-                      std::span<const std::byte> texels) {
+RgbaImage decode_rgba(VkFormat format, std::uint32_t width, std::uint32_t height, std::span<const std::byte> texels) {
   if (!can_decode_rgba(format)) {
     throw Error(fmt::format("cannot decode {} to float RGBA", format_name(format)));
   }
   const std::size_t count = static_cast<std::size_t>(width) * height;
   const std::size_t stride = texel_size(format);
   if (texels.size() != count * stride) {
-    throw Error(fmt::format("{}x{} {} needs {} bytes, got {}", width, height, format_name(format),
-                            count * stride, texels.size()));
+    throw Error(fmt::format("{}x{} {} needs {} bytes, got {}", width, height, format_name(format), count * stride,
+                            texels.size()));
   }
   RgbaImage out;
   out.width = width;
@@ -100,9 +97,7 @@ RgbaImage decode_rgba(VkFormat format, std::uint32_t width, std::uint32_t height
           p[c] = half_to_float(load<std::uint16_t>(t + 2 * c));
         }
         break;
-      case VK_FORMAT_R32G32B32A32_SFLOAT:
-        std::memcpy(p, t, 16);
-        break;
+      case VK_FORMAT_R32G32B32A32_SFLOAT: std::memcpy(p, t, 16); break;
       default:  // R32_SFLOAT, D32_SFLOAT
         p[0] = load<float>(t);
         p[1] = 0.0f;
@@ -114,20 +109,18 @@ RgbaImage decode_rgba(VkFormat format, std::uint32_t width, std::uint32_t height
   return out;
 }
 
-std::vector<std::byte> read_image_bytes(const Context& context, const CommandPool& pool,
-                                        const Image& image, VkImageLayout layout, Seconds timeout) {
+std::vector<std::byte> read_image_bytes(const Context& context, const CommandPool& pool, const Image& image,
+                                        VkImageLayout layout, Seconds timeout) {
   const std::string stage = fmt::format("reading back {}", image.name());
   if (image.samples() != VK_SAMPLE_COUNT_1_BIT) {
-    throw Error(
-        fmt::format("{}: the image has {} samples; resolve it to a single-sample image first",
-                    stage, static_cast<unsigned>(image.samples())));
+    throw Error(fmt::format("{}: the image has {} samples; resolve it to a single-sample image first", stage,
+                            static_cast<unsigned>(image.samples())));
   }
   if ((image.usage() & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) == 0) {
     throw Error(fmt::format("{}: the image was created without TRANSFER_SRC usage", stage));
   }
   if (layout == VK_IMAGE_LAYOUT_UNDEFINED) {
-    throw Error(
-        fmt::format("{}: the image is in layout UNDEFINED (its contents are undefined)", stage));
+    throw Error(fmt::format("{}: the image is in layout UNDEFINED (its contents are undefined)", stage));
   }
   const std::uint32_t stride = texel_size(image.format());
   if (stride == 0) {
@@ -150,15 +143,12 @@ std::vector<std::byte> read_image_bytes(const Context& context, const CommandPoo
     region.bufferImageHeight = 0;
     region.imageSubresource = image.subresource_layers();
     region.imageExtent = {extent.width, extent.height, 1};
-    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           staging.handle(), 1, &region);
+    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
     // Back to the caller's layout, so that their layout tracking stays true.
     image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
                   {VK_PIPELINE_STAGE_TRANSFER_BIT, 0},
-                  {VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                   VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT});
-    buffer_barrier(cmd, staging.handle(),
-                   {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                  {VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT});
+    buffer_barrier(cmd, staging.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
                    {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
   };
   try {
@@ -174,11 +164,11 @@ std::vector<std::byte> read_image_bytes(const Context& context, const CommandPoo
   return bytes;
 }
 
-RgbaImage read_image_rgba(const Context& context, const CommandPool& pool, const Image& image,
-                          VkImageLayout layout, Seconds timeout) {
+RgbaImage read_image_rgba(const Context& context, const CommandPool& pool, const Image& image, VkImageLayout layout,
+                          Seconds timeout) {
   if (!can_decode_rgba(image.format())) {
-    throw Error(fmt::format("reading back {}: cannot decode {} to float RGBA", image.name(),
-                            format_name(image.format())));
+    throw Error(
+        fmt::format("reading back {}: cannot decode {} to float RGBA", image.name(), format_name(image.format())));
   }
   const std::vector<std::byte> bytes = read_image_bytes(context, pool, image, layout, timeout);
   return decode_rgba(image.format(), image.extent().width, image.extent().height, bytes);

@@ -48,8 +48,7 @@ void submit(const Context& context, const Submission& submission, std::string_vi
 }
 
 void submit_and_wait(const Context& context, const CommandPool& pool,
-                     const std::function<void(VkCommandBuffer)>& record, std::string_view stage,
-                     Seconds timeout) {
+                     const std::function<void(VkCommandBuffer)>& record, std::string_view stage, Seconds timeout) {
   UniqueCommandBuffer cmd = pool.allocate(stage);
   begin_commands(cmd.get(), stage);
   record(cmd.get());

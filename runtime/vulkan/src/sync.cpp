@@ -10,8 +10,7 @@
 namespace tilelight {
 namespace {
 
-UniqueSemaphore create_semaphore(const Context& context, const void* next,
-                                 const std::string& name) {
+UniqueSemaphore create_semaphore(const Context& context, const void* next, const std::string& name) {
   VkSemaphoreCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO;
   info.pNext = next;
@@ -61,8 +60,7 @@ void Fence::reset() const {
 Semaphore::Semaphore(const Context& context, std::string name)
     : name_(std::move(name)), semaphore_(create_semaphore(context, nullptr, name_)) {}
 
-TimelineSemaphore::TimelineSemaphore(const Context& context, std::string name,
-                                     std::uint64_t initial_value)
+TimelineSemaphore::TimelineSemaphore(const Context& context, std::string name, std::uint64_t initial_value)
     : device_(context.device()), name_(std::move(name)) {
   VkSemaphoreTypeCreateInfo type{};
   type.sType = VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO;
@@ -73,8 +71,7 @@ TimelineSemaphore::TimelineSemaphore(const Context& context, std::string name,
 
 std::uint64_t TimelineSemaphore::value() const {
   std::uint64_t value = 0;
-  check(vkGetSemaphoreCounterValue(device_, semaphore_.get(), &value), "vkGetSemaphoreCounterValue",
-        name_);
+  check(vkGetSemaphoreCounterValue(device_, semaphore_.get(), &value), "vkGetSemaphoreCounterValue", name_);
   return value;
 }
 

@@ -26,8 +26,6 @@ std::string timeout_message(std::string_view stage, Seconds timeout) {
   return fmt::format("GPU did not finish {} within {:g} s", stage, timeout.count());
 }
 
-void throw_timeout(std::string_view stage, Seconds timeout) {
-  throw TimeoutError(timeout_message(stage, timeout));
-}
+void throw_timeout(std::string_view stage, Seconds timeout) { throw TimeoutError(timeout_message(stage, timeout)); }
 
 }  // namespace tilelight

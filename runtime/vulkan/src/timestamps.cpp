@@ -29,8 +29,8 @@ TimestampQueries::TimestampQueries(const Context& context, std::string name, std
       period_ns_(static_cast<double>(context.limits().timestamp_period_ns)),
       valid_bits_(context.limits().timestamp_valid_bits) {
   if (valid_bits_ == 0) {
-    throw Error(fmt::format("timestamps {}: the queue family of {} does not support timestamps",
-                            name_, context.device_name()));
+    throw Error(
+        fmt::format("timestamps {}: the queue family of {} does not support timestamps", name_, context.device_name()));
   }
   if (capacity_ == 0) {
     throw Error(fmt::format("timestamps {}: capacity must be > 0", name_));
@@ -50,11 +50,9 @@ void TimestampQueries::reset(VkCommandBuffer cmd) {
   labels_.clear();
 }
 
-void TimestampQueries::write(VkCommandBuffer cmd, std::string label,
-                             VkPipelineStageFlagBits stage) {
+void TimestampQueries::write(VkCommandBuffer cmd, std::string label, VkPipelineStageFlagBits stage) {
   if (labels_.size() >= capacity_) {
-    throw Error(fmt::format("timestamps {}: all {} queries are used (writing \"{}\")", name_,
-                            capacity_, label));
+    throw Error(fmt::format("timestamps {}: all {} queries are used (writing \"{}\")", name_, capacity_, label));
   }
   vkCmdWriteTimestamp(cmd, stage, pool_.get(), size());
   labels_.push_back(std::move(label));
@@ -67,9 +65,9 @@ std::vector<Timestamp> TimestampQueries::read() const {
   }
   // Pairs of (value, availability); no WAIT flag, because that wait would have no timeout.
   std::vector<std::uint64_t> raw(labels_.size() * 2);
-  const VkResult result = vkGetQueryPoolResults(
-      device_, pool_.get(), 0, size(), raw.size() * sizeof(std::uint64_t), raw.data(),
-      2 * sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+  const VkResult result =
+      vkGetQueryPoolResults(device_, pool_.get(), 0, size(), raw.size() * sizeof(std::uint64_t), raw.data(),
+                            2 * sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
   if (result != VK_NOT_READY) {
     check(result, "vkGetQueryPoolResults", name_);
   }
@@ -91,8 +89,7 @@ std::vector<Timestamp> TimestampQueries::read() const {
 double TimestampQueries::elapsed_ms(std::string_view from, std::string_view to) const {
   const std::vector<Timestamp> stamps = read();
   auto find = [&](std::string_view label) {
-    const auto it = std::find_if(stamps.begin(), stamps.end(),
-                                 [&](const Timestamp& t) { return t.label == label; });
+    const auto it = std::find_if(stamps.begin(), stamps.end(), [&](const Timestamp& t) { return t.label == label; });
     if (it == stamps.end()) {
       throw Error(fmt::format("timestamps {}: no timestamp named \"{}\"", name_, label));
     }

@@ -10,8 +10,7 @@ namespace {
 
 VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                           VkDebugUtilsMessageTypeFlagsEXT /*types*/,
-                                          const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                          void* user) {
+                                          const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
   if (data != nullptr && user != nullptr) {
     static_cast<ValidationLog*>(user)->add(severity, *data);
   }
@@ -43,8 +42,7 @@ std::string ValidationLog::summary() const {
 void ValidationLog::require_empty(std::string_view stage) const {
   const std::size_t n = count();
   if (n != 0) {
-    throw Error(
-        fmt::format("{}: the validation layer reported {} message(s):\n{}", stage, n, summary()));
+    throw Error(fmt::format("{}: the validation layer reported {} message(s):\n{}", stage, n, summary()));
   }
 }
 
@@ -82,10 +80,9 @@ void ValidationLog::add(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
 VkDebugUtilsMessengerCreateInfoEXT make_messenger_info(ValidationLog& log) {
   VkDebugUtilsMessengerCreateInfoEXT info{};
   info.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT;
-  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                         VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                     VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   info.pfnUserCallback = &on_message;
   info.pUserData = &log;

@@ -68,8 +68,8 @@ TEST(Soak, FiveHundredValidatedFramesUseNoMoreMemoryThanAHundred) {
   const SoakRun long_run = run_frames(500);
   ASSERT_TRUE(short_run.ok && long_run.ok);
   std::cout << "peak RSS: 100 frames " << short_run.peak_rss_mib << " MiB, 500 frames " << long_run.peak_rss_mib
-            << " MiB; after the frames: " << short_run.rss_after_frames_mib << " MiB, "
-            << long_run.rss_after_frames_mib << " MiB\n";
+            << " MiB; after the frames: " << short_run.rss_after_frames_mib << " MiB, " << long_run.rss_after_frames_mib
+            << " MiB\n";
   RecordProperty("peak_rss_mib_100_frames", std::to_string(short_run.peak_rss_mib));
   RecordProperty("peak_rss_mib_500_frames", std::to_string(long_run.peak_rss_mib));
   RecordProperty("rss_after_frames_mib_100_frames", std::to_string(short_run.rss_after_frames_mib));

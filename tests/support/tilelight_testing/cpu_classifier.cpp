@@ -17,6 +17,8 @@
 namespace tilelight {
 namespace {
 
+// The flags read best as the bit table they are.
+// clang-format off
 enum Flag : std::uint32_t {
   kFade = 0x01, kScattering = 0x02, kEdge = 0x04, kSky = 0x08, kSun = 0x10,
   kShadowed = 0x20, kLit = 0x40, kPartial = 0x80,
@@ -25,6 +27,7 @@ enum Flag : std::uint32_t {
   // tap rules "no shadow" (lit) out.
   kRulesOutSolid = 0x100, kRulesOutLit = 0x200,
 };
+// clang-format on
 constexpr std::uint32_t kShadowFlags = kShadowed | kLit | kPartial;
 
 struct Flags {
@@ -78,21 +81,20 @@ class SampleClassifier {
     const glm::vec4 world = multiply(params_.inv_view_proj, {ndc.x, ndc.y, s.v[12], 1.0f});
     const glm::vec3 pos = glm::vec3(world) / world.w;
     const glm::vec3 offset = pos - glm::vec3(params_.camera_pos);
-    const float view_depth = offset.x * params_.camera_forward.x + offset.y * params_.camera_forward.y +
-                             offset.z * params_.camera_forward.z;
+    const float view_depth =
+        offset.x * params_.camera_forward.x + offset.y * params_.camera_forward.y + offset.z * params_.camera_forward.z;
     const float depth_margin = std::max(1e-4f, 1e-4f * std::fabs(view_depth));
     // shadow_fade_active(), light_scattering_active().
     f.add(kFade, view_depth > params_.distances.x, near_threshold(view_depth, params_.distances.x, depth_margin));
-    f.add(kScattering, view_depth > params_.distances.z,
-          near_threshold(view_depth, params_.distances.z, depth_margin));
+    f.add(kScattering, view_depth > params_.distances.z, near_threshold(view_depth, params_.distances.z, depth_margin));
     // The sun-facing bit: the G-buffer's decision, which the lighting reads as it is.
     const bool faces = s.sun_bit();
     f.add(kSun, faces, false);
     // shadow_fade_complete(): a completely faded shadow has no say in the tile's shadow type.
     const float fade = (view_depth - params_.distances.x) * params_.distances.y;
     const bool faded = fade >= 1.0f;
-    const bool fade_uncertain = near_threshold(view_depth, params_.distances.x + 1.0f / params_.distances.y,
-                                               depth_margin);
+    const bool fade_uncertain =
+        near_threshold(view_depth, params_.distances.x + 1.0f / params_.distances.y, depth_margin);
     if (faces && (!faded || fade_uncertain)) {
       add_shadow(pos, f, fade_uncertain);
     }
@@ -104,7 +106,8 @@ class SampleClassifier {
   void add_shadow(const glm::vec3& pos, Flags& f, bool participation_uncertain) const {
     const glm::vec4 clip = multiply(params_.sun_view_proj, glm::vec4(pos, 1.0f));
     const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-    bool uncertain = participation_uncertain || near_threshold(ndc.z, 0.0f, 2e-6f) || near_threshold(ndc.z, 1.0f, 2e-6f);
+    bool uncertain =
+        participation_uncertain || near_threshold(ndc.z, 0.0f, 2e-6f) || near_threshold(ndc.z, 1.0f, 2e-6f);
     int lit = 8;
     if (ndc.z >= 0.0f && ndc.z <= 1.0f) {
       const float size = params_.shadow_map_size.x;
@@ -137,8 +140,14 @@ class SampleClassifier {
   // GPU could pick instead; returns how many candidates there are.
   static int neighbour_base(float v, std::array<int, 2>& bases) {
     const float frac = v - std::floor(v);
-    if (frac <= 1e-3f) { bases[1] = bases[0] - 1; return 2; }
-    if (frac >= 1.0f - 1e-3f) { bases[1] = bases[0] + 1; return 2; }
+    if (frac <= 1e-3f) {
+      bases[1] = bases[0] - 1;
+      return 2;
+    }
+    if (frac >= 1.0f - 1e-3f) {
+      bases[1] = bases[0] + 1;
+      return 2;
+    }
     return 1;
   }
 
@@ -153,8 +162,8 @@ class SampleClassifier {
         ++lit;
         continue;
       }
-      const float occluder = map_[static_cast<std::size_t>(ty) * static_cast<std::size_t>(map_size_) +
-                                  static_cast<std::size_t>(tx)];
+      const float occluder =
+          map_[static_cast<std::size_t>(ty) * static_cast<std::size_t>(map_size_) + static_cast<std::size_t>(tx)];
       if (receiver <= occluder) ++lit;
       if (near_threshold(receiver, occluder, 2e-6f)) uncertain = true;
     }

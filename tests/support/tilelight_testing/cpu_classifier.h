@@ -15,9 +15,9 @@
 // 1e-4 m); shadow-map texel position 1e-3 texel; shadow depth compare 2e-6. Sky and sun-facing
 // are read from the depth's bits as stored (gbuffer.glsl), so they are never uncertain.
 
-#include "tilelight/tiles/tile_grid.h"
 #include "tilelight/render/tile_renderer.h"
 #include "tilelight/scene/uniform_blocks.h"
+#include "tilelight/tiles/tile_grid.h"
 
 #include <cstdint>
 #include <span>
@@ -32,8 +32,8 @@ struct RawBitLayout {
 RawBitLayout registry_raw_bits();
 
 struct ReferenceClassification {
-  std::vector<std::uint8_t> raw_ids;        // row-major per tile
-  std::vector<std::uint8_t> uncertain_bits; // row-major per tile: bits that may differ from the GPU
+  std::vector<std::uint8_t> raw_ids;         // row-major per tile
+  std::vector<std::uint8_t> uncertain_bits;  // row-major per tile: bits that may differ from the GPU
   // Row-major per tile: a sample whose shadow matters for sure (sun-facing, not faded out
   // completely, no decision near a threshold) has a lit tap (SOLID is wrong for the tile) /
   // an occluded tap (no shadow is wrong for the tile).

@@ -26,8 +26,8 @@ void VulkanTest::TearDown() {
 
 std::filesystem::path scratch_dir() {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::filesystem::path dir = std::filesystem::path(TILELIGHT_TEST_SCRATCH) /
-                              (std::string(info->test_suite_name()) + "." + info->name());
+  std::filesystem::path dir =
+      std::filesystem::path(TILELIGHT_TEST_SCRATCH) / (std::string(info->test_suite_name()) + "." + info->name());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

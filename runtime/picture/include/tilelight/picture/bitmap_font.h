@@ -14,7 +14,7 @@
 
 namespace tilelight {
 
-struct Rgba8Canvas;  // tilelight/tile_class_image.h
+struct Rgba8Canvas;  // tilelight/picture/tile_class_image.h
 
 // An 8-bit RGBA colour.
 using Rgba8 = std::array<std::uint8_t, 4>;
@@ -30,9 +30,7 @@ inline constexpr int kFontCellHeight = 9;
 std::array<std::uint8_t, kGlyphHeight> glyph_rows(char c);
 
 // Whether `c` has its own glyph (printable ASCII 32..126) rather than the box.
-constexpr bool has_glyph(char c) {
-  return static_cast<unsigned char>(c) >= 32 && static_cast<unsigned char>(c) <= 126;
-}
+constexpr bool has_glyph(char c) { return static_cast<unsigned char>(c) >= 32 && static_cast<unsigned char>(c) <= 126; }
 
 // Width in pixels of `text` drawn at `scale`: one cell per byte, including the blank column
 // after the last character. Precondition: scale >= 1 (checked by draw_text, not here).
@@ -48,7 +46,6 @@ constexpr int text_height(int scale = 1) { return kFontCellHeight * scale; }
 // pixels are written; the cell background is left untouched. Pixels outside the canvas are
 // clipped, so x and y may be negative. No line breaks: '\n' draws as a box.
 // Throws tilelight::Error if scale < 1.
-void draw_text(Rgba8Canvas& canvas, int x, int y, std::string_view text, Rgba8 colour,
-               int scale = 1);
+void draw_text(Rgba8Canvas& canvas, int x, int y, std::string_view text, Rgba8 colour, int scale = 1);
 
 }  // namespace tilelight

@@ -87,11 +87,11 @@ struct TileClassLegendLayout {
   std::uint32_t canvas_height = 0;  // max(frame height, panel_height)
   std::uint32_t panel_x = 0;        // = frame width
   std::uint32_t panel_width = 0;
-  std::uint32_t panel_height = 0;   // height the legend content needs
-  int scale = 1;                    // text scale: 2 when frame height >= 600
+  std::uint32_t panel_height = 0;  // height the legend content needs
+  int scale = 1;                   // text scale: 2 when frame height >= 600
   std::uint32_t title_x = 0, title_y = 0;
-  std::string title;                // "tile classes (<N> tiles, tile size <T>)"
-  std::vector<Row> rows;            // classes that occur, sorted by ID
+  std::string title;      // "tile classes (<N> tiles, tile size <T>)"
+  std::vector<Row> rows;  // classes that occur, sorted by ID
 };
 
 // Neutral dark grey behind the legend and below a short frame, and the legend's text colour.
@@ -118,14 +118,14 @@ using ClassLabelFn = std::function<std::string(std::uint32_t optimised_id)>;
 // Counts the classes in `tile_ids`, giving one entry per class present, sorted by ID.
 // Throws tilelight::Error if an ID is >= 32:
 //   "tile class image: tile <index> has optimised ID <v>; IDs must be < 32".
-std::vector<TileClassLegendEntry> tile_class_legend_entries(
-    std::span<const std::uint8_t> tile_ids, const ClassLabelFn& class_label = default_class_label);
+std::vector<TileClassLegendEntry> tile_class_legend_entries(std::span<const std::uint8_t> tile_ids,
+                                                            const ClassLabelFn& class_label = default_class_label);
 
 // The layout compose_tile_class_image() uses for this frame size and these tile IDs. Checks
 // its arguments like compose_tile_class_image() (except the frame's pixel count).
-TileClassLegendLayout tile_class_legend_layout(
-    std::uint32_t frame_width, std::uint32_t frame_height, std::uint32_t tile_size,
-    std::span<const std::uint8_t> tile_ids, const ClassLabelFn& class_label = default_class_label);
+TileClassLegendLayout tile_class_legend_layout(std::uint32_t frame_width, std::uint32_t frame_height,
+                                               std::uint32_t tile_size, std::span<const std::uint8_t> tile_ids,
+                                               const ClassLabelFn& class_label = default_class_label);
 
 // Builds the picture described at the top of this file.
 // frame: the lit frame as rendered (float RGBA, rows top to bottom); any size, even 0 x 0.
@@ -145,7 +145,6 @@ Rgba8Canvas compose_tile_class_image(const RgbaImage& frame, std::uint32_t tile_
 
 // As above, with legend labels from `class_label` instead of default_class_label().
 Rgba8Canvas compose_tile_class_image(const RgbaImage& frame, std::uint32_t tile_size,
-                                     std::span<const std::uint8_t> tile_ids,
-                                     const ClassLabelFn& class_label);
+                                     std::span<const std::uint8_t> tile_ids, const ClassLabelFn& class_label);
 
 }  // namespace tilelight

@@ -15,13 +15,13 @@
 // Every wait is bounded (`timeout`); a failure between submit B and the host signal still
 // signals (with empty draws) so the queue is never left blocked.
 
-#include "tilelight/vulkan/context.h"
-#include "tilelight/vulkan/readback.h"
 #include "tilelight/scene/scene.h"
+#include "tilelight/scene/uniform_blocks.h"
 #include "tilelight/tiles/tile_grid.h"
 #include "tilelight/tiles/tile_primitive.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/readback.h"
 #include "tilelight/vulkan/timeout.h"
-#include "tilelight/scene/uniform_blocks.h"
 
 #include <cstdint>
 #include <functional>
@@ -38,7 +38,6 @@ enum class IndexPath { cpu, gpu };
 // every feature, on every pixel) and dynamic (every feature compiled in, each taken only where
 // the pixel needs it: per-pixel branching).
 enum class Baselines { naive, dynamic, both };
-
 
 struct RendererOptions {
   std::uint32_t width = 1280;
@@ -102,7 +101,7 @@ class TileRenderer {
   const TileGrid& grid() const;
   std::uint32_t msaa_samples() const;
   std::uint32_t draw_class_count() const;  // 32 or 128
-  TilePrimitive tile_primitive() const;     // the one chosen (RendererOptions::primitive)
+  TilePrimitive tile_primitive() const;    // the one chosen (RendererOptions::primitive)
   std::uint32_t pipeline_count() const;    // 32 or 96
   const LightingParamsBlock& lighting_params() const;
 
@@ -113,7 +112,6 @@ class TileRenderer {
   RgbaImage read_dynamic() const;  // precondition: the dynamic pass runs
   GBufferSamples read_gbuffer();
   std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major
-
 
  private:
   // The tests' seam (tests/support/tilelight_testing/renderer_test_seam.h) and the only caller

@@ -35,7 +35,7 @@ struct Instance {
 
 // One mesh drawn with a contiguous range of the instance buffer.
 struct MeshBatch {
-  std::uint32_t mesh = 0;            // index into Scene::meshes
+  std::uint32_t mesh = 0;  // index into Scene::meshes
   std::uint32_t first_instance = 0;
   std::uint32_t instance_count = 0;
 };
@@ -52,17 +52,17 @@ struct Camera {
 
 // Lighting constants shared by classification and lighting (distances are view depths).
 struct SunAndAtmosphere {
-  glm::vec3 sun_direction;   // normalised, towards the sun
+  glm::vec3 sun_direction;  // normalised, towards the sun
   glm::vec3 sun_color;
   glm::vec3 fog_color;
   float fog_density = 0.0f;  // per metre
   float shadow_fade_start = 0.0f;
   float shadow_fade_length = 0.0f;
   float scattering_start = 0.0f;
-  float shadow_depth_bias = 0.0f;    // in shadow-map depth units (0..1)
-  float shadow_half_extent = 0.0f;   // metres covered either side of the focus
-  float shadow_depth_range = 0.0f;   // metres from the sun's near to far plane
-  std::uint32_t shadow_map_size = 0; // texels per side
+  float shadow_depth_bias = 0.0f;     // in shadow-map depth units (0..1)
+  float shadow_half_extent = 0.0f;    // metres covered either side of the focus
+  float shadow_depth_range = 0.0f;    // metres from the sun's near to far plane
+  std::uint32_t shadow_map_size = 0;  // texels per side
   glm::vec3 sky_zenith;
   glm::vec3 sky_horizon;
   glm::vec3 ambient_sky;

@@ -42,7 +42,6 @@ static_assert(sizeof(SceneParamsBlock) == 3 * 64 + 7 * 16);
 // Both blocks for one camera and framebuffer size.
 LightingParamsBlock make_lighting_params(const Scene& scene, const Camera& camera, std::uint32_t width,
                                          std::uint32_t height);
-SceneParamsBlock make_scene_params(const Scene& scene, const Camera& camera, std::uint32_t width,
-                                   std::uint32_t height);
+SceneParamsBlock make_scene_params(const Scene& scene, const Camera& camera, std::uint32_t width, std::uint32_t height);
 
 }  // namespace tilelight

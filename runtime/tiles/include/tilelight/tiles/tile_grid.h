@@ -11,9 +11,9 @@
 
 namespace tilelight {
 
-inline constexpr std::uint32_t kBlockTiles = 4;       // a block is 4x4 tiles (Xbox 360 layout, Fig. 4.3)
+inline constexpr std::uint32_t kBlockTiles = 4;  // a block is 4x4 tiles (Xbox 360 layout, Fig. 4.3)
 inline constexpr std::uint32_t kBlockTileCount = 16;
-inline constexpr std::uint8_t kNoTile = 0xFF;           // ID slot of a block entry outside the frame
+inline constexpr std::uint8_t kNoTile = 0xFF;  // ID slot of a block entry outside the frame
 
 struct TileGrid {
   std::uint32_t width = 0, height = 0, tile_size = 0;  // pixels
@@ -27,9 +27,9 @@ struct TileGrid {
   // (tile_primitive.h).
   static TileGrid make(std::uint32_t width, std::uint32_t height, std::uint32_t tile_size = 4);
 
-  std::uint32_t tile_count() const;     // tiles_x * tiles_y
-  std::uint32_t block_count() const;    // blocks_x * blocks_y
-  std::size_t id_bytes() const;         // block_count() * 16: size of the blocked ID array
+  std::uint32_t tile_count() const;   // tiles_x * tiles_y
+  std::uint32_t block_count() const;  // blocks_x * blocks_y
+  std::size_t id_bytes() const;       // block_count() * 16: size of the blocked ID array
 
   // Blocked layout: block b = (ty/4)*blocks_x + tx/4 holds 16 bytes, row-major inside the block:
   // offset = b*16 + (ty%4)*4 + (tx%4). A block row (4 bytes) is therefore one little-endian uint32
@@ -37,7 +37,7 @@ struct TileGrid {
   // Precondition (unchecked): tile_x < blocks_x*4, tile_y < blocks_y*4.
   std::uint32_t blocked_offset(std::uint32_t tile_x, std::uint32_t tile_y) const;
 
-  std::uint32_t vertex_count() const;   // (tiles_x + 1) * (tiles_y + 1)
+  std::uint32_t vertex_count() const;  // (tiles_x + 1) * (tiles_y + 1)
   // corner_y*(tiles_x+1)+corner_x. Precondition (unchecked): corner_x <= tiles_x, corner_y <= tiles_y.
   std::uint32_t vertex_index(std::uint32_t corner_x, std::uint32_t corner_y) const;
 
@@ -45,7 +45,7 @@ struct TileGrid {
   // y = min(cy*tile_size, height) so partial tiles at the right/bottom edge end at the frame edge.
   std::vector<float> corner_vertices() const;
 
-  std::uint32_t max_index_count() const; // tile_count() * 6: the preallocated index buffer size
+  std::uint32_t max_index_count() const;  // tile_count() * 6: the preallocated index buffer size
 };
 
 // Row-major per-tile IDs (tiles_x*tiles_y) <-> blocked layout (id_bytes(), kNoTile padding).

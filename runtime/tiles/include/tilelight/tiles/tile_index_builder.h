@@ -63,8 +63,8 @@ class TileIndexBuilder {
   // Padding slots (block entries outside the grid) are never read, so they may hold anything.
   // All errors are detected before anything is written: on a throw, indices and draws are unchanged.
   // Only indices[0, index_count) are written.
-  IndexBuildStats build(std::span<const std::uint8_t> blocked_raw_ids, bool coalesce,
-                        std::span<std::uint32_t> indices, std::span<DrawRecord> draws);
+  IndexBuildStats build(std::span<const std::uint8_t> blocked_raw_ids, bool coalesce, std::span<std::uint32_t> indices,
+                        std::span<DrawRecord> draws);
 
   const TileGrid& grid() const { return grid_; }
   std::uint32_t class_count() const { return class_count_; }
@@ -84,10 +84,10 @@ class TileIndexBuilder {
   std::uint32_t find_rects(const std::uint8_t* ids, bool coalesce, Counts& counts);
   // Pass 1 for one block (a block fully inside the grid / one on the right or bottom edge):
   // writes its rectangles to `out` and returns how many. Throws on an invalid tile.
-  std::uint32_t full_block(const std::uint8_t* raw, std::uint32_t bx, std::uint32_t by,
-                           bool coalesce, Rect* out, Counts& counts) const;
-  std::uint32_t partial_block(const std::uint8_t* raw, std::uint32_t bx, std::uint32_t by,
-                              bool coalesce, Rect* out, Counts& counts) const;
+  std::uint32_t full_block(const std::uint8_t* raw, std::uint32_t bx, std::uint32_t by, bool coalesce, Rect* out,
+                           Counts& counts) const;
+  std::uint32_t partial_block(const std::uint8_t* raw, std::uint32_t bx, std::uint32_t by, bool coalesce, Rect* out,
+                              Counts& counts) const;
   // Cold path: names the first invalid tile of a block known to hold one.
   [[noreturn]] void throw_bad_tile(const std::uint8_t* raw, std::uint32_t bx, std::uint32_t by) const;
   // Passes 2 and 3: prefix sum into the draw records, then the indices of every rectangle.

@@ -29,7 +29,7 @@ struct DeviceLimits {
   std::uint32_t max_push_constants_size = 0;
   std::uint32_t max_compute_workgroup_invocations = 0;
   std::uint32_t max_draw_indirect_count = 0;
-  float max_point_size = 0.0f;                 // pointSizeRange[1]
+  float max_point_size = 0.0f;  // pointSizeRange[1]
   std::uint32_t max_viewport_width = 0, max_viewport_height = 0;
   VkDeviceSize min_uniform_buffer_offset_alignment = 0;
   VkDeviceSize min_storage_buffer_offset_alignment = 0;

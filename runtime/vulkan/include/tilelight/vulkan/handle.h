@@ -23,8 +23,7 @@ class Handle {
   Handle& operator=(const Handle&) = delete;
 
   Handle(Handle&& other) noexcept
-      : handle_(std::exchange(other.handle_, T{VK_NULL_HANDLE})),
-        deleter_(std::move(other.deleter_)) {}
+      : handle_(std::exchange(other.handle_, T{VK_NULL_HANDLE})), deleter_(std::move(other.deleter_)) {}
 
   Handle& operator=(Handle&& other) noexcept {
     if (this != &other) {

@@ -27,19 +27,18 @@ bool is_host_visible(MemoryUse use);
 
 // The first memory type allowed by `type_bits` that has every flag in `required`; nullopt if
 // none. Drivers order memory types best-first, so the first match is the one to take.
-std::optional<std::uint32_t> find_memory_type(const VkPhysicalDeviceMemoryProperties& props,
-                                              std::uint32_t type_bits,
+std::optional<std::uint32_t> find_memory_type(const VkPhysicalDeviceMemoryProperties& props, std::uint32_t type_bits,
                                               VkMemoryPropertyFlags required);
 
 // The memory type for `use`, applying its preferences; throws tilelight::Error naming `object`
 // when no allowed type fits.
-std::uint32_t choose_memory_type(const VkPhysicalDeviceMemoryProperties& props,
-                                 std::uint32_t type_bits, MemoryUse use, std::string_view object);
+std::uint32_t choose_memory_type(const VkPhysicalDeviceMemoryProperties& props, std::uint32_t type_bits, MemoryUse use,
+                                 std::string_view object);
 
 // Allocates memory for a resource with `requirements`. `object` names the resource in errors
 // ("vkAllocateMemory failed for G-buffer RT1: VK_ERROR_OUT_OF_DEVICE_MEMORY") and in
 // validation messages.
-UniqueDeviceMemory allocate_memory(const Context& context, const VkMemoryRequirements& requirements,
-                                   MemoryUse use, std::string_view object);
+UniqueDeviceMemory allocate_memory(const Context& context, const VkMemoryRequirements& requirements, MemoryUse use,
+                                   std::string_view object);
 
 }  // namespace tilelight

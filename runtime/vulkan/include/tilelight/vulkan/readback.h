@@ -26,13 +26,12 @@ class Image;
 // current layout, not UNDEFINED. All work that writes it must have been submitted before this
 // call: the copy waits for ALL_COMMANDS of earlier submits. Afterwards the image is back in
 // `layout`. Waits at most `timeout` (TimeoutError).
-std::vector<std::byte> read_image_bytes(const Context& context, const CommandPool& pool,
-                                        const Image& image, VkImageLayout layout,
-                                        Seconds timeout = kDefaultGpuTimeout);
+std::vector<std::byte> read_image_bytes(const Context& context, const CommandPool& pool, const Image& image,
+                                        VkImageLayout layout, Seconds timeout = kDefaultGpuTimeout);
 
 // read_image_bytes() decoded by decode_rgba().
-RgbaImage read_image_rgba(const Context& context, const CommandPool& pool, const Image& image,
-                          VkImageLayout layout, Seconds timeout = kDefaultGpuTimeout);
+RgbaImage read_image_rgba(const Context& context, const CommandPool& pool, const Image& image, VkImageLayout layout,
+                          Seconds timeout = kDefaultGpuTimeout);
 
 // Whether decode_rgba() knows `format`: R8G8B8A8/B8G8R8A8 UNORM and SRGB, R16G16B16A16_SFLOAT,
 // R32G32B32A32_SFLOAT, R32_SFLOAT and D32_SFLOAT (single channel -> (v, 0, 0, 1)).
@@ -41,8 +40,7 @@ bool can_decode_rgba(VkFormat format);
 // Converts tightly packed texels to float RGBA. 8-bit formats give value / 255 of the stored
 // byte: SRGB values are NOT linearised, so a PNG written from them shows what the image holds.
 // B8G8R8A8 is swizzled to RGBA. Throws tilelight::Error for other formats or a size mismatch.
-RgbaImage decode_rgba(VkFormat format, std::uint32_t width, std::uint32_t height,
-                      std::span<const std::byte> texels);
+RgbaImage decode_rgba(VkFormat format, std::uint32_t width, std::uint32_t height, std::span<const std::byte> texels);
 
 // IEEE half to float, including subnormals, infinities and NaN.
 float half_to_float(std::uint16_t half);

@@ -73,8 +73,7 @@ class TimelineSemaphore {
 
   // Waits until the counter reaches `value`; throws TimeoutError naming `stage` after
   // `timeout`.
-  void wait(std::uint64_t value, std::string_view stage,
-            Seconds timeout = kDefaultGpuTimeout) const;
+  void wait(std::uint64_t value, std::string_view stage, Seconds timeout = kDefaultGpuTimeout) const;
 
  private:
   VkDevice device_ = VK_NULL_HANDLE;

@@ -40,8 +40,7 @@ class ValidationLog {
   std::size_t ignored_count() const;
 
   // Called by the debug messenger; public so the C callback can reach it.
-  void add(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-           const VkDebugUtilsMessengerCallbackDataEXT& data);
+  void add(VkDebugUtilsMessageSeverityFlagBitsEXT severity, const VkDebugUtilsMessengerCallbackDataEXT& data);
 
  private:
   mutable std::mutex mutex_;

@@ -28,18 +28,14 @@ struct DeviceDeleter {
 struct DebugMessengerDeleter {
   VkInstance instance = VK_NULL_HANDLE;
   PFN_vkDestroyDebugUtilsMessengerEXT destroy = nullptr;
-  void operator()(VkDebugUtilsMessengerEXT messenger) const noexcept {
-    destroy(instance, messenger, nullptr);
-  }
+  void operator()(VkDebugUtilsMessengerEXT messenger) const noexcept { destroy(instance, messenger, nullptr); }
 };
 
 // Command buffers return to their pool; the pool must outlive them.
 struct CommandBufferDeleter {
   VkDevice device = VK_NULL_HANDLE;
   VkCommandPool pool = VK_NULL_HANDLE;
-  void operator()(VkCommandBuffer buffer) const noexcept {
-    vkFreeCommandBuffers(device, pool, 1, &buffer);
-  }
+  void operator()(VkCommandBuffer buffer) const noexcept { vkFreeCommandBuffers(device, pool, 1, &buffer); }
 };
 
 // Descriptor sets return to their pool, which must have been created with
@@ -65,25 +61,18 @@ using UniqueImage = Handle<VkImage, DeviceChildDeleter<VkImage, &vkDestroyImage>
 using UniqueImageView = Handle<VkImageView, DeviceChildDeleter<VkImageView, &vkDestroyImageView>>;
 using UniqueSampler = Handle<VkSampler, DeviceChildDeleter<VkSampler, &vkDestroySampler>>;
 using UniqueDeviceMemory = Handle<VkDeviceMemory, DeviceChildDeleter<VkDeviceMemory, &vkFreeMemory>>;
-using UniqueCommandPool =
-    Handle<VkCommandPool, DeviceChildDeleter<VkCommandPool, &vkDestroyCommandPool>>;
+using UniqueCommandPool = Handle<VkCommandPool, DeviceChildDeleter<VkCommandPool, &vkDestroyCommandPool>>;
 using UniqueFence = Handle<VkFence, DeviceChildDeleter<VkFence, &vkDestroyFence>>;
 using UniqueSemaphore = Handle<VkSemaphore, DeviceChildDeleter<VkSemaphore, &vkDestroySemaphore>>;
 using UniqueQueryPool = Handle<VkQueryPool, DeviceChildDeleter<VkQueryPool, &vkDestroyQueryPool>>;
 using UniquePipeline = Handle<VkPipeline, DeviceChildDeleter<VkPipeline, &vkDestroyPipeline>>;
-using UniquePipelineLayout =
-    Handle<VkPipelineLayout, DeviceChildDeleter<VkPipelineLayout, &vkDestroyPipelineLayout>>;
-using UniquePipelineCache =
-    Handle<VkPipelineCache, DeviceChildDeleter<VkPipelineCache, &vkDestroyPipelineCache>>;
+using UniquePipelineLayout = Handle<VkPipelineLayout, DeviceChildDeleter<VkPipelineLayout, &vkDestroyPipelineLayout>>;
+using UniquePipelineCache = Handle<VkPipelineCache, DeviceChildDeleter<VkPipelineCache, &vkDestroyPipelineCache>>;
 using UniqueDescriptorSetLayout =
-    Handle<VkDescriptorSetLayout,
-           DeviceChildDeleter<VkDescriptorSetLayout, &vkDestroyDescriptorSetLayout>>;
-using UniqueDescriptorPool =
-    Handle<VkDescriptorPool, DeviceChildDeleter<VkDescriptorPool, &vkDestroyDescriptorPool>>;
-using UniqueShaderModule =
-    Handle<VkShaderModule, DeviceChildDeleter<VkShaderModule, &vkDestroyShaderModule>>;
+    Handle<VkDescriptorSetLayout, DeviceChildDeleter<VkDescriptorSetLayout, &vkDestroyDescriptorSetLayout>>;
+using UniqueDescriptorPool = Handle<VkDescriptorPool, DeviceChildDeleter<VkDescriptorPool, &vkDestroyDescriptorPool>>;
+using UniqueShaderModule = Handle<VkShaderModule, DeviceChildDeleter<VkShaderModule, &vkDestroyShaderModule>>;
 using UniqueRenderPass = Handle<VkRenderPass, DeviceChildDeleter<VkRenderPass, &vkDestroyRenderPass>>;
-using UniqueFramebuffer =
-    Handle<VkFramebuffer, DeviceChildDeleter<VkFramebuffer, &vkDestroyFramebuffer>>;
+using UniqueFramebuffer = Handle<VkFramebuffer, DeviceChildDeleter<VkFramebuffer, &vkDestroyFramebuffer>>;
 
 }  // namespace tilelight
