@@ -72,8 +72,7 @@ TEST_F(VulkanTest, ValidationMessagesAreCountedAndFailTheRun) {
   auto submit_message = reinterpret_cast<PFN_vkSubmitDebugUtilsMessageEXT>(
       vkGetInstanceProcAddr(context().instance(), "vkSubmitDebugUtilsMessageEXT"));
   ASSERT_NE(submit_message, nullptr);
-  VkDebugUtilsMessengerCallbackDataEXT data{};
-  data.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CALLBACK_DATA_EXT;
+  VkDebugUtilsMessengerCallbackDataEXT data{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CALLBACK_DATA_EXT};
   data.pMessageIdName = "TEST-injected";
   data.pMessage = "injected by the test";
   submit_message(context().instance(), VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
@@ -83,8 +82,7 @@ TEST_F(VulkanTest, ValidationMessagesAreCountedAndFailTheRun) {
 
   // A buffer with no usage flags is invalid (VUID-VkBufferCreateInfo-usage-requiredbitmask);
   // lavapipe creates it anyway, so the call is safe to make.
-  VkBufferCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = 16;
   info.usage = 0;
   VkBuffer buffer = VK_NULL_HANDLE;
@@ -112,8 +110,7 @@ TEST_F(VulkanTest, IgnoredIdsAreCountedSeparately) {
   auto submit_message = reinterpret_cast<PFN_vkSubmitDebugUtilsMessageEXT>(
       vkGetInstanceProcAddr(context().instance(), "vkSubmitDebugUtilsMessageEXT"));
   ASSERT_NE(submit_message, nullptr);
-  VkDebugUtilsMessengerCallbackDataEXT data{};
-  data.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CALLBACK_DATA_EXT;
+  VkDebugUtilsMessengerCallbackDataEXT data{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CALLBACK_DATA_EXT};
   data.pMessageIdName = "TEST-known-layer-bug";
   data.pMessage = "filtered";
   submit_message(context().instance(), VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT,

@@ -4,8 +4,7 @@ namespace tilelight {
 
 void image_barrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, VkImageLayout old_layout,
                    VkImageLayout new_layout, Scope src, Scope dst) {
-  VkImageMemoryBarrier barrier{};
-  barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   barrier.srcAccessMask = src.access;
   barrier.dstAccessMask = dst.access;
   barrier.oldLayout = old_layout;
@@ -19,8 +18,7 @@ void image_barrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceR
 
 void buffer_barrier(VkCommandBuffer cmd, VkBuffer buffer, Scope src, Scope dst, VkDeviceSize offset,
                     VkDeviceSize size) {
-  VkBufferMemoryBarrier barrier{};
-  barrier.sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER;
+  VkBufferMemoryBarrier barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
   barrier.srcAccessMask = src.access;
   barrier.dstAccessMask = dst.access;
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
@@ -32,8 +30,7 @@ void buffer_barrier(VkCommandBuffer cmd, VkBuffer buffer, Scope src, Scope dst, 
 }
 
 void memory_barrier(VkCommandBuffer cmd, Scope src, Scope dst) {
-  VkMemoryBarrier barrier{};
-  barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = src.access;
   barrier.dstAccessMask = dst.access;
   vkCmdPipelineBarrier(cmd, src.stages, dst.stages, 0, 1, &barrier, 0, nullptr, 0, nullptr);

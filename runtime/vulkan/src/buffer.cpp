@@ -14,8 +14,7 @@ Buffer::Buffer(const Context& context, BufferDesc desc) : desc_(std::move(desc))
   if (desc_.size == 0) {
     throw Error(fmt::format("buffer {} has size 0", desc_.name));
   }
-  VkBufferCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = desc_.size;
   info.usage = desc_.usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;  // one queue

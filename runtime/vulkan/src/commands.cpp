@@ -9,8 +9,7 @@ namespace tilelight {
 
 CommandPool::CommandPool(const Context& context, std::string name, VkCommandPoolCreateFlags flags)
     : context_(&context), name_(std::move(name)) {
-  VkCommandPoolCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  VkCommandPoolCreateInfo info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   info.flags = flags;
   info.queueFamilyIndex = context.queue_family();
   VkCommandPool pool = VK_NULL_HANDLE;
@@ -20,8 +19,7 @@ CommandPool::CommandPool(const Context& context, std::string name, VkCommandPool
 }
 
 UniqueCommandBuffer CommandPool::allocate(std::string_view name) const {
-  VkCommandBufferAllocateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   info.commandPool = pool_.get();
   info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   info.commandBufferCount = 1;
@@ -33,8 +31,7 @@ UniqueCommandBuffer CommandPool::allocate(std::string_view name) const {
 }
 
 void begin_commands(VkCommandBuffer cmd, std::string_view name, VkCommandBufferUsageFlags usage) {
-  VkCommandBufferBeginInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  VkCommandBufferBeginInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   info.flags = usage;
   check(vkBeginCommandBuffer(cmd, &info), "vkBeginCommandBuffer", name);
 }

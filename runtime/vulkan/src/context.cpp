@@ -99,8 +99,7 @@ void Context::create_instance(const ContextOptions& options) {
     }
   }
 
-  VkApplicationInfo app{};
-  app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = options.application_name.c_str();
   app.applicationVersion = 1;
   app.pEngineName = "tilelight";
@@ -111,16 +110,14 @@ void Context::create_instance(const ContextOptions& options) {
   // vkDestroyInstance, which the separate messenger below cannot.
   VkDebugUtilsMessengerCreateInfoEXT messenger_info = make_messenger_info(*log_);
   const VkValidationFeatureEnableEXT sync_validation = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
-  VkValidationFeaturesEXT validation_features{};
-  validation_features.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT;
+  VkValidationFeaturesEXT validation_features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
   validation_features.enabledValidationFeatureCount = 1;
   validation_features.pEnabledValidationFeatures = &sync_validation;
   if (options.synchronization_validation) {
     messenger_info.pNext = &validation_features;
   }
 
-  VkInstanceCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   info.pNext = validation_ ? &messenger_info : nullptr;
   info.pApplicationInfo = &app;
   info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
@@ -169,22 +166,18 @@ void Context::pick_device(const ContextOptions& options) {
 
 void Context::create_device() {
   // What the device offers...
-  VkPhysicalDeviceVulkan12Features supported12{};
-  supported12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
-  VkPhysicalDeviceFeatures2 supported{};
-  supported.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   supported.pNext = &supported12;
   vkGetPhysicalDeviceFeatures2(physical_device_, &supported);
 
   // ... and what the runtime turns on: only what it uses, so that validation still flags a
   // pass that relies on a feature nobody enabled.
-  VkPhysicalDeviceVulkan12Features enable12{};
-  enable12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+  VkPhysicalDeviceVulkan12Features enable12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   enable12.timelineSemaphore = VK_TRUE;  // checked by enumerate_devices()
   enable12.drawIndirectCount = supported12.drawIndirectCount;
   enable12.hostQueryReset = supported12.hostQueryReset;
-  VkPhysicalDeviceFeatures2 enable{};
-  enable.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   enable.pNext = &enable12;
   enable.features.multiDrawIndirect = supported.features.multiDrawIndirect;
   enable.features.sampleRateShading = supported.features.sampleRateShading;
@@ -201,14 +194,12 @@ void Context::create_device() {
   features_.large_points = enable.features.largePoints == VK_TRUE;
 
   const float priority = 1.0f;
-  VkDeviceQueueCreateInfo queue_info{};
-  queue_info.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+  VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queue_info.queueFamilyIndex = queue_family_;
   queue_info.queueCount = 1;
   queue_info.pQueuePriorities = &priority;
 
-  VkDeviceCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   info.pNext = &enable;  // features go through pNext, so pEnabledFeatures stays null
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
@@ -232,8 +223,7 @@ void Context::set_object_name(VkObjectType type, std::uint64_t handle, std::stri
     return;
   }
   const std::string copy(name);  // the API wants a NUL-terminated string
-  VkDebugUtilsObjectNameInfoEXT info{};
-  info.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT;
+  VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
   info.objectType = type;
   info.objectHandle = handle;
   info.pObjectName = copy.c_str();
@@ -241,8 +231,7 @@ void Context::set_object_name(VkObjectType type, std::uint64_t handle, std::stri
 }
 
 void Context::wait_idle(std::string_view stage, Seconds timeout) const {
-  VkFenceCreateInfo fence_info{};
-  fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   VkFence raw = VK_NULL_HANDLE;
   check(vkCreateFence(device_.get(), &fence_info, nullptr, &raw), "vkCreateFence", stage);
   UniqueFence fence(raw, {device_.get()});

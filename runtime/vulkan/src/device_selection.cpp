@@ -51,10 +51,8 @@ std::optional<std::uint32_t> graphics_compute_family(VkPhysicalDevice device) {
 }
 
 bool has_timeline_semaphores(VkPhysicalDevice device) {
-  VkPhysicalDeviceVulkan12Features features12{};
-  features12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
-  VkPhysicalDeviceFeatures2 features{};
-  features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   features.pNext = &features12;
   vkGetPhysicalDeviceFeatures2(device, &features);
   return features12.timelineSemaphore == VK_TRUE;

@@ -45,8 +45,7 @@ Image::Image(const Context& context, ImageDesc desc) : desc_(std::move(desc)) {
   check_support(context, desc_);
   const VkDevice device = context.device();
 
-  VkImageCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
+  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = desc_.format;
   info.extent = {desc_.extent.width, desc_.extent.height, 1};
@@ -75,8 +74,7 @@ Image::Image(const Context& context, ImageDesc desc) : desc_(std::move(desc)) {
     return;  // a view of a transfer-only image is invalid (VUID-VkImageViewCreateInfo-image-04441)
   }
 
-  VkImageViewCreateInfo view_info{};
-  view_info.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
+  VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   view_info.image = image;
   view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
   view_info.format = desc_.format;

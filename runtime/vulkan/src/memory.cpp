@@ -62,8 +62,7 @@ std::uint32_t choose_memory_type(const VkPhysicalDeviceMemoryProperties& props, 
 
 UniqueDeviceMemory allocate_memory(const Context& context, const VkMemoryRequirements& requirements, MemoryUse use,
                                    std::string_view object) {
-  VkMemoryAllocateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+  VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   info.allocationSize = requirements.size;
   info.memoryTypeIndex = choose_memory_type(context.memory_properties(), requirements.memoryTypeBits, use, object);
   VkDeviceMemory memory = VK_NULL_HANDLE;

@@ -8,8 +8,7 @@
 namespace tilelight {
 
 Sampler::Sampler(const Context& context, SamplerDesc desc) : name_(std::move(desc.name)) {
-  VkSamplerCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = desc.filter;
   info.minFilter = desc.filter;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;  // images have one mip level

@@ -27,15 +27,13 @@ void submit(const Context& context, const Submission& submission, std::string_vi
 
   // Values for binary semaphores in these arrays are ignored by Vulkan, so one struct serves
   // any mix of binary and timeline semaphores.
-  VkTimelineSemaphoreSubmitInfo timeline{};
-  timeline.sType = VK_STRUCTURE_TYPE_TIMELINE_SEMAPHORE_SUBMIT_INFO;
+  VkTimelineSemaphoreSubmitInfo timeline{VK_STRUCTURE_TYPE_TIMELINE_SEMAPHORE_SUBMIT_INFO};
   timeline.waitSemaphoreValueCount = static_cast<std::uint32_t>(wait_values.size());
   timeline.pWaitSemaphoreValues = wait_values.data();
   timeline.signalSemaphoreValueCount = static_cast<std::uint32_t>(signal_values.size());
   timeline.pSignalSemaphoreValues = signal_values.data();
 
-  VkSubmitInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  VkSubmitInfo info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   info.pNext = &timeline;
   info.waitSemaphoreCount = static_cast<std::uint32_t>(wait_semaphores.size());
   info.pWaitSemaphores = wait_semaphores.data();

@@ -11,8 +11,7 @@ namespace tilelight {
 namespace {
 
 UniqueSemaphore create_semaphore(const Context& context, const void* next, const std::string& name) {
-  VkSemaphoreCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO;
+  VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
   info.pNext = next;
   VkSemaphore semaphore = VK_NULL_HANDLE;
   check(vkCreateSemaphore(context.device(), &info, nullptr, &semaphore), "vkCreateSemaphore", name);
@@ -25,8 +24,7 @@ UniqueSemaphore create_semaphore(const Context& context, const void* next, const
 
 Fence::Fence(const Context& context, std::string name, bool signaled)
     : device_(context.device()), name_(std::move(name)) {
-  VkFenceCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  VkFenceCreateInfo info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   info.flags = signaled ? VkFenceCreateFlags{VK_FENCE_CREATE_SIGNALED_BIT} : VkFenceCreateFlags{0};
   VkFence fence = VK_NULL_HANDLE;
   check(vkCreateFence(device_, &info, nullptr, &fence), "vkCreateFence", name_);
@@ -62,8 +60,7 @@ Semaphore::Semaphore(const Context& context, std::string name)
 
 TimelineSemaphore::TimelineSemaphore(const Context& context, std::string name, std::uint64_t initial_value)
     : device_(context.device()), name_(std::move(name)) {
-  VkSemaphoreTypeCreateInfo type{};
-  type.sType = VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO;
+  VkSemaphoreTypeCreateInfo type{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
   type.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
   type.initialValue = initial_value;
   semaphore_ = create_semaphore(context, &type, name_);
@@ -83,8 +80,7 @@ void TimelineSemaphore::signal(std::uint64_t new_value) const {
                     "current value {}",
                     name_, new_value, current));
   }
-  VkSemaphoreSignalInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_SEMAPHORE_SIGNAL_INFO;
+  VkSemaphoreSignalInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_SIGNAL_INFO};
   info.semaphore = semaphore_.get();
   info.value = new_value;
   check(vkSignalSemaphore(device_, &info), "vkSignalSemaphore", name_);
@@ -92,8 +88,7 @@ void TimelineSemaphore::signal(std::uint64_t new_value) const {
 
 void TimelineSemaphore::wait(std::uint64_t target, std::string_view stage, Seconds timeout) const {
   const VkSemaphore semaphore = semaphore_.get();
-  VkSemaphoreWaitInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO;
+  VkSemaphoreWaitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO};
   info.semaphoreCount = 1;
   info.pSemaphores = &semaphore;
   info.pValues = &target;

@@ -35,8 +35,7 @@ TimestampQueries::TimestampQueries(const Context& context, std::string name, std
   if (capacity_ == 0) {
     throw Error(fmt::format("timestamps {}: capacity must be > 0", name_));
   }
-  VkQueryPoolCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   info.queryType = VK_QUERY_TYPE_TIMESTAMP;
   info.queryCount = capacity_;
   VkQueryPool pool = VK_NULL_HANDLE;
