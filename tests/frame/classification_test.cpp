@@ -3,6 +3,7 @@
 #include "frame_support.h"
 #include "tilelight/scene/scene.h"
 #include "tilelight_testing/cpu_classifier.h"
+#include "tilelight_testing/renderer_test_seam.h"
 #include "tilelight_testing/test_support.h"
 
 #include <split_second_shaders.h>
@@ -35,9 +36,9 @@ class Classification : public VulkanTest {
 // comparison to mean something.
 void expect_matches_reference(TileRenderer& renderer) {
   const std::vector<std::uint8_t> gpu = renderer.raw_tile_ids();
-  const ReferenceClassification cpu =
-      classify_on_cpu(renderer.grid(), renderer.read_gbuffer(), renderer.read_shadow_map(), renderer.lighting_params(),
-                      registry_raw_bits());
+  const ReferenceClassification cpu = classify_on_cpu(
+      renderer.grid(), TileRendererTestSeam::read_gbuffer(renderer), TileRendererTestSeam::read_shadow_map(renderer),
+      TileRendererTestSeam::lighting_params(renderer), registry_raw_bits());
   const ReferenceComparison cmp = compare_with_reference(gpu, cpu, renderer.grid().tiles_x);
   EXPECT_EQ(cmp.mismatches, 0u) << cmp.first_mismatch;
   EXPECT_LE(cmp.uncertain_tiles, gpu.size() / 100) << "too many tiles near a threshold for the comparison to mean much";
@@ -92,7 +93,7 @@ EdgeBitCount count_edge_bits(const GBufferSamples& g) {
 TEST_F(Classification, EdgeBitsCoverEveryPixelWithDifferingSamples) {
   std::size_t differing = 0;
   for (const char* camera : {"default", "low", "shadow"}) {
-    const EdgeBitCount count = count_edge_bits(render(camera, 320, 180)->read_gbuffer());
+    const EdgeBitCount count = count_edge_bits(TileRendererTestSeam::read_gbuffer(*render(camera, 320, 180)));
     EXPECT_EQ(count.missed, 0u) << camera << ": " << count.first_missed
                                 << " has differing samples but no MSAA-edge bit";
     differing += count.differing;
@@ -137,7 +138,8 @@ TEST_F(Classification, DepthBitsAgreeWithTheOtherTargets) {
   DepthBitCount total;
   for (const char* camera : {"default", "low", "shadow"}) {
     auto renderer = render(camera, 320, 180);
-    const DepthBitCount count = count_depth_bits(renderer->read_gbuffer(), renderer->lighting_params().sun_direction);
+    const DepthBitCount count = count_depth_bits(TileRendererTestSeam::read_gbuffer(*renderer),
+                                                 TileRendererTestSeam::lighting_params(*renderer).sun_direction);
     EXPECT_EQ(count.wrong, 0u) << camera << ": " << count.first_wrong;
     total.sky += count.sky;
     total.facing += count.facing;

@@ -123,13 +123,13 @@ std::set<std::uint32_t> check_edited_frame(const Context& context, const Scene& 
   options.camera = camera;
   TileRenderer renderer(context, scene, options);
   renderer.render_frame();
-  const GBufferSamples edited =
-      edit_tiles(renderer.read_gbuffer(), renderer.grid(), renderer.lighting_params(), renderer.raw_tile_ids());
+  const GBufferSamples edited = edit_tiles(TileRendererTestSeam::read_gbuffer(renderer), renderer.grid(),
+                                           TileRendererTestSeam::lighting_params(renderer), renderer.raw_tile_ids());
   TileRendererTestSeam::set_gbuffer_override(renderer, edited);
   const FrameResult frame = renderer.render_frame();
 
   // The upload reproduced the edited G-buffer (up to the targets' 8-bit and half precision).
-  const GBufferSamples uploaded = renderer.read_gbuffer();
+  const GBufferSamples uploaded = TileRendererTestSeam::read_gbuffer(renderer);
   EXPECT_EQ(uploaded.values.size(), edited.values.size());
   std::size_t off = 0;
   for (std::size_t i = 0; i < std::min(uploaded.values.size(), edited.values.size()); ++i) {
@@ -138,8 +138,9 @@ std::set<std::uint32_t> check_edited_frame(const Context& context, const Scene& 
   EXPECT_EQ(off, 0u) << camera << ": uploaded G-buffer values differ from the edited ones";
   // The GPU classified the synthetic tiles as the reference does (shadow types up to SOFT).
   const std::vector<std::uint8_t> raw = renderer.raw_tile_ids();
-  const ReferenceClassification cpu = classify_on_cpu(renderer.grid(), uploaded, renderer.read_shadow_map(),
-                                                      renderer.lighting_params(), registry_raw_bits());
+  const ReferenceClassification cpu =
+      classify_on_cpu(renderer.grid(), uploaded, TileRendererTestSeam::read_shadow_map(renderer),
+                      TileRendererTestSeam::lighting_params(renderer), registry_raw_bits());
   const ReferenceComparison reference = compare_with_reference(raw, cpu, renderer.grid().tiles_x);
   EXPECT_EQ(reference.mismatches, 0u) << camera << ": " << reference.first_mismatch;
 

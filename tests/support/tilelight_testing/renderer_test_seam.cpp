@@ -4,6 +4,16 @@
 
 namespace tilelight {
 
+GBufferSamples TileRendererTestSeam::read_gbuffer(TileRenderer& renderer) { return renderer.read_gbuffer(); }
+
+std::vector<float> TileRendererTestSeam::read_shadow_map(const TileRenderer& renderer) {
+  return renderer.read_shadow_map();
+}
+
+const LightingParamsBlock& TileRendererTestSeam::lighting_params(const TileRenderer& renderer) {
+  return renderer.lighting_params();
+}
+
 void TileRendererTestSeam::set_gbuffer_override(TileRenderer& renderer, const GBufferSamples& samples) {
   renderer.set_gbuffer_override(samples);
 }

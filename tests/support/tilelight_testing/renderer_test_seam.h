@@ -1,16 +1,23 @@
 #pragma once
-// The tests' way into TileRenderer's hooks, which are private members: TileRenderer befriends
-// this class, and only the test-support library defines it, so production code cannot call
-// them while the frame tests still drive the real render path.
+// The tests' way into TileRenderer's test-only members, which are private: TileRenderer
+// befriends this class, and only the test-support library defines it, so production code cannot
+// call them while the frame tests still drive the real render path.
 
 #include "tilelight/render/tile_renderer.h"
 
 #include <functional>
+#include <vector>
 
 namespace tilelight {
 
 class TileRendererTestSeam {
  public:
+  // The last frame's G-buffer, every sample as stored, and shadow map (size^2 depths,
+  // row-major), and the lighting parameters the shaders read: the CPU reference's inputs.
+  static GBufferSamples read_gbuffer(TileRenderer& renderer);
+  static std::vector<float> read_shadow_map(const TileRenderer& renderer);
+  static const LightingParamsBlock& lighting_params(const TileRenderer& renderer);
+
   // Later frames take their G-buffer from `samples` instead of rendering the scene (the shadow
   // map still comes from the scene). Precondition: size and sample count match `renderer`.
   static void set_gbuffer_override(TileRenderer& renderer, const GBufferSamples& samples);

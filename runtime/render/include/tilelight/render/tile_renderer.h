@@ -103,20 +103,23 @@ class TileRenderer {
   std::uint32_t draw_class_count() const;  // 32 or 128
   TilePrimitive tile_primitive() const;    // the one chosen (RendererOptions::primitive)
   std::uint32_t pipeline_count() const;    // 32 or 96
-  const LightingParamsBlock& lighting_params() const;
 
   // Results of the last frame.
   std::vector<std::uint8_t> raw_tile_ids() const;  // row-major, tiles_x * tiles_y
   RgbaImage read_classified() const;
   RgbaImage read_naive() const;    // precondition: the naive pass runs (RendererOptions::baselines)
   RgbaImage read_dynamic() const;  // precondition: the dynamic pass runs
-  GBufferSamples read_gbuffer();
-  std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major
 
  private:
   // The tests' seam (tests/support/tilelight_testing/renderer_test_seam.h) and the only caller
-  // of the two hooks below; production code has no way to reach them.
+  // of the test-only members below; production code has no way to reach them.
   friend class TileRendererTestSeam;
+
+  // What the CPU reference classifier needs: the last frame's G-buffer and shadow map, and the
+  // lighting parameters the shaders read.
+  const LightingParamsBlock& lighting_params() const;
+  GBufferSamples read_gbuffer();
+  std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major
 
   // Later frames take their G-buffer from `samples` (the layout read_gbuffer() returns) instead
   // of rendering the scene; the shadow map still comes from the scene. Needs sample-rate
