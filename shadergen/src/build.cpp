@@ -70,9 +70,17 @@ Status apply_command_line_defines(DomainSpec& spec, const std::vector<std::strin
     return Ok{};
 }
 
-// The preprocessing settings that the spec's bytes do not hold, for the input-set key.
+// --target-env wins over the spec's "target_env".
+Status apply_target_env(DomainSpec& spec, const std::string& argument) {
+    if (argument.empty() || parse_target_env(argument, spec.target_env)) return Ok{};
+    return make_error("--target-env: unknown target environment \"" + argument + "\" (expected " +
+                      std::string(target_env_choices()) + ")");
+}
+
+// The settings that the spec's bytes do not hold but that decide the content keys, for the
+// input-set key.
 std::string preprocessing_settings(const DomainSpec& spec) {
-    std::string text = "defines";
+    std::string text = "target " + std::string(target_env_name(spec.target_env)) + "\ndefines";
     for (const std::string& define : spec.defines) text += "\n" + define;
     return text;
 }
@@ -126,6 +134,7 @@ Result<BuildSummary> build(const BuildOptions& given) {
     std::string ns = options.cpp_namespace.empty() ? spec->name : options.cpp_namespace;
     if (Status ok = check_names(options, cpp_name, ns); !ok) return std::move(ok).take_errors();
     if (Status ok = apply_command_line_defines(*spec, options.defines); !ok) return std::move(ok).take_errors();
+    if (Status ok = apply_target_env(*spec, options.target_env); !ok) return std::move(ok).take_errors();
     auto plan = expand(*spec);
     if (!plan) return std::move(plan).take_errors();
     clock.lap("parse spec");

@@ -78,7 +78,7 @@ std::optional<std::uint32_t> parse_raw_id(const DomainSpec& spec, const std::str
 }
 
 struct BuildArgs {
-    std::string spec, out, cache_dir, depfile, cpp_name, ns;
+    std::string spec, out, cache_dir, depfile, cpp_name, ns, target_env;
     std::vector<std::string> defines;
     unsigned jobs = 0;
     bool no_cache = false, stats = false, verbose = false;
@@ -104,6 +104,7 @@ int run_build(const BuildArgs& a, std::ostream& out, std::ostream& err) {
     options.cpp_name = a.cpp_name;
     options.cpp_namespace = a.ns;
     options.defines = a.defines;
+    options.target_env = a.target_env;
     options.write_stats = a.stats;
     options.verbose = a.verbose;
     options.remote_cache_url = a.remote_cache;
@@ -167,6 +168,9 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
                           "NAME=VALUE (or NAME, meaning 1) for every shader of the domain; repeatable; adds to and "
                           "replaces the spec's \"defines\"")
         ->allow_extra_args(false);
+    build_cmd->add_option("--target-env", b.target_env,
+                          "vulkan1.0, vulkan1.1, vulkan1.2 or vulkan1.3: the Vulkan (and so SPIR-V) version to compile "
+                          "and validate for (default: the spec's \"target_env\", else vulkan1.2)");
     build_cmd->add_flag("--stats", b.stats, "Also write stats.json: per-stage counts and per-permutation timings");
     build_cmd->add_flag("-v,--verbose", b.verbose, "One progress line per compiled source");
     build_cmd

@@ -17,6 +17,7 @@
 #include "sha256.h"
 #include "source_key.h"
 #include "spirv_passes.h"
+#include "target_env.h"
 #include "thread_pool.h"
 
 namespace shadergen {
@@ -73,7 +74,7 @@ std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan&
 
 // The domain's fixed defines, less those the job sets itself (a companion's own value wins).
 GlslSource source_of(const DomainSpec& spec, const CompileJob& job) {
-    GlslSource source{job.path, job.stage, spec.include_dirs, job.defines, {}};
+    GlslSource source{job.path, job.stage, spec.include_dirs, job.defines, {}, spec.target_env};
     for (const std::string& fixed : spec.defines) {
         bool own = std::any_of(job.defines.begin(), job.defines.end(),
                                [&](const std::string& d) { return define_name(d) == define_name(fixed); });
@@ -84,7 +85,9 @@ GlslSource source_of(const DomainSpec& spec, const CompileJob& job) {
 
 class DomainCompiler {
 public:
-    DomainCompiler(CompiledDomain& domain, const CompileOptions& options) : d_(domain), options_(options) {}
+    DomainCompiler(CompiledDomain& domain, const CompileOptions& options) : d_(domain), options_(options) {
+        key_parts_.target = target_description(d_.spec.target_env);
+    }
 
     Status run() {
         d_.jobs = make_jobs(d_.spec, d_.plan);
@@ -167,7 +170,7 @@ private:
                 continue;
             }
             for (const auto& include : results[i]->includes) dependencies.insert(include);
-            assign_source(i, cache_key(stage_name(d_.jobs[i].stage), key_text(results[i]->text)), by_key);
+            assign_source(i, cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(results[i]->text)), by_key);
             reads.push_back(std::move(results[i]->reads));
         }
         d_.dependencies.assign(dependencies.begin(), dependencies.end());
@@ -200,7 +203,7 @@ private:
         auto start = Clock::now();
         auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
         if (!words) return std::move(words).take_errors();
-        auto optimised = optimise_and_validate(std::move(words).value());
+        auto optimised = optimise_and_validate(std::move(words).value(), d_.spec.target_env);
         if (!optimised) return std::move(optimised).take_errors();
         record.compile_ms = milliseconds_since(start);
         CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
@@ -318,6 +321,7 @@ private:
 
     CompiledDomain& d_;
     const CompileOptions& options_;
+    CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
     std::optional<std::vector<InputRead>> reads_;  // what preprocessing read; nullopt: inconsistent
 };
 

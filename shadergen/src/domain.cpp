@@ -173,12 +173,13 @@ public:
             return std::move(spec_);
         }
         reader_.only_keys(root, "spec",
-                          {"format", "name", "description", "uber_shader", "include_dirs", "defines", "companions",
-                           "raw", "optimised"});
+                          {"format", "name", "description", "uber_shader", "include_dirs", "target_env", "defines",
+                           "companions", "raw", "optimised"});
         read_header(root);
         if (const Value* uber = reader_.member(root, "spec", "uber_shader", Type::object))
             spec_.uber = read_shader_file(*uber, "uber_shader");
         read_include_dirs(root);
+        read_target_env(root);
         if (const Value* defines = reader_.member(root, "spec", "defines", Type::object, false))
             spec_.defines = read_define_map(*defines, "defines");
         read_companions(root);
@@ -214,6 +215,14 @@ private:
                           "unknown stage \"" + stage + "\" (expected vertex, fragment or compute)");
         }
         return file;
+    }
+
+    void read_target_env(const Value& root) {
+        const Value* env = reader_.member(root, "spec", "target_env", Type::string, false);
+        if (env && !parse_target_env(env->string, spec_.target_env))
+            reader_.error(*env, "target_env",
+                          "unknown target environment \"" + env->string + "\" (expected " +
+                              std::string(target_env_choices()) + ")");
     }
 
     void read_include_dirs(const Value& root) {

@@ -32,6 +32,26 @@ EShLanguage to_glslang(Stage stage) {
     return EShLangFragment;
 }
 
+glslang::EShTargetClientVersion client_version(TargetEnv env) {
+    switch (env) {
+        case TargetEnv::vulkan1_0: return glslang::EShTargetVulkan_1_0;
+        case TargetEnv::vulkan1_1: return glslang::EShTargetVulkan_1_1;
+        case TargetEnv::vulkan1_2: return glslang::EShTargetVulkan_1_2;
+        case TargetEnv::vulkan1_3: return glslang::EShTargetVulkan_1_3;
+    }
+    return glslang::EShTargetVulkan_1_2;
+}
+
+glslang::EShTargetLanguageVersion spirv_version(TargetEnv env) {
+    switch (env) {
+        case TargetEnv::vulkan1_0: return glslang::EShTargetSpv_1_0;
+        case TargetEnv::vulkan1_1: return glslang::EShTargetSpv_1_3;
+        case TargetEnv::vulkan1_2: return glslang::EShTargetSpv_1_5;
+        case TargetEnv::vulkan1_3: return glslang::EShTargetSpv_1_6;
+    }
+    return glslang::EShTargetSpv_1_5;
+}
+
 // Resolves "local" includes against the including file's folder, then the include dirs;
 // <system> includes against the include dirs only. Keeps each file's text alive until
 // glslang releases it and remembers every file it opened.
@@ -147,8 +167,8 @@ struct ShaderJob {
         shader->setPreamble(preamble.c_str());
         EShLanguage stage = to_glslang(source.stage);
         shader->setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
-        shader->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
-        shader->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
+        shader->setEnvClient(glslang::EShClientVulkan, client_version(source.target));
+        shader->setEnvTarget(glslang::EShTargetSpv, spirv_version(source.target));
         shader->setEntryPoint("main");
         return Ok{};
     }

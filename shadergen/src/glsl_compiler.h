@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "shadergen/diagnostic.h"
+#include "shadergen/domain.h"
 #include "shadergen/registry.h"
 
 namespace shadergen {
@@ -23,6 +24,7 @@ struct GlslSource {
     std::vector<std::string> defines;                // "NAME" (= 1) or "NAME=VALUE" (defines.h)
     // The domain's fixed defines, same form, ahead of `defines`; none has a name in `defines`.
     std::vector<std::string> fixed_defines;
+    TargetEnv target = TargetEnv::vulkan1_2;         // Vulkan and SPIR-V versions
 };
 
 // One file the preprocessor looked at: opened (with the SHA-256 of the bytes it read) or
@@ -39,7 +41,8 @@ struct Preprocessed {
     std::vector<InputRead> reads;                // the shader, its includes and failed probes
 };
 
-// Target: Vulkan 1.2, SPIR-V 1.5, GLSL 450 unless the shader says otherwise.
+// The default target (Vulkan 1.2, SPIR-V 1.5), as target_description() writes it; GLSL 450
+// unless the shader says otherwise.
 inline constexpr const char* kTargetDescription = "vulkan1.2/spv1.5";
 
 // Thread-safe (each call owns its glslang objects). Diagnostics carry the original file

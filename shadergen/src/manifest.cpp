@@ -129,6 +129,7 @@ std::string write_manifest(const CompiledDomain& d) {
     w.key("domain"), w.value(d.spec.name);
     w.key("uber_shader"), w.value(d.spec.uber.path.filename().string());
     w.key("stage"), w.value(stage_name(d.spec.uber.stage));
+    w.key("target_env"), w.value(target_env_name(d.spec.target_env));
     write_features(w, d.spec);
     write_permutations(w, d);
     write_companions(w, d);

@@ -6,7 +6,15 @@
 namespace shadergen {
 namespace {
 
-constexpr spv_target_env kEnvironment = SPV_ENV_VULKAN_1_2;
+spv_target_env environment(TargetEnv env) {
+    switch (env) {
+        case TargetEnv::vulkan1_0: return SPV_ENV_VULKAN_1_0;
+        case TargetEnv::vulkan1_1: return SPV_ENV_VULKAN_1_1;
+        case TargetEnv::vulkan1_2: return SPV_ENV_VULKAN_1_2;
+        case TargetEnv::vulkan1_3: return SPV_ENV_VULKAN_1_3;
+    }
+    return SPV_ENV_VULKAN_1_2;
+}
 
 // Collects SPIRV-Tools messages into one line each.
 struct MessageLog {
@@ -29,8 +37,8 @@ struct MessageLog {
 
 }  // namespace
 
-Status validate_spirv(std::span<const std::uint32_t> words) {
-    spvtools::SpirvTools tools(kEnvironment);
+Status validate_spirv(std::span<const std::uint32_t> words, TargetEnv env) {
+    spvtools::SpirvTools tools(environment(env));
     MessageLog log;
     log.attach(tools);
     spvtools::ValidatorOptions options;
@@ -39,9 +47,9 @@ Status validate_spirv(std::span<const std::uint32_t> words) {
     return Ok{};
 }
 
-Result<OptimisedBlob> optimise_and_validate(std::vector<std::uint32_t> words) {
-    if (Status valid = validate_spirv(words); !valid) return std::move(valid).take_errors();
-    spvtools::Optimizer optimizer(kEnvironment);
+Result<OptimisedBlob> optimise_and_validate(std::vector<std::uint32_t> words, TargetEnv env) {
+    if (Status valid = validate_spirv(words, env); !valid) return std::move(valid).take_errors();
+    spvtools::Optimizer optimizer(environment(env));
     MessageLog log;
     log.attach(optimizer);
     optimizer.RegisterPerformancePasses();
@@ -55,7 +63,7 @@ Result<OptimisedBlob> optimise_and_validate(std::vector<std::uint32_t> words) {
         out.fallback_reason = "optimiser failed: " + log.text;
         return out;
     }
-    if (Status valid = validate_spirv(optimised); !valid) {
+    if (Status valid = validate_spirv(optimised, env); !valid) {
         out.words = std::move(words);
         out.fell_back = true;
         out.fallback_reason = "optimised blob is invalid: " + valid.errors().front().message;

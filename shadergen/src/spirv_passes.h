@@ -7,11 +7,12 @@
 #include <vector>
 
 #include "shadergen/diagnostic.h"
+#include "shadergen/domain.h"
 
 namespace shadergen {
 
-// Validates against the Vulkan 1.2 environment. Errors quote the validator's message.
-Status validate_spirv(std::span<const std::uint32_t> words);
+// Validates against the environment of `env`. Errors quote the validator's message.
+Status validate_spirv(std::span<const std::uint32_t> words, TargetEnv env = TargetEnv::vulkan1_2);
 
 struct OptimisedBlob {
     std::vector<std::uint32_t> words;
@@ -23,9 +24,11 @@ struct OptimisedBlob {
 
 // Validates the input (an invalid input is an error), runs the performance passes, validates
 // the result and falls back to the input if the optimised blob does not validate.
-Result<OptimisedBlob> optimise_and_validate(std::vector<std::uint32_t> words);
+// Both the passes and the validator work in the environment of `env`.
+Result<OptimisedBlob> optimise_and_validate(std::vector<std::uint32_t> words, TargetEnv env);
 
-// The optimisation recipe, part of every cache key.
+// The optimisation recipe, part of every cache key (beside the target, which picks the
+// passes' environment).
 inline constexpr const char* kOptimiserRecipe = "spirv-tools-performance-passes/vulkan1.2";
 
 }  // namespace shadergen

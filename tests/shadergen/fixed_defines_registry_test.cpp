@@ -1,6 +1,7 @@
-// The fixed-defines fixture built by the CMake function with DEFINES (tests/shadergen/CMakeLists.txt:
-// shadergen_add_permutations(fixed_defines_permutations ... DEFINES MAX_LIGHTS=2 GROUP_SIZE=16)):
-// the arguments reach shadergen as --define and every shader is compiled with them.
+// The fixed-defines fixture built by the CMake function with TARGET_ENV and DEFINES
+// (tests/shadergen/CMakeLists.txt: shadergen_add_permutations(fixed_defines_permutations ...
+// TARGET_ENV vulkan1.1 DEFINES MAX_LIGHTS=2 GROUP_SIZE=16)): the arguments reach shadergen as
+// --target-env and --define, and every shader is compiled with them.
 #include <gtest/gtest.h>
 
 #include <fixed_defines_permutations.h>
@@ -16,6 +17,18 @@ TEST(FixedDefinesRegistry, CMakeDefinesReachEveryShader) {
     ASSERT_TRUE(prepass && cull);
     EXPECT_EQ(prepass->shader.reflection.local_size[0], 16u) << "DEFINES GROUP_SIZE=16 replaced the spec's 64";
     EXPECT_EQ(cull->shader.reflection.local_size[0], 256u) << "the companion's own GROUP_SIZE still wins";
+}
+
+TEST(FixedDefinesRegistry, CMakeTargetEnvSetsTheSpirvVersion) {
+    const shadergen::Registry& r = fixed::registry();
+    std::size_t blobs = 0;
+    for (const shadergen::Permutation& p : r.raw) {
+        ASSERT_GT(p.spirv.size(), 1u);
+        EXPECT_EQ(p.spirv[1], 0x00010300u) << "TARGET_ENV vulkan1.1 means SPIR-V 1.3";
+        ++blobs;
+    }
+    for (const shadergen::CompanionShader& c : r.companions) EXPECT_EQ(c.shader.spirv[1], 0x00010300u) << c.name;
+    EXPECT_EQ(blobs, 2u);
 }
 
 }  // namespace

@@ -140,10 +140,10 @@ inline ProcessResult run_process(const fs::path& program, const std::vector<std:
 }
 
 // The external validator, as a second opinion beside shadergen's own validate_spirv().
-inline ProcessResult spirv_val(const fs::path& blob) {
+inline ProcessResult spirv_val(const fs::path& blob, const std::string& target_env = "vulkan1.2") {
     const fs::path installed = "/usr/bin/spirv-val";
     return run_process(fs::exists(installed) ? installed : fs::path("spirv-val"),
-                       {"--target-env", "vulkan1.2", blob.string()});
+                       {"--target-env", target_env, blob.string()});
 }
 
 inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }

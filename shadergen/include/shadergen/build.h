@@ -25,6 +25,8 @@ struct BuildOptions {
     // top-level "defines", so they reach every shader of the domain. They change the outputs
     // only through the preprocessed text, which is what the content cache is keyed on.
     std::vector<std::string> defines;
+    // `--target-env`: "vulkan1.0" ... "vulkan1.3"; empty: the spec's "target_env" (default vulkan1.2).
+    std::string target_env;
     bool write_stats = false;         // also write <out>/stats.json (timings: not deterministic)
     bool verbose = false;             // one progress line per compiled source
     // A content cache shared over HTTP: GET/PUT <url>/<key[0:2]>/<key>, asked after a local miss,

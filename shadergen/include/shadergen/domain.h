@@ -63,6 +63,17 @@ struct OptimisedVariant {
     std::vector<std::uint32_t> raw_features;  // raw bit indices
 };
 
+// The Vulkan version a domain's SPIR-V is compiled and validated for. Each implies a SPIR-V
+// version: 1.0 for Vulkan 1.0, 1.3 for 1.1, 1.5 for 1.2, 1.6 for 1.3.
+enum class TargetEnv { vulkan1_0, vulkan1_1, vulkan1_2, vulkan1_3 };
+
+// "vulkan1.2" for TargetEnv::vulkan1_2, and so on.
+std::string_view target_env_name(TargetEnv env);
+// The environment called `name` ("vulkan1.0" ... "vulkan1.3"), or false.
+bool parse_target_env(std::string_view name, TargetEnv& env);
+// "vulkan1.0, vulkan1.1, vulkan1.2 or vulkan1.3", for messages.
+std::string_view target_env_choices();
+
 struct ShaderFile {
     std::filesystem::path path;  // resolved against the spec's folder
     Stage stage = Stage::fragment;
@@ -85,6 +96,7 @@ struct DomainSpec {
     std::string description;
     ShaderFile uber;
     std::vector<std::filesystem::path> include_dirs;
+    TargetEnv target_env = TargetEnv::vulkan1_2;  // "target_env", or build --target-env
     // Fixed defines, "NAME=VALUE", in spec order: every shader of the domain (uber-shader and
     // companions) is compiled with them. None names a raw feature's define.
     std::vector<std::string> defines;
