@@ -28,6 +28,12 @@ int print_errors(const Diagnostics& errors, std::ostream& err) {
     return kExitError;
 }
 
+std::string value_names(const RawFeature& feature) {
+    std::string text;
+    for (const std::string& v : feature.values) text += (text.empty() ? "" : ", ") + v;
+    return "(" + text + ")";
+}
+
 // A raw ID as a number (12, 0x0c, 0b1100) or feature names joined by '|', '+' or ','.
 std::optional<std::uint32_t> parse_raw_id(const DomainSpec& spec, const std::string& text, std::string& why) {
     try {
@@ -52,17 +58,27 @@ std::optional<std::uint32_t> parse_raw_id(const DomainSpec& spec, const std::str
     }
     std::uint32_t id = 0;
     std::string name;
+    // A boolean feature by name, or a valued one as NAME=VALUE.
     auto flush = [&]() -> bool {
         if (name.empty()) return true;
+        std::string feature_name = name.substr(0, name.find('='));
+        std::string value = feature_name.size() < name.size() ? name.substr(feature_name.size() + 1) : std::string();
         auto found = std::find_if(spec.raw_features.begin(), spec.raw_features.end(),
-                                  [&](const RawFeature& f) { return f.name == name || f.define == name; });
+                                  [&](const RawFeature& f) { return f.name == feature_name || f.define == feature_name; });
         if (found == spec.raw_features.end()) {
-            why = "unknown raw feature \"" + name + "\" (known: ";
+            why = "unknown raw feature \"" + feature_name + "\" (known: ";
             for (std::size_t i = 0; i < spec.raw_features.size(); ++i) why += (i ? ", " : "") + spec.raw_features[i].name;
             why += ")";
             return false;
         }
-        id |= 1u << found->bit;
+        auto index = std::find(found->values.begin(), found->values.end(), value);
+        if (found->valued() && index == found->values.end()) {
+            why = "\"" + name + "\": " + found->name + " has values " + value_names(*found) + "; write " + found->name +
+                  "=<value>";
+            return false;
+        }
+        id |= found->valued() ? static_cast<std::uint32_t>(index - found->values.begin()) << found->bit
+                              : 1u << found->bit;
         name.clear();
         return true;
     };

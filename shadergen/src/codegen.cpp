@@ -44,9 +44,19 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
     for (std::size_t i = 0; i < d.plan.raw.size(); ++i)
         h << (i % 16 ? " " : "\n    ") << (d.plan.raw[i].pruned ? "true," : "false,");
     h << "\n}};\n\nnamespace raw_bit {\n";
-    for (const RawFeature& f : d.spec.raw_features)
-        h << "inline constexpr std::uint32_t " << f.name << " = 1u << " << f.bit << ";  // #define " << f.define
-          << "\n";
+    for (const RawFeature& f : d.spec.raw_features) {
+        if (!f.valued()) {
+            h << "inline constexpr std::uint32_t " << f.name << " = 1u << " << f.bit << ";  // #define " << f.define
+              << "\n";
+            continue;
+        }
+        // A valued feature's field holds the index of its value: raw |= index << <NAME>_shift.
+        std::string values;
+        for (const std::string& v : f.values) values += (values.empty() ? "" : ", ") + v;
+        h << "inline constexpr std::uint32_t " << f.name << "_shift = " << f.bit << ";  // #define " << f.define
+          << " <value>, values by index: " << values << "\n";
+        h << "inline constexpr std::uint32_t " << f.name << "_mask = 0x" << std::hex << f.mask() << std::dec << "u;\n";
+    }
     h << "}  // namespace raw_bit\n\nnamespace optimised_bit {\n";
     for (const OptimisedBit& b : d.spec.optimised_bits)
         h << "inline constexpr std::uint32_t " << b.name << " = 1u << " << b.bit << ";\n";

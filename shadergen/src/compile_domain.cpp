@@ -31,23 +31,21 @@ std::string CompileJob::label() const {
     return {};
 }
 
-const Blob* CompiledDomain::raw_blob(std::uint32_t id) const {
-    for (const CompileJob& job : jobs)
-        if (job.kind == JobKind::raw && job.id == id) return &blobs[static_cast<std::size_t>(job.blob)];
-    return nullptr;
+namespace {
+
+const Blob* blob_of(const CompiledDomain& d, const std::vector<int>& index, std::size_t id) {
+    if (id >= index.size() || index[id] < 0) return nullptr;
+    int blob = d.jobs[static_cast<std::size_t>(index[id])].blob;
+    return blob < 0 ? nullptr : &d.blobs[static_cast<std::size_t>(blob)];
 }
 
-const Blob* CompiledDomain::optimised_blob(std::uint32_t id) const {
-    for (const CompileJob& job : jobs)
-        if (job.kind == JobKind::optimised && job.id == id) return &blobs[static_cast<std::size_t>(job.blob)];
-    return nullptr;
-}
+}  // namespace
 
-const Blob* CompiledDomain::companion_blob(std::size_t index) const {
-    for (const CompileJob& job : jobs)
-        if (job.kind == JobKind::companion && job.id == index) return &blobs[static_cast<std::size_t>(job.blob)];
-    return nullptr;
-}
+const Blob* CompiledDomain::raw_blob(std::uint32_t id) const { return blob_of(*this, raw_jobs, id); }
+
+const Blob* CompiledDomain::optimised_blob(std::uint32_t id) const { return blob_of(*this, optimised_jobs, id); }
+
+const Blob* CompiledDomain::companion_blob(std::size_t index) const { return blob_of(*this, companion_jobs, index); }
 
 namespace {
 
@@ -91,6 +89,7 @@ public:
 
     Status run() {
         d_.jobs = make_jobs(d_.spec, d_.plan);
+        index_jobs();
         PhaseClock clock(d_.phases);
         d_.inputs_reused = reuse_inputs();
         clock.lap("input check");
@@ -109,6 +108,18 @@ public:
     }
 
 private:
+    void index_jobs() {
+        d_.raw_jobs.assign(d_.plan.raw.size(), -1);
+        d_.optimised_jobs.assign(d_.plan.optimised.size(), -1);
+        d_.companion_jobs.assign(d_.spec.companions.size(), -1);
+        for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
+            const CompileJob& job = d_.jobs[i];
+            auto& index = job.kind == JobKind::raw ? d_.raw_jobs
+                          : job.kind == JobKind::optimised ? d_.optimised_jobs : d_.companion_jobs;
+            index[job.id] = static_cast<int>(i);
+        }
+    }
+
     bool cancelled() const { return options_.cancelled && options_.cancelled(); }
 
     Status cancelled_error() const { return make_error("build interrupted"); }
@@ -227,11 +238,10 @@ private:
             options_.cancelled);
         if (cancelled()) return cancelled_error();
         std::vector<JobFailure> failures;
-        for (std::size_t s = 0; s < results.size(); ++s) {
-            if (results[s]) continue;
-            // Every job with this source has the same errors.
-            for (std::size_t j = 0; j < d_.jobs.size(); ++j)
-                if (d_.jobs[j].source == static_cast<int>(s)) failures.push_back({j, results[s].errors()});
+        // Every job with a failed source has that source's errors.
+        for (std::size_t j = 0; j < d_.jobs.size(); ++j) {
+            const auto& result = results[static_cast<std::size_t>(d_.jobs[j].source)];
+            if (!result) failures.push_back({j, result.errors()});
         }
         if (!failures.empty()) return group_failures(d_.jobs, failures);
         store_blobs(results);
@@ -271,16 +281,12 @@ private:
         for (CompileJob& job : d_.jobs) job.blob = d_.sources[static_cast<std::size_t>(job.source)].blob;
     }
 
-    Stage stage_of_blob(std::size_t blob) const {
-        for (const CompileJob& job : d_.jobs)
-            if (job.blob == static_cast<int>(blob)) return job.stage;
-        return Stage::fragment;
-    }
-
     Status reflect_blobs() {
         Diagnostics errors;
+        std::vector<Stage> stages(d_.blobs.size(), Stage::fragment);
+        for (const CompileJob& job : d_.jobs) stages[static_cast<std::size_t>(job.blob)] = job.stage;
         for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
-            auto info = reflect(d_.blobs[b].words, stage_of_blob(b));
+            auto info = reflect(d_.blobs[b].words, stages[b]);
             if (!info) {
                 for (Diagnostic error : info.errors()) errors.push_back(std::move(error));
                 continue;

@@ -61,6 +61,9 @@ struct CompiledDomain {
     DomainSpec spec;
     PermutationPlan plan;
     std::vector<CompileJob> jobs;
+    // Index into `jobs` by raw ID, optimised ID and companion index (-1: none, e.g. pruned),
+    // so looking a permutation up is constant time even with 65,536 raw IDs.
+    std::vector<int> raw_jobs, optimised_jobs, companion_jobs;
     std::vector<SourceRecord> sources;
     std::vector<Blob> blobs;
     MergedLayout layout;

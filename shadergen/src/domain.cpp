@@ -29,6 +29,18 @@ std::vector<std::string> DomainSpec::raw_feature_names() const {
     return names;
 }
 
+std::uint32_t DomainSpec::raw_bits() const {
+    std::uint32_t bits = 0;
+    for (const RawFeature& feature : raw_features) bits += feature.width;
+    return bits;
+}
+
+std::vector<ExpressionSymbol> DomainSpec::raw_symbols() const {
+    std::vector<ExpressionSymbol> symbols;
+    for (const RawFeature& f : raw_features) symbols.push_back({f.name, f.bit, f.width, f.values});
+    return symbols;
+}
+
 std::vector<std::string> DomainSpec::optimised_bit_names() const {
     std::vector<std::string> names;
     for (const OptimisedBit& bit : optimised_bits) names.push_back(bit.name);
@@ -106,7 +118,7 @@ public:
     }
 
     std::optional<Rule> rule_member(const Value& object, std::string_view where, std::string_view key,
-                                    const std::vector<std::string>& symbols, std::string_view symbol_kind) {
+                                    std::span<const ExpressionSymbol> symbols, std::string_view symbol_kind) {
         const Value* found = member(object, where, key, Type::string);
         if (!found) return std::nullopt;
         auto parsed = parse_expression(found->string, symbols);
@@ -327,6 +339,56 @@ private:
         return out;
     }
 
+    // A value of a valued feature: an integer (kept as its decimal text) or an identifier.
+    std::optional<std::string> read_value(const Value& value, const std::string& where) {
+        if (value.type == Type::number && std::abs(value.number) < 1e9 && value.number == std::trunc(value.number))
+            return std::to_string(static_cast<long long>(value.number));
+        if (value.type == Type::string && is_identifier(value.string)) return value.string;
+        std::string shown = value.type == Type::string ? "\"" + value.string + "\""
+                            : value.type == Type::number ? SpecReader::json_number(value.number)
+                                                         : std::string(json::type_name(value.type));
+        reader_.error(value, where, "expected an integer or an identifier, found " + shown);
+        return std::nullopt;
+    }
+
+    // "values" of feature `where`: none (boolean), the list, or nullopt after an error.
+    std::optional<std::vector<std::string>> read_values(const Value& item, const std::string& where) {
+        const Value* list = item.find("values");
+        if (!list) return std::vector<std::string>{};
+        if (list->type != Type::array) {
+            reader_.error(*list, where + ".values", std::string("expected an array, found ") + json::type_name(list->type));
+            return std::nullopt;
+        }
+        if (list->array.size() < 2 || list->array.size() > kMaxFeatureValues) {
+            reader_.error(*list, where + ".values",
+                          "a valued feature has 2 to " + std::to_string(kMaxFeatureValues) + " values, found " +
+                              std::to_string(list->array.size()));
+            return std::nullopt;
+        }
+        std::vector<std::string> values;
+        bool ok = true;
+        for (std::size_t j = 0; j < list->array.size(); ++j) {
+            std::string at = SpecReader::index(where + ".values", j);
+            auto value = read_value(list->array[j], at);
+            if (!value) {
+                ok = false;
+            } else if (std::find(values.begin(), values.end(), *value) != values.end()) {
+                reader_.error(list->array[j], at, "value " + *value + " is listed twice");
+                ok = false;
+            } else {
+                values.push_back(std::move(*value));
+            }
+        }
+        if (!ok) return std::nullopt;
+        return values;
+    }
+
+    static std::uint32_t width_for(std::size_t value_count) {
+        std::uint32_t width = 1;
+        while ((std::size_t{1} << width) < value_count) ++width;
+        return width;
+    }
+
     void read_raw(const Value& raw) {
         reader_.only_keys(raw, "raw", {"features", "impossible"});
         const Value* features = reader_.member(raw, "raw", "features", Type::array);
@@ -337,8 +399,24 @@ private:
                               std::to_string(features->array.size()));
             return;
         }
-        std::uint32_t count = static_cast<std::uint32_t>(features->array.size());
-        std::vector<std::optional<RawFeature>> by_bit(count);
+        // The values decide the widths, and the widths how many raw bits there are to place.
+        std::vector<std::vector<std::string>> values(features->array.size());
+        std::uint32_t total = 0;
+        for (std::size_t i = 0; i < features->array.size(); ++i) {
+            const Value& item = features->array[i];
+            if (item.type != Type::object) continue;
+            auto read = read_values(item, SpecReader::index("raw.features", i));
+            if (read) values[i] = std::move(*read);
+            total += values[i].empty() ? 1 : width_for(values[i].size());
+        }
+        if (total > kMaxRawFeatures) {
+            reader_.error(*features, "raw.features",
+                          "the features take " + std::to_string(total) + " raw bits; the limit is " +
+                              std::to_string(kMaxRawFeatures));
+            return;
+        }
+        std::vector<std::optional<RawFeature>> by_bit(total);
+        std::vector<std::string> owner(total);
         std::map<std::string, std::string> defines_seen;
         std::set<std::string> names_seen;
         for (std::size_t i = 0; i < features->array.size(); ++i) {
@@ -348,12 +426,14 @@ private:
                 reader_.error(item, where, "expected an object");
                 continue;
             }
-            reader_.only_keys(item, where, {"name", "bit", "define", "description"});
+            reader_.only_keys(item, where, {"name", "bit", "define", "values", "description"});
             RawFeature feature;
             feature.name = reader_.string_member(item, where, "name");
             feature.define = reader_.string_member(item, where, "define");
             feature.description = reader_.string_member(item, where, "description", false);
-            auto bit = reader_.bit_member(item, where, count);
+            feature.values = std::move(values[i]);
+            feature.width = feature.valued() ? width_for(feature.values.size()) : 1;
+            auto bit = reader_.bit_member(item, where, total);
             if (item.find("name") && !is_identifier(feature.name)) {
                 reader_.error(*item.find("name"), where + ".name", "\"" + feature.name + "\" is not an identifier");
                 continue;
@@ -370,25 +450,41 @@ private:
                     reader_.error(*item.find("define"), where + ".define",
                                   "define " + feature.define + " is already used by feature " + it->second);
             }
-            if (!bit) continue;
-            if (by_bit[*bit]) {
-                reader_.error(*item.find("bit"), where + ".bit",
-                              "bit " + std::to_string(*bit) + " of " + feature.name + " collides with feature " +
-                                  by_bit[*bit]->name);
-                continue;
-            }
-            feature.bit = *bit;
-            by_bit[*bit] = std::move(feature);
+            if (bit) place_feature(std::move(feature), *bit, *item.find("bit"), where, by_bit, owner);
         }
         if (!reader_.errors().empty()) return;
-        for (auto& feature : by_bit) spec_.raw_features.push_back(std::move(*feature));
+        for (auto& feature : by_bit)
+            if (feature) spec_.raw_features.push_back(std::move(*feature));
         read_impossible(raw);
+    }
+
+    // Puts `feature` on bits [bit, bit + width), unless they run past the last raw bit or
+    // another feature holds one of them.
+    void place_feature(RawFeature feature, std::uint32_t bit, const Value& at, const std::string& where,
+                       std::vector<std::optional<RawFeature>>& by_bit, std::vector<std::string>& owner) {
+        std::uint32_t total = static_cast<std::uint32_t>(owner.size());
+        if (bit + feature.width > total) {
+            reader_.error(at, where + ".bit",
+                          feature.name + " has " + std::to_string(feature.values.size()) + " values, so it takes bits " +
+                              std::to_string(bit) + " to " + std::to_string(bit + feature.width - 1) +
+                              ", past the last raw bit " + std::to_string(total - 1));
+            return;
+        }
+        for (std::uint32_t b = bit; b < bit + feature.width; ++b) {
+            if (owner[b].empty()) continue;
+            reader_.error(at, where + ".bit",
+                          "bit " + std::to_string(b) + " of " + feature.name + " collides with feature " + owner[b]);
+            return;
+        }
+        for (std::uint32_t b = bit; b < bit + feature.width; ++b) owner[b] = feature.name;
+        feature.bit = bit;
+        by_bit[bit] = std::move(feature);
     }
 
     void read_impossible(const Value& raw) {
         const Value* list = reader_.member(raw, "raw", "impossible", Type::array, false);
         if (!list || !reader_.within_limit(*list, "raw.impossible", kMaxImpossibleRules, "rules")) return;
-        auto symbols = spec_.raw_feature_names();
+        auto symbols = spec_.raw_symbols();
         for (std::size_t i = 0; i < list->array.size(); ++i) {
             const Value& item = list->array[i];
             std::string where = SpecReader::index("raw.impossible", i);
@@ -417,7 +513,7 @@ private:
         std::uint32_t count = static_cast<std::uint32_t>(bits->array.size());
         std::vector<std::optional<OptimisedBit>> by_bit(count);
         std::set<std::string> names_seen;
-        auto raw_symbols = spec_.raw_feature_names();
+        auto raw_symbols = spec_.raw_symbols();
         for (std::size_t i = 0; i < bits->array.size(); ++i) {
             const Value& item = bits->array[i];
             std::string where = SpecReader::index("optimised.bits", i);
@@ -456,7 +552,8 @@ private:
     void read_variants(const Value& optimised) {
         const Value* list = reader_.member(optimised, "optimised", "variants", Type::array);
         if (!list || !reader_.within_limit(*list, "optimised.variants", kMaxVariants, "variants")) return;
-        auto symbols = spec_.optimised_bit_names();
+        std::vector<ExpressionSymbol> symbols;
+        for (const OptimisedBit& bit : spec_.optimised_bits) symbols.push_back({bit.name, bit.bit, 1, {}});
         for (std::size_t i = 0; i < list->array.size(); ++i) {
             const Value& item = list->array[i];
             std::string where = SpecReader::index("optimised.variants", i);
@@ -469,23 +566,47 @@ private:
             const Value* features = reader_.member(item, where, "raw_features", Type::array);
             if (!rule || !features) continue;
             OptimisedVariant variant{std::move(*rule), {}};
-            for (std::size_t j = 0; j < features->array.size(); ++j) {
-                const Value& name = features->array[j];
-                auto found = std::find_if(spec_.raw_features.begin(), spec_.raw_features.end(),
-                                          [&](const RawFeature& f) { return f.name == name.string; });
-                if (name.type != Type::string || found == spec_.raw_features.end()) {
-                    std::string known;
-                    for (const RawFeature& f : spec_.raw_features) known += (known.empty() ? "" : ", ") + f.name;
-                    reader_.error(name, SpecReader::index(where + ".raw_features", j),
-                                  (name.type == Type::string ? "unknown raw feature \"" + name.string + "\""
-                                                             : std::string("expected a raw feature name")) +
-                                      " (known: " + known + ")");
-                    continue;
-                }
-                variant.raw_features.push_back(found->bit);
-            }
+            for (std::size_t j = 0; j < features->array.size(); ++j)
+                if (auto setting = read_setting(features->array[j], SpecReader::index(where + ".raw_features", j)))
+                    variant.raw_features.push_back(*setting);
             spec_.variants.push_back(std::move(variant));
         }
+    }
+
+    // A variant's raw feature: "NAME" for a boolean one, "NAME=VALUE" for a valued one.
+    std::optional<FeatureSetting> read_setting(const Value& entry, const std::string& where) {
+        std::string text = entry.type == Type::string ? entry.string : std::string();
+        std::string name = text.substr(0, text.find('='));
+        auto found = std::find_if(spec_.raw_features.begin(), spec_.raw_features.end(),
+                                  [&](const RawFeature& f) { return f.name == name; });
+        if (entry.type != Type::string || found == spec_.raw_features.end()) {
+            std::string known;
+            for (const RawFeature& f : spec_.raw_features) known += (known.empty() ? "" : ", ") + f.name;
+            reader_.error(entry, where,
+                          (entry.type == Type::string ? "unknown raw feature \"" + name + "\""
+                                                      : std::string("expected a raw feature name")) +
+                              " (known: " + known + ")");
+            return std::nullopt;
+        }
+        bool has_value = name.size() < text.size();
+        if (!found->valued()) {
+            if (has_value) reader_.error(entry, where, found->name + " is a boolean feature; name it without a value");
+            if (has_value) return std::nullopt;
+            return FeatureSetting{found->mask(), found->mask()};
+        }
+        std::string value = has_value ? text.substr(name.size() + 1) : std::string();
+        auto index = std::find(found->values.begin(), found->values.end(), value);
+        if (index == found->values.end()) {
+            std::string listed;
+            for (const std::string& v : found->values) listed += (listed.empty() ? "" : ", ") + v;
+            reader_.error(entry, where,
+                          has_value ? found->name + " has no value " + value + " (values: " + listed + ")"
+                                    : found->name + " has values (" + listed + "); name one, e.g. \"" + found->name +
+                                          "=" + found->values.front() + "\"");
+            return std::nullopt;
+        }
+        auto position = static_cast<std::uint32_t>(index - found->values.begin());
+        return FeatureSetting{found->mask(), position << found->bit};
     }
 
     SpecReader& reader_;

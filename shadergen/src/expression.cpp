@@ -1,5 +1,6 @@
 #include "shadergen/expression.h"
 
+#include <algorithm>
 #include <cctype>
 #include <string>
 
@@ -13,6 +14,10 @@ bool Expression::evaluate(std::uint32_t bits) const {
             switch (n.kind) {
                 case Node::Kind::constant: return n.constant;
                 case Node::Kind::symbol: return (bits >> n.symbol) & 1u;
+                case Node::Kind::comparison: {
+                    std::uint32_t index = (bits >> n.symbol) & ((1u << n.width) - 1u);
+                    return index < n.accepted.size() && n.accepted[index];
+                }
                 case Node::Kind::negation: return !run(*n.left, bits);
                 case Node::Kind::conjunction: return run(*n.left, bits) && run(*n.right, bits);
                 case Node::Kind::disjunction: return run(*n.left, bits) || run(*n.right, bits);
@@ -23,7 +28,7 @@ bool Expression::evaluate(std::uint32_t bits) const {
     return root_ && Eval::run(*root_, bits);
 }
 
-std::string Expression::to_string(std::span<const std::string> symbols) const {
+std::string Expression::to_string() const {
     struct Print {
         static int precedence(const Node& n) {
             switch (n.kind) {
@@ -32,30 +37,28 @@ std::string Expression::to_string(std::span<const std::string> symbols) const {
                 default: return 3;
             }
         }
-        static std::string run(const Node& n, std::span<const std::string> symbols, int outer) {
+        static std::string run(const Node& n, int outer) {
             std::string text;
             switch (n.kind) {
                 case Node::Kind::constant: text = n.constant ? "true" : "false"; break;
-                case Node::Kind::symbol: text = n.symbol < symbols.size() ? symbols[n.symbol] : "?"; break;
-                case Node::Kind::negation: text = "!" + run(*n.left, symbols, 3); break;
-                case Node::Kind::conjunction:
-                    text = run(*n.left, symbols, 2) + " && " + run(*n.right, symbols, 2);
-                    break;
-                case Node::Kind::disjunction:
-                    text = run(*n.left, symbols, 1) + " || " + run(*n.right, symbols, 1);
-                    break;
+                case Node::Kind::symbol: text = n.text; break;
+                // A comparison binds tighter than '!', so "!(A == 1)" keeps its parentheses.
+                case Node::Kind::comparison: text = outer == 3 ? "(" + n.text + ")" : n.text; break;
+                case Node::Kind::negation: text = "!" + run(*n.left, 3); break;
+                case Node::Kind::conjunction: text = run(*n.left, 2) + " && " + run(*n.right, 2); break;
+                case Node::Kind::disjunction: text = run(*n.left, 1) + " || " + run(*n.right, 1); break;
             }
             return precedence(n) < outer ? "(" + text + ")" : text;
         }
     };
-    return root_ ? Print::run(*root_, symbols, 0) : "";
+    return root_ ? Print::run(*root_, 0) : "";
 }
 
 namespace {
 
 class ExpressionParser {
 public:
-    ExpressionParser(std::string_view text, std::span<const std::string> symbols)
+    ExpressionParser(std::string_view text, std::span<const ExpressionSymbol> symbols)
         : text_(text), symbols_(symbols) {}
 
     Result<Expression> run() {
@@ -169,30 +172,121 @@ private:
             node->constant = name == "true";
             return node;
         }
-        for (std::size_t i = 0; i < symbols_.size(); ++i) {
-            if (symbols_[i] == name) {
+        for (const ExpressionSymbol& symbol : symbols_) {
+            if (symbol.name != name) continue;
+            std::size_t after_name = pos_;
+            std::string op = take_comparison();
+            if (op.empty() && symbol.values.empty()) {
                 node->kind = Node::Kind::symbol;
-                node->symbol = static_cast<std::uint32_t>(i);
+                node->symbol = symbol.bit;
+                node->text = symbol.name;
                 return node;
             }
+            if (op.empty()) {
+                pos_ = after_name;
+                fail("'" + symbol.name + "' has values (" + join_values(symbol) + "); compare it, e.g. " + symbol.name +
+                     " == " + symbol.values.front());
+                return nullptr;
+            }
+            return parse_comparison(symbol, op, start);
         }
         pos_ = start;
         std::string known;
-        for (const std::string& symbol : symbols_) known += (known.empty() ? "" : ", ") + symbol;
+        for (const ExpressionSymbol& symbol : symbols_) known += (known.empty() ? "" : ", ") + symbol.name;
         fail("unknown name '" + std::string(name) + "' (known: " + known + ")");
         return nullptr;
     }
 
+    // The comparison operator at the cursor, taken; empty when there is none.
+    std::string take_comparison() {
+        for (std::string_view op : {"==", "!=", "<=", ">=", "<", ">"})
+            if (take_operator(op)) return std::string(op);
+        return {};
+    }
+
+    static std::string join_values(const ExpressionSymbol& symbol) {
+        std::string text;
+        for (const std::string& v : symbol.values) text += (text.empty() ? "" : ", ") + v;
+        return text;
+    }
+
+    static bool is_integer(std::string_view text) {
+        std::size_t digits = !text.empty() && text[0] == '-' ? 1 : 0;
+        return text.size() > digits && text.size() <= digits + 9 &&
+               std::all_of(text.begin() + static_cast<std::ptrdiff_t>(digits), text.end(),
+                           [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    }
+
+    static bool holds(std::string_view op, long long a, long long b) {
+        if (op == "==") return a == b;
+        if (op == "!=") return a != b;
+        if (op == "<") return a < b;
+        if (op == "<=") return a <= b;
+        if (op == ">") return a > b;
+        return a >= b;
+    }
+
+    // "NAME OP VALUE" once NAME and OP are read: checks VALUE against the symbol's values and
+    // works out which value indices satisfy it.
+    NodePtr parse_comparison(const ExpressionSymbol& symbol, const std::string& op, std::size_t start) {
+        skip_space();
+        std::size_t value_start = pos_;
+        while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_' ||
+                                       (pos_ == value_start && text_[pos_] == '-')))
+            ++pos_;
+        std::string value(text_.substr(value_start, pos_ - value_start));
+        if (value.empty()) {
+            fail("expected a value after '" + op + "'");
+            return nullptr;
+        }
+        bool number = is_integer(value);
+        if (symbol.values.empty()) {
+            pos_ = start;
+            fail("'" + symbol.name + "' is a boolean feature; it cannot be compared with " +
+                 (number ? "a number" : "a value") + " (write " + symbol.name + " or !" + symbol.name + ")");
+            return nullptr;
+        }
+        bool ordered = op != "==" && op != "!=";
+        bool numeric_values = std::all_of(symbol.values.begin(), symbol.values.end(), is_integer);
+        if (ordered && !(number && numeric_values)) {
+            pos_ = value_start;
+            fail("'" + op + "' needs integer values; " + symbol.name + " has values (" + join_values(symbol) +
+                 ") and " + value + " is compared; use '==' or '!='");
+            return nullptr;
+        }
+        auto found = std::find(symbol.values.begin(), symbol.values.end(), value);
+        if (!ordered && found == symbol.values.end()) {
+            pos_ = value_start;
+            fail("'" + symbol.name + "' has no value " + value + " (values: " + join_values(symbol) + ")");
+            return nullptr;
+        }
+        auto node = std::make_shared<Node>();
+        node->kind = Node::Kind::comparison;
+        node->symbol = symbol.bit;
+        node->width = symbol.width;
+        node->text = symbol.name + " " + op + " " + value;
+        for (const std::string& candidate : symbol.values)
+            node->accepted.push_back(ordered ? holds(op, std::stoll(candidate), std::stoll(value))
+                                             : (candidate == value) == (op == "=="));
+        return node;
+    }
+
     std::string_view text_;
-    std::span<const std::string> symbols_;
+    std::span<const ExpressionSymbol> symbols_;
     std::size_t pos_ = 0;
     Diagnostic error_;
 };
 
 }  // namespace
 
-Result<Expression> parse_expression(std::string_view text, std::span<const std::string> symbols) {
+Result<Expression> parse_expression(std::string_view text, std::span<const ExpressionSymbol> symbols) {
     return ExpressionParser(text, symbols).run();
+}
+
+Result<Expression> parse_expression(std::string_view text, std::span<const std::string> symbols) {
+    std::vector<ExpressionSymbol> booleans;
+    for (std::size_t i = 0; i < symbols.size(); ++i) booleans.push_back({symbols[i], static_cast<std::uint32_t>(i), 1, {}});
+    return parse_expression(text, booleans);
 }
 
 }  // namespace shadergen

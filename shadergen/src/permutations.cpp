@@ -19,13 +19,38 @@ std::string describe_bits(const std::vector<std::string>& names, std::uint32_t b
     return text.empty() ? "(none)" : text;
 }
 
+std::string describe_raw(const DomainSpec& spec, std::uint32_t raw_id) {
+    std::string text;
+    for (const RawFeature& f : spec.raw_features) {
+        std::uint32_t index = f.index_in(raw_id);
+        if (!f.valued() && !index) continue;
+        text += (text.empty() ? "" : " | ") + f.name;
+        if (f.valued()) text += "=" + (index < f.values.size() ? f.values[index] : std::string("?"));
+    }
+    return text.empty() ? "(none)" : text;
+}
+
 namespace {
 
+// Boolean features set: "DEFINE"; valued features: "DEFINE=value" (none when the field holds
+// no value, which only pruned IDs do).
 std::vector<std::string> defines_for(const DomainSpec& spec, std::uint32_t raw_bits) {
     std::vector<std::string> defines;
-    for (const RawFeature& feature : spec.raw_features)
-        if (raw_bits & (1u << feature.bit)) defines.push_back(feature.define);
+    for (const RawFeature& feature : spec.raw_features) {
+        std::uint32_t index = feature.index_in(raw_bits);
+        if (!feature.valued() && index) defines.push_back(feature.define);
+        if (feature.valued() && index < feature.values.size())
+            defines.push_back(feature.define + "=" + feature.values[index]);
+    }
     return defines;
+}
+
+int first_unvalued_feature(const DomainSpec& spec, std::uint32_t raw_id) {
+    for (std::size_t i = 0; i < spec.raw_features.size(); ++i) {
+        const RawFeature& f = spec.raw_features[i];
+        if (f.valued() && f.index_in(raw_id) >= f.values.size()) return static_cast<int>(i);
+    }
+    return -1;
 }
 
 int first_impossible_rule(const DomainSpec& spec, std::uint32_t raw_id) {
@@ -34,12 +59,18 @@ int first_impossible_rule(const DomainSpec& spec, std::uint32_t raw_id) {
     return -1;
 }
 
-// The raw features an optimised ID is compiled with: the union over matching variants.
-std::uint32_t raw_features_for_optimised(const DomainSpec& spec, std::uint32_t optimised_id) {
-    std::uint32_t raw_bits = 0;
-    for (const OptimisedVariant& variant : spec.variants)
-        if (variant.when.expression.evaluate(optimised_id))
-            for (std::uint32_t bit : variant.raw_features) raw_bits |= 1u << bit;
+// The raw features an optimised ID is compiled with: the union over matching variants. Two
+// variants giving one valued feature different values is a conflict: `conflict` gets its mask.
+std::uint32_t raw_features_for_optimised(const DomainSpec& spec, std::uint32_t optimised_id, std::uint32_t& conflict) {
+    std::uint32_t raw_bits = 0, assigned = 0;
+    for (const OptimisedVariant& variant : spec.variants) {
+        if (!variant.when.expression.evaluate(optimised_id)) continue;
+        for (const FeatureSetting& setting : variant.raw_features) {
+            if ((assigned & setting.mask) && (raw_bits & setting.mask) != setting.bits) conflict |= setting.mask;
+            raw_bits = (raw_bits & ~setting.mask) | setting.bits;
+            assigned |= setting.mask;
+        }
+    }
     return raw_bits;
 }
 
@@ -52,24 +83,32 @@ Result<PermutationPlan> expand(const DomainSpec& spec) {
         raw.id = id;
         raw.defines = defines_for(spec, id);
         raw.pruned_by = first_impossible_rule(spec, id);
-        raw.pruned = raw.pruned_by >= 0;
+        raw.unvalued = first_unvalued_feature(spec, id);
+        raw.pruned = raw.pruned_by >= 0 || raw.unvalued >= 0;
         raw.optimised = apply_rules(spec, id);
         plan.raw.push_back(std::move(raw));
     }
     Diagnostics errors;
-    auto raw_names = spec.raw_feature_names();
     auto optimised_names = spec.optimised_bit_names();
     for (std::uint32_t id = 0; id < spec.optimised_count(); ++id) {
         OptimisedPermutation optimised;
         optimised.id = id;
-        optimised.raw_equivalent = raw_features_for_optimised(spec, id);
+        std::uint32_t conflict = 0;
+        optimised.raw_equivalent = raw_features_for_optimised(spec, id, conflict);
         optimised.defines = defines_for(spec, optimised.raw_equivalent);
-        if (plan.raw[optimised.raw_equivalent].pruned) {
+        if (conflict) {
+            std::string names;
+            for (const RawFeature& f : spec.raw_features)
+                if (f.mask() & conflict) names += (names.empty() ? "" : ", ") + f.name;
+            errors.push_back(make_error(spec.spec_path.string(), 0,
+                                        "optimised ID " + std::to_string(id) + " (" + describe_bits(optimised_names, id) +
+                                            ") matches variants that give " + names + " different values"));
+        } else if (plan.raw[optimised.raw_equivalent].pruned_by >= 0) {
             const ImpossibleSet& rule = spec.impossible[static_cast<std::size_t>(plan.raw[optimised.raw_equivalent].pruned_by)];
             errors.push_back(make_error(spec.spec_path.string(), rule.when.line,
                                         "optimised ID " + std::to_string(id) + " (" + describe_bits(optimised_names, id) +
                                             ") is compiled with raw features " +
-                                            describe_bits(raw_names, optimised.raw_equivalent) +
+                                            describe_raw(spec, optimised.raw_equivalent) +
                                             ", which the impossible rule \"" + rule.when.text + "\" prunes"));
         }
         plan.optimised.push_back(std::move(optimised));
@@ -80,13 +119,36 @@ Result<PermutationPlan> expand(const DomainSpec& spec) {
     return plan;
 }
 
+namespace {
+
+// "3" for a one-bit feature, "3-4" for a field.
+std::string bit_span(const RawFeature& f) {
+    return f.width == 1 ? std::to_string(f.bit) : std::to_string(f.bit) + "-" + std::to_string(f.bit + f.width - 1);
+}
+
+std::string value_list(const RawFeature& f) {
+    std::string text;
+    for (const std::string& v : f.values) text += (text.empty() ? "" : ", ") + v;
+    return text;
+}
+
+// "0=FOG, 1-2=TAA_QUALITY (0, 1, 2)".
+std::string raw_bit_legend(const DomainSpec& spec) {
+    std::string text;
+    for (const RawFeature& f : spec.raw_features) {
+        text += (text.empty() ? "" : ", ") + bit_span(f) + "=" + f.name;
+        if (f.valued()) text += " (" + value_list(f) + ")";
+    }
+    return text;
+}
+
+}  // namespace
+
 std::string format_lut(const DomainSpec& spec, const PermutationPlan& plan) {
     std::ostringstream out;
-    auto raw_names = spec.raw_feature_names();
     auto optimised_names = spec.optimised_bit_names();
     out << "Domain " << spec.name << ": " << spec.raw_count() << " raw IDs -> " << spec.optimised_count()
-        << " optimised IDs\n\nraw bits:       ";
-    for (std::size_t i = 0; i < raw_names.size(); ++i) out << (i ? ", " : "") << i << "=" << raw_names[i];
+        << " optimised IDs\n\nraw bits:       " << raw_bit_legend(spec);
     out << "\noptimised bits: ";
     for (std::size_t i = 0; i < optimised_names.size(); ++i) out << (i ? ", " : "") << i << "=" << optimised_names[i];
     out << "\n\nRow = raw ID / 16, column = raw ID % 16; each cell is the optimised ID, '--' = pruned.\n\n      ";
@@ -148,15 +210,27 @@ std::string format_list(const DomainSpec& spec, const PermutationPlan& plan) {
 
 std::string format_explanation(const DomainSpec& spec, const PermutationPlan& plan, std::uint32_t raw_id) {
     std::ostringstream out;
-    auto raw_names = spec.raw_feature_names();
     auto optimised_names = spec.optimised_bit_names();
     const RawPermutation& raw = plan.raw[raw_id];
-    out << "raw ID " << raw_id << " = " << describe_bits(raw_names, raw_id) << "\n";
+    out << "raw ID " << raw_id << " = " << describe_raw(spec, raw_id) << "\n";
     for (const RawFeature& f : spec.raw_features) {
-        bool set = raw_id & (1u << f.bit);
-        out << "  bit " << f.bit << "  " << (set ? "[x] " : "[ ] ") << f.name << " (#define " << f.define << ")";
+        std::uint32_t index = f.index_in(raw_id);
+        if (!f.valued()) {
+            out << "  bit " << f.bit << "  " << (index ? "[x] " : "[ ] ") << f.name << " (#define " << f.define << ")";
+        } else {
+            out << "  bits " << bit_span(f) << "  " << f.name << " = "
+                << (index < f.values.size() ? f.values[index] + " (#define " + f.define + " " + f.values[index] + ")"
+                                            : "? (index " + std::to_string(index) + " holds no value)")
+                << "; values: " << value_list(f);
+        }
         if (!f.description.empty()) out << " - " << f.description;
         out << '\n';
+    }
+    if (raw.pruned && raw.pruned_by < 0) {
+        const RawFeature& f = spec.raw_features[static_cast<std::size_t>(raw.unvalued)];
+        out << "\npruned: bits " << bit_span(f) << " hold index " << f.index_in(raw_id) << ", but " << f.name << " has "
+            << f.values.size() << " values; no shader is compiled for it.\n";
+        return out.str();
     }
     if (raw.pruned) {
         const ImpossibleSet& rule = spec.impossible[static_cast<std::size_t>(raw.pruned_by)];
@@ -173,7 +247,7 @@ std::string format_explanation(const DomainSpec& spec, const PermutationPlan& pl
     for (const OptimisedBit& bit : spec.optimised_bits) {
         bool value = bit.when.expression.evaluate(raw_id);
         out << "  bit " << bit.bit << "  " << (value ? "[x] " : "[ ] ") << bit.name << "  because "
-            << (value ? "" : "not ") << "(" << bit.when.expression.to_string(raw_names) << ")\n";
+            << (value ? "" : "not ") << "(" << bit.when.expression.to_string() << ")\n";
     }
     const OptimisedPermutation& o = plan.optimised[raw.optimised];
     out << "\n-> optimised ID " << raw.optimised << " = " << describe_bits(optimised_names, raw.optimised)

@@ -79,7 +79,7 @@ TEST(Expression, DepthLimitIsEnforced) {
 TEST(Expression, PrintsWithNames) {
     auto e = parse_expression("!(A && B) || C", kSymbols);
     ASSERT_TRUE(e.ok());
-    EXPECT_EQ(e->to_string(kSymbols), "!(A && B) || C");
+    EXPECT_EQ(e->to_string(), "!(A && B) || C");
 }
 
 }  // namespace

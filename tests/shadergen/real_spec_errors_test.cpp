@@ -186,7 +186,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "(!SHADOW_SOLID && SUN_LIGHT && SHADOW_SOFT)\" at column 91 (rules here name raw features)"},
         EditCase{"unknown_key_in_feature", "\"description\": \"a pixel is sky\"", "\"descripton\": \"a pixel is sky\"",
                  "", 14,
-                 "raw.features[5]: unknown key \"descripton\" (expected one of: name, bit, define, description)"},
+                 "raw.features[5]: unknown key \"descripton\" (expected one of: name, bit, define, values, description)"},
         EditCase{"unknown_top_level_key", "\"include_dirs\"", "\"include_dir\"", "", 15,
                  "spec: unknown key \"include_dir\" (expected one of: format, name, description, uber_shader, "
                  "include_dirs, target_env, defines, companions, raw, optimised)"},

@@ -20,12 +20,15 @@
 
 namespace shadergen {
 
-inline constexpr std::uint32_t kMaxRawFeatures = 12;     // 4096 raw permutations
+// Raw bits, not features: a valued feature takes several. 16 bits are 65,536 raw IDs, which
+// expansion handles in linear time and the generated table holds in 64 KiB.
+inline constexpr std::uint32_t kMaxRawFeatures = 16;
+inline constexpr std::size_t kMaxFeatureValues = 256;     // a valued feature's field: at most 8 bits
 inline constexpr std::uint32_t kMaxOptimisedBits = 8;       // the LUT stores optimised IDs as bytes
 inline constexpr std::size_t kMaxCompanions = 64;
 inline constexpr std::size_t kMaxIncludeDirs = 64;
 // Rule counts bound the cost of expansion: every impossible rule is evaluated for each of up to
-// 4096 raw IDs, every variant for each of up to 256 optimised IDs.
+// 65,536 raw IDs, every variant for each of up to 256 optimised IDs.
 inline constexpr std::size_t kMaxImpossibleRules = 64;
 inline constexpr std::size_t kMaxVariants = 256;
 // A spec reports at most this many problems; a hostile file cannot grow the list without bound.
@@ -40,9 +43,19 @@ struct Rule {
 
 struct RawFeature {
     std::string name;    // e.g. SHADOW_SOLID; the name rules use
-    std::uint32_t bit;   // bit in the raw ID
+    std::uint32_t bit;   // bit in the raw ID (a valued feature's lowest bit)
     std::string define;  // GLSL define the uber-shader tests, e.g. SOLID_SHADOW
     std::string description;
+    // Empty: a boolean feature, one bit, `#define NAME 1` when set. Otherwise the values, as
+    // written (integers or identifiers): the field of `width` bits from `bit` holds the index
+    // of one, compiled as `#define NAME <value>`; indices past the end are pruned.
+    std::vector<std::string> values;
+    std::uint32_t width = 1;
+
+    bool valued() const { return !values.empty(); }
+    std::uint32_t mask() const { return ((1u << width) - 1u) << bit; }
+    // The value index this raw ID holds in the feature's field (may be >= values.size()).
+    std::uint32_t index_in(std::uint32_t raw_id) const { return (raw_id >> bit) & ((1u << width) - 1u); }
 };
 
 struct ImpossibleSet {
@@ -57,10 +70,17 @@ struct OptimisedBit {
     std::string description;
 };
 
+// One raw feature as a variant sets it: `bits` within `mask` (a boolean's bit, or a valued
+// feature's field holding a value index).
+struct FeatureSetting {
+    std::uint32_t mask = 0;
+    std::uint32_t bits = 0;
+};
+
 // "When these optimised bits hold, compile with these raw features' defines."
 struct OptimisedVariant {
-    Rule when;                       // over optimised bit names
-    std::vector<std::uint32_t> raw_features;  // raw bit indices
+    Rule when;                              // over optimised bit names
+    std::vector<FeatureSetting> raw_features;
 };
 
 // The Vulkan version a domain's SPIR-V is compiled and validated for. Each implies a SPIR-V
@@ -101,14 +121,16 @@ struct DomainSpec {
     // companions) is compiled with them. None names a raw feature's define.
     std::vector<std::string> defines;
     std::vector<CompanionSpec> companions;
-    std::vector<RawFeature> raw_features;      // indexed by bit
+    std::vector<RawFeature> raw_features;      // sorted by bit; together they cover bits 0..raw_bits()-1
     std::vector<ImpossibleSet> impossible;
     std::vector<OptimisedBit> optimised_bits;  // indexed by bit
     std::vector<OptimisedVariant> variants;
 
-    std::uint32_t raw_count() const { return 1u << raw_features.size(); }
+    std::uint32_t raw_bits() const;
+    std::uint32_t raw_count() const { return 1u << raw_bits(); }
     std::uint32_t optimised_count() const { return 1u << optimised_bits.size(); }
     std::vector<std::string> raw_feature_names() const;
+    std::vector<ExpressionSymbol> raw_symbols() const;   // for rules over raw features
     std::vector<std::string> optimised_bit_names() const;
 };
 

@@ -13,9 +13,11 @@ namespace shadergen {
 
 struct RawPermutation {
     std::uint32_t id = 0;
-    std::vector<std::string> defines;  // GLSL defines, in raw bit order
-    bool pruned = false;               // matches an impossible rule: never compiled
+    std::vector<std::string> defines;  // GLSL defines, in raw bit order ("NAME" or "NAME=VALUE")
+    bool pruned = false;               // matches an impossible rule or holds no value: never compiled
     int pruned_by = -1;                // index into DomainSpec::impossible, or -1
+    int unvalued = -1;                 // index into DomainSpec::raw_features of a valued feature
+                                       // whose field holds no value, or -1
     std::uint32_t optimised = 0;       // the lookup table's entry
 };
 
@@ -41,6 +43,9 @@ std::uint32_t apply_rules(const DomainSpec& spec, std::uint32_t raw_id);
 
 // "SHADOW_SOFT | SUN_LIGHT", or "(none)" for 0.
 std::string describe_bits(const std::vector<std::string>& names, std::uint32_t bits);
+// A raw ID by its features: "FOG | TAA_QUALITY=2" (a valued feature always shows its value,
+// or "NAME=?" when its field holds none), "(none)" when nothing is set.
+std::string describe_raw(const DomainSpec& spec, std::uint32_t raw_id);
 
 // Human-readable views for the CLI.
 std::string format_lut(const DomainSpec& spec, const PermutationPlan& plan);
