@@ -35,11 +35,16 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
       << open_namespace(ns) << "\n";
     h << "inline constexpr std::uint32_t kRawCount = " << d.plan.raw.size() << ";\n";
     h << "inline constexpr std::uint32_t kOptimisedCount = " << d.plan.optimised.size() << ";\n\n";
-    h << "// The raw -> optimised lookup table, indexed by raw ID.\n";
-    h << "inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised = {{";
-    for (std::size_t i = 0; i < d.plan.raw.size(); ++i)
-        h << (i % 16 ? " " : "\n    ") << d.plan.raw[i].optimised << ",";
-    h << "\n}};\n\n// Impossible raw IDs: never produced by a correct classifier, never compiled.\n";
+    if (d.spec.collapsed) {
+        h << "// The raw -> optimised lookup table, indexed by raw ID.\n";
+        h << "inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised = {{";
+        for (std::size_t i = 0; i < d.plan.raw.size(); ++i)
+            h << (i % 16 ? " " : "\n    ") << d.plan.raw[i].optimised << ",";
+        h << "\n}};\n\n";
+    } else {
+        h << "// Not collapsed: no lookup table; registry().optimised_for_raw(id) is registry().raw[id].\n\n";
+    }
+    h << "// Impossible raw IDs: never produced by a correct classifier, never compiled.\n";
     h << "inline constexpr std::array<bool, kRawCount> kRawPruned = {{";
     for (std::size_t i = 0; i < d.plan.raw.size(); ++i)
         h << (i % 16 ? " " : "\n    ") << (d.plan.raw[i].pruned ? "true," : "false,");
@@ -61,9 +66,11 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
     for (const OptimisedBit& b : d.spec.optimised_bits)
         h << "inline constexpr std::uint32_t " << b.name << " = 1u << " << b.bit << ";\n";
     h << "}  // namespace optimised_bit\n\n";
-    h << "// The table is total: every raw ID names an optimised permutation that exists.\n";
-    h << "static_assert([] {\n    for (std::uint8_t id : kRawToOptimised)\n        if (id >= kOptimisedCount) return "
-         "false;\n    return true;\n}());\n\n";
+    if (d.spec.collapsed) {
+        h << "// The table is total: every raw ID names an optimised permutation that exists.\n";
+        h << "static_assert([] {\n    for (std::uint8_t id : kRawToOptimised)\n        if (id >= kOptimisedCount) "
+             "return false;\n    return true;\n}());\n\n";
+    }
     h << "// The permutations, their SPIR-V and reflection. Defined in the generated source.\n";
     h << "const shadergen::Registry& registry();\n\n" << close_namespace(ns);
     return h.str();
@@ -230,8 +237,9 @@ private:
     void registry() {
         out_ << "constexpr shadergen::Registry kRegistry{\n    " << literal(d_.spec.name) << ",\n    "
              << stage_enum(d_.spec.uber.stage)
-             << ",\n    kRawFeatureNames,\n    kOptimisedBitNames,\n    kRawToOptimised,\n    kRaw,\n    kOptimised,\n"
-                "    kCompanions,\n    kLayoutBindings,\n    kPushConstants,\n};\n\n";
+             << ",\n    kRawFeatureNames,\n    kOptimisedBitNames,\n    "
+             << (d_.spec.collapsed ? "kRawToOptimised" : "{}")
+             << ",\n    kRaw,\n    kOptimised,\n    kCompanions,\n    kLayoutBindings,\n    kPushConstants,\n};\n\n";
     }
 
     const CompiledDomain& d_;

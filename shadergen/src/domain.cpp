@@ -197,7 +197,8 @@ public:
         read_companions(root);
         if (const Value* raw = reader_.member(root, "spec", "raw", Type::object)) read_raw(*raw);
         check_fixed_defines(root);
-        if (const Value* optimised = reader_.member(root, "spec", "optimised", Type::object))
+        spec_.collapsed = root.find("optimised") != nullptr;
+        if (const Value* optimised = reader_.member(root, "spec", "optimised", Type::object, false))
             read_optimised(*optimised);
         return std::move(spec_);
     }

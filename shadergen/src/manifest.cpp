@@ -56,7 +56,7 @@ void write_permutations(json::Writer& w, const CompiledDomain& d) {
         w.key("id"), w.value(raw.id);
         w.key("defines"), w.inline_string_array(raw.defines);
         w.key("pruned"), w.value(raw.pruned);
-        w.key("optimised"), w.value(raw.optimised);
+        if (d.spec.collapsed) w.key("optimised"), w.value(raw.optimised);
         write_blob_fields(w, raw.pruned ? nullptr : d.raw_blob(raw.id));
         w.end_object();
     }
@@ -130,6 +130,7 @@ std::string write_manifest(const CompiledDomain& d) {
     w.key("uber_shader"), w.value(d.spec.uber.path.filename().string());
     w.key("stage"), w.value(stage_name(d.spec.uber.stage));
     w.key("target_env"), w.value(target_env_name(d.spec.target_env));
+    w.key("collapsed"), w.value(d.spec.collapsed);
     write_features(w, d.spec);
     write_permutations(w, d);
     write_companions(w, d);

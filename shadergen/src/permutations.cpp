@@ -85,7 +85,7 @@ Result<PermutationPlan> expand(const DomainSpec& spec) {
         raw.pruned_by = first_impossible_rule(spec, id);
         raw.unvalued = first_unvalued_feature(spec, id);
         raw.pruned = raw.pruned_by >= 0 || raw.unvalued >= 0;
-        raw.optimised = apply_rules(spec, id);
+        raw.optimised = spec.collapsed ? apply_rules(spec, id) : id;
         plan.raw.push_back(std::move(raw));
     }
     Diagnostics errors;
@@ -113,8 +113,9 @@ Result<PermutationPlan> expand(const DomainSpec& spec) {
         }
         plan.optimised.push_back(std::move(optimised));
     }
-    for (const RawPermutation& raw : plan.raw)
-        if (!raw.pruned) ++plan.optimised[raw.optimised].raw_mapped;
+    if (spec.collapsed)
+        for (const RawPermutation& raw : plan.raw)
+            if (!raw.pruned) ++plan.optimised[raw.optimised].raw_mapped;
     if (!errors.empty()) return errors;
     return plan;
 }
@@ -147,11 +148,17 @@ std::string raw_bit_legend(const DomainSpec& spec) {
 std::string format_lut(const DomainSpec& spec, const PermutationPlan& plan) {
     std::ostringstream out;
     auto optimised_names = spec.optimised_bit_names();
-    out << "Domain " << spec.name << ": " << spec.raw_count() << " raw IDs -> " << spec.optimised_count()
-        << " optimised IDs\n\nraw bits:       " << raw_bit_legend(spec);
-    out << "\noptimised bits: ";
+    if (spec.collapsed)
+        out << "Domain " << spec.name << ": " << spec.raw_count() << " raw IDs -> " << spec.optimised_count()
+            << " optimised IDs\n\nraw bits:       " << raw_bit_legend(spec) << "\noptimised bits: ";
+    else
+        out << "Domain " << spec.name << ": " << spec.raw_count()
+            << " raw IDs, not collapsed (no \"optimised\" section): every compiled raw ID is its own permutation\n\n"
+               "raw bits:       "
+            << raw_bit_legend(spec);
     for (std::size_t i = 0; i < optimised_names.size(); ++i) out << (i ? ", " : "") << i << "=" << optimised_names[i];
-    out << "\n\nRow = raw ID / 16, column = raw ID % 16; each cell is the optimised ID, '--' = pruned.\n\n      ";
+    out << "\n\nRow = raw ID / 16, column = raw ID % 16; each cell is the "
+        << (spec.collapsed ? "optimised ID" : "permutation (the raw ID itself)") << ", '--' = pruned.\n\n      ";
     for (int c = 0; c < 16; ++c) {
         char cell[8];
         std::snprintf(cell, sizeof cell, " %3d", c);
@@ -171,6 +178,7 @@ std::string format_lut(const DomainSpec& spec, const PermutationPlan& plan) {
         }
         out << '\n';
     }
+    if (!spec.collapsed) return out.str();
     out << "\noptimised ID  raw IDs mapped  compiled with\n";
     for (const OptimisedPermutation& o : plan.optimised) {
         char line[64];
@@ -190,12 +198,16 @@ std::string format_list(const DomainSpec& spec, const PermutationPlan& plan) {
         << " compiled)\n";
     for (const RawPermutation& raw : plan.raw) {
         char head[64];
-        std::snprintf(head, sizeof head, "  raw %4u -> optimised %3u  %s  ", raw.id, raw.optimised,
-                      raw.pruned ? "pruned  " : "compiled");
+        if (spec.collapsed)
+            std::snprintf(head, sizeof head, "  raw %4u -> optimised %3u  %s  ", raw.id, raw.optimised,
+                          raw.pruned ? "pruned  " : "compiled");
+        else
+            std::snprintf(head, sizeof head, "  raw %4u  %s  ", raw.id, raw.pruned ? "pruned  " : "compiled");
         std::string defines;
         for (const std::string& d : raw.defines) defines += (defines.empty() ? "" : " ") + d;
         out << head << (defines.empty() ? "(no defines)" : defines) << '\n';
     }
+    if (!spec.collapsed) return out.str() + "optimised permutations: none (not collapsed)\n";
     out << "optimised permutations: " << plan.optimised.size() << '\n';
     for (const OptimisedPermutation& o : plan.optimised) {
         char head[64];
@@ -204,7 +216,6 @@ std::string format_list(const DomainSpec& spec, const PermutationPlan& plan) {
         for (const std::string& d : o.defines) defines += (defines.empty() ? "" : " ") + d;
         out << head << (defines.empty() ? "(no defines)" : defines) << '\n';
     }
-    (void)spec;
     return out.str();
 }
 
@@ -236,13 +247,18 @@ std::string format_explanation(const DomainSpec& spec, const PermutationPlan& pl
         const ImpossibleSet& rule = spec.impossible[static_cast<std::size_t>(raw.pruned_by)];
         out << "\npruned: it matches the impossible rule \"" << rule.when.text << "\"";
         if (!rule.why.empty()) out << " (" << rule.why << ")";
-        out << "; no shader is compiled for it. The rules would still map it to optimised ID " << raw.optimised
-            << ".\n";
+        out << "; no shader is compiled for it.";
+        if (spec.collapsed) out << " The rules would still map it to optimised ID " << raw.optimised << ".";
+        out << "\n";
         return out.str();
     }
     out << "\ncompiled with: ";
     for (const std::string& d : raw.defines) out << d << ' ';
     if (raw.defines.empty()) out << "(no defines)";
+    if (!spec.collapsed) {
+        out << "\n\nnot collapsed: raw ID " << raw_id << " is its own permutation\n";
+        return out.str();
+    }
     out << "\n\noptimised bits:\n";
     for (const OptimisedBit& bit : spec.optimised_bits) {
         bool value = bit.when.expression.evaluate(raw_id);

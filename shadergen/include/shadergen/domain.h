@@ -125,10 +125,13 @@ struct DomainSpec {
     std::vector<ImpossibleSet> impossible;
     std::vector<OptimisedBit> optimised_bits;  // indexed by bit
     std::vector<OptimisedVariant> variants;
+    // False when the spec has no "optimised" section: no collapse, every non-pruned raw ID is
+    // compiled as its own permutation and there is no lookup table.
+    bool collapsed = true;
 
     std::uint32_t raw_bits() const;
     std::uint32_t raw_count() const { return 1u << raw_bits(); }
-    std::uint32_t optimised_count() const { return 1u << optimised_bits.size(); }
+    std::uint32_t optimised_count() const { return collapsed ? 1u << optimised_bits.size() : 0u; }
     std::vector<std::string> raw_feature_names() const;
     std::vector<ExpressionSymbol> raw_symbols() const;   // for rules over raw features
     std::vector<std::string> optimised_bit_names() const;

@@ -4,8 +4,9 @@
 // header declares, inside the namespace chosen at generation time:
 //
 //   inline constexpr std::uint32_t kRawCount;            // 1 << raw bits (128 for Split/Second)
-//   inline constexpr std::uint32_t kOptimisedCount;      // 1 << optimised bits (32)
+//   inline constexpr std::uint32_t kOptimisedCount;      // 1 << optimised bits (32); 0: not collapsed
 //   inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised;  // the lookup table
+//                                                        // (absent when the domain is not collapsed)
 //   inline constexpr std::array<bool, kRawCount> kRawPruned;               // impossible raw IDs
 //   namespace raw_bit       { inline constexpr std::uint32_t <FEATURE> = 1u << n; ... }
 //   namespace optimised_bit { inline constexpr std::uint32_t <BIT> = 1u << n; ... }
@@ -96,16 +97,18 @@ struct Registry {
     Stage uber_stage;             // stage of the permuted uber-shader
     std::span<const std::string_view> raw_feature_names;        // indexed by raw bit
     std::span<const std::string_view> optimised_bit_names;      // indexed by optimised bit
-    std::span<const std::uint8_t> raw_to_optimised;             // the LUT, one entry per raw ID
+    std::span<const std::uint8_t> raw_to_optimised;             // the LUT, one entry per raw ID;
+                                                                // empty when the domain is not collapsed
     std::span<const Permutation> raw;                           // indexed by raw ID
     std::span<const Permutation> optimised;                     // indexed by optimised ID
     std::span<const CompanionShader> companions;
     std::span<const DescriptorBinding> pipeline_layout;         // merged over every blob
     std::span<const PushConstantRange> push_constants;          // merged over every blob
 
-    // Precondition: raw_id < raw.size(). Returns the optimised permutation for a raw ID.
+    // Precondition: raw_id < raw.size(). Returns the permutation a raw ID is drawn with: its
+    // optimised permutation, or, in a domain without collapse, the raw permutation itself.
     const Permutation& optimised_for_raw(std::uint32_t raw_id) const {
-        return optimised[raw_to_optimised[raw_id]];
+        return raw_to_optimised.empty() ? raw[raw_id] : optimised[raw_to_optimised[raw_id]];
     }
     // Returns the companion called `name`, or nullptr.
     const CompanionShader* companion(std::string_view wanted) const {
