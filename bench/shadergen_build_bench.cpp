@@ -110,14 +110,7 @@ void name_include_extension(const fs::path& shader) {
     write_text(shader, text.insert(at, "#extension GL_GOOGLE_include_directive : require\n"));
 }
 
-std::string stage_flag(shadergen::Stage stage) {
-    switch (stage) {
-        case shadergen::Stage::vertex: return "vert";
-        case shadergen::Stage::fragment: return "frag";
-        case shadergen::Stage::compute: return "comp";
-    }
-    return "frag";
-}
+std::string stage_flag(shadergen::Stage stage) { return std::string(shadergen::stage_extension(stage)); }
 
 struct Job {
     std::string name;

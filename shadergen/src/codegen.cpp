@@ -77,10 +77,7 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
 }
 
 std::string kind_enum(DescriptorKind kind) {
-    static const char* names[] = {"sampler", "combined_image_sampler", "sampled_image", "storage_image",
-                                  "uniform_texel_buffer", "storage_texel_buffer", "uniform_buffer",
-                                  "storage_buffer"};
-    return std::string("shadergen::DescriptorKind::") + names[static_cast<std::uint32_t>(kind)];
+    return "shadergen::DescriptorKind::" + std::string(descriptor_kind_name(kind));
 }
 
 // Emits the arrays of the source and remembers where each blob's data starts.
@@ -149,7 +146,8 @@ private:
         out_ << "constexpr std::array<shadergen::DescriptorBinding, " << list.size() << "> " << name << "{{\n";
         for (const BindingInfo& b : list)
             out_ << "    {" << b.set << ", " << b.binding << ", " << kind_enum(b.kind) << ", " << b.count << ", 0x"
-                 << std::hex << b.stages << std::dec << ", " << literal(b.name) << "},\n";
+                 << std::hex << b.stages << std::dec << ", " << literal(b.name) << ", "
+                 << (b.runtime_sized ? "true" : "false") << ", " << b.input_attachment_index << "},\n";
         out_ << "}};\n";
     }
 
@@ -160,6 +158,16 @@ private:
         out_ << "}};\n";
     }
 
+    void constants_array(const std::string& name, const std::vector<SpecConstantInfo>& list) {
+        static const char* types[] = {"boolean", "int32", "uint32", "float32"};
+        out_ << "constexpr std::array<shadergen::SpecializationConstant, " << list.size() << "> " << name << "{{\n";
+        for (const SpecConstantInfo& c : list)
+            out_ << "    {" << c.id << ", " << literal(c.name) << ", shadergen::ScalarType::"
+                 << types[static_cast<std::uint32_t>(c.type)] << ", 0x" << std::hex << c.default_bits << std::dec
+                 << "u},\n";
+        out_ << "}};\n";
+    }
+
     void reflections() {
         for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
             const ReflectionInfo& r = d_.blobs[b].reflection;
@@ -167,12 +175,15 @@ private:
             bindings_array(("kBindings" + i).c_str(), r.bindings);
             variables_array("kInputs" + i, r.inputs);
             variables_array("kOutputs" + i, r.outputs);
+            constants_array("kConstants" + i, r.specialization_constants);
         }
         out_ << "\nconstexpr std::array<shadergen::Reflection, " << d_.blobs.size() << "> kReflections{{\n";
         for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
             const ReflectionInfo& r = d_.blobs[b].reflection;
             out_ << "    {kBindings" << b << ", " << r.push_constant_size << ", kInputs" << b << ", kOutputs" << b
-                 << ", {" << r.local_size[0] << ", " << r.local_size[1] << ", " << r.local_size[2] << "}},\n";
+                 << ", {" << r.local_size[0] << ", " << r.local_size[1] << ", " << r.local_size[2] << "}, kConstants"
+                 << b << ", {0x" << std::hex << r.local_size_ids[0] << "u, 0x" << r.local_size_ids[1] << "u, 0x"
+                 << r.local_size_ids[2] << std::dec << "u}},\n";
         }
         out_ << "}};\n\n";
         bindings_array("kLayoutBindings", d_.layout.bindings);

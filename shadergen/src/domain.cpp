@@ -11,17 +11,9 @@
 
 #include "defines.h"
 #include "json.h"
+#include "stages.h"
 
 namespace shadergen {
-
-std::string_view stage_name(Stage stage) {
-    switch (stage) {
-        case Stage::vertex: return "vertex";
-        case Stage::fragment: return "fragment";
-        case Stage::compute: return "compute";
-    }
-    return "?";
-}
 
 std::vector<std::string> DomainSpec::raw_feature_names() const {
     std::vector<std::string> names;
@@ -165,13 +157,6 @@ private:
     Diagnostics errors_;
 };
 
-std::optional<Stage> parse_stage(std::string_view name) {
-    if (name == "vertex" || name == "vert") return Stage::vertex;
-    if (name == "fragment" || name == "frag") return Stage::fragment;
-    if (name == "compute" || name == "comp") return Stage::compute;
-    return std::nullopt;
-}
-
 class DomainBuilder {
 public:
     DomainBuilder(const std::filesystem::path& spec_path, SpecReader& reader)
@@ -220,14 +205,28 @@ private:
         if (!path.empty()) file.path = (base_ / path).lexically_normal();
         else if (object.find("path") && object.find("path")->type == Type::string)
             reader_.error(*object.find("path"), where + ".path", "the path is empty");
+        read_stage(object, where, path, file);
+        return file;
+    }
+
+    // "stage", or when it is absent the stage the path's extension names.
+    void read_stage(const Value& object, const std::string& where, const std::string& path, ShaderFile& file) {
+        if (!object.find("stage")) {
+            if (auto inferred = stage_for_extension(path)) file.stage = *inferred;
+            else if (!path.empty())
+                reader_.error(object, where,
+                              "missing \"stage\", and the extension of \"" + path + "\" names none (one of " +
+                                  stage_extensions() + " does)");
+            return;
+        }
         std::string stage = reader_.string_member(object, where, "stage");
         if (auto parsed = parse_stage(stage)) {
             file.stage = *parsed;
-        } else if (object.find("stage") && object.find("stage")->type == Type::string) {
+        } else if (object.find("stage")->type == Type::string) {
             reader_.error(*object.find("stage"), where + ".stage",
-                          "unknown stage \"" + stage + "\" (expected vertex, fragment or compute)");
+                          "unknown stage \"" + stage + "\" (expected one of " + stage_names() + ", or " +
+                              stage_extensions() + " without the dot)");
         }
-        return file;
     }
 
     void read_target_env(const Value& root) {

@@ -26,8 +26,19 @@ void initialise_glslang() {
 EShLanguage to_glslang(Stage stage) {
     switch (stage) {
         case Stage::vertex: return EShLangVertex;
+        case Stage::tess_control: return EShLangTessControl;
+        case Stage::tess_evaluation: return EShLangTessEvaluation;
+        case Stage::geometry: return EShLangGeometry;
         case Stage::fragment: return EShLangFragment;
         case Stage::compute: return EShLangCompute;
+        case Stage::task: return EShLangTask;
+        case Stage::mesh: return EShLangMesh;
+        case Stage::ray_generation: return EShLangRayGen;
+        case Stage::any_hit: return EShLangAnyHit;
+        case Stage::closest_hit: return EShLangClosestHit;
+        case Stage::miss: return EShLangMiss;
+        case Stage::intersection: return EShLangIntersect;
+        case Stage::callable: return EShLangCallable;
     }
     return EShLangFragment;
 }

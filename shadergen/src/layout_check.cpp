@@ -15,6 +15,8 @@ std::string_view descriptor_kind_name(DescriptorKind kind) {
         case DescriptorKind::storage_texel_buffer: return "storage_texel_buffer";
         case DescriptorKind::uniform_buffer: return "uniform_buffer";
         case DescriptorKind::storage_buffer: return "storage_buffer";
+        case DescriptorKind::input_attachment: return "input_attachment";
+        case DescriptorKind::acceleration_structure: return "acceleration_structure";
     }
     return "?";
 }

@@ -1,6 +1,9 @@
 #include "manifest.h"
 
+#include <cstring>
+
 #include "json.h"
+#include "stages.h"
 
 namespace shadergen {
 
@@ -12,8 +15,8 @@ namespace {
 
 void write_stage_list(json::Writer& w, std::uint32_t stages) {
     std::vector<std::string> names;
-    for (Stage s : {Stage::vertex, Stage::fragment, Stage::compute})
-        if (stages & static_cast<std::uint32_t>(s)) names.emplace_back(stage_name(s));
+    for (std::uint32_t bit = 1; bit <= static_cast<std::uint32_t>(Stage::callable); bit <<= 1)
+        if (stages & bit) names.emplace_back(stage_name(static_cast<Stage>(bit)));
     w.inline_string_array(names);
 }
 
@@ -91,12 +94,12 @@ void write_companions(json::Writer& w, const CompiledDomain& d) {
     w.end_array();
 }
 
-void write_layout(json::Writer& w, const MergedLayout& layout) {
-    w.key("pipeline_layout");
-    w.begin_object();
+// {set, binding, kind, count, stages, name}, plus runtime_sized and input_attachment_index
+// where they apply.
+void write_bindings(json::Writer& w, const std::vector<BindingInfo>& bindings) {
     w.key("bindings");
     w.begin_array();
-    for (const BindingInfo& b : layout.bindings) {
+    for (const BindingInfo& b : bindings) {
         w.begin_object();
         w.key("set"), w.value(b.set);
         w.key("binding"), w.value(b.binding);
@@ -104,9 +107,101 @@ void write_layout(json::Writer& w, const MergedLayout& layout) {
         w.key("count"), w.value(b.count);
         w.key("stages"), write_stage_list(w, b.stages);
         w.key("name"), w.value(b.name);
+        if (b.runtime_sized) w.key("runtime_sized"), w.value(true);
+        if (b.kind == DescriptorKind::input_attachment) w.key("input_attachment_index"), w.value(b.input_attachment_index);
         w.end_object();
     }
     w.end_array();
+}
+
+void write_variables(json::Writer& w, const char* key, const std::vector<VariableInfo>& variables) {
+    w.key(key);
+    w.begin_array();
+    for (const VariableInfo& v : variables) {
+        w.begin_object();
+        w.key("location"), w.value(v.location);
+        w.key("components"), w.value(v.components);
+        w.key("name"), w.value(v.name);
+        w.end_object();
+    }
+    w.end_array();
+}
+
+std::string_view scalar_type_name(ScalarType type) {
+    switch (type) {
+        case ScalarType::boolean: return "bool";
+        case ScalarType::int32: return "int";
+        case ScalarType::uint32: return "uint";
+        case ScalarType::float32: return "float";
+    }
+    return "?";
+}
+
+// The default as JSON of its own type.
+void write_default(json::Writer& w, const SpecConstantInfo& c) {
+    switch (c.type) {
+        case ScalarType::boolean: w.value(c.default_bits != 0); break;
+        case ScalarType::int32: w.value(static_cast<std::int64_t>(static_cast<std::int32_t>(c.default_bits))); break;
+        case ScalarType::uint32: w.value(static_cast<std::int64_t>(c.default_bits)); break;
+        case ScalarType::float32: {
+            float f = 0;
+            std::memcpy(&f, &c.default_bits, sizeof f);
+            w.value(static_cast<double>(f));
+            break;
+        }
+    }
+}
+
+void write_workgroup(json::Writer& w, const ReflectionInfo& r) {
+    w.key("local_size");
+    w.begin_array();
+    for (std::uint32_t size : r.local_size) w.value(size);
+    w.end_array();
+    w.key("local_size_ids");
+    w.begin_array();
+    for (std::uint32_t id : r.local_size_ids)
+        if (id == Reflection::kNoConstant) w.null();
+        else w.value(id);
+    w.end_array();
+}
+
+// Every distinct blob with its own reflection: what a permutation needs when it has a
+// pipeline layout of its own, its work-group size and its specialization constants.
+void write_blobs(json::Writer& w, const CompiledDomain& d) {
+    std::vector<Stage> stages(d.blobs.size(), Stage::fragment);
+    for (const CompileJob& job : d.jobs) stages[static_cast<std::size_t>(job.blob)] = job.stage;
+    w.key("blobs");
+    w.begin_array();
+    for (std::size_t i = 0; i < d.blobs.size(); ++i) {
+        const ReflectionInfo& r = d.blobs[i].reflection;
+        w.begin_object();
+        w.key("spirv"), w.value(blob_relative_path(d.blobs[i]));
+        w.key("stage"), w.value(stage_name(stages[i]));
+        write_bindings(w, r.bindings);
+        w.key("push_constant_size"), w.value(r.push_constant_size);
+        write_variables(w, "inputs", r.inputs);
+        write_variables(w, "outputs", r.outputs);
+        if (has_workgroup(stages[i])) write_workgroup(w, r);
+        w.key("specialization_constants");
+        w.begin_array();
+        for (const SpecConstantInfo& c : r.specialization_constants) {
+            w.begin_object();
+            w.key("id"), w.value(c.id);
+            w.key("name"), w.value(c.name);
+            w.key("type"), w.value(scalar_type_name(c.type));
+            w.key("default"), write_default(w, c);
+            w.end_object();
+        }
+        w.end_array();
+        w.end_object();
+    }
+    w.end_array();
+}
+
+void write_layout(json::Writer& w, const MergedLayout& layout) {
+    w.key("pipeline_layout");
+    w.begin_object();
+    write_bindings(w, layout.bindings);
     w.key("push_constants");
     w.begin_array();
     for (const PushConstantInfo& p : layout.push_constants) {
@@ -135,6 +230,7 @@ std::string write_manifest(const CompiledDomain& d) {
     write_permutations(w, d);
     write_companions(w, d);
     write_layout(w, d.layout);
+    write_blobs(w, d);
     w.end_object();
     return w.take();
 }

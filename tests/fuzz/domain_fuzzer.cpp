@@ -29,7 +29,8 @@ void check_plan(const shadergen::DomainSpec& spec, const shadergen::PermutationP
     require(plan.raw.size() == spec.raw_count(), "one raw permutation per raw ID");
     require(plan.optimised.size() == spec.optimised_count(), "one optimised permutation per optimised ID");
     for (const shadergen::RawPermutation& raw : plan.raw)
-        require(raw.optimised < spec.optimised_count(), "every table entry is an optimised ID");
+        require(spec.collapsed ? raw.optimised < spec.optimised_count() : raw.optimised == raw.id,
+                "every table entry is an optimised ID (the raw ID itself without collapse)");
     for (const shadergen::OptimisedPermutation& optimised : plan.optimised)
         require(optimised.raw_equivalent < spec.raw_count(), "every optimised ID compiles a raw feature set");
     // The text views walk every permutation; explain one raw ID chosen by the input.

@@ -205,7 +205,10 @@ INSTANTIATE_TEST_SUITE_P(
         EditCase{"define_not_an_identifier", "\"define\": \"SKY\"", "\"define\": \"SKY-BOX\"", "", 10,
                  "raw.features[5].define: \"SKY-BOX\" is not a GLSL identifier"},
         EditCase{"unknown_stage", "\"stage\": \"fragment\"", "\"stage\": \"pixel\"", "", 9,
-                 "uber_shader.stage: unknown stage \"pixel\" (expected vertex, fragment or compute)"},
+                 "uber_shader.stage: unknown stage \"pixel\" (expected one of vertex, tess_control, tess_evaluation, "
+                 "geometry, fragment, compute, task, mesh, ray_generation, any_hit, closest_hit, miss, intersection, "
+                 "callable, or .vert .tesc .tese .geom .frag .comp .task .mesh .rgen .rahit .rchit .rmiss .rint .rcall "
+                 "without the dot)"},
         EditCase{"unsupported_format", "\"format\": 1", "\"format\": 2", "", 10,
                  "spec.format: unsupported format version (this shadergen reads 1)"},
         EditCase{"duplicate_key", "\"name\": \"split_second\",", "\"name\": \"split_second\", \"name\": \"x\",", "", 24,

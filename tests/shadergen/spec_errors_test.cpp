@@ -90,8 +90,14 @@ INSTANTIATE_TEST_SUITE_P(
                   "spec.json:15:29: error: optimised.variants[0].when: unknown name 'A' (known: X) in \"A\" at "
                   "column 1 (rules here name optimised bits)"},
         ErrorCase{"unknown_stage", replace(kBase, "\"fragment\"", "\"pixel\""),
-                  "spec.json:4:50: error: uber_shader.stage: unknown stage \"pixel\" (expected vertex, fragment or "
-                  "compute)"},
+                  "spec.json:4:50: error: uber_shader.stage: unknown stage \"pixel\" (expected one of vertex, "
+                  "tess_control, tess_evaluation, geometry, fragment, compute, task, mesh, ray_generation, any_hit, "
+                  "closest_hit, miss, intersection, callable, or .vert .tesc .tese .geom .frag .comp .task .mesh .rgen "
+                  ".rahit .rchit .rmiss .rint .rcall without the dot)"},
+        ErrorCase{"no_stage_and_an_extension_that_names_none",
+                  replace(kBase, "{ \"path\": \"tiny.frag\", \"stage\": \"fragment\" }", "{ \"path\": \"tiny.glsl\" }"),
+                  "spec.json:4:18: error: uber_shader: missing \"stage\", and the extension of \"tiny.glsl\" names none "
+                  "(one of .vert .tesc .tese .geom .frag .comp .task .mesh .rgen .rahit .rchit .rmiss .rint .rcall does)"},
         ErrorCase{"missing_name", replace(kBase, "\"name\": \"tiny\",", ""),
                   "spec.json:1:1: error: spec: missing \"name\""},
         ErrorCase{"not_an_object", "[1, 2]\n", "spec.json:1:1: error: spec: the spec must be a JSON object"},

@@ -143,6 +143,9 @@ Result<DomainSpec> load_domain(const std::filesystem::path& spec_path);
 // Same, from text already read; `spec_path` locates relative paths and names the file in errors.
 Result<DomainSpec> parse_domain(std::string_view text, const std::filesystem::path& spec_path);
 
+// "fragment" for Stage::fragment: the spec's, the manifest's and the C++ enum's name.
 std::string_view stage_name(Stage stage);
+// The file extension (no dot) and glslangValidator -S name of a stage: "frag" for fragment.
+std::string_view stage_extension(Stage stage);
 
 }  // namespace shadergen

@@ -25,8 +25,19 @@ namespace shadergen {
 // Pipeline stage of a compiled blob. Values match VkShaderStageFlagBits so a runtime can cast.
 enum class Stage : std::uint32_t {
     vertex = 0x01,
+    tess_control = 0x02,
+    tess_evaluation = 0x04,
+    geometry = 0x08,
     fragment = 0x10,
     compute = 0x20,
+    task = 0x40,             // VK_SHADER_STAGE_TASK_BIT_EXT
+    mesh = 0x80,             // VK_SHADER_STAGE_MESH_BIT_EXT
+    ray_generation = 0x100,  // VK_SHADER_STAGE_RAYGEN_BIT_KHR
+    any_hit = 0x200,
+    closest_hit = 0x400,
+    miss = 0x800,
+    intersection = 0x1000,
+    callable = 0x2000,
 };
 
 // Descriptor kinds found by reflection. Values match VkDescriptorType so a runtime can cast.
@@ -39,6 +50,8 @@ enum class DescriptorKind : std::uint32_t {
     storage_texel_buffer = 5,
     uniform_buffer = 6,
     storage_buffer = 7,
+    input_attachment = 10,                     // a subpass input
+    acceleration_structure = 1000150000,       // VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR
 };
 
 // One descriptor binding of the merged pipeline layout: the union over every blob of the
@@ -47,9 +60,20 @@ struct DescriptorBinding {
     std::uint32_t set;
     std::uint32_t binding;
     DescriptorKind kind;
-    std::uint32_t count;  // array size; 1 for a scalar binding
+    std::uint32_t count;  // array size; 1 for a scalar binding; 0 when runtime-sized
     std::uint32_t stages;
     std::string_view name;
+    bool runtime_sized = false;               // `texture2D t[]`: the count is chosen at run time
+    std::uint32_t input_attachment_index = 0;  // kind == input_attachment: the subpass input's index
+};
+
+// A specialization constant (`layout(constant_id = N) const T name = default;`).
+enum class ScalarType : std::uint32_t { boolean, int32, uint32, float32 };
+struct SpecializationConstant {
+    std::uint32_t id;            // constant_id, as VkSpecializationMapEntry::constantID
+    std::string_view name;
+    ScalarType type;
+    std::uint32_t default_bits;  // the default's 32-bit pattern (a float's bits for float32)
 };
 
 // A push-constant block: byte size and the VkShaderStageFlags-compatible stages using it.
@@ -71,7 +95,12 @@ struct Reflection {
     std::uint32_t push_constant_size;  // 0 when the blob has no push constants
     std::span<const InterfaceVariable> inputs;
     std::span<const InterfaceVariable> outputs;
-    std::uint32_t local_size[3];  // compute work-group size; {0,0,0} for graphics stages
+    std::uint32_t local_size[3];  // work-group size (compute, task, mesh; the default where
+                                  // a specialization constant sets it); {0,0,0} otherwise
+    std::span<const SpecializationConstant> specialization_constants = {};
+    // Per axis, the constant_id that sets the work-group size (local_size_x_id), or kNoConstant.
+    static constexpr std::uint32_t kNoConstant = 0xffffffffu;
+    std::uint32_t local_size_ids[3] = {kNoConstant, kNoConstant, kNoConstant};
 };
 
 // One compiled permutation (or one non-permuted companion shader).
