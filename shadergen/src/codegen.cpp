@@ -250,7 +250,8 @@ private:
              << stage_enum(d_.spec.uber.stage)
              << ",\n    kRawFeatureNames,\n    kOptimisedBitNames,\n    "
              << (d_.spec.collapsed ? "kRawToOptimised" : "{}")
-             << ",\n    kRaw,\n    kOptimised,\n    kCompanions,\n    kLayoutBindings,\n    kPushConstants,\n};\n\n";
+             << ",\n    kRaw,\n    kOptimised,\n    kCompanions,\n    kLayoutBindings,\n    kPushConstants,\n    "
+             << (d_.spec.layout == LayoutMode::per_permutation ? "true" : "false") << ",\n};\n\n";
     }
 
     const CompiledDomain& d_;

@@ -298,6 +298,8 @@ private:
     }
 
     Status merge() {
+        // Each permutation keeps its own reflection; there is nothing to merge or check.
+        if (d_.spec.layout == LayoutMode::per_permutation) return Ok{};
         std::vector<LabelledReflection> labelled;
         std::set<int> seen;
         for (const CompileJob& job : d_.jobs) {

@@ -170,13 +170,14 @@ public:
             return std::move(spec_);
         }
         reader_.only_keys(root, "spec",
-                          {"format", "name", "description", "uber_shader", "include_dirs", "target_env", "defines",
-                           "companions", "raw", "optimised"});
+                          {"format", "name", "description", "uber_shader", "include_dirs", "target_env", "layout",
+                           "defines", "companions", "raw", "optimised"});
         read_header(root);
         if (const Value* uber = reader_.member(root, "spec", "uber_shader", Type::object))
             spec_.uber = read_shader_file(*uber, "uber_shader");
         read_include_dirs(root);
         read_target_env(root);
+        read_layout(root);
         if (const Value* defines = reader_.member(root, "spec", "defines", Type::object, false))
             spec_.defines = read_define_map(*defines, "defines");
         read_companions(root);
@@ -235,6 +236,15 @@ private:
             reader_.error(*env, "target_env",
                           "unknown target environment \"" + env->string + "\" (expected " +
                               std::string(target_env_choices()) + ")");
+    }
+
+    void read_layout(const Value& root) {
+        const Value* layout = reader_.member(root, "spec", "layout", Type::string, false);
+        if (!layout) return;
+        if (layout->string == "per_permutation") spec_.layout = LayoutMode::per_permutation;
+        else if (layout->string != "shared")
+            reader_.error(*layout, "layout",
+                          "unknown layout \"" + layout->string + "\" (expected shared or per_permutation)");
     }
 
     void read_include_dirs(const Value& root) {

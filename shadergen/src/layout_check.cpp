@@ -36,6 +36,11 @@ std::string describe_outputs(const std::vector<VariableInfo>& outputs) {
     return text.empty() ? "none" : text;
 }
 
+// A shared layout is a choice, not a rule of the tool: say how to make the other one.
+constexpr const char* kPerPermutationHint =
+    " (the spec's \"layout\" is \"shared\"; \"layout\": \"per_permutation\" gives each permutation a layout "
+    "of its own)";
+
 }  // namespace
 
 Result<MergedLayout> merge_layouts(std::span<const LabelledReflection> blobs) {
@@ -57,7 +62,7 @@ Result<MergedLayout> merge_layouts(std::span<const LabelledReflection> blobs) {
                 errors.push_back(make_error("permutations disagree on set " + std::to_string(binding.set) +
                                             " binding " + std::to_string(binding.binding) + ": " + *it->second.label +
                                             " has " + describe(merged) + ", " + blob.label + " has " +
-                                            describe(binding)));
+                                            describe(binding) + kPerPermutationHint));
                 continue;
             }
             merged.stages |= binding.stages;
@@ -67,7 +72,8 @@ Result<MergedLayout> merge_layouts(std::span<const LabelledReflection> blobs) {
             if (blob.permuted && first_push && first_push->permuted && first_push->info->push_constant_size != size)
                 errors.push_back(make_error("permutations disagree on the push-constant block: " + first_push->label +
                                             " has " + std::to_string(first_push->info->push_constant_size) +
-                                            " bytes, " + blob.label + " has " + std::to_string(size)));
+                                            " bytes, " + blob.label + " has " + std::to_string(size) +
+                                            kPerPermutationHint));
             if (!first_push || (blob.permuted && !first_push->permuted)) first_push = &blob;
             push_size = std::max(push_size, size);
             push_stages |= static_cast<std::uint32_t>(blob.stage);
@@ -78,7 +84,8 @@ Result<MergedLayout> merge_layouts(std::span<const LabelledReflection> blobs) {
             } else if (first_permuted->info->outputs != blob.info->outputs) {
                 errors.push_back(make_error("permutations disagree on their outputs: " + first_permuted->label +
                                             " writes " + describe_outputs(first_permuted->info->outputs) + ", " +
-                                            blob.label + " writes " + describe_outputs(blob.info->outputs)));
+                                            blob.label + " writes " + describe_outputs(blob.info->outputs) +
+                                            kPerPermutationHint));
             }
         }
         if (errors.size() >= 8) break;  // the first few conflicts say enough

@@ -20,12 +20,27 @@ void write_stage_list(json::Writer& w, std::uint32_t stages) {
     w.inline_string_array(names);
 }
 
-void write_blob_fields(json::Writer& w, const Blob* blob) {
+void write_bindings(json::Writer& w, const std::vector<BindingInfo>& bindings);
+void write_variables(json::Writer& w, const char* key, const std::vector<VariableInfo>& variables);
+
+// With "layout": "per_permutation", the permutation's own layout: its blob's bindings, push
+// constants and outputs.
+void write_own_layout(json::Writer& w, const Blob& blob) {
+    w.key("layout");
+    w.begin_object();
+    write_bindings(w, blob.reflection.bindings);
+    w.key("push_constant_size"), w.value(blob.reflection.push_constant_size);
+    write_variables(w, "outputs", blob.reflection.outputs);
+    w.end_object();
+}
+
+void write_blob_fields(json::Writer& w, const Blob* blob, const DomainSpec& spec) {
     if (!blob) return;
     w.key("spirv");
     w.value(blob_relative_path(*blob));
     w.key("hash");
     w.value(blob->hash);
+    if (spec.layout == LayoutMode::per_permutation) write_own_layout(w, *blob);
 }
 
 void write_features(json::Writer& w, const DomainSpec& spec) {
@@ -60,7 +75,7 @@ void write_permutations(json::Writer& w, const CompiledDomain& d) {
         w.key("defines"), w.inline_string_array(raw.defines);
         w.key("pruned"), w.value(raw.pruned);
         if (d.spec.collapsed) w.key("optimised"), w.value(raw.optimised);
-        write_blob_fields(w, raw.pruned ? nullptr : d.raw_blob(raw.id));
+        write_blob_fields(w, raw.pruned ? nullptr : d.raw_blob(raw.id), d.spec);
         w.end_object();
     }
     w.end_array();
@@ -72,7 +87,7 @@ void write_permutations(json::Writer& w, const CompiledDomain& d) {
         w.key("defines"), w.inline_string_array(optimised.defines);
         w.key("raw_equivalent"), w.value(optimised.raw_equivalent);
         w.key("raw_mapped"), w.value(optimised.raw_mapped);
-        write_blob_fields(w, d.optimised_blob(optimised.id));
+        write_blob_fields(w, d.optimised_blob(optimised.id), d.spec);
         w.end_object();
     }
     w.end_array();
@@ -88,7 +103,7 @@ void write_companions(json::Writer& w, const CompiledDomain& d) {
         w.key("stage"), w.value(stage_name(c.file.stage));
         w.key("defines"), w.inline_string_array(c.defines);
         w.key("shared_layout"), w.value(c.shared_layout);
-        write_blob_fields(w, d.companion_blob(i));
+        write_blob_fields(w, d.companion_blob(i), d.spec);
         w.end_object();
     }
     w.end_array();
@@ -226,6 +241,7 @@ std::string write_manifest(const CompiledDomain& d) {
     w.key("stage"), w.value(stage_name(d.spec.uber.stage));
     w.key("target_env"), w.value(target_env_name(d.spec.target_env));
     w.key("collapsed"), w.value(d.spec.collapsed);
+    w.key("layout"), w.value(d.spec.layout == LayoutMode::shared ? "shared" : "per_permutation");
     write_features(w, d.spec);
     write_permutations(w, d);
     write_companions(w, d);

@@ -94,6 +94,10 @@ bool parse_target_env(std::string_view name, TargetEnv& env);
 // "vulkan1.0, vulkan1.1, vulkan1.2 or vulkan1.3", for messages.
 std::string_view target_env_choices();
 
+// "layout": one pipeline layout for the whole domain (checked across every permutation), or
+// one per permutation (no check: permutations may differ in descriptor kinds and outputs).
+enum class LayoutMode { shared, per_permutation };
+
 struct ShaderFile {
     std::filesystem::path path;  // resolved against the spec's folder
     Stage stage = Stage::fragment;
@@ -117,6 +121,7 @@ struct DomainSpec {
     ShaderFile uber;
     std::vector<std::filesystem::path> include_dirs;
     TargetEnv target_env = TargetEnv::vulkan1_2;  // "target_env", or build --target-env
+    LayoutMode layout = LayoutMode::shared;
     // Fixed defines, "NAME=VALUE", in spec order: every shader of the domain (uber-shader and
     // companions) is compiled with them. None names a raw feature's define.
     std::vector<std::string> defines;

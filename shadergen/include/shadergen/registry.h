@@ -133,6 +133,9 @@ struct Registry {
     std::span<const CompanionShader> companions;
     std::span<const DescriptorBinding> pipeline_layout;         // merged over every blob
     std::span<const PushConstantRange> push_constants;          // merged over every blob
+    // The spec's "layout": "per_permutation". Then pipeline_layout and push_constants are
+    // empty and each permutation's reflection is its own layout.
+    bool per_permutation_layout = false;
 
     // Precondition: raw_id < raw.size(). Returns the permutation a raw ID is drawn with: its
     // optimised permutation, or, in a domain without collapse, the raw permutation itself.
