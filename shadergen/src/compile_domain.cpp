@@ -177,7 +177,7 @@ private:
         for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
             dependencies.insert(d_.jobs[i].path.lexically_normal());
             if (!results[i]) {
-                failures.push_back({i, results[i].errors()});
+                failures.push_back({i, results[i].errors(), {}});
                 continue;
             }
             for (const auto& include : results[i]->includes) dependencies.insert(include);
@@ -207,6 +207,21 @@ private:
         // A cache that cannot be written only costs time later; the build itself is fine.
         if (Status stored = options_.cache->store(key, blob); !stored)
             log("warning: " + stored.errors().front().to_string());
+    }
+
+    // The preprocessed lines of each failed job, so that grouping can count the permutations
+    // that stopped at an earlier error but compile a later error's line too. Only failed
+    // builds pay for this second preprocessing.
+    std::vector<JobFailure> with_lines(std::vector<JobFailure> failures) {
+        parallel_for(
+            failures.size(), options_.jobs,
+            [&](std::size_t i) {
+                const CompileJob& job = d_.jobs[failures[i].job];
+                if (auto text = preprocess(source_of(d_.spec, job)))
+                    failures[i].lines = live_lines(text->text, job.path.lexically_normal().string());
+            },
+            options_.cancelled);
+        return failures;
     }
 
     Result<CachedBlob> compile_one(SourceRecord& record) {
@@ -241,9 +256,9 @@ private:
         // Every job with a failed source has that source's errors.
         for (std::size_t j = 0; j < d_.jobs.size(); ++j) {
             const auto& result = results[static_cast<std::size_t>(d_.jobs[j].source)];
-            if (!result) failures.push_back({j, result.errors()});
+            if (!result) failures.push_back({j, result.errors(), {}});
         }
-        if (!failures.empty()) return group_failures(d_.jobs, failures);
+        if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)));
         store_blobs(results);
         return Ok{};
     }

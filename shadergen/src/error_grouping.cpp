@@ -1,8 +1,10 @@
 #include "error_grouping.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace shadergen {
 namespace {
@@ -77,27 +79,89 @@ std::string where_it_occurs(const std::vector<CompileJob>& jobs, const std::set<
 
 }  // namespace
 
+LiveLines live_lines(std::string_view text, const std::string& main_file) {
+    // glslang's output opens with the preamble's one kept line, the include extension that
+    // shadergen switches on; the shader's own line 1 follows it.
+    constexpr std::string_view kPreamble = "#extension GL_GOOGLE_include_directive : require\n";
+    if (text.substr(0, kPreamble.size()) == kPreamble) text.remove_prefix(kPreamble.size());
+    LiveLines lines;
+    std::string file = main_file;
+    int line = 1;
+    while (!text.empty()) {
+        std::size_t end = text.find('\n');
+        std::string_view current = text.substr(0, end);
+        text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
+        std::size_t start = current.find_first_not_of(" \t");
+        if (start != std::string_view::npos && current.substr(start, 5) == "#line") {
+            std::string_view rest = current.substr(start + 5);
+            std::size_t digits = rest.find_first_of("0123456789");
+            if (digits != std::string_view::npos) line = std::atoi(std::string(rest.substr(digits)).c_str());
+            std::size_t open = rest.find('"'), close = rest.rfind('"');
+            if (open != std::string_view::npos && close > open) file = std::string(rest.substr(open + 1, close - open - 1));
+            continue;
+        }
+        if (start != std::string_view::npos) lines[{file, line}] = std::string(current.substr(start));
+        ++line;
+    }
+    return lines;
+}
+
+namespace {
+
+struct Group {
+    Diagnostic error;
+    std::set<std::size_t> failing;  // job indices
+    std::size_t rank = 0;           // smallest position among a failure's kept messages
+    std::string line_text;          // the line as a failure that reported it saw it
+};
+
+// The failure's messages less glslang's follow-on ones at a place already reported.
+std::vector<const Diagnostic*> kept_messages(const JobFailure& failure) {
+    std::set<std::pair<std::string, int>> places;
+    std::vector<const Diagnostic*> kept;
+    for (const Diagnostic& error : failure.errors)
+        if (error.line == 0 || places.insert({error.file, error.line}).second) kept.push_back(&error);
+    return kept;
+}
+
+}  // namespace
+
 Diagnostics group_failures(const std::vector<CompileJob>& jobs, const std::vector<JobFailure>& failures) {
     // Key on the whole located message so the same error at the same line groups together.
-    std::map<std::string, std::pair<Diagnostic, std::set<std::size_t>>> groups;
+    std::map<std::string, Group> groups;
     std::vector<std::string> order;
     for (const JobFailure& failure : failures) {
-        for (const Diagnostic& error : failure.errors) {
+        std::vector<const Diagnostic*> kept = kept_messages(failure);
+        for (std::size_t rank = 0; rank < kept.size(); ++rank) {
+            const Diagnostic& error = *kept[rank];
             std::string key = error.to_string();
-            auto [it, fresh] = groups.try_emplace(key, error, std::set<std::size_t>{});
+            auto [it, fresh] = groups.try_emplace(key, Group{error, {}, rank, {}});
             if (fresh) order.push_back(key);
-            it->second.second.insert(failure.job);
+            it->second.failing.insert(failure.job);
+            it->second.rank = std::min(it->second.rank, rank);
+            auto line = failure.lines.find({error.file, error.line});
+            if (line != failure.lines.end()) it->second.line_text = line->second;
         }
     }
-    // Report in source order (file, then line) so the first error printed comes first in the file.
+    // A failure that stopped earlier still hits an error whose line it compiles unchanged.
+    for (auto& [key, group] : groups) {
+        if (group.line_text.empty()) continue;
+        for (const JobFailure& failure : failures) {
+            auto line = failure.lines.find({group.error.file, group.error.line});
+            if (line != failure.lines.end() && line->second == group.line_text) group.failing.insert(failure.job);
+        }
+    }
+    // First errors first (what a permutation stopped at), then source order.
     std::sort(order.begin(), order.end(), [&](const std::string& a, const std::string& b) {
-        const Diagnostic& x = groups.at(a).first;
-        const Diagnostic& y = groups.at(b).first;
-        return std::tie(x.file, x.line, x.message) < std::tie(y.file, y.line, y.message);
+        const Group& x = groups.at(a);
+        const Group& y = groups.at(b);
+        return std::tie(x.rank, x.error.file, x.error.line, x.error.message) <
+               std::tie(y.rank, y.error.file, y.error.line, y.error.message);
     });
     Diagnostics out;
     for (const std::string& key : order) {
-        auto& [error, failing] = groups.at(key);
+        const Diagnostic& error = groups.at(key).error;
+        const std::set<std::size_t>& failing = groups.at(key).failing;
         Diagnostic grouped = error;
         grouped.message += " (" + where_it_occurs(jobs, failing) + ")";
         out.push_back(std::move(grouped));
