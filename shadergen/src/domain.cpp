@@ -412,13 +412,17 @@ private:
         // The values decide the widths, and the widths how many raw bits there are to place.
         std::vector<std::vector<std::string>> values(features->array.size());
         std::uint32_t total = 0;
+        bool values_read = true;
         for (std::size_t i = 0; i < features->array.size(); ++i) {
             const Value& item = features->array[i];
             if (item.type != Type::object) continue;
             auto read = read_values(item, SpecReader::index("raw.features", i));
             if (read) values[i] = std::move(*read);
+            values_read = values_read && read.has_value();
             total += values[i].empty() ? 1 : width_for(values[i].size());
         }
+        // Without every feature's values the widths, and so every bit check, would be wrong.
+        if (!values_read) return;
         if (total > kMaxRawFeatures) {
             reader_.error(*features, "raw.features",
                           "the features take " + std::to_string(total) + " raw bits; the limit is " +
