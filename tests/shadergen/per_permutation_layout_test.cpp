@@ -57,6 +57,18 @@ TEST(PerPermutationLayout, EachPermutationCarriesItsOwnKindsAndOutputs) {
         }
     }
     EXPECT_EQ(manifest["optimised"][1]["layout"], raw[3]["layout"]) << "optimised 1 is compiled as raw 3";
+    // The FFT companion: its work-group width is specialization constant 3 (default 1, the
+    // unspecialised size glslang gives it), its radix constant 4 (default 4).
+    const json& fft = manifest["companions"][0];
+    ASSERT_EQ(fft["name"], "fft");
+    for (const json& blob : manifest["blobs"]) {
+        if (blob["spirv"] != fft["spirv"]) continue;
+        EXPECT_EQ(blob["local_size"], json::array({1, 1, 1}));
+        EXPECT_EQ(blob["local_size_ids"], json::parse("[3, null, null]"));
+        EXPECT_EQ(blob["specialization_constants"],
+                  json::parse(R"([{"id": 3, "name": "", "type": "uint", "default": 1},
+                                  {"id": 4, "name": "RADIX", "type": "uint", "default": 4}])"));
+    }
     for (const json& blob : manifest["blobs"]) {
         sgtest::ProcessResult val = sgtest::spirv_val(dir / "out" / blob["spirv"].get<std::string>());
         EXPECT_EQ(val.exit_code, 0) << val.out << val.err;

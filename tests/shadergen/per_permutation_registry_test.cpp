@@ -37,6 +37,14 @@ TEST(PerPermutationRegistry, EachPermutationHasItsOwnLayout) {
     EXPECT_EQ(cookies->count, 0u);
     ASSERT_EQ(r.raw[0].reflection.specialization_constants.size(), 1u);
     EXPECT_EQ(r.raw[0].reflection.specialization_constants[0].name, "LIGHT_SCALE");
+    const shadergen::CompanionShader* fft = r.companion("fft");
+    ASSERT_NE(fft, nullptr);
+    EXPECT_EQ(fft->stage, shadergen::Stage::compute);
+    EXPECT_EQ(fft->shader.reflection.local_size_ids[0], 3u);
+    EXPECT_EQ(fft->shader.reflection.local_size_ids[1], shadergen::Reflection::kNoConstant);
+    ASSERT_EQ(fft->shader.reflection.specialization_constants.size(), 2u);
+    EXPECT_EQ(fft->shader.reflection.specialization_constants[1].name, "RADIX");
+    EXPECT_EQ(fft->shader.reflection.specialization_constants[1].default_bits, 4u);
 }
 
 }  // namespace
