@@ -217,24 +217,35 @@ private:
         out_ << "}};\n\n";
     }
 
-    std::string permutation(std::uint32_t id, const std::vector<std::string>& defines, const Blob* blob) {
+    std::string permutation(std::uint32_t id, const std::vector<std::string>& defines, const Blob* blob,
+                            const Blob* vertex = nullptr) {
         std::ostringstream p;
         p << "{" << id << ", std::span<const std::string_view>(kDefines.data() + " << pool_define_list(defines) << ", "
           << defines.size() << "), ";
         if (!blob) return p.str() + "true, {}, \"\", {}}";
         std::size_t index = static_cast<std::size_t>(blob - d_.blobs.data());
         p << "false, std::span<const std::uint32_t>(kWords + " << word_offset_[index] << ", " << blob->words.size()
-          << "), " << literal(blob->hash) << ", kReflections[" << index << "]}";
+          << "), " << literal(blob->hash) << ", kReflections[" << index << "]";
+        if (vertex) {
+            std::size_t v = static_cast<std::size_t>(vertex - d_.blobs.data());
+            p << ", std::span<const std::uint32_t>(kWords + " << word_offset_[v] << ", " << vertex->words.size()
+              << "), " << literal(vertex->hash) << ", &kReflections[" << v << "]";
+        }
+        p << "}";
         return p.str();
     }
 
     void permutations() {
         out_ << "constexpr std::array<shadergen::Permutation, kRawCount> kRaw{{\n";
         for (const RawPermutation& raw : d_.plan.raw)
-            out_ << "    " << permutation(raw.id, raw.defines, raw.pruned ? nullptr : d_.raw_blob(raw.id)) << ",\n";
+            out_ << "    "
+                 << permutation(raw.id, raw.defines, raw.pruned ? nullptr : d_.raw_blob(raw.id),
+                                raw.pruned ? nullptr : d_.raw_vertex_blob(raw.id))
+                 << ",\n";
         out_ << "}};\n\nconstexpr std::array<shadergen::Permutation, kOptimisedCount> kOptimised{{\n";
         for (const OptimisedPermutation& o : d_.plan.optimised)
-            out_ << "    " << permutation(o.id, o.defines, d_.optimised_blob(o.id)) << ",\n";
+            out_ << "    " << permutation(o.id, o.defines, d_.optimised_blob(o.id), d_.optimised_vertex_blob(o.id))
+                 << ",\n";
         out_ << "}};\n\nconstexpr std::array<shadergen::CompanionShader, " << d_.spec.companions.size()
              << "> kCompanions{{\n";
         for (std::size_t i = 0; i < d_.spec.companions.size(); ++i) {

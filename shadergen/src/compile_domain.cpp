@@ -10,6 +10,7 @@
 #include "compiled_domain.h"
 #include "defines.h"
 #include "error_grouping.h"
+#include "program_check.h"
 #include "glsl_compiler.h"
 #include "input_cache.h"
 #include "phase_clock.h"
@@ -24,8 +25,8 @@ namespace shadergen {
 
 std::string CompileJob::label() const {
     switch (kind) {
-        case JobKind::raw: return "raw " + std::to_string(id);
-        case JobKind::optimised: return "optimised " + std::to_string(id);
+        case JobKind::raw: return "raw " + std::to_string(id) + (vertex_half ? " vertex" : "");
+        case JobKind::optimised: return "optimised " + std::to_string(id) + (vertex_half ? " vertex" : "");
         case JobKind::companion: return "companion " + name;
     }
     return {};
@@ -47,6 +48,12 @@ const Blob* CompiledDomain::optimised_blob(std::uint32_t id) const { return blob
 
 const Blob* CompiledDomain::companion_blob(std::size_t index) const { return blob_of(*this, companion_jobs, index); }
 
+const Blob* CompiledDomain::raw_vertex_blob(std::uint32_t id) const { return blob_of(*this, raw_vertex_jobs, id); }
+
+const Blob* CompiledDomain::optimised_vertex_blob(std::uint32_t id) const {
+    return blob_of(*this, optimised_vertex_jobs, id);
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -62,6 +69,13 @@ std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan&
             jobs.push_back({JobKind::raw, raw.id, raw.defines, spec.uber.stage, spec.uber.path, {}});
     for (const OptimisedPermutation& optimised : plan.optimised)
         jobs.push_back({JobKind::optimised, optimised.id, optimised.defines, spec.uber.stage, spec.uber.path, {}});
+    if (spec.program_vertex) {
+        const ShaderFile& vertex = *spec.program_vertex;
+        for (const RawPermutation& raw : plan.raw)
+            if (!raw.pruned) jobs.push_back({JobKind::raw, raw.id, raw.defines, vertex.stage, vertex.path, {}, true});
+        for (const OptimisedPermutation& o : plan.optimised)
+            jobs.push_back({JobKind::optimised, o.id, o.defines, vertex.stage, vertex.path, {}, true});
+    }
     for (std::size_t i = 0; i < spec.companions.size(); ++i) {
         const CompanionSpec& companion = spec.companions[i];
         jobs.push_back({JobKind::companion, static_cast<std::uint32_t>(i), companion.defines, companion.file.stage,
@@ -102,6 +116,7 @@ public:
         if (Status s = reflect_blobs(); !s) return s;
         clock.lap("reflect");
         if (Status s = merge(); !s) return s;
+        if (Status s = check_program(); !s) return s;
         clock.lap("layout");
         remember_inputs();
         return Ok{};
@@ -112,10 +127,14 @@ private:
         d_.raw_jobs.assign(d_.plan.raw.size(), -1);
         d_.optimised_jobs.assign(d_.plan.optimised.size(), -1);
         d_.companion_jobs.assign(d_.spec.companions.size(), -1);
+        bool program = d_.spec.program_vertex.has_value();
+        d_.raw_vertex_jobs.assign(program ? d_.plan.raw.size() : 0, -1);
+        d_.optimised_vertex_jobs.assign(program ? d_.plan.optimised.size() : 0, -1);
         for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
             const CompileJob& job = d_.jobs[i];
-            auto& index = job.kind == JobKind::raw ? d_.raw_jobs
-                          : job.kind == JobKind::optimised ? d_.optimised_jobs : d_.companion_jobs;
+            auto& index = job.kind == JobKind::raw ? (job.vertex_half ? d_.raw_vertex_jobs : d_.raw_jobs)
+                          : job.kind == JobKind::optimised ? (job.vertex_half ? d_.optimised_vertex_jobs : d_.optimised_jobs)
+                                                           : d_.companion_jobs;
             index[job.id] = static_cast<int>(i);
         }
     }
@@ -329,7 +348,7 @@ private:
                 }
                 label += ")";
             }
-            labelled.push_back({label, job.stage, job.kind != JobKind::companion,
+            labelled.push_back({label, job.stage, job.kind != JobKind::companion && !job.vertex_half,
                                 &d_.blobs[static_cast<std::size_t>(job.blob)].reflection});
         }
         auto layout = merge_layouts(labelled);
@@ -340,6 +359,32 @@ private:
         }
         d_.layout = std::move(layout).value();
         return Ok{};
+    }
+
+    // The "program" form: every permutation's fragment inputs are among its vertex outputs.
+    Status check_program() {
+        if (!d_.spec.program_vertex) return Ok{};
+        Diagnostics errors;
+        for (const CompileJob& job : d_.jobs) {
+            if (!job.vertex_half) continue;
+            const auto& index = job.kind == JobKind::raw ? d_.raw_jobs : d_.optimised_jobs;
+            const CompileJob& fragment = d_.jobs[static_cast<std::size_t>(index[job.id])];
+            std::string label = fragment.label() + (job.defines.empty() ? "" : " (" + join_defines(job.defines) + ")");
+            for (Diagnostic& e : check_interface(label, d_.blobs[static_cast<std::size_t>(job.blob)].reflection.outputs,
+                                                 d_.blobs[static_cast<std::size_t>(fragment.blob)].reflection.inputs)) {
+                e.file = d_.spec.spec_path.string();
+                errors.push_back(std::move(e));
+            }
+            if (errors.size() >= 8) break;  // the first few say enough
+        }
+        if (!errors.empty()) return errors;
+        return Ok{};
+    }
+
+    static std::string join_defines(const std::vector<std::string>& defines) {
+        std::string text;
+        for (const std::string& d : defines) text += (text.empty() ? "" : " ") + d;
+        return text;
     }
 
     CompiledDomain& d_;

@@ -42,6 +42,7 @@ struct CompileJob {
     std::filesystem::path path;
     std::string label() const;     // "raw 37", "optimised 5", "companion tile" needs the name:
     std::string name;              // companion name (empty otherwise)
+    bool vertex_half = false;      // the vertex half of a "program" permutation
     // Filled while compiling:
     int source = -1;               // index of its distinct preprocessed source
     int blob = -1;                 // index into CompiledDomain::blobs
@@ -64,6 +65,7 @@ struct CompiledDomain {
     // Index into `jobs` by raw ID, optimised ID and companion index (-1: none, e.g. pruned),
     // so looking a permutation up is constant time even with 65,536 raw IDs.
     std::vector<int> raw_jobs, optimised_jobs, companion_jobs;
+    std::vector<int> raw_vertex_jobs, optimised_vertex_jobs;  // "program" form only
     std::vector<SourceRecord> sources;
     std::vector<Blob> blobs;
     MergedLayout layout;
@@ -76,6 +78,9 @@ struct CompiledDomain {
     const Blob* raw_blob(std::uint32_t id) const;
     const Blob* optimised_blob(std::uint32_t id) const;
     const Blob* companion_blob(std::size_t index) const;
+    // The vertex half of a "program" permutation, or nullptr.
+    const Blob* raw_vertex_blob(std::uint32_t id) const;
+    const Blob* optimised_vertex_blob(std::uint32_t id) const;
 };
 
 struct CompileOptions {

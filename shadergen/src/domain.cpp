@@ -170,11 +170,10 @@ public:
             return std::move(spec_);
         }
         reader_.only_keys(root, "spec",
-                          {"format", "name", "description", "uber_shader", "include_dirs", "target_env", "layout",
+                          {"format", "name", "description", "uber_shader", "program", "include_dirs", "target_env", "layout",
                            "defines", "companions", "raw", "optimised"});
         read_header(root);
-        if (const Value* uber = reader_.member(root, "spec", "uber_shader", Type::object))
-            spec_.uber = read_shader_file(*uber, "uber_shader");
+        read_permuted_shaders(root);
         read_include_dirs(root);
         read_target_env(root);
         read_layout(root);
@@ -208,6 +207,27 @@ private:
             reader_.error(*object.find("path"), where + ".path", "the path is empty");
         read_stage(object, where, path, file);
         return file;
+    }
+
+    // "uber_shader", or "program": { "vertex": path, "fragment": path } (one of the two).
+    void read_permuted_shaders(const Value& root) {
+        const Value* program = root.find("program");
+        if (!program) {
+            if (const Value* uber = reader_.member(root, "spec", "uber_shader", Type::object))
+                spec_.uber = read_shader_file(*uber, "uber_shader");
+            return;
+        }
+        if (root.find("uber_shader")) {
+            reader_.error(*program, "program", "a spec has \"uber_shader\" or \"program\", not both");
+            return;
+        }
+        if (!(program = reader_.member(root, "spec", "program", Type::object))) return;
+        reader_.only_keys(*program, "program", {"vertex", "fragment"});
+        std::string vertex = reader_.string_member(*program, "program", "vertex");
+        std::string fragment = reader_.string_member(*program, "program", "fragment");
+        if (vertex.empty() || fragment.empty()) return;
+        spec_.program_vertex = ShaderFile{(base_ / vertex).lexically_normal(), Stage::vertex};
+        spec_.uber = ShaderFile{(base_ / fragment).lexically_normal(), Stage::fragment};
     }
 
     // "stage", or when it is absent the stage the path's extension names.

@@ -42,17 +42,22 @@ std::string pattern(const std::vector<CompileJob>& jobs, const std::set<std::siz
         std::set_intersection(common.begin(), common.end(), mine.begin(), mine.end(), std::inserter(kept, kept.end()));
         common = std::move(kept);
     }
+    bool half = jobs[*failing_raw.begin()].vertex_half;  // a program's vertex or fragment shaders
     for (std::size_t i = 0; i < jobs.size(); ++i)
-        if (jobs[i].kind == JobKind::raw && has_all(jobs[i], common) && !failing_raw.count(i)) return {};
+        if (jobs[i].kind == JobKind::raw && jobs[i].vertex_half == half && has_all(jobs[i], common) &&
+            !failing_raw.count(i))
+            return {};
     if (common.empty()) return "all of them";
     return "those with " + join(std::vector<std::string>(common.begin(), common.end()), " and ");
 }
 
 std::string where_it_occurs(const std::vector<CompileJob>& jobs, const std::set<std::size_t>& failing) {
+    // A "program" has two shaders per permutation; count those of the failing half.
+    bool half = jobs[*failing.begin()].vertex_half;
     std::size_t raw_total = 0, optimised_total = 0;
     for (const CompileJob& job : jobs) {
-        raw_total += job.kind == JobKind::raw;
-        optimised_total += job.kind == JobKind::optimised;
+        raw_total += job.kind == JobKind::raw && job.vertex_half == half;
+        optimised_total += job.kind == JobKind::optimised && job.vertex_half == half;
     }
     std::set<std::size_t> raw, optimised;
     std::vector<std::string> companions;

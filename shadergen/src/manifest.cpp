@@ -43,6 +43,13 @@ void write_blob_fields(json::Writer& w, const Blob* blob, const DomainSpec& spec
     if (spec.layout == LayoutMode::per_permutation) write_own_layout(w, *blob);
 }
 
+// The "program" form: the permutation's vertex shader beside its fragment shader.
+void write_vertex_half(json::Writer& w, const Blob* blob) {
+    if (!blob) return;
+    w.key("vertex_spirv"), w.value(blob_relative_path(*blob));
+    w.key("vertex_hash"), w.value(blob->hash);
+}
+
 void write_features(json::Writer& w, const DomainSpec& spec) {
     w.key("raw_features");
     w.begin_array();
@@ -76,6 +83,7 @@ void write_permutations(json::Writer& w, const CompiledDomain& d) {
         w.key("pruned"), w.value(raw.pruned);
         if (d.spec.collapsed) w.key("optimised"), w.value(raw.optimised);
         write_blob_fields(w, raw.pruned ? nullptr : d.raw_blob(raw.id), d.spec);
+        write_vertex_half(w, raw.pruned ? nullptr : d.raw_vertex_blob(raw.id));
         w.end_object();
     }
     w.end_array();
@@ -88,6 +96,7 @@ void write_permutations(json::Writer& w, const CompiledDomain& d) {
         w.key("raw_equivalent"), w.value(optimised.raw_equivalent);
         w.key("raw_mapped"), w.value(optimised.raw_mapped);
         write_blob_fields(w, d.optimised_blob(optimised.id), d.spec);
+        write_vertex_half(w, d.optimised_vertex_blob(optimised.id));
         w.end_object();
     }
     w.end_array();
@@ -239,6 +248,7 @@ std::string write_manifest(const CompiledDomain& d) {
     w.key("domain"), w.value(d.spec.name);
     w.key("uber_shader"), w.value(d.spec.uber.path.filename().string());
     w.key("stage"), w.value(stage_name(d.spec.uber.stage));
+    if (d.spec.program_vertex) w.key("vertex_shader"), w.value(d.spec.program_vertex->path.filename().string());
     w.key("target_env"), w.value(target_env_name(d.spec.target_env));
     w.key("collapsed"), w.value(d.spec.collapsed);
     w.key("layout"), w.value(d.spec.layout == LayoutMode::shared ? "shared" : "per_permutation");

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -119,6 +120,10 @@ struct DomainSpec {
     std::string name;
     std::string description;
     ShaderFile uber;
+    // The "program" form: the vertex half of a permuted vertex + fragment pair (then `uber` is
+    // the fragment half). Each permutation compiles both with the same defines, and the
+    // fragment inputs must be vertex outputs of the same width.
+    std::optional<ShaderFile> program_vertex;
     std::vector<std::filesystem::path> include_dirs;
     TargetEnv target_env = TargetEnv::vulkan1_2;  // "target_env", or build --target-env
     LayoutMode layout = LayoutMode::shared;

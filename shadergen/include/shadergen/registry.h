@@ -111,6 +111,11 @@ struct Permutation {
     std::span<const std::uint32_t> spirv;      // SPIR-V words, validated
     std::string_view hash;                     // content hash of the SPIR-V (hex)
     Reflection reflection;
+    // The spec's "program" form: the vertex shader compiled with the same defines (empty
+    // otherwise, and for pruned IDs); `spirv` is then the fragment shader.
+    std::span<const std::uint32_t> vertex_spirv = {};
+    std::string_view vertex_hash = {};
+    const Reflection* vertex_reflection = nullptr;
 };
 
 // A non-permuted shader compiled alongside the uber-shader (tile vertex shader, compute passes).

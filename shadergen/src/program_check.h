@@ -1,0 +1,19 @@
+// program_check.h - the interface between the two halves of a "program" permutation: what
+// the fragment shader reads must be what the vertex shader writes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "reflection.h"
+#include "shadergen/diagnostic.h"
+
+namespace shadergen {
+
+// One error per fragment input that no vertex output at its location feeds with at least as
+// many components (Vulkan lets an output carry more than the input reads), each naming
+// `label` (the permutation), the location, the variable and both widths.
+Diagnostics check_interface(const std::string& label, const std::vector<VariableInfo>& vertex_outputs,
+                            const std::vector<VariableInfo>& fragment_inputs);
+
+}  // namespace shadergen
