@@ -47,7 +47,9 @@ TEST(PerPermutationLayout, EachPermutationCarriesItsOwnKindsAndOutputs) {
         ASSERT_NE(albedo, nullptr);
         bool subpass = id & 1, split = id & 2, bindless = id & 4;
         EXPECT_EQ((*albedo)["kind"], subpass ? "input_attachment" : "combined_image_sampler");
-        if (subpass) EXPECT_EQ((*albedo)["input_attachment_index"], 0);
+        if (subpass) {
+            EXPECT_EQ((*albedo)["input_attachment_index"], 0);
+        }
         EXPECT_EQ(layout["outputs"].size(), split ? 2u : 1u);
         const json* cookies = binding_at(layout, 1, 0);
         EXPECT_EQ(cookies != nullptr, bindless);

@@ -47,8 +47,12 @@ TEST(ProgramForm, EveryPermutationHasBothHalvesWithTheSameDefines) {
         std::string vertex = raw["vertex_spirv"], fragment = raw["spirv"];
         EXPECT_NE(vertex, fragment);
         for (const json& blob : manifest["blobs"]) {
-            if (blob["spirv"] == vertex) EXPECT_EQ(blob["stage"], "vertex");
-            if (blob["spirv"] == fragment) EXPECT_EQ(blob["stage"], "fragment");
+            if (blob["spirv"] == vertex) {
+                EXPECT_EQ(blob["stage"], "vertex");
+            }
+            if (blob["spirv"] == fragment) {
+                EXPECT_EQ(blob["stage"], "fragment");
+            }
         }
         sgtest::ProcessResult val = sgtest::spirv_val(dir / "out" / vertex);
         EXPECT_EQ(val.exit_code, 0) << val.err;
