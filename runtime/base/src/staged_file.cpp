@@ -26,7 +26,8 @@ void write_whole_file(const fs::path& path, std::span<const std::uint8_t> bytes)
   if (file == nullptr) {
     throw Error(fmt::format("cannot create {}: {}", path.string(), std::strerror(errno)));
   }
-  const std::size_t written = std::fwrite(bytes.data(), 1, bytes.size(), file);
+  // fwrite's buffer must not be null, even for 0 bytes (an empty span's data() may be).
+  const std::size_t written = bytes.empty() ? 0 : std::fwrite(bytes.data(), 1, bytes.size(), file);
   const int write_errno = errno;
   // fclose flushes; a full disk may only show up here.
   const bool closed = std::fclose(file) == 0;
