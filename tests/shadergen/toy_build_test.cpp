@@ -15,7 +15,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <map>
 #include <set>
+#include <sstream>
 
 #include "fixture_support.h"
 #include "shadergen/build.h"
@@ -203,6 +205,32 @@ TEST_F(ToyBuild, EveryBlobPassesExternalSpirvVal) {
         sgtest::ProcessResult r = sgtest::spirv_val(out() / relative);
         EXPECT_EQ(r.exit_code, 0) << "spirv-val --target-env vulkan1.2 " << relative << "\n" << r.out << r.err;
     }
+}
+
+// A second implementation of SHA-256: coreutils sha256sum over the .spv files, which hold the
+// little-endian SPIR-V words the manifest's hash covers. Every hash the manifest states (raw,
+// optimised, companions) must be the digest of the file it names.
+TEST_F(ToyBuild, EveryManifestHashIsTheSha256sumOfItsSpirvFile) {
+    std::vector<std::string> files;
+    for (const std::string& relative : blob_paths()) files.push_back((out() / relative).string());
+    ASSERT_FALSE(files.empty());
+    sgtest::ProcessResult r = sgtest::run_process("sha256sum", files);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::map<std::string, std::string> digest_of;  // "spirv/<name>.spv" -> sha256sum's digest
+    std::istringstream lines(r.out);
+    for (std::string digest, file; lines >> digest >> file;)
+        digest_of["spirv/" + path(file).filename().string()] = digest;
+    ASSERT_EQ(digest_of.size(), files.size()) << r.out;
+    std::size_t checked = 0;
+    for (const char* section : {"raw", "optimised", "companions"})
+        for (const json& entry : manifest()[section]) {
+            if (!entry.contains("spirv")) continue;
+            const std::string relative = entry["spirv"];
+            SCOPED_TRACE(std::string(section) + " " + relative);
+            EXPECT_EQ(entry["hash"], digest_of[relative]);
+            ++checked;
+        }
+    EXPECT_EQ(checked, 12u + 4u + 1u) << "12 compilable raw, 4 optimised, 1 companion";
 }
 
 TEST_F(ToyBuild, MergedPipelineLayoutMatchesTheShaders) {
