@@ -6,6 +6,7 @@
 #include <atomic>
 #include <csignal>
 #include <iostream>
+#include <new>
 #include <optional>
 
 #include "shadergen/build.h"
@@ -156,9 +157,7 @@ int run_view(const std::string& spec_path, std::ostream& out, std::ostream& err,
     return format(*spec, *plan, out, err);
 }
 
-}  // namespace
-
-int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int run_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     CLI::App app{"shadergen " SHADERGEN_VERSION
                  " - compiles an uber-shader and a permutation-domain spec into every permutation as validated "
                  "SPIR-V, a manifest and generated C++ (lookup table + registry).",
@@ -236,6 +235,23 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
                         o << format_explanation(s, p, *id);
                         return 0;
                     });
+}
+
+}  // namespace
+
+// The library reports what it expects as diagnostics; what is left is the unexpected (out of
+// memory in a compile job, a failed thread start), which still deserves a message and exit 1
+// rather than std::terminate. The output folder is only replaced at the very end of a build, so
+// it is left as it was.
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    try {
+        return run_command(args, out, err);
+    } catch (const std::bad_alloc&) {
+        err << "shadergen: error: out of memory\n";
+    } catch (const std::exception& e) {
+        err << "shadergen: error: " << e.what() << '\n';
+    }
+    return kExitError;
 }
 
 int run_cli(int argc, char** argv) {
