@@ -4,7 +4,7 @@
 // output folder built before from the good spec is left byte for byte as it was.
 #include <gtest/gtest.h>
 
-#include "fixture_support.h"
+#include "test_helpers.h"
 
 namespace {
 

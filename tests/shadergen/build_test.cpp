@@ -7,7 +7,6 @@
 #include <cstring>
 #include <set>
 
-#include <unistd.h>
 
 #include "shadergen/build.h"
 #include "spirv_passes.h"
@@ -39,19 +38,16 @@ std::vector<std::uint32_t> words_of(const std::string& bytes) {
 class SplitSecondBuild : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        // CTest runs each test in its own process, possibly in parallel: one folder per process.
-        root_ = new fs::path(fs::path(SHADERGEN_TEST_SCRATCH) / ("split_second_build-" + std::to_string(::getpid())));
-        fs::remove_all(*root_);
-        auto summary = build_into(test::split_second_spec(), *root_ / "out", *root_ / "cache", 0, true);
+        root_ = new sgtest::TempDir("split-second-build");
+        auto summary = build_into(sgtest::split_second_spec(), *root_ / "out", *root_ / "cache", 0, true);
         if (!summary.ok()) {
             setup_error_ = new std::string(summary.errors().front().to_string());
             return;
         }
         summary_ = new BuildSummary(*summary);
-        manifest_ = new nlohmann::json(nlohmann::json::parse(test::read_text(*root_ / "out" / "manifest.json")));
+        manifest_ = new nlohmann::json(nlohmann::json::parse(sgtest::read_file(*root_ / "out" / "manifest.json")));
     }
     static void TearDownTestSuite() {
-        if (root_) fs::remove_all(*root_);
         delete manifest_;
         delete summary_;
         delete root_;
@@ -63,7 +59,7 @@ protected:
         ASSERT_NE(manifest_, nullptr);
     }
     static fs::path out() { return *root_ / "out"; }
-    static inline fs::path* root_ = nullptr;
+    static inline sgtest::TempDir* root_ = nullptr;
     static inline BuildSummary* summary_ = nullptr;
     static inline nlohmann::json* manifest_ = nullptr;
     static inline std::string* setup_error_ = nullptr;
@@ -102,12 +98,13 @@ TEST_F(SplitSecondBuild, EveryBlobValidatesWithShadergenAndSpirvVal) {
     for (const std::string& relative : paths) {
         fs::path file = out() / relative;
         ASSERT_TRUE(fs::exists(file)) << file;
-        auto words = words_of(test::read_text(file));
+        auto words = words_of(sgtest::read_file(file));
         ASSERT_FALSE(words.empty());
         EXPECT_EQ(words[0], 0x07230203u);
         Status valid = validate_spirv(words);
         EXPECT_TRUE(valid.ok()) << relative << ": " << (valid.ok() ? "" : valid.errors().front().message);
-        EXPECT_EQ(test::run_command("spirv-val --target-env vulkan1.2 '" + file.string() + "'"), 0) << relative;
+        sgtest::ProcessResult val = sgtest::spirv_val(file);
+        EXPECT_EQ(val.exit_code, 0) << relative << "\n" << val.out << val.err;
     }
 }
 
@@ -154,44 +151,46 @@ TEST_F(SplitSecondBuild, AllPermutationsShareOnePipelineLayout) {
 }
 
 TEST_F(SplitSecondBuild, GeneratedCppHasTheTableAndBanner) {
-    std::string header = test::read_text(out() / "split_second.h");
+    std::string header = sgtest::read_file(out() / "split_second.h");
     EXPECT_NE(header.find("Do not edit"), std::string::npos);
     EXPECT_NE(header.find("inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised"), std::string::npos);
     EXPECT_NE(header.find("\n    16, 0, 24, 0, 16, 8, 24, 8, 17, 1, 25, 1, 17, 9, 25, 9,\n"), std::string::npos)
         << "row 64 of the LUT (pruned entries carry the rules' value)";
     EXPECT_NE(header.find("static_assert"), std::string::npos);
     EXPECT_EQ(header.find("0x07230203"), std::string::npos) << "SPIR-V words belong in the source, not the header";
-    std::string source = test::read_text(out() / "split_second.cpp");
+    std::string source = sgtest::read_file(out() / "split_second.cpp");
     EXPECT_NE(source.find("0x07230203u"), std::string::npos);
 }
 
 TEST_F(SplitSecondBuild, WarmRebuildHitsTheCacheAndChangesNothing) {
-    auto before = test::snapshot(out());
+    auto before = sgtest::snapshot(out());
     auto time_before = fs::last_write_time(out() / "split_second.cpp");
-    auto summary = build_into(test::split_second_spec(), out(), *root_ / "cache");
+    auto summary = build_into(sgtest::split_second_spec(), out(), *root_ / "cache");
     ASSERT_TRUE(summary.ok());
     EXPECT_EQ(summary->compiled, 0u);
     EXPECT_EQ(summary->cache_hits, summary->unique_sources);
     EXPECT_FALSE(summary->output_changed);
-    EXPECT_EQ(test::snapshot(out()), before);
+    EXPECT_EQ(sgtest::snapshot(out()), before);
     EXPECT_EQ(fs::last_write_time(out() / "split_second.cpp"), time_before);
 }
 
 TEST_F(SplitSecondBuild, DeterministicWhateverTheJobCountAndCache) {
-    fs::path other = test::scratch("serial");
-    auto summary = build_into(test::split_second_spec(), other / "out", other / "cache", 1, false);
+    sgtest::TempDir serial_dir("serial");
+    fs::path other = serial_dir.path();
+    auto summary = build_into(sgtest::split_second_spec(), other / "out", other / "cache", 1, false);
     ASSERT_TRUE(summary.ok());
     EXPECT_EQ(summary->cache_hits, 0u);
-    EXPECT_EQ(test::snapshot(other / "out"), test::snapshot(out()));
+    EXPECT_EQ(sgtest::snapshot(other / "out"), sgtest::snapshot(out()));
 }
 
 TEST(ToyBuild, FixtureDomainBuildsWithItsOwnLayout) {
-    fs::path dir = test::scratch("toy");
-    auto summary = build_into(test::toy_spec(), dir / "out", dir / "cache", 4);
+    sgtest::TempDir toy_dir("toy");
+    fs::path dir = toy_dir.path();
+    auto summary = build_into(sgtest::toy_spec(), dir / "out", dir / "cache", 4);
     ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
     EXPECT_EQ(summary->raw, 16u);
     EXPECT_EQ(summary->pruned, 4u);
-    auto manifest = nlohmann::json::parse(test::read_text(dir / "out" / "manifest.json"));
+    auto manifest = nlohmann::json::parse(sgtest::read_file(dir / "out" / "manifest.json"));
     EXPECT_EQ(manifest["domain"], "toy_particles");
     const auto& bindings = manifest["pipeline_layout"]["bindings"];
     ASSERT_EQ(bindings.size(), 4u);
@@ -203,16 +202,17 @@ TEST(ToyBuild, FixtureDomainBuildsWithItsOwnLayout) {
 }
 
 TEST(ToyBuild, ConflictingBindingsAcrossPermutationsAreAnError) {
-    fs::path dir = test::scratch("conflict");
-    fs::copy(test::toy_spec().parent_path(), dir / "domain", fs::copy_options::recursive);
+    sgtest::TempDir conflict_dir("conflict");
+    fs::path dir = conflict_dir.path();
+    fs::copy(sgtest::toy_spec().parent_path(), dir / "domain", fs::copy_options::recursive);
     // In textured permutations, binding 2 becomes a uniform buffer instead of a sampler.
-    std::string shader = test::read_text(dir / "domain" / "particle.frag");
+    std::string shader = sgtest::read_file(dir / "domain" / "particle.frag");
     shader.replace(shader.find("void main() {"), 13,
                    "#ifdef USE_TEXTURE\nlayout(set = 0, binding = 2) uniform Clash { vec4 c; } clash;\n#endif\n"
                    "void main() {\n#ifdef USE_TEXTURE\n    vec4 unused = clash.c;\n#endif");
     shader.replace(shader.find("out_color = color;"), 18, "out_color = color;\n#ifdef USE_TEXTURE\n    out_color += clash.c;\n#endif");
     shader.replace(shader.find("#ifdef SOFT_PARTICLES"), 21, "#if defined(SOFT_PARTICLES) && !defined(USE_TEXTURE)");
-    test::write_text(dir / "domain" / "particle.frag", shader);
+    sgtest::write_file(dir / "domain" / "particle.frag", shader);
     auto summary = build_into(dir / "domain" / "toy.json", dir / "out", dir / "cache");
     ASSERT_FALSE(summary.ok());
     std::string message = summary.errors().front().to_string();

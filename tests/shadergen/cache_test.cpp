@@ -78,7 +78,7 @@ TEST(CacheEntry, DefaultDirectoryFollowsTheEnvironment) {
 
 Result<BuildSummary> build_toy(const fs::path& out, const fs::path& cache, bool use_cache) {
     BuildOptions options;
-    options.spec_path = test::toy_spec();
+    options.spec_path = sgtest::toy_spec();
     options.out_dir = out;
     options.cache_dir = cache;
     options.use_cache = use_cache;
@@ -86,7 +86,8 @@ Result<BuildSummary> build_toy(const fs::path& out, const fs::path& cache, bool 
 }
 
 TEST(CacheIntegrity, RebuildOverACorruptedCacheEqualsAColdBuild) {
-    fs::path dir = test::scratch("corrupt");
+    sgtest::TempDir corrupt_dir("corrupt");
+    fs::path dir = corrupt_dir.path();
     ASSERT_TRUE(build_toy(dir / "cold", dir / "unused", false).ok());
     ASSERT_TRUE(build_toy(dir / "first", dir / "cache", true).ok());
 
@@ -97,18 +98,18 @@ TEST(CacheIntegrity, RebuildOverACorruptedCacheEqualsAColdBuild) {
     ASSERT_GE(entries.size(), 4u);
     // Truncate one, flip a byte in another, put a foreign (valid, other key) entry in a third,
     // and a valid entry of a different blob under a fourth's name.
-    std::string bytes = test::read_text(entries[0]);
-    test::write_text(entries[0], bytes.substr(0, bytes.size() / 2));
-    bytes = test::read_text(entries[1]);
+    std::string bytes = sgtest::read_file(entries[0]);
+    sgtest::write_file(entries[0], bytes.substr(0, bytes.size() / 2));
+    bytes = sgtest::read_file(entries[1]);
     bytes[bytes.size() - 3] = static_cast<char>(bytes[bytes.size() - 3] ^ 0x40);
-    test::write_text(entries[1], bytes);
-    test::write_text(entries[2], encode_cache_entry(kOtherKey, sample_blob()));
-    test::write_text(entries[3], test::read_text(entries[4]));
+    sgtest::write_file(entries[1], bytes);
+    sgtest::write_file(entries[2], encode_cache_entry(kOtherKey, sample_blob()));
+    sgtest::write_file(entries[3], sgtest::read_file(entries[4]));
 
     auto summary = build_toy(dir / "warm", dir / "cache", true);
     ASSERT_TRUE(summary.ok());
     EXPECT_EQ(summary->compiled, 4u) << "the four damaged entries are recompiled";
-    EXPECT_EQ(test::snapshot(dir / "warm"), test::snapshot(dir / "cold"));
+    EXPECT_EQ(sgtest::snapshot(dir / "warm"), sgtest::snapshot(dir / "cold"));
 
     // The damaged entries were replaced: the next build is all hits.
     auto again = build_toy(dir / "again", dir / "cache", true);
@@ -117,8 +118,9 @@ TEST(CacheIntegrity, RebuildOverACorruptedCacheEqualsAColdBuild) {
 }
 
 TEST(CacheIntegrity, UnwritableCacheOnlyCostsTime) {
-    fs::path dir = test::scratch("readonly");
-    test::write_text(dir / "cache", "a file where the cache folder should be");
+    sgtest::TempDir readonly_dir("readonly");
+    fs::path dir = readonly_dir.path();
+    sgtest::write_file(dir / "cache", "a file where the cache folder should be");
     auto summary = build_toy(dir / "out", dir / "cache", true);
     ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
     EXPECT_TRUE(fs::exists(dir / "out" / "manifest.json"));

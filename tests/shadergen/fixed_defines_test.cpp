@@ -9,7 +9,7 @@
 
 #include <cstring>
 
-#include "fixture_support.h"
+#include "test_helpers.h"
 #include "reflection.h"
 #include "shadergen/build.h"
 #include "shadergen/cli.h"

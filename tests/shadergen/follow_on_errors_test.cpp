@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "error_grouping.h"
-#include "fixture_support.h"
+#include "test_helpers.h"
 #include "shadergen/build.h"
 
 namespace {

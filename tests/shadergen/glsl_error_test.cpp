@@ -11,7 +11,7 @@
 #include <set>
 #include <sstream>
 
-#include "fixture_support.h"
+#include "test_helpers.h"
 #include "shadergen/build.h"
 #include "shadergen/cli.h"
 

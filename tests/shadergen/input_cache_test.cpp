@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "fixture_support.h"
+#include "test_helpers.h"
 #include "input_cache.h"
 #include "sha256.h"
 #include "shadergen/build.h"

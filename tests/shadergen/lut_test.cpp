@@ -37,7 +37,7 @@ int listing_logic(std::uint32_t raw) {
 class SplitSecondPlan : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        auto loaded = load_domain(test::split_second_spec());
+        auto loaded = load_domain(sgtest::split_second_spec());
         if (!loaded.ok()) return;
         spec_ = new DomainSpec(std::move(loaded).value());
         auto expanded = expand(*spec_);
@@ -46,8 +46,8 @@ protected:
     }
     // A failure to load fails every test rather than skipping them.
     void SetUp() override {
-        ASSERT_NE(spec_, nullptr) << "cannot load " << test::split_second_spec();
-        ASSERT_NE(plan_, nullptr) << "cannot expand " << test::split_second_spec();
+        ASSERT_NE(spec_, nullptr) << "cannot load " << sgtest::split_second_spec();
+        ASSERT_NE(plan_, nullptr) << "cannot expand " << sgtest::split_second_spec();
     }
     static void TearDownTestSuite() {
         delete plan_;
@@ -132,7 +132,7 @@ TEST_F(SplitSecondPlan, ExplanationNamesTheRuleAndTheTarget) {
 }
 
 TEST(ToyPlan, SecondDomainWithOtherBitsAndRules) {
-    auto spec = load_domain(test::toy_spec());
+    auto spec = load_domain(sgtest::toy_spec());
     ASSERT_TRUE(spec.ok()) << spec.errors().front().to_string();
     EXPECT_EQ(spec->raw_count(), 16u);
     EXPECT_EQ(spec->optimised_count(), 4u);

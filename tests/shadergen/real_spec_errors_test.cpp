@@ -6,7 +6,7 @@
 // without depending on the spec's current layout; each case also checks its anchor exists.
 #include <gtest/gtest.h>
 
-#include "fixture_support.h"
+#include "test_helpers.h"
 #include "json.h"
 #include "shadergen/domain.h"
 #include "shadergen/expression.h"

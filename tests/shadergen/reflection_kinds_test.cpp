@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "fixture_support.h"
+#include "test_helpers.h"
 #include "glsl_compiler.h"
 #include "reflection.h"
 #include "spirv_passes.h"

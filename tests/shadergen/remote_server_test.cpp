@@ -43,7 +43,7 @@ using ProgressHook = std::function<void(const std::string&)>;
 RemoteBuild build_toy(const fs::path& dir, const std::string& name, const std::string& url, bool read_only = false,
                       const ProgressHook& on_progress = {}) {
     BuildOptions options;
-    options.spec_path = test::toy_spec();
+    options.spec_path = sgtest::toy_spec();
     options.out_dir = dir / (name + ".out");
     options.cache_dir = dir / (name + ".cache");
     options.jobs = 1;
@@ -58,19 +58,19 @@ RemoteBuild build_toy(const fs::path& dir, const std::string& name, const std::s
     auto summary = build(options);
     if (summary) result.summary = *summary;
     else result.errors = summary.errors().front().to_string();
-    result.output = test::snapshot(options.out_dir);
+    result.output = sgtest::snapshot(options.out_dir);
     return result;
 }
 
 // What every build must produce: the toy domain built here, without any cache.
 std::map<std::string, std::string> reference_output(const fs::path& dir) {
     BuildOptions options;
-    options.spec_path = test::toy_spec();
+    options.spec_path = sgtest::toy_spec();
     options.out_dir = dir / "reference.out";
     options.use_cache = false;
     options.jobs = 1;
     EXPECT_TRUE(build(options).ok());
-    return test::snapshot(options.out_dir);
+    return sgtest::snapshot(options.out_dir);
 }
 
 std::vector<fs::path> stored_objects(const NginxServer& server) {
@@ -81,18 +81,13 @@ std::vector<fs::path> stored_objects(const NginxServer& server) {
     return objects;
 }
 
-std::size_t count_of(const std::string& text, const std::string& what) {
-    std::size_t count = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
-    return count;
-}
-
 #define START_SERVER(server, ...)                          \
     NginxServer server(__VA_ARGS__);                       \
     ASSERT_TRUE(server.running()) << server.error()
 
 TEST(RemoteCacheServer, SecondMachineCompilesNothingAndWritesTheSameBytes) {
-    fs::path dir = test::scratch("run");
+    sgtest::TempDir run_dir("run");
+    fs::path dir = run_dir.path();
     START_SERVER(server, dir / "nginx");
     RemoteBuild first = build_toy(dir, "first", server.url());
     ASSERT_TRUE(first.summary) << first.errors;
@@ -120,7 +115,8 @@ TEST(RemoteCacheServer, SecondMachineCompilesNothingAndWritesTheSameBytes) {
 }
 
 TEST(RemoteCacheServer, ServerKilledMidBuildDegradesToLocal) {
-    fs::path dir = test::scratch("run");
+    sgtest::TempDir run_dir("run");
+    fs::path dir = run_dir.path();
     START_SERVER(server, dir / "nginx");
     RemoteBuild killed = build_toy(dir, "killed", server.url(), false, [&](const std::string& line) {
         if (line.rfind("[3/13] ", 0) == 0) server.kill();
@@ -136,7 +132,8 @@ TEST(RemoteCacheServer, ServerKilledMidBuildDegradesToLocal) {
 }
 
 TEST(RemoteCacheServer, ServerErrorsDegradeToLocal) {
-    fs::path dir = test::scratch("run");
+    sgtest::TempDir run_dir("run");
+    fs::path dir = run_dir.path();
     START_SERVER(server, dir / "nginx", NginxMode::errors);
     RemoteBuild result = build_toy(dir, "errors", server.url());
     ASSERT_TRUE(result.summary) << result.errors;
@@ -146,21 +143,22 @@ TEST(RemoteCacheServer, ServerErrorsDegradeToLocal) {
     ASSERT_EQ(result.warnings.size(), 1u);
     EXPECT_EQ(result.warnings[0].rfind("warning: remote cache " + server.url() + ": GET ", 0), 0u) << result.warnings[0];
     EXPECT_TRUE(result.warnings[0].ends_with(": HTTP 500" + kTail)) << result.warnings[0];
-    EXPECT_EQ(count_of(test::read_text(server.access_log()), "\"GET "), 1u) << "one request, not one per source";
+    EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET "), 1u) << "one request, not one per source";
     EXPECT_EQ(result.output, reference_output(dir));
 }
 
 // Each kind of damage to one object on the server: that source is compiled here (and its good
 // entry uploaded over the bad one), the other twelve come from the server.
 TEST(RemoteCacheServer, DamagedObjectIsRecompiledAndReplaced) {
-    fs::path dir = test::scratch("run");
+    sgtest::TempDir run_dir("run");
+    fs::path dir = run_dir.path();
     START_SERVER(server, dir / "nginx");
     ASSERT_TRUE(build_toy(dir, "writer", server.url()).summary);
     const std::vector<fs::path> objects = stored_objects(server);
     ASSERT_EQ(objects.size(), 13u);
     const fs::path victim = objects[5];
-    const std::string key = victim.filename().string(), good = test::read_text(victim);
-    const std::string other = test::read_text(objects[6]);
+    const std::string key = victim.filename().string(), good = sgtest::read_file(victim);
+    const std::string other = sgtest::read_file(objects[6]);
     std::string flipped = good;
     flipped[good.size() - 5] = static_cast<char>(flipped[good.size() - 5] ^ 0x40);
     const std::map<std::string, std::string> damage{{"truncated", good.substr(0, good.size() / 2)},
@@ -170,7 +168,7 @@ TEST(RemoteCacheServer, DamagedObjectIsRecompiledAndReplaced) {
     const std::map<std::string, std::string> expected = reference_output(dir);
     int run = 0;
     for (const auto& [what, bytes] : damage) {
-        test::write_text(victim, bytes);
+        sgtest::write_file(victim, bytes);
         RemoteBuild result = build_toy(dir, "reader" + std::to_string(run++), server.url());
         ASSERT_TRUE(result.summary) << what << ": " << result.errors;
         EXPECT_EQ(result.summary->compiled, 1u) << what;
@@ -183,32 +181,34 @@ TEST(RemoteCacheServer, DamagedObjectIsRecompiledAndReplaced) {
                                                             "from another version); compiled here instead"})
             << what;
         EXPECT_EQ(result.output, expected) << what;
-        EXPECT_EQ(test::read_text(victim), good) << what << ": the upload replaced the bad object";
+        EXPECT_EQ(sgtest::read_file(victim), good) << what << ": the upload replaced the bad object";
     }
 }
 
 TEST(RemoteCacheServer, ReadOnlyNeverUploads) {
-    fs::path dir = test::scratch("run");
+    sgtest::TempDir run_dir("run");
+    fs::path dir = run_dir.path();
     START_SERVER(server, dir / "nginx");
     RemoteBuild empty = build_toy(dir, "developer1", server.url(), true);
     ASSERT_TRUE(empty.summary) << empty.errors;
     EXPECT_EQ(empty.summary->compiled, 13u);
     EXPECT_EQ(empty.summary->remote_uploaded, 0u);
     EXPECT_TRUE(stored_objects(server).empty());
-    EXPECT_EQ(count_of(test::read_text(server.access_log()), "\"PUT "), 0u);
+    EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"PUT "), 0u);
 
     ASSERT_TRUE(build_toy(dir, "ci", server.url()).summary);  // read-write, like CI
     RemoteBuild served = build_toy(dir, "developer2", server.url(), true);
     ASSERT_TRUE(served.summary) << served.errors;
     EXPECT_EQ(served.summary->compiled, 0u);
     EXPECT_EQ(served.summary->remote_fetched, 13u);
-    EXPECT_EQ(count_of(test::read_text(server.access_log()), "\"PUT "), 13u) << "only CI's uploads";
+    EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"PUT "), 13u) << "only CI's uploads";
     EXPECT_TRUE(empty.warnings.empty() && served.warnings.empty());
     EXPECT_EQ(served.output, reference_output(dir));
 }
 
 TEST(RemoteCacheServer, UnreachableUrlDegradesToLocal) {
-    fs::path dir = test::scratch("run");
+    sgtest::TempDir run_dir("run");
+    fs::path dir = run_dir.path();
     const std::string url = "http://127.0.0.1:" + std::to_string(testsupport::unused_local_port()) + "/cache";
     RemoteBuild result = build_toy(dir, "offline", url);
     ASSERT_TRUE(result.summary) << result.errors;
@@ -244,11 +244,12 @@ TEST(RemoteCacheServer, StalledServerTimesOut) {
 
 // The CLI takes the URL from SHADERGEN_REMOTE_CACHE and prints the counts in its summary.
 TEST(RemoteCacheServer, CliReadsTheEnvironmentAndReportsCounts) {
-    fs::path dir = test::scratch("run");
+    sgtest::TempDir run_dir("run");
+    fs::path dir = run_dir.path();
     START_SERVER(server, dir / "nginx");
     ::setenv("SHADERGEN_REMOTE_CACHE", server.url().c_str(), 1);
     auto cli = [&](const std::string& name, std::vector<std::string> extra) {
-        std::vector<std::string> args{"build", test::toy_spec().string(), "--out", (dir / name).string(),
+        std::vector<std::string> args{"build", sgtest::toy_spec().string(), "--out", (dir / name).string(),
                                       "--cache-dir", (dir / (name + ".cache")).string(), "-j", "1"};
         args.insert(args.end(), extra.begin(), extra.end());
         std::ostringstream out, err;
@@ -262,7 +263,7 @@ TEST(RemoteCacheServer, CliReadsTheEnvironmentAndReportsCounts) {
     EXPECT_NE(second.find("(0 compiled, 13 cached; remote: 13 fetched, 0 uploaded, 0 failed)"), std::string::npos)
         << second;
     std::ostringstream out, err;
-    EXPECT_EQ(run_cli({"build", test::toy_spec().string(), "--out", (dir / "bad").string(), "--remote-cache",
+    EXPECT_EQ(run_cli({"build", sgtest::toy_spec().string(), "--out", (dir / "bad").string(), "--remote-cache",
                        "ftp://host/cache"},
                       out, err),
               1);

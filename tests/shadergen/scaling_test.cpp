@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fixture_support.h"
+#include "test_helpers.h"
 #include "shadergen/build.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"

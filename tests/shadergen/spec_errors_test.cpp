@@ -58,7 +58,7 @@ void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
 class SpecErrorTable : public ::testing::TestWithParam<ErrorCase> {};
 
 TEST_P(SpecErrorTable, ExactDiagnostic) {
-    EXPECT_EQ(test::first_spec_error(GetParam().text), GetParam().expected);
+    EXPECT_EQ(sgtest::first_spec_error(GetParam().text), GetParam().expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -180,14 +180,15 @@ TEST(SpecErrors, MissingFileNamesThePath) {
 }
 
 TEST(SpecErrors, DirectoryIsNotASpec) {
-    auto result = load_domain(test::source_dir());
+    auto result = load_domain(sgtest::source_dir());
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.errors().front().message, "spec path is a directory, not a file");
 }
 
 TEST(SpecErrors, OversizedSpecIsRejectedBeforeParsing) {
-    std::filesystem::path big = test::scratch("big") / "big.json";
-    test::write_text(big, "\"" + std::string(json::kMaxJsonBytes + 10, 'x') + "\"");
+    sgtest::TempDir big_dir("big");
+    std::filesystem::path big = big_dir / "big.json";
+    sgtest::write_file(big, "\"" + std::string(json::kMaxJsonBytes + 10, 'x') + "\"");
     auto result = load_domain(big);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.errors().front().message, "spec is larger than 1048576 bytes");

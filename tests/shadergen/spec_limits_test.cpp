@@ -66,7 +66,7 @@ void PrintTo(const LimitCase& c, std::ostream* os) { *os << c.name; }
 class SpecLimitTable : public ::testing::TestWithParam<LimitCase> {};
 
 TEST_P(SpecLimitTable, ExactDiagnostic) {
-    EXPECT_EQ(test::first_spec_error(GetParam().text), GetParam().expected);
+    EXPECT_EQ(sgtest::first_spec_error(GetParam().text), GetParam().expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fixture_support.h"
+#include "test_helpers.h"
 #include "shadergen/build.h"
 
 namespace {

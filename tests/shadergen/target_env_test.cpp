@@ -8,7 +8,7 @@
 
 #include <cstring>
 
-#include "fixture_support.h"
+#include "test_helpers.h"
 #include "shadergen/build.h"
 #include "shadergen/domain.h"
 

@@ -1,29 +1,89 @@
-// Shared helpers for the shadergen tests: paths, scratch folders, file comparison.
+// The helpers every shadergen test uses: fixture paths, temporary folders, reading and writing
+// files, whole-folder snapshots, running the shadergen executable or spirv-val as a process,
+// and small text utilities for exact diagnostics.
+//
+// Every folder a test writes lives under std::filesystem::temp_directory_path() with a name
+// unique to the process and the call (TempDir), and every build passes an explicit cache
+// folder: no test touches the user's cache or another test's files, whatever ctest -j runs
+// beside it. Each test executable compiles test_helpers.cpp with its own SHADERGEN_SOURCE_DIR.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
-namespace shadergen::test {
+namespace sgtest {
 
-std::filesystem::path source_dir();
-std::filesystem::path split_second_spec();
-std::filesystem::path toy_spec();
+namespace fs = std::filesystem;
 
-// A fresh, empty folder unique to this test.
-std::filesystem::path scratch(const std::string& name);
+fs::path source_dir();
+fs::path fixtures_dir();
+fs::path toy_spec();
+fs::path glsl_error_spec();
+fs::path split_second_spec();
 
-std::string read_text(const std::filesystem::path& path);
-void write_text(const std::filesystem::path& path, const std::string& text);
+#ifdef SHADERGEN_EXE
+inline fs::path shadergen_exe() { return fs::path(SHADERGEN_EXE); }
+#endif
 
-// Every regular file under `dir`, relative path -> bytes.
-std::map<std::string, std::string> snapshot(const std::filesystem::path& dir);
+std::string read_file(const fs::path& path);
+// Creates the parent folders; replaces the file.
+void write_file(const fs::path& path, const std::string& bytes);
+
+// A fresh, empty folder under the system temporary folder, removed when the object dies.
+class TempDir {
+public:
+    explicit TempDir(const std::string& tag);
+    ~TempDir();
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    const fs::path& path() const { return path_; }
+    fs::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+    fs::path path_;
+};
+
+// Every regular file under `dir`: relative path -> bytes.
+std::map<std::string, std::string> snapshot(const fs::path& dir);
+// Every regular file under `dir`: relative path -> modification time.
+std::map<std::string, fs::file_time_type> mtimes(const fs::path& dir);
+// Lists which files differ between two snapshots, for readable failure messages.
+std::string describe_difference(const std::map<std::string, std::string>& a,
+                                const std::map<std::string, std::string>& b);
+
+std::string shell_quote(const std::string& text);
+
+struct ProcessResult {
+    int exit_code = -1;
+    std::string out;
+    std::string err;
+};
+
+// Runs `program args...` through the shell with stdout and stderr captured into files in a
+// temporary folder; exit_code is -1 when the process did not exit normally.
+ProcessResult run_process(const fs::path& program, const std::vector<std::string>& args);
+
+// The external validator, as a second opinion beside shadergen's own validate_spirv().
+ProcessResult spirv_val(const fs::path& blob, const std::string& target_env = "vulkan1.2");
 
 // The first diagnostic of parse_domain(text, "spec.json") as printed, or "(no error)".
 std::string first_spec_error(const std::string& text);
 
-// Runs a shell command, returns its exit status.
-int run_command(const std::string& command);
+bool contains(const std::string& text, const std::string& part);
+// Non-overlapping occurrences of `part` in `text`.
+std::size_t count_of(const std::string& text, const std::string& part);
 
-}  // namespace shadergen::test
+// 1-based line and column of byte `offset` in `text`, as shadergen's diagnostics count them.
+struct Position {
+    int line = 1;
+    int column = 1;
+};
+Position position_of(const std::string& text, std::size_t offset);
+// "file:line:column" of byte `offset` of `text`.
+std::string where(const std::string& file, const std::string& text, std::size_t offset);
+
+}  // namespace sgtest

@@ -13,7 +13,7 @@
 #include "cache.h"
 #include "input_cache.h"
 #include "child_process.h"
-#include "fixture_support.h"
+#include "test_helpers.h"
 
 namespace {
 
