@@ -30,8 +30,8 @@
 #include <unistd.h>
 
 #include "shadergen/domain.h"
-#include "timed_process.h"
 #include "shadergen/permutations.h"
+#include "timed_process.h"
 
 namespace {
 
@@ -42,34 +42,41 @@ using bench::read_text;
 using bench::Run;
 
 struct Options {
-    fs::path spec = SHADERGEN_SOURCE_DIR "/permutations/split_second.json";
-    fs::path shadergen = SHADERGEN_EXE;
-    fs::path script = SHADERGEN_SOURCE_DIR "/bench/shadergen_script.sh";
-    fs::path work;  // empty: a fresh folder under the system temporary folder, removed at the end
-    int repetitions = 5;
-    std::string edit_define;  // empty: the first raw feature with an `#ifdef` line in the uber-shader
+  fs::path spec = SHADERGEN_SOURCE_DIR "/permutations/split_second.json";
+  fs::path shadergen = SHADERGEN_EXE;
+  fs::path script = SHADERGEN_SOURCE_DIR "/bench/shadergen_script.sh";
+  fs::path work;  // empty: a fresh folder under the system temporary folder, removed at the end
+  int repetitions = 5;
+  std::string edit_define;  // empty: the first raw feature with an `#ifdef` line in the uber-shader
 };
 
 std::optional<Options> parse_args(int argc, char** argv) {
-    Options o;
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        auto next = [&]() -> std::optional<std::string> {
-            if (i + 1 >= argc) return std::nullopt;
-            return std::string(argv[++i]);
-        };
-        std::optional<std::string> value = arg.rfind("--", 0) == 0 ? next() : std::nullopt;
-        if (!value) return std::nullopt;
-        if (arg == "--spec") o.spec = *value;
-        else if (arg == "--shadergen") o.shadergen = *value;
-        else if (arg == "--script") o.script = *value;
-        else if (arg == "--work") o.work = *value;
-        else if (arg == "--reps") o.repetitions = std::atoi(value->c_str());
-        else if (arg == "--edit-define") o.edit_define = *value;
-        else return std::nullopt;
-    }
-    if (o.repetitions < 1) return std::nullopt;
-    return o;
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    auto next = [&]() -> std::optional<std::string> {
+      if (i + 1 >= argc) return std::nullopt;
+      return std::string(argv[++i]);
+    };
+    std::optional<std::string> value = arg.rfind("--", 0) == 0 ? next() : std::nullopt;
+    if (!value) return std::nullopt;
+    if (arg == "--spec")
+      o.spec = *value;
+    else if (arg == "--shadergen")
+      o.shadergen = *value;
+    else if (arg == "--script")
+      o.script = *value;
+    else if (arg == "--work")
+      o.work = *value;
+    else if (arg == "--reps")
+      o.repetitions = std::atoi(value->c_str());
+    else if (arg == "--edit-define")
+      o.edit_define = *value;
+    else
+      return std::nullopt;
+  }
+  if (o.repetitions < 1) return std::nullopt;
+  return o;
 }
 
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
@@ -77,238 +84,249 @@ void write_text(const fs::path& path, const std::string& text) { std::ofstream(p
 // The copy: the folders of the spec, the shaders and the include dirs, below their common
 // ancestor, so the spec's relative paths still resolve and the original files stay untouched.
 fs::path common_ancestor(const std::vector<fs::path>& dirs) {
-    fs::path root = dirs.front();
-    for (const fs::path& dir : dirs)
-        while (!root.empty() && dir.lexically_relative(root).string().rfind("..", 0) == 0) root = root.parent_path();
-    return root;
+  fs::path root = dirs.front();
+  for (const fs::path& dir : dirs)
+    while (!root.empty() && dir.lexically_relative(root).string().rfind("..", 0) == 0) root = root.parent_path();
+  return root;
 }
 
 fs::path copy_domain(const shadergen::DomainSpec& spec, const fs::path& to) {
-    auto folder = [](const fs::path& p) { return fs::absolute(p).lexically_normal().parent_path(); };
-    std::vector<fs::path> dirs{folder(spec.spec_path), folder(spec.uber.path)};
-    for (const auto& c : spec.companions) dirs.push_back(folder(c.file.path));
-    for (const auto& d : spec.include_dirs) dirs.push_back(fs::absolute(d).lexically_normal());
-    fs::path root = common_ancestor(dirs);
-    for (const fs::path& dir : dirs) {
-        fs::path target = (to / dir.lexically_relative(root)).lexically_normal();
-        fs::create_directories(target);
-        fs::copy(dir, target, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-    }
-    return to / fs::absolute(spec.spec_path).lexically_normal().lexically_relative(root);
+  auto folder = [](const fs::path& p) { return fs::absolute(p).lexically_normal().parent_path(); };
+  std::vector<fs::path> dirs{folder(spec.spec_path), folder(spec.uber.path)};
+  for (const auto& c : spec.companions) dirs.push_back(folder(c.file.path));
+  for (const auto& d : spec.include_dirs) dirs.push_back(fs::absolute(d).lexically_normal());
+  fs::path root = common_ancestor(dirs);
+  for (const fs::path& dir : dirs) {
+    fs::path target = (to / dir.lexically_relative(root)).lexically_normal();
+    fs::create_directories(target);
+    fs::copy(dir, target, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  }
+  return to / fs::absolute(spec.spec_path).lexically_normal().lexically_relative(root);
 }
 
 // glslangValidator has no switch that enables #include (shadergen enables it in its preamble),
 // so a shader that uses #include without naming the extension gets the line a script user
 // would have to add, after #version. Both sides then compile the same files.
 void name_include_extension(const fs::path& shader) {
-    std::string text = read_text(shader);
-    if (text.find("#include") == std::string::npos || text.find("GL_GOOGLE_include_directive") != std::string::npos)
-        return;
-    std::size_t version = text.find("#version");
-    std::size_t at = version == std::string::npos ? 0 : text.find('\n', version);
-    at = at == std::string::npos ? text.size() : at + (version == std::string::npos ? 0 : 1);
-    write_text(shader, text.insert(at, "#extension GL_GOOGLE_include_directive : require\n"));
+  std::string text = read_text(shader);
+  if (text.find("#include") == std::string::npos || text.find("GL_GOOGLE_include_directive") != std::string::npos)
+    return;
+  std::size_t version = text.find("#version");
+  std::size_t at = version == std::string::npos ? 0 : text.find('\n', version);
+  at = at == std::string::npos ? text.size() : at + (version == std::string::npos ? 0 : 1);
+  write_text(shader, text.insert(at, "#extension GL_GOOGLE_include_directive : require\n"));
 }
 
 std::string stage_flag(shadergen::Stage stage) { return std::string(shadergen::stage_extension(stage)); }
 
 struct Job {
-    std::string name;
-    shadergen::Stage stage;
-    fs::path path;
-    std::vector<std::string> defines;
+  std::string name;
+  shadergen::Stage stage;
+  fs::path path;
+  std::vector<std::string> defines;
 };
 
 // Exactly the permutations shadergen compiles: unpruned raw, optimised, companions.
 std::vector<Job> jobs_of(const shadergen::DomainSpec& spec, const shadergen::PermutationPlan& plan) {
-    std::vector<Job> jobs;
-    for (const auto& raw : plan.raw)
-        if (!raw.pruned) jobs.push_back({"raw" + std::to_string(raw.id), spec.uber.stage, spec.uber.path, raw.defines});
-    for (const auto& o : plan.optimised)
-        jobs.push_back({"optimised" + std::to_string(o.id), spec.uber.stage, spec.uber.path, o.defines});
-    for (const auto& c : spec.companions) jobs.push_back({"companion_" + c.name, c.file.stage, c.file.path, c.defines});
-    return jobs;
+  std::vector<Job> jobs;
+  for (const auto& raw : plan.raw)
+    if (!raw.pruned) jobs.push_back({"raw" + std::to_string(raw.id), spec.uber.stage, spec.uber.path, raw.defines});
+  for (const auto& o : plan.optimised)
+    jobs.push_back({"optimised" + std::to_string(o.id), spec.uber.stage, spec.uber.path, o.defines});
+  for (const auto& c : spec.companions) jobs.push_back({"companion_" + c.name, c.file.stage, c.file.path, c.defines});
+  return jobs;
 }
 
 void write_job_list(const std::vector<Job>& jobs, const fs::path& file) {
-    std::string text;
-    for (const Job& job : jobs) {
-        text += job.name + " " + stage_flag(job.stage) + " " + job.path.string();
-        for (const std::string& d : job.defines) text += " " + d;
-        text += "\n";
-    }
-    write_text(file, text);
+  std::string text;
+  for (const Job& job : jobs) {
+    text += job.name + " " + stage_flag(job.stage) + " " + job.path.string();
+    for (const std::string& d : job.defines) text += " " + d;
+    text += "\n";
+  }
+  write_text(file, text);
 }
 
 // Counted from the defines, independently of shadergen: the permutations whose text contains
 // the edited block, i.e. those of the uber-shader that define `define`.
 std::size_t jobs_defining(const std::vector<Job>& jobs, const fs::path& uber, const std::string& define) {
-    return static_cast<std::size_t>(std::count_if(jobs.begin(), jobs.end(), [&](const Job& job) {
-        return job.path == uber && std::find(job.defines.begin(), job.defines.end(), define) != job.defines.end();
-    }));
+  return static_cast<std::size_t>(std::count_if(jobs.begin(), jobs.end(), [&](const Job& job) {
+    return job.path == uber && std::find(job.defines.begin(), job.defines.end(), define) != job.defines.end();
+  }));
 }
 
 std::string trimmed(const std::string& line) {
-    auto first = line.find_first_not_of(" \t");
-    auto last = line.find_last_not_of(" \t\r");
-    return first == std::string::npos ? std::string() : line.substr(first, last - first + 1);
+  auto first = line.find_first_not_of(" \t");
+  auto last = line.find_last_not_of(" \t\r");
+  return first == std::string::npos ? std::string() : line.substr(first, last - first + 1);
 }
 
 // Where the edit goes: just after the line `#ifdef DEFINE`. Returns npos when there is none.
 std::size_t ifdef_line_end(const std::string& text, const std::string& define) {
-    std::istringstream lines(text);
-    std::string line;
-    std::size_t offset = 0;
-    while (std::getline(lines, line)) {
-        offset += line.size() + 1;
-        if (trimmed(line) == "#ifdef " + define) return std::min(offset, text.size());
-    }
-    return std::string::npos;
+  std::istringstream lines(text);
+  std::string line;
+  std::size_t offset = 0;
+  while (std::getline(lines, line)) {
+    offset += line.size() + 1;
+    if (trimmed(line) == "#ifdef " + define) return std::min(offset, text.size());
+  }
+  return std::string::npos;
 }
 
 std::string pick_define(const shadergen::DomainSpec& spec, const std::string& text, const std::string& wanted) {
-    if (!wanted.empty()) return ifdef_line_end(text, wanted) == std::string::npos ? std::string() : wanted;
-    for (const auto& feature : spec.raw_features)
-        if (ifdef_line_end(text, feature.define) != std::string::npos) return feature.define;
-    return {};
+  if (!wanted.empty()) return ifdef_line_end(text, wanted) == std::string::npos ? std::string() : wanted;
+  for (const auto& feature : spec.raw_features)
+    if (ifdef_line_end(text, feature.define) != std::string::npos) return feature.define;
+  return {};
 }
 
 std::optional<int> number_after(const std::string& text, const std::string& pattern) {
-    std::smatch m;
-    if (!std::regex_search(text, m, std::regex(pattern))) return std::nullopt;
-    return std::stoi(m[1]);
+  std::smatch m;
+  if (!std::regex_search(text, m, std::regex(pattern))) return std::nullopt;
+  return std::stoi(m[1]);
 }
 
 class Bench {
-public:
-    Bench(Options o, shadergen::DomainSpec spec, std::vector<Job> jobs, std::string define)
-        : o_(std::move(o)), spec_(std::move(spec)), jobs_(std::move(jobs)), define_(std::move(define)),
-          expected_(jobs_defining(jobs_, spec_.uber.path, define_)) {}
+ public:
+  Bench(Options o, shadergen::DomainSpec spec, std::vector<Job> jobs, std::string define)
+      : o_(std::move(o)),
+        spec_(std::move(spec)),
+        jobs_(std::move(jobs)),
+        define_(std::move(define)),
+        expected_(jobs_defining(jobs_, spec_.uber.path, define_)) {}
 
-    bool run_all() {
-        write_job_list(jobs_, o_.work / "jobs.txt");
-        original_ = read_text(spec_.uber.path);
-        if (!step("prime the cache", build("warm", false, true)).ok) return false;
-        for (int rep = 1; rep <= o_.repetitions; ++rep)
-            if (!repetition(rep)) return false;
-        return true;
-    }
+  bool run_all() {
+    write_job_list(jobs_, o_.work / "jobs.txt");
+    original_ = read_text(spec_.uber.path);
+    if (!step("prime the cache", build("warm", false, true)).ok) return false;
+    for (int rep = 1; rep <= o_.repetitions; ++rep)
+      if (!repetition(rep)) return false;
+    return true;
+  }
 
-    void report() const {
-        double script = median(script_s_), cold = median(cold_s_), warm = median(warm_s_), edit = median(edit_s_);
-        std::printf("shadergen build speed: %s, %zu permutations, %d repetition(s), medians, back to back\n",
-                    o_.spec.string().c_str(), jobs_.size(), o_.repetitions);
-        std::printf("  (a) script: glslangValidator + spirv-opt -O + spirv-val, 2 at a time  %8.3f s\n", script);
-        std::printf("  (b) shadergen build --no-cache -j 2 (cold)                           %8.3f s  %6.2fx faster than (a) (target >= 2x)\n",
-                    cold, script / cold);
-        std::printf("  (c) shadergen build -j 2 (warm: cache hit, output unchanged)         %8.3f s  %6.2fx faster than (b) (target >= 20x)\n",
-                    warm, cold / warm);
-        std::printf("  (d) after an edit inside #ifdef %s: rebuild                %8.3f s  %d of %zu permutations recompiled (%zu define %s)\n",
-                    define_.c_str(), edit, recompiled_, jobs_.size(), expected_, define_.c_str());
-        std::printf("  every run (s): (a) %s; (b) %s; (c) %s; (d) %s\n", bench::seconds_list(script_s_).c_str(),
-                    bench::seconds_list(cold_s_).c_str(), bench::seconds_list(warm_s_).c_str(),
-                    bench::seconds_list(edit_s_).c_str());
-    }
+  void report() const {
+    double script = median(script_s_), cold = median(cold_s_), warm = median(warm_s_), edit = median(edit_s_);
+    std::printf("shadergen build speed: %s, %zu permutations, %d repetition(s), medians, back to back\n",
+                o_.spec.string().c_str(), jobs_.size(), o_.repetitions);
+    std::printf("  (a) script: glslangValidator + spirv-opt -O + spirv-val, 2 at a time  %8.3f s\n", script);
+    std::printf(
+        "  (b) shadergen build --no-cache -j 2 (cold)                           %8.3f s  %6.2fx faster than (a) "
+        "(target >= 2x)\n",
+        cold, script / cold);
+    std::printf(
+        "  (c) shadergen build -j 2 (warm: cache hit, output unchanged)         %8.3f s  %6.2fx faster than (b) "
+        "(target >= 20x)\n",
+        warm, cold / warm);
+    std::printf(
+        "  (d) after an edit inside #ifdef %s: rebuild                %8.3f s  %d of %zu permutations recompiled (%zu "
+        "define %s)\n",
+        define_.c_str(), edit, recompiled_, jobs_.size(), expected_, define_.c_str());
+    std::printf("  every run (s): (a) %s; (b) %s; (c) %s; (d) %s\n", bench::seconds_list(script_s_).c_str(),
+                bench::seconds_list(cold_s_).c_str(), bench::seconds_list(warm_s_).c_str(),
+                bench::seconds_list(edit_s_).c_str());
+  }
 
-private:
-    std::vector<std::string> build(const std::string& out, bool cold, bool quiet_stats) const {
-        std::vector<std::string> args{o_.shadergen.string(), "build", spec_.spec_path.string(), "--out",
-                                      (o_.work / out).string(), "-j", "2"};
-        if (cold) args.push_back("--no-cache");
-        else args.insert(args.end(), {"--cache-dir", (o_.work / "cache").string()});
-        if (!quiet_stats) args.push_back("--stats");
-        return args;
-    }
+ private:
+  std::vector<std::string> build(const std::string& out, bool cold, bool quiet_stats) const {
+    std::vector<std::string> args{
+        o_.shadergen.string(), "build", spec_.spec_path.string(), "--out", (o_.work / out).string(), "-j", "2"};
+    if (cold)
+      args.push_back("--no-cache");
+    else
+      args.insert(args.end(), {"--cache-dir", (o_.work / "cache").string()});
+    if (!quiet_stats) args.push_back("--stats");
+    return args;
+  }
 
-    Run step(const std::string& what, const std::vector<std::string>& args) const {
-        Run r = bench::run(args, o_.work / "step.log");
-        if (!r.ok) std::cerr << "shadergen_build_bench: " << what << " failed:\n" << r.out;
-        return r;
-    }
+  Run step(const std::string& what, const std::vector<std::string>& args) const {
+    Run r = bench::run(args, o_.work / "step.log");
+    if (!r.ok) std::cerr << "shadergen_build_bench: " << what << " failed:\n" << r.out;
+    return r;
+  }
 
-    bool fail(const std::string& why) const {
-        std::cerr << "shadergen_build_bench: " << why << "\n";
-        return false;
-    }
+  bool fail(const std::string& why) const {
+    std::cerr << "shadergen_build_bench: " << why << "\n";
+    return false;
+  }
 
-    bool repetition(int rep) {
-        fs::remove_all(o_.work / "script");
-        std::vector<std::string> script{o_.script.string(), (o_.work / "jobs.txt").string(), (o_.work / "script").string()};
-        for (const fs::path& dir : spec_.include_dirs) script.push_back(dir.string());
-        Run a = step("the script", script);
-        Run b = step("cold build", build("cold", true, true));
-        Run c = step("warm build", build("warm", false, true));
-        if (!a.ok || !b.ok || !c.ok) return false;
-        if (c.out.find("(0 compiled,") == std::string::npos || c.out.find("output unchanged") == std::string::npos)
-            return fail("the warm build compiled something or changed its output:\n" + c.out);
-        if (output_files(o_.work / "warm") != output_files(o_.work / "cold"))
-            return fail("the warm build's output differs from the cold build's");
-        if (!edit_and_rebuild(rep)) return false;
-        script_s_.push_back(a.seconds), cold_s_.push_back(b.seconds), warm_s_.push_back(c.seconds);
-        return true;
-    }
+  bool repetition(int rep) {
+    fs::remove_all(o_.work / "script");
+    std::vector<std::string> script{o_.script.string(), (o_.work / "jobs.txt").string(), (o_.work / "script").string()};
+    for (const fs::path& dir : spec_.include_dirs) script.push_back(dir.string());
+    Run a = step("the script", script);
+    Run b = step("cold build", build("cold", true, true));
+    Run c = step("warm build", build("warm", false, true));
+    if (!a.ok || !b.ok || !c.ok) return false;
+    if (c.out.find("(0 compiled,") == std::string::npos || c.out.find("output unchanged") == std::string::npos)
+      return fail("the warm build compiled something or changed its output:\n" + c.out);
+    if (output_files(o_.work / "warm") != output_files(o_.work / "cold"))
+      return fail("the warm build's output differs from the cold build's");
+    if (!edit_and_rebuild(rep)) return false;
+    script_s_.push_back(a.seconds), cold_s_.push_back(b.seconds), warm_s_.push_back(c.seconds);
+    return true;
+  }
 
-    // A declaration valid at global and function scope, named per repetition so that every
-    // repetition changes the text of the same permutations.
-    bool edit_and_rebuild(int rep) {
-        std::string text = original_;
-        text.insert(ifdef_line_end(text, define_), "float shadergen_bench_edit_" + std::to_string(rep) + " = 0.0;\n");
-        write_text(spec_.uber.path, text);
-        Run d = step("rebuild after the edit", build("edited", false, false));
-        if (!d.ok) return false;
-        auto recompiled = number_after(d.out, R"(permutations: \d+ \((\d+) recompiled)");
-        if (!recompiled) return fail("no recompile count in:\n" + d.out);
-        recompiled_ = *recompiled;
-        if (static_cast<std::size_t>(recompiled_) != expected_)
-            return fail("the edit recompiled " + std::to_string(recompiled_) + " permutations, expected " +
-                        std::to_string(expected_));
-        edit_s_.push_back(d.seconds);
-        // The next warm build starts from this text with an up-to-date output (not timed).
-        return step("catching up after the edit", build("warm", false, true)).ok;
-    }
+  // A declaration valid at global and function scope, named per repetition so that every
+  // repetition changes the text of the same permutations.
+  bool edit_and_rebuild(int rep) {
+    std::string text = original_;
+    text.insert(ifdef_line_end(text, define_), "float shadergen_bench_edit_" + std::to_string(rep) + " = 0.0;\n");
+    write_text(spec_.uber.path, text);
+    Run d = step("rebuild after the edit", build("edited", false, false));
+    if (!d.ok) return false;
+    auto recompiled = number_after(d.out, R"(permutations: \d+ \((\d+) recompiled)");
+    if (!recompiled) return fail("no recompile count in:\n" + d.out);
+    recompiled_ = *recompiled;
+    if (static_cast<std::size_t>(recompiled_) != expected_)
+      return fail("the edit recompiled " + std::to_string(recompiled_) + " permutations, expected " +
+                  std::to_string(expected_));
+    edit_s_.push_back(d.seconds);
+    // The next warm build starts from this text with an up-to-date output (not timed).
+    return step("catching up after the edit", build("warm", false, true)).ok;
+  }
 
-    Options o_;
-    shadergen::DomainSpec spec_;
-    std::vector<Job> jobs_;
-    std::string define_;
-    std::size_t expected_;  // permutations the edit must recompile
-    std::string original_;
-    int recompiled_ = 0;
-    std::vector<double> script_s_, cold_s_, warm_s_, edit_s_;
+  Options o_;
+  shadergen::DomainSpec spec_;
+  std::vector<Job> jobs_;
+  std::string define_;
+  std::size_t expected_;  // permutations the edit must recompile
+  std::string original_;
+  int recompiled_ = 0;
+  std::vector<double> script_s_, cold_s_, warm_s_, edit_s_;
 };
 
 int usage() {
-    std::cerr << "usage: shadergen_build_bench [--spec SPEC] [--reps N] [--shadergen EXE] [--script SCRIPT]\n"
-                 "                             [--work DIR] [--edit-define DEFINE]\n";
-    return 2;
+  std::cerr << "usage: shadergen_build_bench [--spec SPEC] [--reps N] [--shadergen EXE] [--script SCRIPT]\n"
+               "                             [--work DIR] [--edit-define DEFINE]\n";
+  return 2;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    auto options = parse_args(argc, argv);
-    if (!options) return usage();
-    bool temporary = options->work.empty();
-    if (temporary) options->work = fs::temp_directory_path() / ("shadergen-build-bench-" + std::to_string(::getpid()));
-    options->work = fs::absolute(options->work);
-    fs::remove_all(options->work);
-    fs::create_directories(options->work);
+  auto options = parse_args(argc, argv);
+  if (!options) return usage();
+  bool temporary = options->work.empty();
+  if (temporary) options->work = fs::temp_directory_path() / ("shadergen-build-bench-" + std::to_string(::getpid()));
+  options->work = fs::absolute(options->work);
+  fs::remove_all(options->work);
+  fs::create_directories(options->work);
 
-    auto original = shadergen::load_domain(options->spec);
-    if (!original) return std::cerr << original.errors().front().to_string() << "\n", 1;
-    auto spec = shadergen::load_domain(copy_domain(*original, options->work / "tree"));
-    if (!spec) return std::cerr << spec.errors().front().to_string() << "\n", 1;
-    auto plan = shadergen::expand(*spec);
-    if (!plan) return std::cerr << plan.errors().front().to_string() << "\n", 1;
+  auto original = shadergen::load_domain(options->spec);
+  if (!original) return std::cerr << original.errors().front().to_string() << "\n", 1;
+  auto spec = shadergen::load_domain(copy_domain(*original, options->work / "tree"));
+  if (!spec) return std::cerr << spec.errors().front().to_string() << "\n", 1;
+  auto plan = shadergen::expand(*spec);
+  if (!plan) return std::cerr << plan.errors().front().to_string() << "\n", 1;
 
-    name_include_extension(spec->uber.path);
-    for (const auto& companion : spec->companions) name_include_extension(companion.file.path);
-    std::string define = pick_define(*spec, read_text(spec->uber.path), options->edit_define);
-    if (define.empty()) return std::cerr << "shadergen_build_bench: no `#ifdef FEATURE` line to edit\n", 1;
-    std::vector<Job> jobs = jobs_of(*spec, *plan);
-    Bench bench(*options, std::move(spec).value(), std::move(jobs), define);
-    bool ok = bench.run_all();
-    if (ok) bench.report();
-    if (temporary) fs::remove_all(options->work);
-    return ok ? 0 : 1;
+  name_include_extension(spec->uber.path);
+  for (const auto& companion : spec->companions) name_include_extension(companion.file.path);
+  std::string define = pick_define(*spec, read_text(spec->uber.path), options->edit_define);
+  if (define.empty()) return std::cerr << "shadergen_build_bench: no `#ifdef FEATURE` line to edit\n", 1;
+  std::vector<Job> jobs = jobs_of(*spec, *plan);
+  Bench bench(*options, std::move(spec).value(), std::move(jobs), define);
+  bool ok = bench.run_all();
+  if (ok) bench.report();
+  if (temporary) fs::remove_all(options->work);
+  return ok ? 0 : 1;
 }

@@ -12,9 +12,9 @@
 namespace bench {
 
 struct Run {
-    bool ok = false;       // exit status 0
-    double seconds = 0.0;  // wall time, start to exit
-    std::string out;       // stdout and stderr
+  bool ok = false;       // exit status 0
+  double seconds = 0.0;  // wall time, start to exit
+  std::string out;       // stdout and stderr
 };
 
 // Runs `args` (quoted for the shell) with stdin from /dev/null and both outputs into `log`.

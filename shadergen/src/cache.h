@@ -18,39 +18,39 @@
 namespace shadergen {
 
 struct CachedBlob {
-    std::vector<std::uint32_t> words;
-    bool fell_back = false;  // see OptimisedBlob
-    std::string fallback_reason;
+  std::vector<std::uint32_t> words;
+  bool fell_back = false;  // see OptimisedBlob
+  std::string fallback_reason;
 };
 
 class ContentCache {
-public:
-    // A disabled cache: every lookup misses and stores are dropped.
-    ContentCache() = default;
-    explicit ContentCache(std::filesystem::path directory) : directory_(std::move(directory)) {}
+ public:
+  // A disabled cache: every lookup misses and stores are dropped.
+  ContentCache() = default;
+  explicit ContentCache(std::filesystem::path directory) : directory_(std::move(directory)) {}
 
-    bool enabled() const { return !directory_.empty(); }
-    const std::filesystem::path& directory() const { return directory_; }
+  bool enabled() const { return !directory_.empty(); }
+  const std::filesystem::path& directory() const { return directory_; }
 
-    std::optional<CachedBlob> load(std::string_view key) const;
-    // Errors name the entry path; callers may treat them as warnings (the build still works).
-    Status store(std::string_view key, const CachedBlob& blob) const;
+  std::optional<CachedBlob> load(std::string_view key) const;
+  // Errors name the entry path; callers may treat them as warnings (the build still works).
+  Status store(std::string_view key, const CachedBlob& blob) const;
 
-    std::filesystem::path entry_path(std::string_view key) const;
+  std::filesystem::path entry_path(std::string_view key) const;
 
-private:
-    std::filesystem::path directory_;
+ private:
+  std::filesystem::path directory_;
 };
 
 // Everything besides the source that decides a blob's bytes. No command-line flag changes a
 // blob (-j, --stats, --depfile, --cpp-name, --namespace only change other files), so the
 // tool and library versions, the target and the optimiser recipe are the whole list.
 struct CacheKeyParts {
-    std::string tool_version;         // SHADERGEN_VERSION
-    std::string glslang_version;      // the compiler library linked in
-    std::string spirv_tools_version;  // the optimiser and validator library linked in
-    std::string target;               // kTargetDescription
-    std::string optimiser_recipe;     // kOptimiserRecipe
+  std::string tool_version;         // SHADERGEN_VERSION
+  std::string glslang_version;      // the compiler library linked in
+  std::string spirv_tools_version;  // the optimiser and validator library linked in
+  std::string target;               // kTargetDescription
+  std::string optimiser_recipe;     // kOptimiserRecipe
 };
 
 // The parts of this build of the tool.

@@ -25,216 +25,221 @@ constexpr int kExitUsage = 2;
 constexpr int kExitInterrupted = 130;
 
 int print_errors(const Diagnostics& errors, std::ostream& err) {
-    for (const Diagnostic& d : errors) err << (d.file.empty() ? "shadergen: " : "") << d.to_string() << '\n';
-    return kExitError;
+  for (const Diagnostic& d : errors) err << (d.file.empty() ? "shadergen: " : "") << d.to_string() << '\n';
+  return kExitError;
 }
 
 std::string value_names(const RawFeature& feature) {
-    std::string text;
-    for (const std::string& v : feature.values) text += (text.empty() ? "" : ", ") + v;
-    return "(" + text + ")";
+  std::string text;
+  for (const std::string& v : feature.values) text += (text.empty() ? "" : ", ") + v;
+  return "(" + text + ")";
 }
 
 // A raw ID as a number (12, 0x0c, 0b1100) or feature names joined by '|', '+' or ','.
 std::optional<std::uint32_t> parse_raw_id(const DomainSpec& spec, const std::string& text, std::string& why) {
-    try {
-        std::size_t used = 0;
-        int base = 10;
-        std::string digits = text;
-        if (text.rfind("0x", 0) == 0 || text.rfind("0X", 0) == 0) base = 16, digits = text.substr(2);
-        else if (text.rfind("0b", 0) == 0) base = 2, digits = text.substr(2);
-        if (base != 10 || (!digits.empty() && std::isdigit(static_cast<unsigned char>(digits[0])))) {
-            unsigned long value = std::stoul(digits, &used, base);
-            if (used != digits.size()) throw std::invalid_argument("trailing characters");
-            if (value >= spec.raw_count()) {
-                why = "raw ID " + text + " is out of range: domain " + spec.name + " has raw IDs 0 to " +
-                      std::to_string(spec.raw_count() - 1);
-                return std::nullopt;
-            }
-            return static_cast<std::uint32_t>(value);
-        }
-    } catch (const std::exception&) {
-        why = "\"" + text + "\" is not a raw ID (a number or feature names joined by '|')";
+  try {
+    std::size_t used = 0;
+    int base = 10;
+    std::string digits = text;
+    if (text.rfind("0x", 0) == 0 || text.rfind("0X", 0) == 0)
+      base = 16, digits = text.substr(2);
+    else if (text.rfind("0b", 0) == 0)
+      base = 2, digits = text.substr(2);
+    if (base != 10 || (!digits.empty() && std::isdigit(static_cast<unsigned char>(digits[0])))) {
+      unsigned long value = std::stoul(digits, &used, base);
+      if (used != digits.size()) throw std::invalid_argument("trailing characters");
+      if (value >= spec.raw_count()) {
+        why = "raw ID " + text + " is out of range: domain " + spec.name + " has raw IDs 0 to " +
+              std::to_string(spec.raw_count() - 1);
         return std::nullopt;
+      }
+      return static_cast<std::uint32_t>(value);
     }
-    std::uint32_t id = 0;
-    std::string name;
-    // A boolean feature by name, or a valued one as NAME=VALUE.
-    auto flush = [&]() -> bool {
-        if (name.empty()) return true;
-        std::string feature_name = name.substr(0, name.find('='));
-        std::string value = feature_name.size() < name.size() ? name.substr(feature_name.size() + 1) : std::string();
-        auto found = std::find_if(spec.raw_features.begin(), spec.raw_features.end(),
-                                  [&](const RawFeature& f) { return f.name == feature_name || f.define == feature_name; });
-        if (found == spec.raw_features.end()) {
-            why = "unknown raw feature \"" + feature_name + "\" (known: ";
-            for (std::size_t i = 0; i < spec.raw_features.size(); ++i) why += (i ? ", " : "") + spec.raw_features[i].name;
-            why += ")";
-            return false;
-        }
-        auto index = std::find(found->values.begin(), found->values.end(), value);
-        if (found->valued() && index == found->values.end()) {
-            why = "\"" + name + "\": " + found->name + " has values " + value_names(*found) + "; write " + found->name +
-                  "=<value>";
-            return false;
-        }
-        id |= found->valued() ? static_cast<std::uint32_t>(index - found->values.begin()) << found->bit
-                              : 1u << found->bit;
-        name.clear();
-        return true;
-    };
-    for (char c : text) {
-        if (c == '|' || c == '+' || c == ',') {
-            if (!flush()) return std::nullopt;
-        } else if (c != ' ') {
-            name += c;
-        }
+  } catch (const std::exception&) {
+    why = "\"" + text + "\" is not a raw ID (a number or feature names joined by '|')";
+    return std::nullopt;
+  }
+  std::uint32_t id = 0;
+  std::string name;
+  // A boolean feature by name, or a valued one as NAME=VALUE.
+  auto flush = [&]() -> bool {
+    if (name.empty()) return true;
+    std::string feature_name = name.substr(0, name.find('='));
+    std::string value = feature_name.size() < name.size() ? name.substr(feature_name.size() + 1) : std::string();
+    auto found = std::find_if(spec.raw_features.begin(), spec.raw_features.end(),
+                              [&](const RawFeature& f) { return f.name == feature_name || f.define == feature_name; });
+    if (found == spec.raw_features.end()) {
+      why = "unknown raw feature \"" + feature_name + "\" (known: ";
+      for (std::size_t i = 0; i < spec.raw_features.size(); ++i) why += (i ? ", " : "") + spec.raw_features[i].name;
+      why += ")";
+      return false;
     }
-    if (!flush()) return std::nullopt;
-    return id;
+    auto index = std::find(found->values.begin(), found->values.end(), value);
+    if (found->valued() && index == found->values.end()) {
+      why = "\"" + name + "\": " + found->name + " has values " + value_names(*found) + "; write " + found->name +
+            "=<value>";
+      return false;
+    }
+    id |= found->valued() ? static_cast<std::uint32_t>(index - found->values.begin()) << found->bit : 1u << found->bit;
+    name.clear();
+    return true;
+  };
+  for (char c : text) {
+    if (c == '|' || c == '+' || c == ',') {
+      if (!flush()) return std::nullopt;
+    } else if (c != ' ') {
+      name += c;
+    }
+  }
+  if (!flush()) return std::nullopt;
+  return id;
 }
 
 struct BuildArgs {
-    std::string spec, out, cache_dir, depfile, cpp_name, ns, target_env;
-    std::vector<std::string> defines;
-    unsigned jobs = 0;
-    bool no_cache = false, stats = false, verbose = false;
-    std::string remote_cache;
-    bool remote_cache_readonly = false;
+  std::string spec, out, cache_dir, depfile, cpp_name, ns, target_env;
+  std::vector<std::string> defines;
+  unsigned jobs = 0;
+  bool no_cache = false, stats = false, verbose = false;
+  std::string remote_cache;
+  bool remote_cache_readonly = false;
 };
 
 // "; remote: 13 fetched, 0 uploaded, 0 failed" inside the summary's parentheses, with a remote cache.
 std::string remote_counts(const BuildSummary& s) {
-    if (!s.remote_cache) return {};
-    return "; remote: " + std::to_string(s.remote_fetched) + " fetched, " + std::to_string(s.remote_uploaded) +
-           " uploaded, " + std::to_string(s.remote_failed) + " failed";
+  if (!s.remote_cache) return {};
+  return "; remote: " + std::to_string(s.remote_fetched) + " fetched, " + std::to_string(s.remote_uploaded) +
+         " uploaded, " + std::to_string(s.remote_failed) + " failed";
 }
 
 int run_build(const BuildArgs& a, std::ostream& out, std::ostream& err) {
-    BuildOptions options;
-    options.spec_path = a.spec;
-    options.out_dir = a.out;
-    options.jobs = a.jobs;
-    options.use_cache = !a.no_cache;
-    options.cache_dir = a.cache_dir;
-    options.depfile = a.depfile;
-    options.cpp_name = a.cpp_name;
-    options.cpp_namespace = a.ns;
-    options.defines = a.defines;
-    options.target_env = a.target_env;
-    options.write_stats = a.stats;
-    options.verbose = a.verbose;
-    options.remote_cache_url = a.remote_cache;
-    options.remote_cache_read_only = a.remote_cache_readonly;
-    options.log = [&err](const std::string& line) { err << "shadergen: " << line << std::endl; };
-    options.cancelled = [] { return g_interrupted.load(); };
-    auto summary = build(options);
-    if (!summary) {
-        if (g_interrupted.load()) {
-            err << "shadergen: interrupted; " << a.out << " was left as it was\n";
-            return kExitInterrupted;
-        }
-        return print_errors(summary.errors(), err);
+  BuildOptions options;
+  options.spec_path = a.spec;
+  options.out_dir = a.out;
+  options.jobs = a.jobs;
+  options.use_cache = !a.no_cache;
+  options.cache_dir = a.cache_dir;
+  options.depfile = a.depfile;
+  options.cpp_name = a.cpp_name;
+  options.cpp_namespace = a.ns;
+  options.defines = a.defines;
+  options.target_env = a.target_env;
+  options.write_stats = a.stats;
+  options.verbose = a.verbose;
+  options.remote_cache_url = a.remote_cache;
+  options.remote_cache_read_only = a.remote_cache_readonly;
+  options.log = [&err](const std::string& line) { err << "shadergen: " << line << std::endl; };
+  options.cancelled = [] { return g_interrupted.load(); };
+  auto summary = build(options);
+  if (!summary) {
+    if (g_interrupted.load()) {
+      err << "shadergen: interrupted; " << a.out << " was left as it was\n";
+      return kExitInterrupted;
     }
-    const BuildSummary& s = *summary;
-    out << "shadergen: " << a.out << ": " << s.raw << " raw (" << s.pruned << " pruned), " << s.optimised
-        << " optimised, " << s.companions << " companion" << (s.companions == 1 ? "" : "s") << " -> "
-        << s.unique_sources << " distinct sources (" << s.compiled << " compiled, " << s.cache_hits << " cached" << remote_counts(s) << "), "
-        << s.unique_blobs << " SPIR-V blobs" << (s.output_changed ? "" : "; output unchanged");
-    char seconds[32];
-    std::snprintf(seconds, sizeof seconds, " in %.2f s\n", s.seconds);
-    out << seconds;
-    if (a.stats) out << format_build_stats(s);
-    return 0;
+    return print_errors(summary.errors(), err);
+  }
+  const BuildSummary& s = *summary;
+  out << "shadergen: " << a.out << ": " << s.raw << " raw (" << s.pruned << " pruned), " << s.optimised
+      << " optimised, " << s.companions << " companion" << (s.companions == 1 ? "" : "s") << " -> " << s.unique_sources
+      << " distinct sources (" << s.compiled << " compiled, " << s.cache_hits << " cached" << remote_counts(s) << "), "
+      << s.unique_blobs << " SPIR-V blobs" << (s.output_changed ? "" : "; output unchanged");
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, " in %.2f s\n", s.seconds);
+  out << seconds;
+  if (a.stats) out << format_build_stats(s);
+  return 0;
 }
 
 template <class Format>
 int run_view(const std::string& spec_path, std::ostream& out, std::ostream& err, Format format) {
-    auto spec = load_domain(spec_path);
-    if (!spec) return print_errors(spec.errors(), err);
-    auto plan = expand(*spec);
-    if (!plan) return print_errors(plan.errors(), err);
-    return format(*spec, *plan, out, err);
+  auto spec = load_domain(spec_path);
+  if (!spec) return print_errors(spec.errors(), err);
+  auto plan = expand(*spec);
+  if (!plan) return print_errors(plan.errors(), err);
+  return format(*spec, *plan, out, err);
 }
 
 int run_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    CLI::App app{"shadergen " SHADERGEN_VERSION
-                 " - compiles an uber-shader and a permutation-domain spec into every permutation as validated "
-                 "SPIR-V, a manifest and generated C++ (lookup table + registry).",
-                 "shadergen"};
-    app.require_subcommand(1);
-    app.set_version_flag("--version", "shadergen " SHADERGEN_VERSION);
+  CLI::App app{"shadergen " SHADERGEN_VERSION
+               " - compiles an uber-shader and a permutation-domain spec into every permutation as validated "
+               "SPIR-V, a manifest and generated C++ (lookup table + registry).",
+               "shadergen"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "shadergen " SHADERGEN_VERSION);
 
-    BuildArgs b;
-    CLI::App* build_cmd = app.add_subcommand("build", "Compile every permutation of a domain into an output folder");
-    build_cmd->add_option("spec", b.spec, "Domain spec (JSON)")->required();
-    build_cmd->add_option("--out,-o", b.out, "Output folder: manifest.json, spirv/, <name>.h/.cpp (replaced atomically)")
-        ->required();
-    build_cmd->add_option("-j,--jobs", b.jobs, "Parallel compile jobs (default: one per hardware thread)")
-        ->check(CLI::Range(1u, 1024u));
-    build_cmd->add_flag("--no-cache", b.no_cache, "Ignore the content cache and compile everything (a cold build)");
-    build_cmd->add_option("--cache-dir", b.cache_dir,
-                          "Content cache folder (default: $SHADERGEN_CACHE_DIR, else $XDG_CACHE_HOME/shadergen, "
-                          "else ~/.cache/shadergen)");
-    build_cmd->add_option("--depfile", b.depfile, "Write a Make-style depfile listing the spec and every GLSL file read");
-    build_cmd->add_option("--cpp-name", b.cpp_name, "Base name of the generated .h/.cpp (default: the domain name)");
-    build_cmd->add_option("--namespace", b.ns, "C++ namespace of the generated code (default: the domain name)");
-    build_cmd->add_option("-D,--define", b.defines,
-                          "NAME=VALUE (or NAME, meaning 1) for every shader of the domain; repeatable; adds to and "
-                          "replaces the spec's \"defines\"")
-        ->allow_extra_args(false);
-    build_cmd->add_option("--target-env", b.target_env,
-                          "vulkan1.0, vulkan1.1, vulkan1.2 or vulkan1.3: the Vulkan (and so SPIR-V) version to compile "
-                          "and validate for (default: the spec's \"target_env\", else vulkan1.2)");
-    build_cmd->add_flag("--stats", b.stats, "Also write stats.json: per-stage counts and per-permutation timings");
-    build_cmd->add_flag("-v,--verbose", b.verbose, "One progress line per compiled source");
-    build_cmd
-        ->add_option("--remote-cache", b.remote_cache,
-                     "Content cache shared over HTTP, asked after the local one: GET/PUT URL/<key-prefix>/<key>")
-        ->envname("SHADERGEN_REMOTE_CACHE");
-    build_cmd->add_flag("--remote-cache-readonly", b.remote_cache_readonly,
-                        "Only read the remote cache, never upload to it (developer machines)");
+  BuildArgs b;
+  CLI::App* build_cmd = app.add_subcommand("build", "Compile every permutation of a domain into an output folder");
+  build_cmd->add_option("spec", b.spec, "Domain spec (JSON)")->required();
+  build_cmd->add_option("--out,-o", b.out, "Output folder: manifest.json, spirv/, <name>.h/.cpp (replaced atomically)")
+      ->required();
+  build_cmd->add_option("-j,--jobs", b.jobs, "Parallel compile jobs (default: one per hardware thread)")
+      ->check(CLI::Range(1u, 1024u));
+  build_cmd->add_flag("--no-cache", b.no_cache, "Ignore the content cache and compile everything (a cold build)");
+  build_cmd->add_option("--cache-dir", b.cache_dir,
+                        "Content cache folder (default: $SHADERGEN_CACHE_DIR, else $XDG_CACHE_HOME/shadergen, "
+                        "else ~/.cache/shadergen)");
+  build_cmd->add_option("--depfile", b.depfile, "Write a Make-style depfile listing the spec and every GLSL file read");
+  build_cmd->add_option("--cpp-name", b.cpp_name, "Base name of the generated .h/.cpp (default: the domain name)");
+  build_cmd->add_option("--namespace", b.ns, "C++ namespace of the generated code (default: the domain name)");
+  build_cmd
+      ->add_option("-D,--define", b.defines,
+                   "NAME=VALUE (or NAME, meaning 1) for every shader of the domain; repeatable; adds to and "
+                   "replaces the spec's \"defines\"")
+      ->allow_extra_args(false);
+  build_cmd->add_option("--target-env", b.target_env,
+                        "vulkan1.0, vulkan1.1, vulkan1.2 or vulkan1.3: the Vulkan (and so SPIR-V) version to compile "
+                        "and validate for (default: the spec's \"target_env\", else vulkan1.2)");
+  build_cmd->add_flag("--stats", b.stats, "Also write stats.json: per-stage counts and per-permutation timings");
+  build_cmd->add_flag("-v,--verbose", b.verbose, "One progress line per compiled source");
+  build_cmd
+      ->add_option("--remote-cache", b.remote_cache,
+                   "Content cache shared over HTTP, asked after the local one: GET/PUT URL/<key-prefix>/<key>")
+      ->envname("SHADERGEN_REMOTE_CACHE");
+  build_cmd->add_flag("--remote-cache-readonly", b.remote_cache_readonly,
+                      "Only read the remote cache, never upload to it (developer machines)");
 
-    std::string spec_path;
-    CLI::App* lut_cmd = app.add_subcommand("lut", "Print the raw -> optimised lookup table");
-    lut_cmd->add_option("spec", spec_path, "Domain spec (JSON)")->required();
-    CLI::App* list_cmd = app.add_subcommand("list", "List every raw and optimised permutation with its defines");
-    list_cmd->add_option("spec", spec_path, "Domain spec (JSON)")->required();
-    std::string raw_text;
-    CLI::App* explain_cmd = app.add_subcommand("explain", "Explain what a raw ID means and which optimised ID it maps to");
-    explain_cmd->add_option("spec", spec_path, "Domain spec (JSON)")->required();
-    explain_cmd->add_option("raw-id", raw_text, "A raw ID: 83, 0x53, or names such as SKY|SUN_LIGHT")->required();
+  std::string spec_path;
+  CLI::App* lut_cmd = app.add_subcommand("lut", "Print the raw -> optimised lookup table");
+  lut_cmd->add_option("spec", spec_path, "Domain spec (JSON)")->required();
+  CLI::App* list_cmd = app.add_subcommand("list", "List every raw and optimised permutation with its defines");
+  list_cmd->add_option("spec", spec_path, "Domain spec (JSON)")->required();
+  std::string raw_text;
+  CLI::App* explain_cmd =
+      app.add_subcommand("explain", "Explain what a raw ID means and which optimised ID it maps to");
+  explain_cmd->add_option("spec", spec_path, "Domain spec (JSON)")->required();
+  explain_cmd->add_option("raw-id", raw_text, "A raw ID: 83, 0x53, or names such as SKY|SUN_LIGHT")->required();
 
-    try {
-        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them backwards
-        app.parse(reversed);
-    } catch (const CLI::ParseError& e) {
-        int code = app.exit(e, out, err);
-        return code == 0 ? 0 : kExitUsage;
-    }
+  try {
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them backwards
+    app.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e, out, err);
+    return code == 0 ? 0 : kExitUsage;
+  }
 
-    if (*build_cmd) return run_build(b, out, err);
-    if (*lut_cmd)
-        return run_view(spec_path, out, err, [](const DomainSpec& s, const PermutationPlan& p, std::ostream& o, std::ostream&) {
-            o << format_lut(s, p);
-            return 0;
-        });
-    if (*list_cmd)
-        return run_view(spec_path, out, err, [](const DomainSpec& s, const PermutationPlan& p, std::ostream& o, std::ostream&) {
-            o << format_list(s, p);
-            return 0;
-        });
+  if (*build_cmd) return run_build(b, out, err);
+  if (*lut_cmd)
     return run_view(spec_path, out, err,
-                    [&](const DomainSpec& s, const PermutationPlan& p, std::ostream& o, std::ostream& e) {
-                        std::string why;
-                        auto id = parse_raw_id(s, raw_text, why);
-                        if (!id) {
-                            e << "shadergen: error: " << why << '\n';
-                            return kExitUsage;
-                        }
-                        o << format_explanation(s, p, *id);
-                        return 0;
+                    [](const DomainSpec& s, const PermutationPlan& p, std::ostream& o, std::ostream&) {
+                      o << format_lut(s, p);
+                      return 0;
                     });
+  if (*list_cmd)
+    return run_view(spec_path, out, err,
+                    [](const DomainSpec& s, const PermutationPlan& p, std::ostream& o, std::ostream&) {
+                      o << format_list(s, p);
+                      return 0;
+                    });
+  return run_view(spec_path, out, err,
+                  [&](const DomainSpec& s, const PermutationPlan& p, std::ostream& o, std::ostream& e) {
+                    std::string why;
+                    auto id = parse_raw_id(s, raw_text, why);
+                    if (!id) {
+                      e << "shadergen: error: " << why << '\n';
+                      return kExitUsage;
+                    }
+                    o << format_explanation(s, p, *id);
+                    return 0;
+                  });
 }
 
 }  // namespace
@@ -244,21 +249,21 @@ int run_command(const std::vector<std::string>& args, std::ostream& out, std::os
 // rather than std::terminate. The output folder is only replaced at the very end of a build, so
 // it is left as it was.
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    try {
-        return run_command(args, out, err);
-    } catch (const std::bad_alloc&) {
-        err << "shadergen: error: out of memory\n";
-    } catch (const std::exception& e) {
-        err << "shadergen: error: " << e.what() << '\n';
-    }
-    return kExitError;
+  try {
+    return run_command(args, out, err);
+  } catch (const std::bad_alloc&) {
+    err << "shadergen: error: out of memory\n";
+  } catch (const std::exception& e) {
+    err << "shadergen: error: " << e.what() << '\n';
+  }
+  return kExitError;
 }
 
 int run_cli(int argc, char** argv) {
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGTERM, on_signal);
-    std::vector<std::string> args(argv + 1, argv + argc);
-    return run_cli(args, std::cout, std::cerr);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  std::vector<std::string> args(argv + 1, argv + argc);
+  return run_cli(args, std::cout, std::cerr);
 }
 
 }  // namespace shadergen

@@ -10,8 +10,8 @@
 namespace shadergen {
 
 struct GeneratedCpp {
-    std::string header;
-    std::string source;
+  std::string header;
+  std::string source;
 };
 
 // `header_name` is the file name the source includes ("split_second.h"); `cpp_namespace` may

@@ -10,10 +10,10 @@
 #include "compiled_domain.h"
 #include "defines.h"
 #include "error_grouping.h"
-#include "program_check.h"
 #include "glsl_compiler.h"
 #include "input_cache.h"
 #include "phase_clock.h"
+#include "program_check.h"
 #include "remote_cache.h"
 #include "sha256.h"
 #include "source_key.h"
@@ -24,20 +24,20 @@
 namespace shadergen {
 
 std::string CompileJob::label() const {
-    switch (kind) {
-        case JobKind::raw: return "raw " + std::to_string(id) + (vertex_half ? " vertex" : "");
-        case JobKind::optimised: return "optimised " + std::to_string(id) + (vertex_half ? " vertex" : "");
-        case JobKind::companion: return "companion " + name;
-    }
-    return {};
+  switch (kind) {
+    case JobKind::raw: return "raw " + std::to_string(id) + (vertex_half ? " vertex" : "");
+    case JobKind::optimised: return "optimised " + std::to_string(id) + (vertex_half ? " vertex" : "");
+    case JobKind::companion: return "companion " + name;
+  }
+  return {};
 }
 
 namespace {
 
 const Blob* blob_of(const CompiledDomain& d, const std::vector<int>& index, std::size_t id) {
-    if (id >= index.size() || index[id] < 0) return nullptr;
-    int blob = d.jobs[static_cast<std::size_t>(index[id])].blob;
-    return blob < 0 ? nullptr : &d.blobs[static_cast<std::size_t>(blob)];
+  if (id >= index.size() || index[id] < 0) return nullptr;
+  int blob = d.jobs[static_cast<std::size_t>(index[id])].blob;
+  return blob < 0 ? nullptr : &d.blobs[static_cast<std::size_t>(blob)];
 }
 
 }  // namespace
@@ -51,7 +51,7 @@ const Blob* CompiledDomain::companion_blob(std::size_t index) const { return blo
 const Blob* CompiledDomain::raw_vertex_blob(std::uint32_t id) const { return blob_of(*this, raw_vertex_jobs, id); }
 
 const Blob* CompiledDomain::optimised_vertex_blob(std::uint32_t id) const {
-    return blob_of(*this, optimised_vertex_jobs, id);
+  return blob_of(*this, optimised_vertex_jobs, id);
 }
 
 namespace {
@@ -59,348 +59,351 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double milliseconds_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
 std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan& plan) {
-    std::vector<CompileJob> jobs;
+  std::vector<CompileJob> jobs;
+  for (const RawPermutation& raw : plan.raw)
+    if (!raw.pruned) jobs.push_back({JobKind::raw, raw.id, raw.defines, spec.uber.stage, spec.uber.path, {}});
+  for (const OptimisedPermutation& optimised : plan.optimised)
+    jobs.push_back({JobKind::optimised, optimised.id, optimised.defines, spec.uber.stage, spec.uber.path, {}});
+  if (spec.program_vertex) {
+    const ShaderFile& vertex = *spec.program_vertex;
     for (const RawPermutation& raw : plan.raw)
-        if (!raw.pruned)
-            jobs.push_back({JobKind::raw, raw.id, raw.defines, spec.uber.stage, spec.uber.path, {}});
-    for (const OptimisedPermutation& optimised : plan.optimised)
-        jobs.push_back({JobKind::optimised, optimised.id, optimised.defines, spec.uber.stage, spec.uber.path, {}});
-    if (spec.program_vertex) {
-        const ShaderFile& vertex = *spec.program_vertex;
-        for (const RawPermutation& raw : plan.raw)
-            if (!raw.pruned) jobs.push_back({JobKind::raw, raw.id, raw.defines, vertex.stage, vertex.path, {}, true});
-        for (const OptimisedPermutation& o : plan.optimised)
-            jobs.push_back({JobKind::optimised, o.id, o.defines, vertex.stage, vertex.path, {}, true});
-    }
-    for (std::size_t i = 0; i < spec.companions.size(); ++i) {
-        const CompanionSpec& companion = spec.companions[i];
-        jobs.push_back({JobKind::companion, static_cast<std::uint32_t>(i), companion.defines, companion.file.stage,
-                        companion.file.path, companion.name});
-    }
-    return jobs;
+      if (!raw.pruned) jobs.push_back({JobKind::raw, raw.id, raw.defines, vertex.stage, vertex.path, {}, true});
+    for (const OptimisedPermutation& o : plan.optimised)
+      jobs.push_back({JobKind::optimised, o.id, o.defines, vertex.stage, vertex.path, {}, true});
+  }
+  for (std::size_t i = 0; i < spec.companions.size(); ++i) {
+    const CompanionSpec& companion = spec.companions[i];
+    jobs.push_back({JobKind::companion, static_cast<std::uint32_t>(i), companion.defines, companion.file.stage,
+                    companion.file.path, companion.name});
+  }
+  return jobs;
 }
 
 // The domain's fixed defines, less those the job sets itself (a companion's own value wins).
 GlslSource source_of(const DomainSpec& spec, const CompileJob& job) {
-    GlslSource source{job.path, job.stage, spec.include_dirs, job.defines, {}, spec.target_env};
-    for (const std::string& fixed : spec.defines) {
-        bool own = std::any_of(job.defines.begin(), job.defines.end(),
-                               [&](const std::string& d) { return define_name(d) == define_name(fixed); });
-        if (!own) source.fixed_defines.push_back(fixed);
-    }
-    return source;
+  GlslSource source{job.path, job.stage, spec.include_dirs, job.defines, {}, spec.target_env};
+  for (const std::string& fixed : spec.defines) {
+    bool own = std::any_of(job.defines.begin(), job.defines.end(),
+                           [&](const std::string& d) { return define_name(d) == define_name(fixed); });
+    if (!own) source.fixed_defines.push_back(fixed);
+  }
+  return source;
 }
 
 class DomainCompiler {
-public:
-    DomainCompiler(CompiledDomain& domain, const CompileOptions& options) : d_(domain), options_(options) {
-        key_parts_.target = target_description(d_.spec.target_env);
-    }
+ public:
+  DomainCompiler(CompiledDomain& domain, const CompileOptions& options) : d_(domain), options_(options) {
+    key_parts_.target = target_description(d_.spec.target_env);
+  }
 
-    Status run() {
-        d_.jobs = make_jobs(d_.spec, d_.plan);
-        index_jobs();
-        PhaseClock clock(d_.phases);
-        d_.inputs_reused = reuse_inputs();
-        clock.lap("input check");
-        if (!d_.inputs_reused) {
-            if (Status s = preprocess_all(); !s) return s;
-            clock.lap("preprocess");
+  Status run() {
+    d_.jobs = make_jobs(d_.spec, d_.plan);
+    index_jobs();
+    PhaseClock clock(d_.phases);
+    d_.inputs_reused = reuse_inputs();
+    clock.lap("input check");
+    if (!d_.inputs_reused) {
+      if (Status s = preprocess_all(); !s) return s;
+      clock.lap("preprocess");
+    }
+    if (Status s = compile_sources(); !s) return s;
+    clock.lap("compile or load");
+    if (Status s = reflect_blobs(); !s) return s;
+    clock.lap("reflect");
+    if (Status s = merge(); !s) return s;
+    if (Status s = check_program(); !s) return s;
+    clock.lap("layout");
+    remember_inputs();
+    return Ok{};
+  }
+
+ private:
+  void index_jobs() {
+    d_.raw_jobs.assign(d_.plan.raw.size(), -1);
+    d_.optimised_jobs.assign(d_.plan.optimised.size(), -1);
+    d_.companion_jobs.assign(d_.spec.companions.size(), -1);
+    bool program = d_.spec.program_vertex.has_value();
+    d_.raw_vertex_jobs.assign(program ? d_.plan.raw.size() : 0, -1);
+    d_.optimised_vertex_jobs.assign(program ? d_.plan.optimised.size() : 0, -1);
+    for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
+      const CompileJob& job = d_.jobs[i];
+      auto& index = job.kind == JobKind::raw         ? (job.vertex_half ? d_.raw_vertex_jobs : d_.raw_jobs)
+                    : job.kind == JobKind::optimised ? (job.vertex_half ? d_.optimised_vertex_jobs : d_.optimised_jobs)
+                                                     : d_.companion_jobs;
+      index[job.id] = static_cast<int>(i);
+    }
+  }
+
+  bool cancelled() const { return options_.cancelled && options_.cancelled(); }
+
+  Status cancelled_error() const { return make_error("build interrupted"); }
+
+  void log(const std::string& line) const {
+    if (options_.log) options_.log(line);
+  }
+
+  // Gives job `i` the distinct source with this cache key, adding it if new.
+  void assign_source(std::size_t i, const std::string& key, std::map<std::string, int>& by_key) {
+    auto [it, fresh] = by_key.try_emplace(key, static_cast<int>(d_.sources.size()));
+    if (fresh) d_.sources.push_back({key, i, false, 0.0, -1});
+    d_.jobs[i].source = it->second;
+  }
+
+  // With an input-set entry whose every file is unchanged, the preprocessed texts (and so
+  // their keys) are what they were: take the keys and skip glslang altogether.
+  bool reuse_inputs() {
+    if (!options_.inputs || options_.input_key.empty()) return false;
+    auto set = options_.inputs->load(options_.input_key);
+    if (!set || set->source_keys.size() != d_.jobs.size() || !inputs_unchanged(set->files)) return false;
+    std::map<std::string, int> by_key;
+    for (std::size_t i = 0; i < d_.jobs.size(); ++i) assign_source(i, set->source_keys[i], by_key);
+    std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
+    for (const InputRead& file : set->files)
+      if (file.found) dependencies.insert(file.path);
+    d_.dependencies.assign(dependencies.begin(), dependencies.end());
+    return true;
+  }
+
+  void remember_inputs() {
+    if (d_.inputs_reused || !reads_ || !options_.inputs || options_.input_key.empty()) return;
+    InputSet set{std::move(*reads_), {}};
+    for (const CompileJob& job : d_.jobs)
+      set.source_keys.push_back(d_.sources[static_cast<std::size_t>(job.source)].key);
+    // Like the content cache: failing to remember only costs time later.
+    if (Status stored = options_.inputs->store(options_.input_key, set); !stored)
+      log("warning: " + stored.errors().front().to_string());
+  }
+
+  Status preprocess_all() {
+    std::vector<Result<Preprocessed>> results(d_.jobs.size(), Result<Preprocessed>(Preprocessed{}));
+    parallel_for(
+        d_.jobs.size(), options_.jobs,
+        [&](std::size_t i) {
+          auto start = Clock::now();
+          results[i] = preprocess(source_of(d_.spec, d_.jobs[i]));
+          d_.jobs[i].preprocess_ms = milliseconds_since(start);
+        },
+        options_.cancelled);
+    if (cancelled()) return cancelled_error();
+    std::vector<JobFailure> failures;
+    std::map<std::string, int> by_key;
+    std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
+    std::vector<std::vector<InputRead>> reads;
+    for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
+      dependencies.insert(d_.jobs[i].path.lexically_normal());
+      if (!results[i]) {
+        failures.push_back({i, results[i].errors(), {}});
+        continue;
+      }
+      for (const auto& include : results[i]->includes) dependencies.insert(include);
+      assign_source(i, cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(results[i]->text)), by_key);
+      reads.push_back(std::move(results[i]->reads));
+    }
+    d_.dependencies.assign(dependencies.begin(), dependencies.end());
+    if (!failures.empty()) return group_failures(d_.jobs, failures);
+    reads_ = merge_reads(reads);
+    return Ok{};
+  }
+
+  // Locally, then remotely; a remote entry is kept locally so the next build needs no network.
+  std::optional<CachedBlob> load_cached(SourceRecord& record) {
+    std::optional<CachedBlob> hit;
+    if (options_.cache) hit = options_.cache->load(record.key);
+    if (!hit && options_.remote && (hit = options_.remote->load(record.key))) {
+      record.remote_hit = true;
+      store_local(record.key, *hit);
+    }
+    record.cache_hit = hit.has_value();
+    return hit;
+  }
+
+  void store_local(const std::string& key, const CachedBlob& blob) {
+    if (!options_.cache) return;
+    // A cache that cannot be written only costs time later; the build itself is fine.
+    if (Status stored = options_.cache->store(key, blob); !stored)
+      log("warning: " + stored.errors().front().to_string());
+  }
+
+  // The preprocessed lines of each failed job, so that grouping can count the permutations
+  // that stopped at an earlier error but compile a later error's line too. Only failed
+  // builds pay for this second preprocessing.
+  std::vector<JobFailure> with_lines(std::vector<JobFailure> failures) {
+    parallel_for(
+        failures.size(), options_.jobs,
+        [&](std::size_t i) {
+          const CompileJob& job = d_.jobs[failures[i].job];
+          if (auto text = preprocess(source_of(d_.spec, job)))
+            failures[i].lines = live_lines(text->text, job.path.lexically_normal().string());
+        },
+        options_.cancelled);
+    return failures;
+  }
+
+  Result<CachedBlob> compile_one(SourceRecord& record) {
+    if (auto hit = load_cached(record)) return std::move(*hit);
+    auto start = Clock::now();
+    auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
+    if (!words) return std::move(words).take_errors();
+    auto optimised = optimise_and_validate(std::move(words).value(), d_.spec.target_env);
+    if (!optimised) return std::move(optimised).take_errors();
+    record.compile_ms = milliseconds_since(start);
+    CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
+    store_local(record.key, blob);
+    if (options_.remote) options_.remote->store(record.key, blob);
+    return blob;
+  }
+
+  Status compile_sources() {
+    std::vector<Result<CachedBlob>> results(d_.sources.size(), Result<CachedBlob>(CachedBlob{}));
+    std::atomic<std::size_t> done{0};
+    std::mutex log_mutex;
+    std::size_t total = d_.sources.size();
+    parallel_for(
+        total, options_.jobs,
+        [&](std::size_t i) {
+          results[i] = compile_one(d_.sources[i]);
+          std::size_t finished = ++done;
+          report_progress(finished, total, i, log_mutex);
+        },
+        options_.cancelled);
+    if (cancelled()) return cancelled_error();
+    std::vector<JobFailure> failures;
+    // Every job with a failed source has that source's errors.
+    for (std::size_t j = 0; j < d_.jobs.size(); ++j) {
+      const auto& result = results[static_cast<std::size_t>(d_.jobs[j].source)];
+      if (!result) failures.push_back({j, result.errors(), {}});
+    }
+    if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)));
+    store_blobs(results);
+    return Ok{};
+  }
+
+  void report_progress(std::size_t finished, std::size_t total, std::size_t source, std::mutex& mutex) {
+    std::lock_guard lock(mutex);
+    const SourceRecord& record = d_.sources[source];
+    if (options_.verbose) {
+      const CompileJob& job = d_.jobs[record.first_job];
+      std::string defines;
+      for (const std::string& d : job.defines) {
+        defines += ' ';
+        defines += d;
+      }
+      log("[" + std::to_string(finished) + "/" + std::to_string(total) + "] " +
+          (record.remote_hit  ? "remote   "
+           : record.cache_hit ? "cached   "
+                              : "compiled ") +
+          job.label() + (defines.empty() ? "" : ":" + defines));
+    } else if (total >= 8 && finished % (total / 4) == 0 && finished != total) {
+      log(std::to_string(finished) + "/" + std::to_string(total) + " sources done");
+    }
+  }
+
+  // Distinct sources can still give equal SPIR-V (a define that changes no code path that
+  // survives optimisation); those share one blob.
+  void store_blobs(std::vector<Result<CachedBlob>>& results) {
+    std::map<std::string, int> by_hash;
+    for (std::size_t s = 0; s < d_.sources.size(); ++s) {
+      CachedBlob& compiled = results[s].value();
+      std::string hash = sha256_hex(compiled.words);
+      auto [it, fresh] = by_hash.try_emplace(hash, static_cast<int>(d_.blobs.size()));
+      if (fresh)
+        d_.blobs.push_back(
+            Blob{std::move(compiled.words), hash, {}, compiled.fell_back, std::move(compiled.fallback_reason)});
+      d_.sources[s].blob = it->second;
+    }
+    for (CompileJob& job : d_.jobs) job.blob = d_.sources[static_cast<std::size_t>(job.source)].blob;
+  }
+
+  Status reflect_blobs() {
+    Diagnostics errors;
+    std::vector<Stage> stages(d_.blobs.size(), Stage::fragment);
+    for (const CompileJob& job : d_.jobs) stages[static_cast<std::size_t>(job.blob)] = job.stage;
+    for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
+      auto info = reflect(d_.blobs[b].words, stages[b]);
+      if (!info) {
+        for (Diagnostic error : info.errors()) errors.push_back(std::move(error));
+        continue;
+      }
+      d_.blobs[b].reflection = std::move(info).value();
+    }
+    if (!errors.empty()) return errors;
+    return Ok{};
+  }
+
+  Status merge() {
+    // Each permutation keeps its own reflection; there is nothing to merge or check.
+    if (d_.spec.layout == LayoutMode::per_permutation) return Ok{};
+    std::vector<LabelledReflection> labelled;
+    std::set<int> seen;
+    for (const CompileJob& job : d_.jobs) {
+      if (job.kind == JobKind::companion && !d_.spec.companions[job.id].shared_layout) continue;
+      if (!seen.insert(job.blob).second) continue;
+      std::string label = job.label();
+      if (job.kind != JobKind::companion && !job.defines.empty()) {
+        label += " (";
+        for (std::size_t i = 0; i < job.defines.size(); ++i) {
+          if (i) label += ' ';
+          label += job.defines[i];
         }
-        if (Status s = compile_sources(); !s) return s;
-        clock.lap("compile or load");
-        if (Status s = reflect_blobs(); !s) return s;
-        clock.lap("reflect");
-        if (Status s = merge(); !s) return s;
-        if (Status s = check_program(); !s) return s;
-        clock.lap("layout");
-        remember_inputs();
-        return Ok{};
+        label += ")";
+      }
+      labelled.push_back({label, job.stage, job.kind != JobKind::companion && !job.vertex_half,
+                          &d_.blobs[static_cast<std::size_t>(job.blob)].reflection});
     }
-
-private:
-    void index_jobs() {
-        d_.raw_jobs.assign(d_.plan.raw.size(), -1);
-        d_.optimised_jobs.assign(d_.plan.optimised.size(), -1);
-        d_.companion_jobs.assign(d_.spec.companions.size(), -1);
-        bool program = d_.spec.program_vertex.has_value();
-        d_.raw_vertex_jobs.assign(program ? d_.plan.raw.size() : 0, -1);
-        d_.optimised_vertex_jobs.assign(program ? d_.plan.optimised.size() : 0, -1);
-        for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
-            const CompileJob& job = d_.jobs[i];
-            auto& index = job.kind == JobKind::raw ? (job.vertex_half ? d_.raw_vertex_jobs : d_.raw_jobs)
-                          : job.kind == JobKind::optimised ? (job.vertex_half ? d_.optimised_vertex_jobs : d_.optimised_jobs)
-                                                           : d_.companion_jobs;
-            index[job.id] = static_cast<int>(i);
-        }
+    auto layout = merge_layouts(labelled);
+    if (!layout) {
+      Diagnostics errors = std::move(layout).take_errors();
+      for (Diagnostic& e : errors) e.file = d_.spec.spec_path.string();
+      return errors;
     }
+    d_.layout = std::move(layout).value();
+    return Ok{};
+  }
 
-    bool cancelled() const { return options_.cancelled && options_.cancelled(); }
-
-    Status cancelled_error() const { return make_error("build interrupted"); }
-
-    void log(const std::string& line) const {
-        if (options_.log) options_.log(line);
+  // The "program" form: every permutation's fragment inputs are among its vertex outputs.
+  Status check_program() {
+    if (!d_.spec.program_vertex) return Ok{};
+    Diagnostics errors;
+    for (const CompileJob& job : d_.jobs) {
+      if (!job.vertex_half) continue;
+      const auto& index = job.kind == JobKind::raw ? d_.raw_jobs : d_.optimised_jobs;
+      const CompileJob& fragment = d_.jobs[static_cast<std::size_t>(index[job.id])];
+      std::string label = fragment.label() + (job.defines.empty() ? "" : " (" + join_defines(job.defines) + ")");
+      for (Diagnostic& e : check_interface(label, d_.blobs[static_cast<std::size_t>(job.blob)].reflection.outputs,
+                                           d_.blobs[static_cast<std::size_t>(fragment.blob)].reflection.inputs)) {
+        e.file = d_.spec.spec_path.string();
+        errors.push_back(std::move(e));
+      }
+      if (errors.size() >= 8) break;  // the first few say enough
     }
+    if (!errors.empty()) return errors;
+    return Ok{};
+  }
 
-    // Gives job `i` the distinct source with this cache key, adding it if new.
-    void assign_source(std::size_t i, const std::string& key, std::map<std::string, int>& by_key) {
-        auto [it, fresh] = by_key.try_emplace(key, static_cast<int>(d_.sources.size()));
-        if (fresh) d_.sources.push_back({key, i, false, 0.0, -1});
-        d_.jobs[i].source = it->second;
-    }
+  static std::string join_defines(const std::vector<std::string>& defines) {
+    std::string text;
+    for (const std::string& d : defines) text += (text.empty() ? "" : " ") + d;
+    return text;
+  }
 
-    // With an input-set entry whose every file is unchanged, the preprocessed texts (and so
-    // their keys) are what they were: take the keys and skip glslang altogether.
-    bool reuse_inputs() {
-        if (!options_.inputs || options_.input_key.empty()) return false;
-        auto set = options_.inputs->load(options_.input_key);
-        if (!set || set->source_keys.size() != d_.jobs.size() || !inputs_unchanged(set->files)) return false;
-        std::map<std::string, int> by_key;
-        for (std::size_t i = 0; i < d_.jobs.size(); ++i) assign_source(i, set->source_keys[i], by_key);
-        std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
-        for (const InputRead& file : set->files)
-            if (file.found) dependencies.insert(file.path);
-        d_.dependencies.assign(dependencies.begin(), dependencies.end());
-        return true;
-    }
-
-    void remember_inputs() {
-        if (d_.inputs_reused || !reads_ || !options_.inputs || options_.input_key.empty()) return;
-        InputSet set{std::move(*reads_), {}};
-        for (const CompileJob& job : d_.jobs) set.source_keys.push_back(d_.sources[static_cast<std::size_t>(job.source)].key);
-        // Like the content cache: failing to remember only costs time later.
-        if (Status stored = options_.inputs->store(options_.input_key, set); !stored)
-            log("warning: " + stored.errors().front().to_string());
-    }
-
-    Status preprocess_all() {
-        std::vector<Result<Preprocessed>> results(d_.jobs.size(), Result<Preprocessed>(Preprocessed{}));
-        parallel_for(
-            d_.jobs.size(), options_.jobs,
-            [&](std::size_t i) {
-                auto start = Clock::now();
-                results[i] = preprocess(source_of(d_.spec, d_.jobs[i]));
-                d_.jobs[i].preprocess_ms = milliseconds_since(start);
-            },
-            options_.cancelled);
-        if (cancelled()) return cancelled_error();
-        std::vector<JobFailure> failures;
-        std::map<std::string, int> by_key;
-        std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
-        std::vector<std::vector<InputRead>> reads;
-        for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
-            dependencies.insert(d_.jobs[i].path.lexically_normal());
-            if (!results[i]) {
-                failures.push_back({i, results[i].errors(), {}});
-                continue;
-            }
-            for (const auto& include : results[i]->includes) dependencies.insert(include);
-            assign_source(i, cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(results[i]->text)), by_key);
-            reads.push_back(std::move(results[i]->reads));
-        }
-        d_.dependencies.assign(dependencies.begin(), dependencies.end());
-        if (!failures.empty()) return group_failures(d_.jobs, failures);
-        reads_ = merge_reads(reads);
-        return Ok{};
-    }
-
-    // Locally, then remotely; a remote entry is kept locally so the next build needs no network.
-    std::optional<CachedBlob> load_cached(SourceRecord& record) {
-        std::optional<CachedBlob> hit;
-        if (options_.cache) hit = options_.cache->load(record.key);
-        if (!hit && options_.remote && (hit = options_.remote->load(record.key))) {
-            record.remote_hit = true;
-            store_local(record.key, *hit);
-        }
-        record.cache_hit = hit.has_value();
-        return hit;
-    }
-
-    void store_local(const std::string& key, const CachedBlob& blob) {
-        if (!options_.cache) return;
-        // A cache that cannot be written only costs time later; the build itself is fine.
-        if (Status stored = options_.cache->store(key, blob); !stored)
-            log("warning: " + stored.errors().front().to_string());
-    }
-
-    // The preprocessed lines of each failed job, so that grouping can count the permutations
-    // that stopped at an earlier error but compile a later error's line too. Only failed
-    // builds pay for this second preprocessing.
-    std::vector<JobFailure> with_lines(std::vector<JobFailure> failures) {
-        parallel_for(
-            failures.size(), options_.jobs,
-            [&](std::size_t i) {
-                const CompileJob& job = d_.jobs[failures[i].job];
-                if (auto text = preprocess(source_of(d_.spec, job)))
-                    failures[i].lines = live_lines(text->text, job.path.lexically_normal().string());
-            },
-            options_.cancelled);
-        return failures;
-    }
-
-    Result<CachedBlob> compile_one(SourceRecord& record) {
-        if (auto hit = load_cached(record)) return std::move(*hit);
-        auto start = Clock::now();
-        auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
-        if (!words) return std::move(words).take_errors();
-        auto optimised = optimise_and_validate(std::move(words).value(), d_.spec.target_env);
-        if (!optimised) return std::move(optimised).take_errors();
-        record.compile_ms = milliseconds_since(start);
-        CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
-        store_local(record.key, blob);
-        if (options_.remote) options_.remote->store(record.key, blob);
-        return blob;
-    }
-
-    Status compile_sources() {
-        std::vector<Result<CachedBlob>> results(d_.sources.size(), Result<CachedBlob>(CachedBlob{}));
-        std::atomic<std::size_t> done{0};
-        std::mutex log_mutex;
-        std::size_t total = d_.sources.size();
-        parallel_for(
-            total, options_.jobs,
-            [&](std::size_t i) {
-                results[i] = compile_one(d_.sources[i]);
-                std::size_t finished = ++done;
-                report_progress(finished, total, i, log_mutex);
-            },
-            options_.cancelled);
-        if (cancelled()) return cancelled_error();
-        std::vector<JobFailure> failures;
-        // Every job with a failed source has that source's errors.
-        for (std::size_t j = 0; j < d_.jobs.size(); ++j) {
-            const auto& result = results[static_cast<std::size_t>(d_.jobs[j].source)];
-            if (!result) failures.push_back({j, result.errors(), {}});
-        }
-        if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)));
-        store_blobs(results);
-        return Ok{};
-    }
-
-    void report_progress(std::size_t finished, std::size_t total, std::size_t source, std::mutex& mutex) {
-        std::lock_guard lock(mutex);
-        const SourceRecord& record = d_.sources[source];
-        if (options_.verbose) {
-            const CompileJob& job = d_.jobs[record.first_job];
-            std::string defines;
-            for (const std::string& d : job.defines) {
-                defines += ' ';
-                defines += d;
-            }
-            log("[" + std::to_string(finished) + "/" + std::to_string(total) + "] " +
-                (record.remote_hit ? "remote   " : record.cache_hit ? "cached   " : "compiled ") + job.label() + (defines.empty() ? "" : ":" + defines));
-        } else if (total >= 8 && finished % (total / 4) == 0 && finished != total) {
-            log(std::to_string(finished) + "/" + std::to_string(total) + " sources done");
-        }
-    }
-
-    // Distinct sources can still give equal SPIR-V (a define that changes no code path that
-    // survives optimisation); those share one blob.
-    void store_blobs(std::vector<Result<CachedBlob>>& results) {
-        std::map<std::string, int> by_hash;
-        for (std::size_t s = 0; s < d_.sources.size(); ++s) {
-            CachedBlob& compiled = results[s].value();
-            std::string hash = sha256_hex(compiled.words);
-            auto [it, fresh] = by_hash.try_emplace(hash, static_cast<int>(d_.blobs.size()));
-            if (fresh)
-                d_.blobs.push_back(Blob{std::move(compiled.words), hash, {}, compiled.fell_back,
-                                        std::move(compiled.fallback_reason)});
-            d_.sources[s].blob = it->second;
-        }
-        for (CompileJob& job : d_.jobs) job.blob = d_.sources[static_cast<std::size_t>(job.source)].blob;
-    }
-
-    Status reflect_blobs() {
-        Diagnostics errors;
-        std::vector<Stage> stages(d_.blobs.size(), Stage::fragment);
-        for (const CompileJob& job : d_.jobs) stages[static_cast<std::size_t>(job.blob)] = job.stage;
-        for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
-            auto info = reflect(d_.blobs[b].words, stages[b]);
-            if (!info) {
-                for (Diagnostic error : info.errors()) errors.push_back(std::move(error));
-                continue;
-            }
-            d_.blobs[b].reflection = std::move(info).value();
-        }
-        if (!errors.empty()) return errors;
-        return Ok{};
-    }
-
-    Status merge() {
-        // Each permutation keeps its own reflection; there is nothing to merge or check.
-        if (d_.spec.layout == LayoutMode::per_permutation) return Ok{};
-        std::vector<LabelledReflection> labelled;
-        std::set<int> seen;
-        for (const CompileJob& job : d_.jobs) {
-            if (job.kind == JobKind::companion && !d_.spec.companions[job.id].shared_layout) continue;
-            if (!seen.insert(job.blob).second) continue;
-            std::string label = job.label();
-            if (job.kind != JobKind::companion && !job.defines.empty()) {
-                label += " (";
-                for (std::size_t i = 0; i < job.defines.size(); ++i) {
-                    if (i) label += ' ';
-                    label += job.defines[i];
-                }
-                label += ")";
-            }
-            labelled.push_back({label, job.stage, job.kind != JobKind::companion && !job.vertex_half,
-                                &d_.blobs[static_cast<std::size_t>(job.blob)].reflection});
-        }
-        auto layout = merge_layouts(labelled);
-        if (!layout) {
-            Diagnostics errors = std::move(layout).take_errors();
-            for (Diagnostic& e : errors) e.file = d_.spec.spec_path.string();
-            return errors;
-        }
-        d_.layout = std::move(layout).value();
-        return Ok{};
-    }
-
-    // The "program" form: every permutation's fragment inputs are among its vertex outputs.
-    Status check_program() {
-        if (!d_.spec.program_vertex) return Ok{};
-        Diagnostics errors;
-        for (const CompileJob& job : d_.jobs) {
-            if (!job.vertex_half) continue;
-            const auto& index = job.kind == JobKind::raw ? d_.raw_jobs : d_.optimised_jobs;
-            const CompileJob& fragment = d_.jobs[static_cast<std::size_t>(index[job.id])];
-            std::string label = fragment.label() + (job.defines.empty() ? "" : " (" + join_defines(job.defines) + ")");
-            for (Diagnostic& e : check_interface(label, d_.blobs[static_cast<std::size_t>(job.blob)].reflection.outputs,
-                                                 d_.blobs[static_cast<std::size_t>(fragment.blob)].reflection.inputs)) {
-                e.file = d_.spec.spec_path.string();
-                errors.push_back(std::move(e));
-            }
-            if (errors.size() >= 8) break;  // the first few say enough
-        }
-        if (!errors.empty()) return errors;
-        return Ok{};
-    }
-
-    static std::string join_defines(const std::vector<std::string>& defines) {
-        std::string text;
-        for (const std::string& d : defines) text += (text.empty() ? "" : " ") + d;
-        return text;
-    }
-
-    CompiledDomain& d_;
-    const CompileOptions& options_;
-    CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
-    std::optional<std::vector<InputRead>> reads_;  // what preprocessing read; nullopt: inconsistent
+  CompiledDomain& d_;
+  const CompileOptions& options_;
+  CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
+  std::optional<std::vector<InputRead>> reads_;          // what preprocessing read; nullopt: inconsistent
 };
 
 }  // namespace
 
 Result<CompiledDomain> compile_domain(DomainSpec spec, PermutationPlan plan, const CompileOptions& options) {
-    CompiledDomain domain;
-    domain.spec = std::move(spec);
-    domain.plan = std::move(plan);
-    if (Status status = DomainCompiler(domain, options).run(); !status) return std::move(status).take_errors();
-    return domain;
+  CompiledDomain domain;
+  domain.spec = std::move(spec);
+  domain.plan = std::move(plan);
+  if (Status status = DomainCompiler(domain, options).run(); !status) return std::move(status).take_errors();
+  return domain;
 }
 
 }  // namespace shadergen

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "layout_check.h"
-#include "remote_cache.h"
 #include "reflection.h"
-#include "shadergen/diagnostic.h"
+#include "remote_cache.h"
 #include "shadergen/build.h"
+#include "shadergen/diagnostic.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
 
@@ -24,74 +24,74 @@ class RemoteCache;
 
 // One distinct SPIR-V blob; permutations with equal words share it.
 struct Blob {
-    std::vector<std::uint32_t> words;
-    std::string hash;  // SHA-256 of the words, hex
-    ReflectionInfo reflection;
-    bool fell_back = false;
-    std::string fallback_reason;
+  std::vector<std::uint32_t> words;
+  std::string hash;  // SHA-256 of the words, hex
+  ReflectionInfo reflection;
+  bool fell_back = false;
+  std::string fallback_reason;
 };
 
 enum class JobKind { raw, optimised, companion };
 
 // One thing to compile: a raw or optimised permutation or a companion shader.
 struct CompileJob {
-    JobKind kind = JobKind::raw;
-    std::uint32_t id = 0;          // raw/optimised ID, or companion index
-    std::vector<std::string> defines;
-    Stage stage = Stage::fragment;
-    std::filesystem::path path;
-    std::string label() const;     // "raw 37", "optimised 5", "companion tile" needs the name:
-    std::string name;              // companion name (empty otherwise)
-    bool vertex_half = false;      // the vertex half of a "program" permutation
-    // Filled while compiling:
-    int source = -1;               // index of its distinct preprocessed source
-    int blob = -1;                 // index into CompiledDomain::blobs
-    double preprocess_ms = 0.0;
+  JobKind kind = JobKind::raw;
+  std::uint32_t id = 0;  // raw/optimised ID, or companion index
+  std::vector<std::string> defines;
+  Stage stage = Stage::fragment;
+  std::filesystem::path path;
+  std::string label() const;  // "raw 37", "optimised 5", "companion tile" needs the name:
+  std::string name;           // companion name (empty otherwise)
+  bool vertex_half = false;   // the vertex half of a "program" permutation
+  // Filled while compiling:
+  int source = -1;  // index of its distinct preprocessed source
+  int blob = -1;    // index into CompiledDomain::blobs
+  double preprocess_ms = 0.0;
 };
 
 struct SourceRecord {
-    std::string key;        // cache key
-    std::size_t first_job = 0;
-    bool cache_hit = false;
-    double compile_ms = 0.0;
-    int blob = -1;
-    bool remote_hit = false;  // the cache hit came from the remote cache
+  std::string key;  // cache key
+  std::size_t first_job = 0;
+  bool cache_hit = false;
+  double compile_ms = 0.0;
+  int blob = -1;
+  bool remote_hit = false;  // the cache hit came from the remote cache
 };
 
 struct CompiledDomain {
-    DomainSpec spec;
-    PermutationPlan plan;
-    std::vector<CompileJob> jobs;
-    // Index into `jobs` by raw ID, optimised ID and companion index (-1: none, e.g. pruned),
-    // so looking a permutation up is constant time even with 65,536 raw IDs.
-    std::vector<int> raw_jobs, optimised_jobs, companion_jobs;
-    std::vector<int> raw_vertex_jobs, optimised_vertex_jobs;  // "program" form only
-    std::vector<SourceRecord> sources;
-    std::vector<Blob> blobs;
-    MergedLayout layout;
-    std::vector<std::filesystem::path> dependencies;  // spec, shaders, includes; sorted, unique
-    bool inputs_reused = false;       // source keys came from the input-set cache, no preprocessing
-    std::vector<PhaseTime> phases;    // preprocess (or input check), compile or load, reflect, layout
-    std::optional<RemoteCacheStats> remote;  // with a remote cache only
+  DomainSpec spec;
+  PermutationPlan plan;
+  std::vector<CompileJob> jobs;
+  // Index into `jobs` by raw ID, optimised ID and companion index (-1: none, e.g. pruned),
+  // so looking a permutation up is constant time even with 65,536 raw IDs.
+  std::vector<int> raw_jobs, optimised_jobs, companion_jobs;
+  std::vector<int> raw_vertex_jobs, optimised_vertex_jobs;  // "program" form only
+  std::vector<SourceRecord> sources;
+  std::vector<Blob> blobs;
+  MergedLayout layout;
+  std::vector<std::filesystem::path> dependencies;  // spec, shaders, includes; sorted, unique
+  bool inputs_reused = false;                       // source keys came from the input-set cache, no preprocessing
+  std::vector<PhaseTime> phases;                    // preprocess (or input check), compile or load, reflect, layout
+  std::optional<RemoteCacheStats> remote;           // with a remote cache only
 
-    // Blob of raw ID `id`, or nullptr when pruned. Likewise for optimised IDs and companions.
-    const Blob* raw_blob(std::uint32_t id) const;
-    const Blob* optimised_blob(std::uint32_t id) const;
-    const Blob* companion_blob(std::size_t index) const;
-    // The vertex half of a "program" permutation, or nullptr.
-    const Blob* raw_vertex_blob(std::uint32_t id) const;
-    const Blob* optimised_vertex_blob(std::uint32_t id) const;
+  // Blob of raw ID `id`, or nullptr when pruned. Likewise for optimised IDs and companions.
+  const Blob* raw_blob(std::uint32_t id) const;
+  const Blob* optimised_blob(std::uint32_t id) const;
+  const Blob* companion_blob(std::size_t index) const;
+  // The vertex half of a "program" permutation, or nullptr.
+  const Blob* raw_vertex_blob(std::uint32_t id) const;
+  const Blob* optimised_vertex_blob(std::uint32_t id) const;
 };
 
 struct CompileOptions {
-    unsigned jobs = 0;
-    const ContentCache* cache = nullptr;  // nullptr: no cache
-    const InputCache* inputs = nullptr;   // nullptr: always preprocess
-    std::string input_key;                // input_set_key() of this build; empty: always preprocess
-    bool verbose = false;
-    std::function<void(const std::string&)> log;
-    std::function<bool()> cancelled;
-    RemoteCache* remote = nullptr;        // nullptr: no remote cache; else asked after a local miss
+  unsigned jobs = 0;
+  const ContentCache* cache = nullptr;  // nullptr: no cache
+  const InputCache* inputs = nullptr;   // nullptr: always preprocess
+  std::string input_key;                // input_set_key() of this build; empty: always preprocess
+  bool verbose = false;
+  std::function<void(const std::string&)> log;
+  std::function<bool()> cancelled;
+  RemoteCache* remote = nullptr;  // nullptr: no remote cache; else asked after a local miss
 };
 
 // Preprocesses, deduplicates, compiles (or loads from the cache), optimises, validates and

@@ -16,10 +16,10 @@ namespace shadergen {
 using LiveLines = std::map<std::pair<std::string, int>, std::string>;
 
 struct JobFailure {
-    std::size_t job = 0;
-    Diagnostics errors;
-    // Every non-blank line of the job's preprocessed text; empty when unknown.
-    LiveLines lines;
+  std::size_t job = 0;
+  Diagnostics errors;
+  // Every non-blank line of the job's preprocessed text; empty when unknown.
+  LiveLines lines;
 };
 
 // Maps the lines of glslang's preprocessed text (one per source line, `#line N "file"` at

@@ -18,27 +18,27 @@
 namespace shadergen {
 
 struct GlslSource {
-    std::filesystem::path path;                      // the shader file
-    Stage stage = Stage::fragment;
-    std::vector<std::filesystem::path> include_dirs; // searched after the including file's folder
-    std::vector<std::string> defines;                // "NAME" (= 1) or "NAME=VALUE" (defines.h)
-    // The domain's fixed defines, same form, ahead of `defines`; none has a name in `defines`.
-    std::vector<std::string> fixed_defines;
-    TargetEnv target = TargetEnv::vulkan1_2;         // Vulkan and SPIR-V versions
+  std::filesystem::path path;  // the shader file
+  Stage stage = Stage::fragment;
+  std::vector<std::filesystem::path> include_dirs;  // searched after the including file's folder
+  std::vector<std::string> defines;                 // "NAME" (= 1) or "NAME=VALUE" (defines.h)
+  // The domain's fixed defines, same form, ahead of `defines`; none has a name in `defines`.
+  std::vector<std::string> fixed_defines;
+  TargetEnv target = TargetEnv::vulkan1_2;  // Vulkan and SPIR-V versions
 };
 
 // One file the preprocessor looked at: opened (with the SHA-256 of the bytes it read) or
 // probed on the include search path and not found. Together these decide the text.
 struct InputRead {
-    std::filesystem::path path;
-    bool found = false;
-    std::string digest;  // hex; empty when not found
+  std::filesystem::path path;
+  bool found = false;
+  std::string digest;  // hex; empty when not found
 };
 
 struct Preprocessed {
-    std::string text;                            // what the parser will see; the dedup key
-    std::vector<std::filesystem::path> includes; // every file #include opened, in order
-    std::vector<InputRead> reads;                // the shader, its includes and failed probes
+  std::string text;                             // what the parser will see; the dedup key
+  std::vector<std::filesystem::path> includes;  // every file #include opened, in order
+  std::vector<InputRead> reads;                 // the shader, its includes and failed probes
 };
 
 // The default target (Vulkan 1.2, SPIR-V 1.5), as target_description() writes it; GLSL 450

@@ -26,15 +26,15 @@
 namespace shadergen {
 
 struct InputSet {
-    std::vector<InputRead> files;          // sorted by path, one entry per path
-    std::vector<std::string> source_keys;  // content-cache key of each compile job, in job order
+  std::vector<InputRead> files;          // sorted by path, one entry per path
+  std::vector<std::string> source_keys;  // content-cache key of each compile job, in job order
 };
 
 // The spec and the SHA-256 of the very bytes it was parsed from (read once, so the two agree
 // even if the file is being edited). Errors are load_domain()'s.
 struct LoadedSpec {
-    DomainSpec spec;
-    std::string digest;  // empty when the bytes could not be read in one go (then no entry)
+  DomainSpec spec;
+  std::string digest;  // empty when the bytes could not be read in one go (then no entry)
 };
 Result<LoadedSpec> load_spec_with_digest(const std::filesystem::path& spec_path);
 
@@ -57,19 +57,19 @@ std::string encode_input_set(std::string_view key, const InputSet& set);
 std::optional<InputSet> decode_input_set(std::string_view key, std::string_view bytes);
 
 class InputCache {
-public:
-    InputCache() = default;  // disabled: every lookup misses, stores are dropped
-    explicit InputCache(std::filesystem::path cache_dir) : directory_(std::move(cache_dir) / "inputs") {}
+ public:
+  InputCache() = default;  // disabled: every lookup misses, stores are dropped
+  explicit InputCache(std::filesystem::path cache_dir) : directory_(std::move(cache_dir) / "inputs") {}
 
-    bool enabled() const { return !directory_.empty(); }
-    std::filesystem::path entry_path(std::string_view key) const { return directory_ / std::string(key); }
+  bool enabled() const { return !directory_.empty(); }
+  std::filesystem::path entry_path(std::string_view key) const { return directory_ / std::string(key); }
 
-    std::optional<InputSet> load(std::string_view key) const;
-    // Errors name the entry path; callers treat them as warnings.
-    Status store(std::string_view key, const InputSet& set) const;
+  std::optional<InputSet> load(std::string_view key) const;
+  // Errors name the entry path; callers treat them as warnings.
+  Status store(std::string_view key, const InputSet& set) const;
 
-private:
-    std::filesystem::path directory_;
+ private:
+  std::filesystem::path directory_;
 };
 
 }  // namespace shadergen

@@ -7,394 +7,392 @@
 namespace shadergen::json {
 
 const char* type_name(Type type) {
-    switch (type) {
-        case Type::null: return "null";
-        case Type::boolean: return "a boolean";
-        case Type::number: return "a number";
-        case Type::string: return "a string";
-        case Type::array: return "an array";
-        case Type::object: return "an object";
-    }
-    return "?";
+  switch (type) {
+    case Type::null: return "null";
+    case Type::boolean: return "a boolean";
+    case Type::number: return "a number";
+    case Type::string: return "a string";
+    case Type::array: return "an array";
+    case Type::object: return "an object";
+  }
+  return "?";
 }
 
 const Value* Value::find(std::string_view key) const {
-    for (const Member& member : object)
-        if (member.first == key) return &member.second;
-    return nullptr;
+  for (const Member& member : object)
+    if (member.first == key) return &member.second;
+  return nullptr;
 }
 
 namespace {
 
 class Parser {
-public:
-    Parser(std::string_view text, const std::string& file) : text_(text), file_(file) {}
+ public:
+  Parser(std::string_view text, const std::string& file) : text_(text), file_(file) {}
 
-    Result<Value> run() {
-        if (text_.size() > kMaxJsonBytes)
-            return fail("spec is " + std::to_string(text_.size()) + " bytes; the limit is " +
-                        std::to_string(kMaxJsonBytes));
-        skip_space();
-        Value root;
-        if (!parse_value(root, 0)) return error_;
-        skip_space();
-        if (pos_ != text_.size()) return fail("unexpected text after the JSON document");
-        return root;
+  Result<Value> run() {
+    if (text_.size() > kMaxJsonBytes)
+      return fail("spec is " + std::to_string(text_.size()) + " bytes; the limit is " + std::to_string(kMaxJsonBytes));
+    skip_space();
+    Value root;
+    if (!parse_value(root, 0)) return error_;
+    skip_space();
+    if (pos_ != text_.size()) return fail("unexpected text after the JSON document");
+    return root;
+  }
+
+ private:
+  Diagnostic fail(std::string message) {
+    error_ = Diagnostic{Severity::error, file_, line_, column(), std::move(message)};
+    return error_;
+  }
+  int column() const { return static_cast<int>(pos_ - line_start_) + 1; }
+  bool at_end() const { return pos_ >= text_.size(); }
+  char peek() const { return at_end() ? '\0' : text_[pos_]; }
+
+  void skip_space() {
+    while (!at_end()) {
+      char c = text_[pos_];
+      if (c == '\n') {
+        ++pos_;
+        ++line_;
+        line_start_ = pos_;
+      } else if (c == ' ' || c == '\t' || c == '\r') {
+        ++pos_;
+      } else {
+        break;
+      }
     }
+  }
 
-private:
-    Diagnostic fail(std::string message) {
-        error_ = Diagnostic{Severity::error, file_, line_, column(), std::move(message)};
-        return error_;
+  bool parse_value(Value& out, int depth) {
+    out.line = line_;
+    out.column = column();
+    if (++values_ > kMaxJsonValues) return fail("more than " + std::to_string(kMaxJsonValues) + " JSON values"), false;
+    if (at_end()) return fail("unexpected end of file (the spec is truncated?)"), false;
+    char c = peek();
+    if (c == '{' || c == '[') {
+      if (depth >= kMaxJsonDepth)
+        return fail("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels"), false;
+      return c == '{' ? parse_object(out, depth + 1) : parse_array(out, depth + 1);
     }
-    int column() const { return static_cast<int>(pos_ - line_start_) + 1; }
-    bool at_end() const { return pos_ >= text_.size(); }
-    char peek() const { return at_end() ? '\0' : text_[pos_]; }
-
-    void skip_space() {
-        while (!at_end()) {
-            char c = text_[pos_];
-            if (c == '\n') {
-                ++pos_;
-                ++line_;
-                line_start_ = pos_;
-            } else if (c == ' ' || c == '\t' || c == '\r') {
-                ++pos_;
-            } else {
-                break;
-            }
-        }
+    if (c == '"') {
+      out.type = Type::string;
+      return parse_string(out.string);
     }
+    if (c == '-' || (c >= '0' && c <= '9')) return parse_number(out);
+    if (match_word("true")) return out.type = Type::boolean, out.boolean = true, true;
+    if (match_word("false")) return out.type = Type::boolean, out.boolean = false, true;
+    if (match_word("null")) return out.type = Type::null, true;
+    return fail(std::string("unexpected character '") + printable(c) + "'"), false;
+  }
 
-    bool parse_value(Value& out, int depth) {
-        out.line = line_;
-        out.column = column();
-        if (++values_ > kMaxJsonValues)
-            return fail("more than " + std::to_string(kMaxJsonValues) + " JSON values"), false;
-        if (at_end()) return fail("unexpected end of file (the spec is truncated?)"), false;
-        char c = peek();
-        if (c == '{' || c == '[') {
-            if (depth >= kMaxJsonDepth)
-                return fail("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels"), false;
-            return c == '{' ? parse_object(out, depth + 1) : parse_array(out, depth + 1);
-        }
-        if (c == '"') {
-            out.type = Type::string;
-            return parse_string(out.string);
-        }
-        if (c == '-' || (c >= '0' && c <= '9')) return parse_number(out);
-        if (match_word("true")) return out.type = Type::boolean, out.boolean = true, true;
-        if (match_word("false")) return out.type = Type::boolean, out.boolean = false, true;
-        if (match_word("null")) return out.type = Type::null, true;
-        return fail(std::string("unexpected character '") + printable(c) + "'"), false;
+  static std::string printable(char c) {
+    if (static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f) return std::string(1, c);
+    char buffer[8];
+    std::snprintf(buffer, sizeof buffer, "\\x%02x", static_cast<unsigned char>(c));
+    return buffer;
+  }
+
+  bool match_word(std::string_view word) {
+    if (text_.substr(pos_, word.size()) != word) return false;
+    pos_ += word.size();
+    return true;
+  }
+
+  bool parse_object(Value& out, int depth) {
+    out.type = Type::object;
+    ++pos_;  // '{'
+    skip_space();
+    if (peek() == '}') return ++pos_, true;
+    for (;;) {
+      skip_space();
+      if (peek() != '"') {
+        if (at_end()) return fail("unexpected end of file inside an object (the spec is truncated?)"), false;
+        return fail("expected a quoted key"), false;
+      }
+      int key_line = line_, key_column = column();
+      std::string key;
+      if (!parse_string(key)) return false;
+      if (out.find(key)) {
+        error_ = Diagnostic{Severity::error, file_, key_line, key_column, "duplicate key \"" + key + "\""};
+        return false;
+      }
+      skip_space();
+      if (peek() != ':') return fail("expected ':' after key \"" + key + "\""), false;
+      ++pos_;
+      skip_space();
+      Value member;
+      if (!parse_value(member, depth)) return false;
+      out.object.push_back(Member{std::move(key), std::move(member)});
+      skip_space();
+      if (peek() == ',') {
+        ++pos_;
+        continue;
+      }
+      if (peek() == '}') return ++pos_, true;
+      if (at_end()) return fail("unexpected end of file inside an object (the spec is truncated?)"), false;
+      return fail("expected ',' or '}' in an object"), false;
     }
+  }
 
-    static std::string printable(char c) {
-        if (static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f)
-            return std::string(1, c);
-        char buffer[8];
-        std::snprintf(buffer, sizeof buffer, "\\x%02x", static_cast<unsigned char>(c));
-        return buffer;
+  bool parse_array(Value& out, int depth) {
+    out.type = Type::array;
+    ++pos_;  // '['
+    skip_space();
+    if (peek() == ']') return ++pos_, true;
+    for (;;) {
+      skip_space();
+      Value item;
+      if (!parse_value(item, depth)) return false;
+      out.array.push_back(std::move(item));
+      skip_space();
+      if (peek() == ',') {
+        ++pos_;
+        continue;
+      }
+      if (peek() == ']') return ++pos_, true;
+      if (at_end()) return fail("unexpected end of file inside an array (the spec is truncated?)"), false;
+      return fail("expected ',' or ']' in an array"), false;
     }
+  }
 
-    bool match_word(std::string_view word) {
-        if (text_.substr(pos_, word.size()) != word) return false;
-        pos_ += word.size();
-        return true;
+  bool parse_string(std::string& out) {
+    ++pos_;  // opening quote
+    for (;;) {
+      if (at_end()) return fail("unterminated string"), false;
+      char c = text_[pos_++];
+      if (c == '"') return true;
+      if (c == '\n') return --pos_, fail("newline inside a string"), false;
+      if (static_cast<unsigned char>(c) < 0x20) return --pos_, fail("control character inside a string"), false;
+      if (c != '\\') {
+        out += c;
+        continue;
+      }
+      if (at_end()) return fail("unterminated string"), false;
+      char e = text_[pos_++];
+      switch (e) {
+        case '"': out += '"'; break;
+        case '\\': out += '\\'; break;
+        case '/': out += '/'; break;
+        case 'b': out += '\b'; break;
+        case 'f': out += '\f'; break;
+        case 'n': out += '\n'; break;
+        case 'r': out += '\r'; break;
+        case 't': out += '\t'; break;
+        case 'u':
+          if (!parse_unicode_escape(out)) return false;
+          break;
+        default: return --pos_, fail(std::string("invalid escape '\\") + printable(e) + "'"), false;
+      }
     }
+  }
 
-    bool parse_object(Value& out, int depth) {
-        out.type = Type::object;
-        ++pos_;  // '{'
-        skip_space();
-        if (peek() == '}') return ++pos_, true;
-        for (;;) {
-            skip_space();
-            if (peek() != '"') {
-                if (at_end()) return fail("unexpected end of file inside an object (the spec is truncated?)"), false;
-                return fail("expected a quoted key"), false;
-            }
-            int key_line = line_, key_column = column();
-            std::string key;
-            if (!parse_string(key)) return false;
-            if (out.find(key)) {
-                error_ = Diagnostic{Severity::error, file_, key_line, key_column,
-                                    "duplicate key \"" + key + "\""};
-                return false;
-            }
-            skip_space();
-            if (peek() != ':') return fail("expected ':' after key \"" + key + "\""), false;
-            ++pos_;
-            skip_space();
-            Value member;
-            if (!parse_value(member, depth)) return false;
-            out.object.push_back(Member{std::move(key), std::move(member)});
-            skip_space();
-            if (peek() == ',') {
-                ++pos_;
-                continue;
-            }
-            if (peek() == '}') return ++pos_, true;
-            if (at_end()) return fail("unexpected end of file inside an object (the spec is truncated?)"), false;
-            return fail("expected ',' or '}' in an object"), false;
-        }
+  bool parse_hex4(unsigned& code) {
+    if (pos_ + 4 > text_.size()) return fail("truncated \\u escape"), false;
+    code = 0;
+    for (int i = 0; i < 4; ++i) {
+      char h = text_[pos_++];
+      code <<= 4;
+      if (h >= '0' && h <= '9')
+        code |= static_cast<unsigned>(h - '0');
+      else if (h >= 'a' && h <= 'f')
+        code |= static_cast<unsigned>(h - 'a' + 10);
+      else if (h >= 'A' && h <= 'F')
+        code |= static_cast<unsigned>(h - 'A' + 10);
+      else
+        return fail("invalid hex digit in \\u escape"), false;
     }
+    return true;
+  }
 
-    bool parse_array(Value& out, int depth) {
-        out.type = Type::array;
-        ++pos_;  // '['
-        skip_space();
-        if (peek() == ']') return ++pos_, true;
-        for (;;) {
-            skip_space();
-            Value item;
-            if (!parse_value(item, depth)) return false;
-            out.array.push_back(std::move(item));
-            skip_space();
-            if (peek() == ',') {
-                ++pos_;
-                continue;
-            }
-            if (peek() == ']') return ++pos_, true;
-            if (at_end()) return fail("unexpected end of file inside an array (the spec is truncated?)"), false;
-            return fail("expected ',' or ']' in an array"), false;
-        }
+  bool parse_unicode_escape(std::string& out) {
+    unsigned code = 0;
+    if (!parse_hex4(code)) return false;
+    if (code >= 0xD800 && code <= 0xDBFF) {
+      if (!match_word("\\u")) return fail("unpaired UTF-16 surrogate"), false;
+      unsigned low = 0;
+      if (!parse_hex4(low)) return false;
+      if (low < 0xDC00 || low > 0xDFFF) return fail("unpaired UTF-16 surrogate"), false;
+      code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
+    } else if (code >= 0xDC00 && code <= 0xDFFF) {
+      return fail("unpaired UTF-16 surrogate"), false;
     }
+    append_utf8(out, code);
+    return true;
+  }
 
-    bool parse_string(std::string& out) {
-        ++pos_;  // opening quote
-        for (;;) {
-            if (at_end()) return fail("unterminated string"), false;
-            char c = text_[pos_++];
-            if (c == '"') return true;
-            if (c == '\n') return --pos_, fail("newline inside a string"), false;
-            if (static_cast<unsigned char>(c) < 0x20) return --pos_, fail("control character inside a string"), false;
-            if (c != '\\') {
-                out += c;
-                continue;
-            }
-            if (at_end()) return fail("unterminated string"), false;
-            char e = text_[pos_++];
-            switch (e) {
-                case '"': out += '"'; break;
-                case '\\': out += '\\'; break;
-                case '/': out += '/'; break;
-                case 'b': out += '\b'; break;
-                case 'f': out += '\f'; break;
-                case 'n': out += '\n'; break;
-                case 'r': out += '\r'; break;
-                case 't': out += '\t'; break;
-                case 'u':
-                    if (!parse_unicode_escape(out)) return false;
-                    break;
-                default: return --pos_, fail(std::string("invalid escape '\\") + printable(e) + "'"), false;
-            }
-        }
+  static void append_utf8(std::string& out, unsigned code) {
+    auto byte = [&](unsigned v) { out += static_cast<char>(v); };
+    if (code < 0x80) {
+      byte(code);
+    } else if (code < 0x800) {
+      byte(0xC0 | (code >> 6));
+      byte(0x80 | (code & 0x3F));
+    } else if (code < 0x10000) {
+      byte(0xE0 | (code >> 12));
+      byte(0x80 | ((code >> 6) & 0x3F));
+      byte(0x80 | (code & 0x3F));
+    } else {
+      byte(0xF0 | (code >> 18));
+      byte(0x80 | ((code >> 12) & 0x3F));
+      byte(0x80 | ((code >> 6) & 0x3F));
+      byte(0x80 | (code & 0x3F));
     }
+  }
 
-    bool parse_hex4(unsigned& code) {
-        if (pos_ + 4 > text_.size()) return fail("truncated \\u escape"), false;
-        code = 0;
-        for (int i = 0; i < 4; ++i) {
-            char h = text_[pos_++];
-            code <<= 4;
-            if (h >= '0' && h <= '9') code |= static_cast<unsigned>(h - '0');
-            else if (h >= 'a' && h <= 'f') code |= static_cast<unsigned>(h - 'a' + 10);
-            else if (h >= 'A' && h <= 'F') code |= static_cast<unsigned>(h - 'A' + 10);
-            else return fail("invalid hex digit in \\u escape"), false;
-        }
-        return true;
+  bool parse_number(Value& out) {
+    std::size_t start = pos_;
+    if (peek() == '-') ++pos_;
+    if (peek() == '0') {
+      ++pos_;
+    } else if (peek() >= '1' && peek() <= '9') {
+      while (peek() >= '0' && peek() <= '9') ++pos_;
+    } else {
+      return fail("invalid number"), false;
     }
-
-    bool parse_unicode_escape(std::string& out) {
-        unsigned code = 0;
-        if (!parse_hex4(code)) return false;
-        if (code >= 0xD800 && code <= 0xDBFF) {
-            if (!match_word("\\u")) return fail("unpaired UTF-16 surrogate"), false;
-            unsigned low = 0;
-            if (!parse_hex4(low)) return false;
-            if (low < 0xDC00 || low > 0xDFFF) return fail("unpaired UTF-16 surrogate"), false;
-            code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
-        } else if (code >= 0xDC00 && code <= 0xDFFF) {
-            return fail("unpaired UTF-16 surrogate"), false;
-        }
-        append_utf8(out, code);
-        return true;
+    if (peek() == '.') {
+      ++pos_;
+      if (!(peek() >= '0' && peek() <= '9')) return fail("invalid number: digits must follow '.'"), false;
+      while (peek() >= '0' && peek() <= '9') ++pos_;
     }
-
-    static void append_utf8(std::string& out, unsigned code) {
-        auto byte = [&](unsigned v) { out += static_cast<char>(v); };
-        if (code < 0x80) {
-            byte(code);
-        } else if (code < 0x800) {
-            byte(0xC0 | (code >> 6));
-            byte(0x80 | (code & 0x3F));
-        } else if (code < 0x10000) {
-            byte(0xE0 | (code >> 12));
-            byte(0x80 | ((code >> 6) & 0x3F));
-            byte(0x80 | (code & 0x3F));
-        } else {
-            byte(0xF0 | (code >> 18));
-            byte(0x80 | ((code >> 12) & 0x3F));
-            byte(0x80 | ((code >> 6) & 0x3F));
-            byte(0x80 | (code & 0x3F));
-        }
+    if (peek() == 'e' || peek() == 'E') {
+      ++pos_;
+      if (peek() == '+' || peek() == '-') ++pos_;
+      if (!(peek() >= '0' && peek() <= '9')) return fail("invalid number: exponent has no digits"), false;
+      while (peek() >= '0' && peek() <= '9') ++pos_;
     }
+    std::string digits(text_.substr(start, pos_ - start));
+    out.type = Type::number;
+    out.number = std::strtod(digits.c_str(), nullptr);
+    if (!std::isfinite(out.number)) return fail("number out of range: " + digits), false;
+    return true;
+  }
 
-    bool parse_number(Value& out) {
-        std::size_t start = pos_;
-        if (peek() == '-') ++pos_;
-        if (peek() == '0') {
-            ++pos_;
-        } else if (peek() >= '1' && peek() <= '9') {
-            while (peek() >= '0' && peek() <= '9') ++pos_;
-        } else {
-            return fail("invalid number"), false;
-        }
-        if (peek() == '.') {
-            ++pos_;
-            if (!(peek() >= '0' && peek() <= '9')) return fail("invalid number: digits must follow '.'"), false;
-            while (peek() >= '0' && peek() <= '9') ++pos_;
-        }
-        if (peek() == 'e' || peek() == 'E') {
-            ++pos_;
-            if (peek() == '+' || peek() == '-') ++pos_;
-            if (!(peek() >= '0' && peek() <= '9')) return fail("invalid number: exponent has no digits"), false;
-            while (peek() >= '0' && peek() <= '9') ++pos_;
-        }
-        std::string digits(text_.substr(start, pos_ - start));
-        out.type = Type::number;
-        out.number = std::strtod(digits.c_str(), nullptr);
-        if (!std::isfinite(out.number)) return fail("number out of range: " + digits), false;
-        return true;
-    }
-
-    std::string_view text_;
-    const std::string& file_;
-    std::size_t pos_ = 0;
-    std::size_t line_start_ = 0;
-    std::size_t values_ = 0;
-    int line_ = 1;
-    Diagnostic error_;
+  std::string_view text_;
+  const std::string& file_;
+  std::size_t pos_ = 0;
+  std::size_t line_start_ = 0;
+  std::size_t values_ = 0;
+  int line_ = 1;
+  Diagnostic error_;
 };
 
 }  // namespace
 
-Result<Value> parse(std::string_view text, const std::string& file) {
-    return Parser(text, file).run();
-}
+Result<Value> parse(std::string_view text, const std::string& file) { return Parser(text, file).run(); }
 
 std::string quote(std::string_view text) {
-    std::string out = "\"";
-    for (char c : text) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\r': out += "\\r"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buffer[8];
-                    std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned char>(c));
-                    out += buffer;
-                } else {
-                    out += c;
-                }
+  std::string out = "\"";
+  for (char c : text) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buffer[8];
+          std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned char>(c));
+          out += buffer;
+        } else {
+          out += c;
         }
     }
-    return out + '"';
+  }
+  return out + '"';
 }
 
 void Writer::newline() {
-    out_ += '\n';
-    out_.append(first_in_container_.size() * 2, ' ');
+  out_ += '\n';
+  out_.append(first_in_container_.size() * 2, ' ');
 }
 
 void Writer::before_value() {
-    if (after_key_) {
-        after_key_ = false;
-        return;
-    }
-    if (first_in_container_.empty()) return;
-    if (!first_in_container_.back()) out_ += ',';
-    first_in_container_.back() = false;
-    newline();
+  if (after_key_) {
+    after_key_ = false;
+    return;
+  }
+  if (first_in_container_.empty()) return;
+  if (!first_in_container_.back()) out_ += ',';
+  first_in_container_.back() = false;
+  newline();
 }
 
 void Writer::begin_object() {
-    before_value();
-    out_ += '{';
-    first_in_container_.push_back(true);
+  before_value();
+  out_ += '{';
+  first_in_container_.push_back(true);
 }
 
 void Writer::end_object() {
-    bool empty = first_in_container_.back();
-    first_in_container_.pop_back();
-    if (!empty) newline();
-    out_ += '}';
+  bool empty = first_in_container_.back();
+  first_in_container_.pop_back();
+  if (!empty) newline();
+  out_ += '}';
 }
 
 void Writer::begin_array() {
-    before_value();
-    out_ += '[';
-    first_in_container_.push_back(true);
+  before_value();
+  out_ += '[';
+  first_in_container_.push_back(true);
 }
 
 void Writer::end_array() {
-    bool empty = first_in_container_.back();
-    first_in_container_.pop_back();
-    if (!empty) newline();
-    out_ += ']';
+  bool empty = first_in_container_.back();
+  first_in_container_.pop_back();
+  if (!empty) newline();
+  out_ += ']';
 }
 
 void Writer::key(std::string_view name) {
-    before_value();
-    out_ += quote(name);
-    out_ += ": ";
-    after_key_ = true;
+  before_value();
+  out_ += quote(name);
+  out_ += ": ";
+  after_key_ = true;
 }
 
 void Writer::value(std::string_view text) {
-    before_value();
-    out_ += quote(text);
+  before_value();
+  out_ += quote(text);
 }
 
 void Writer::value(std::int64_t number) {
-    before_value();
-    out_ += std::to_string(number);
+  before_value();
+  out_ += std::to_string(number);
 }
 
 void Writer::value(double number) {
-    before_value();
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", number);
-    out_ += buffer;
+  before_value();
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", number);
+  out_ += buffer;
 }
 
 void Writer::value(bool flag) {
-    before_value();
-    out_ += flag ? "true" : "false";
+  before_value();
+  out_ += flag ? "true" : "false";
 }
 
 void Writer::null() {
-    before_value();
-    out_ += "null";
+  before_value();
+  out_ += "null";
 }
 
 void Writer::inline_string_array(const std::vector<std::string>& items) {
-    before_value();
-    out_ += '[';
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (i) out_ += ", ";
-        out_ += quote(items[i]);
-    }
-    out_ += ']';
+  before_value();
+  out_ += '[';
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i) out_ += ", ";
+    out_ += quote(items[i]);
+  }
+  out_ += ']';
 }
 
 std::string Writer::take() {
-    out_ += '\n';
-    return std::move(out_);
+  out_ += '\n';
+  return std::move(out_);
 }
 
 }  // namespace shadergen::json

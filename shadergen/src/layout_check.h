@@ -11,20 +11,20 @@
 namespace shadergen {
 
 struct LabelledReflection {
-    std::string label;      // "raw 37 (SKY SUN_LIGHT)", "companion tile"
-    Stage stage = Stage::fragment;
-    bool permuted = false;  // a permutation of the uber-shader (outputs must agree)
-    const ReflectionInfo* info = nullptr;
+  std::string label;  // "raw 37 (SKY SUN_LIGHT)", "companion tile"
+  Stage stage = Stage::fragment;
+  bool permuted = false;  // a permutation of the uber-shader (outputs must agree)
+  const ReflectionInfo* info = nullptr;
 };
 
 struct PushConstantInfo {
-    std::uint32_t size = 0;
-    std::uint32_t stages = 0;
+  std::uint32_t size = 0;
+  std::uint32_t stages = 0;
 };
 
 struct MergedLayout {
-    std::vector<BindingInfo> bindings;          // union, sorted by (set, binding); stages OR-ed
-    std::vector<PushConstantInfo> push_constants;  // one range covering every stage's block, or none
+  std::vector<BindingInfo> bindings;             // union, sorted by (set, binding); stages OR-ed
+  std::vector<PushConstantInfo> push_constants;  // one range covering every stage's block, or none
 };
 
 // Fails, naming both blobs, when two blobs give one (set, binding) a different kind or count,

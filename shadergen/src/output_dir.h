@@ -17,33 +17,33 @@
 namespace shadergen {
 
 class StagedOutput {
-public:
-    explicit StagedOutput(std::filesystem::path out_dir) : out_dir_(std::move(out_dir)) {}
+ public:
+  explicit StagedOutput(std::filesystem::path out_dir) : out_dir_(std::move(out_dir)) {}
 
-    // `relative` uses '/' separators and stays inside the folder.
-    void add(const std::string& relative, std::string bytes) { files_[relative] = std::move(bytes); }
+  // `relative` uses '/' separators and stays inside the folder.
+  void add(const std::string& relative, std::string bytes) { files_[relative] = std::move(bytes); }
 
-    // True when the folder already holds exactly these files with exactly these bytes.
-    bool unchanged() const;
+  // True when the folder already holds exactly these files with exactly these bytes.
+  bool unchanged() const;
 
-    // Writes the new folder and swaps it in. Does nothing if unchanged(). On failure the old
-    // folder is intact and no staging folder is left behind; errors name the output path.
-    // `cancelled` (may be empty) is asked once more after staging, before the swap, so an
-    // interrupt that arrives while files are written still leaves the old folder in place.
-    //
-    // Concurrency: the whole commit runs under an exclusive flock() on the parent folder, so
-    // builds into the same output take turns; the second finds the folder unchanged. Under
-    // that lock any staging or set-aside folder of this output is a leftover of a killed
-    // build: it is removed, or put back as the output if the kill came between the renames.
-    Result<bool> commit(const std::function<bool()>& cancelled = {});
+  // Writes the new folder and swaps it in. Does nothing if unchanged(). On failure the old
+  // folder is intact and no staging folder is left behind; errors name the output path.
+  // `cancelled` (may be empty) is asked once more after staging, before the swap, so an
+  // interrupt that arrives while files are written still leaves the old folder in place.
+  //
+  // Concurrency: the whole commit runs under an exclusive flock() on the parent folder, so
+  // builds into the same output take turns; the second finds the folder unchanged. Under
+  // that lock any staging or set-aside folder of this output is a leftover of a killed
+  // build: it is removed, or put back as the output if the kill came between the renames.
+  Result<bool> commit(const std::function<bool()>& cancelled = {});
 
-private:
-    Status stage(const std::filesystem::path& staging) const;
-    void clear_leftovers() const;
-    Status swap_in(const std::filesystem::path& staging);
+ private:
+  Status stage(const std::filesystem::path& staging) const;
+  void clear_leftovers() const;
+  Status swap_in(const std::filesystem::path& staging);
 
-    std::filesystem::path out_dir_;
-    std::map<std::string, std::string> files_;
+  std::filesystem::path out_dir_;
+  std::map<std::string, std::string> files_;
 };
 
 }  // namespace shadergen

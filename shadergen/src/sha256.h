@@ -13,22 +13,22 @@
 namespace shadergen {
 
 class Sha256 {
-public:
-    Sha256();
-    Sha256& update(std::span<const std::uint8_t> bytes);
-    Sha256& update(std::string_view text);
-    // A length-prefixed field, so ("ab","c") and ("a","bc") hash differently.
-    Sha256& field(std::string_view text);
-    std::array<std::uint8_t, 32> finish();
-    std::string finish_hex();
+ public:
+  Sha256();
+  Sha256& update(std::span<const std::uint8_t> bytes);
+  Sha256& update(std::string_view text);
+  // A length-prefixed field, so ("ab","c") and ("a","bc") hash differently.
+  Sha256& field(std::string_view text);
+  std::array<std::uint8_t, 32> finish();
+  std::string finish_hex();
 
-private:
-    void compress(const std::uint8_t* block);
+ private:
+  void compress(const std::uint8_t* block);
 
-    std::array<std::uint32_t, 8> state_;
-    std::array<std::uint8_t, 64> buffer_{};
-    std::size_t buffered_ = 0;
-    std::uint64_t total_bytes_ = 0;
+  std::array<std::uint32_t, 8> state_;
+  std::array<std::uint8_t, 64> buffer_{};
+  std::size_t buffered_ = 0;
+  std::uint64_t total_bytes_ = 0;
 };
 
 std::string sha256_hex(std::string_view text);

@@ -15,11 +15,11 @@ namespace shadergen {
 Status validate_spirv(std::span<const std::uint32_t> words, TargetEnv env = TargetEnv::vulkan1_2);
 
 struct OptimisedBlob {
-    std::vector<std::uint32_t> words;
-    // The optimiser failed or produced a blob the validator rejects; `words` is then the
-    // validated unoptimised input and `fallback_reason` says why.
-    bool fell_back = false;
-    std::string fallback_reason;
+  std::vector<std::uint32_t> words;
+  // The optimiser failed or produced a blob the validator rejects; `words` is then the
+  // validated unoptimised input and `fallback_reason` says why.
+  bool fell_back = false;
+  std::string fallback_reason;
 };
 
 // Validates the input (an invalid input is an error), runs the performance passes, validates

@@ -9,9 +9,9 @@ namespace shadergen::fuzz {
 // A broken property is a finding: print it and abort, so libFuzzer saves the input and a
 // replay test fails with the message.
 inline void require(bool holds, const char* property) {
-    if (holds) return;
-    std::fprintf(stderr, "fuzz: property violated: %s\n", property);
-    std::abort();
+  if (holds) return;
+  std::fprintf(stderr, "fuzz: property violated: %s\n", property);
+  std::abort();
 }
 
 }  // namespace shadergen::fuzz

@@ -11,11 +11,11 @@ namespace {
 
 // Runs before main(), in sanitizer builds only (cmake/Sanitizers.cmake links this file).
 __attribute__((constructor)) void keep_vulkan_libraries_loaded() {
-    // Only a process linked with the Vulkan loader renders; the others are left alone.
-    if (dlopen("libvulkan.so.1", RTLD_LAZY | RTLD_NOLOAD) == nullptr) return;
-    // A library that is not installed is skipped: dlopen then only returns null.
-    const char* const libraries[] = {"libvulkan_lvp.so", "libVkLayer_khronos_validation.so"};
-    for (const char* library : libraries) dlopen(library, RTLD_LAZY | RTLD_NODELETE);
+  // Only a process linked with the Vulkan loader renders; the others are left alone.
+  if (dlopen("libvulkan.so.1", RTLD_LAZY | RTLD_NOLOAD) == nullptr) return;
+  // A library that is not installed is skipped: dlopen then only returns null.
+  const char* const libraries[] = {"libvulkan_lvp.so", "libVkLayer_khronos_validation.so"};
+  for (const char* library : libraries) dlopen(library, RTLD_LAZY | RTLD_NODELETE);
 }
 
 }  // namespace

@@ -9,10 +9,10 @@
 namespace {
 
 struct BadInput {
-    const char* name;
-    std::string from, to;   // the edit to valued.json
-    std::string at;         // the text whose first character the message points at (after the edit)
-    std::string message;    // after "<file>:<line>:<column>: error: "
+  const char* name;
+  std::string from, to;  // the edit to valued.json
+  std::string at;        // the text whose first character the message points at (after the edit)
+  std::string message;   // after "<file>:<line>:<column>: error: "
 };
 
 void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
@@ -20,29 +20,29 @@ void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
 class BadSpecInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(BadSpecInput, ExactMessageExitOneAndTheOutputIntact) {
-    const BadInput& c = GetParam();
-    sgtest::TempDir dir("bad-input");
-    for (const auto& [name, bytes] : sgtest::snapshot(sgtest::fixtures_dir() / "valued"))
-        sgtest::write_file(dir / ("spec/" + name), bytes);
-    const sgtest::fs::path spec = dir / "spec" / "valued.json";
-    const std::vector<std::string> args = {"build", spec.string(), "--out", (dir / "out").string(), "--cache-dir",
-                                           (dir / "cache").string()};
-    sgtest::ProcessResult good = sgtest::run_process(sgtest::shadergen_exe(), args);
-    ASSERT_EQ(good.exit_code, 0) << good.err;
-    auto before = sgtest::snapshot(dir / "out");
+  const BadInput& c = GetParam();
+  sgtest::TempDir dir("bad-input");
+  for (const auto& [name, bytes] : sgtest::snapshot(sgtest::fixtures_dir() / "valued"))
+    sgtest::write_file(dir / ("spec/" + name), bytes);
+  const sgtest::fs::path spec = dir / "spec" / "valued.json";
+  const std::vector<std::string> args = {"build",       spec.string(),           "--out", (dir / "out").string(),
+                                         "--cache-dir", (dir / "cache").string()};
+  sgtest::ProcessResult good = sgtest::run_process(sgtest::shadergen_exe(), args);
+  ASSERT_EQ(good.exit_code, 0) << good.err;
+  auto before = sgtest::snapshot(dir / "out");
 
-    std::string text = sgtest::read_file(spec);
-    std::size_t edit = text.find(c.from);
-    ASSERT_NE(edit, std::string::npos) << "test bug: " << c.from;
-    text.replace(edit, c.from.size(), c.to);
-    sgtest::write_file(spec, text);
-    std::size_t at = text.find(c.at);
-    ASSERT_NE(at, std::string::npos) << "test bug: " << c.at;
+  std::string text = sgtest::read_file(spec);
+  std::size_t edit = text.find(c.from);
+  ASSERT_NE(edit, std::string::npos) << "test bug: " << c.from;
+  text.replace(edit, c.from.size(), c.to);
+  sgtest::write_file(spec, text);
+  std::size_t at = text.find(c.at);
+  ASSERT_NE(at, std::string::npos) << "test bug: " << c.at;
 
-    sgtest::ProcessResult bad = sgtest::run_process(sgtest::shadergen_exe(), args);
-    EXPECT_EQ(bad.exit_code, 1);
-    EXPECT_EQ(bad.err, sgtest::where(spec.string(), text, at) + ": error: " + c.message + "\n");
-    EXPECT_EQ(sgtest::snapshot(dir / "out"), before);
+  sgtest::ProcessResult bad = sgtest::run_process(sgtest::shadergen_exe(), args);
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_EQ(bad.err, sgtest::where(spec.string(), text, at) + ": error: " + c.message + "\n");
+  EXPECT_EQ(sgtest::snapshot(dir / "out"), before);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -59,10 +59,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "raw.impossible[0].when: 'SHARPEN' is a boolean feature; it cannot be compared with a number (write "
                  "SHARPEN or !SHARPEN) in \"TAA_QUALITY == 0 && SHARPEN == 1\" at column 21 (rules here name raw "
                  "features)"},
-        BadInput{"equality_on_an_unknown_value", "\"TONEMAP != LINEAR\"", "\"TONEMAP == SEPIA\"", "\"TONEMAP == SEPIA\"",
+        BadInput{"equality_on_an_unknown_value", "\"TONEMAP != LINEAR\"", "\"TONEMAP == SEPIA\"",
+                 "\"TONEMAP == SEPIA\"",
                  "optimised.bits[1].when: 'TONEMAP' has no value SEPIA (values: LINEAR, ACES, FILMIC) in \"TONEMAP == "
                  "SEPIA\" at column 12 (rules here name raw features)"},
-        BadInput{"unknown_target_env", "\"format\": 1,", "\"format\": 1, \"target_env\": \"vulkan2.0\",", "\"vulkan2.0\"",
+        BadInput{"unknown_target_env", "\"format\": 1,", "\"format\": 1, \"target_env\": \"vulkan2.0\",",
+                 "\"vulkan2.0\"",
                  "target_env: unknown target environment \"vulkan2.0\" (expected vulkan1.0, vulkan1.1, vulkan1.2 or "
                  "vulkan1.3)"},
         BadInput{"unknown_stage", "\"stage\": \"fragment\"", "\"stage\": \"pixel\"", "\"pixel\"",

@@ -7,7 +7,6 @@
 #include <cstring>
 #include <set>
 
-
 #include "shadergen/build.h"
 #include "spirv_passes.h"
 #include "test_helpers.h"
@@ -19,205 +18,206 @@ namespace fs = std::filesystem;
 
 Result<BuildSummary> build_into(const fs::path& spec, const fs::path& out, const fs::path& cache, unsigned jobs = 0,
                                 bool use_cache = true) {
-    BuildOptions options;
-    options.spec_path = spec;
-    options.out_dir = out;
-    options.cache_dir = cache;
-    options.use_cache = use_cache;
-    options.jobs = jobs;
-    return build(options);
+  BuildOptions options;
+  options.spec_path = spec;
+  options.out_dir = out;
+  options.cache_dir = cache;
+  options.use_cache = use_cache;
+  options.jobs = jobs;
+  return build(options);
 }
 
 std::vector<std::uint32_t> words_of(const std::string& bytes) {
-    std::vector<std::uint32_t> words(bytes.size() / 4);
-    std::memcpy(words.data(), bytes.data(), words.size() * 4);
-    return words;
+  std::vector<std::uint32_t> words(bytes.size() / 4);
+  std::memcpy(words.data(), bytes.data(), words.size() * 4);
+  return words;
 }
 
 // One cold build of Split/Second shared by the tests below (it takes a few seconds).
 class SplitSecondBuild : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() {
-        root_ = new sgtest::TempDir("split-second-build");
-        auto summary = build_into(sgtest::split_second_spec(), *root_ / "out", *root_ / "cache", 0, true);
-        if (!summary.ok()) {
-            setup_error_ = new std::string(summary.errors().front().to_string());
-            return;
-        }
-        summary_ = new BuildSummary(*summary);
-        manifest_ = new nlohmann::json(nlohmann::json::parse(sgtest::read_file(*root_ / "out" / "manifest.json")));
+ protected:
+  static void SetUpTestSuite() {
+    root_ = new sgtest::TempDir("split-second-build");
+    auto summary = build_into(sgtest::split_second_spec(), *root_ / "out", *root_ / "cache", 0, true);
+    if (!summary.ok()) {
+      setup_error_ = new std::string(summary.errors().front().to_string());
+      return;
     }
-    static void TearDownTestSuite() {
-        delete manifest_;
-        delete summary_;
-        delete root_;
-        delete setup_error_;
-    }
-    // A failed shared build fails every test (an ASSERT in SetUpTestSuite would only skip them).
-    void SetUp() override {
-        ASSERT_EQ(setup_error_, nullptr) << *setup_error_;
-        ASSERT_NE(manifest_, nullptr);
-    }
-    static fs::path out() { return *root_ / "out"; }
-    static inline sgtest::TempDir* root_ = nullptr;
-    static inline BuildSummary* summary_ = nullptr;
-    static inline nlohmann::json* manifest_ = nullptr;
-    static inline std::string* setup_error_ = nullptr;
+    summary_ = new BuildSummary(*summary);
+    manifest_ = new nlohmann::json(nlohmann::json::parse(sgtest::read_file(*root_ / "out" / "manifest.json")));
+  }
+  static void TearDownTestSuite() {
+    delete manifest_;
+    delete summary_;
+    delete root_;
+    delete setup_error_;
+  }
+  // A failed shared build fails every test (an ASSERT in SetUpTestSuite would only skip them).
+  void SetUp() override {
+    ASSERT_EQ(setup_error_, nullptr) << *setup_error_;
+    ASSERT_NE(manifest_, nullptr);
+  }
+  static fs::path out() { return *root_ / "out"; }
+  static inline sgtest::TempDir* root_ = nullptr;
+  static inline BuildSummary* summary_ = nullptr;
+  static inline nlohmann::json* manifest_ = nullptr;
+  static inline std::string* setup_error_ = nullptr;
 };
 
 TEST_F(SplitSecondBuild, ManifestHas128RawWith32PrunedAnd32Optimised) {
-    const auto& raw = (*manifest_)["raw"];
-    const auto& optimised = (*manifest_)["optimised"];
-    ASSERT_EQ(raw.size(), 128u);
-    ASSERT_EQ(optimised.size(), 32u);
-    int pruned = 0;
-    for (std::size_t id = 0; id < raw.size(); ++id) {
-        const auto& entry = raw[id];
-        EXPECT_EQ(entry["id"], id);
-        for (const char* key : {"id", "defines", "pruned", "optimised"}) EXPECT_TRUE(entry.contains(key)) << key;
-        if (entry["pruned"].get<bool>()) {
-            ++pruned;
-            EXPECT_FALSE(entry.contains("spirv")) << "pruned raw " << id << " has SPIR-V";
-            EXPECT_FALSE(entry.contains("hash"));
-        } else {
-            EXPECT_TRUE(entry.contains("spirv") && entry.contains("hash")) << id;
-        }
+  const auto& raw = (*manifest_)["raw"];
+  const auto& optimised = (*manifest_)["optimised"];
+  ASSERT_EQ(raw.size(), 128u);
+  ASSERT_EQ(optimised.size(), 32u);
+  int pruned = 0;
+  for (std::size_t id = 0; id < raw.size(); ++id) {
+    const auto& entry = raw[id];
+    EXPECT_EQ(entry["id"], id);
+    for (const char* key : {"id", "defines", "pruned", "optimised"}) EXPECT_TRUE(entry.contains(key)) << key;
+    if (entry["pruned"].get<bool>()) {
+      ++pruned;
+      EXPECT_FALSE(entry.contains("spirv")) << "pruned raw " << id << " has SPIR-V";
+      EXPECT_FALSE(entry.contains("hash"));
+    } else {
+      EXPECT_TRUE(entry.contains("spirv") && entry.contains("hash")) << id;
     }
-    EXPECT_EQ(pruned, 32);
-    EXPECT_EQ(summary_->raw, 128u);
-    EXPECT_EQ(summary_->pruned, 32u);
-    EXPECT_EQ(summary_->optimised, 32u);
+  }
+  EXPECT_EQ(pruned, 32);
+  EXPECT_EQ(summary_->raw, 128u);
+  EXPECT_EQ(summary_->pruned, 32u);
+  EXPECT_EQ(summary_->optimised, 32u);
 }
 
 TEST_F(SplitSecondBuild, EveryBlobValidatesWithShadergenAndSpirvVal) {
-    std::set<std::string> paths;
-    for (const char* section : {"raw", "optimised", "companions"})
-        for (const auto& entry : (*manifest_)[section])
-            if (entry.contains("spirv")) paths.insert(entry["spirv"].get<std::string>());
-    ASSERT_FALSE(paths.empty());
-    for (const std::string& relative : paths) {
-        fs::path file = out() / relative;
-        ASSERT_TRUE(fs::exists(file)) << file;
-        auto words = words_of(sgtest::read_file(file));
-        ASSERT_FALSE(words.empty());
-        EXPECT_EQ(words[0], 0x07230203u);
-        Status valid = validate_spirv(words);
-        EXPECT_TRUE(valid.ok()) << relative << ": " << (valid.ok() ? "" : valid.errors().front().message);
-        sgtest::ProcessResult val = sgtest::spirv_val(file);
-        EXPECT_EQ(val.exit_code, 0) << relative << "\n" << val.out << val.err;
-    }
+  std::set<std::string> paths;
+  for (const char* section : {"raw", "optimised", "companions"})
+    for (const auto& entry : (*manifest_)[section])
+      if (entry.contains("spirv")) paths.insert(entry["spirv"].get<std::string>());
+  ASSERT_FALSE(paths.empty());
+  for (const std::string& relative : paths) {
+    fs::path file = out() / relative;
+    ASSERT_TRUE(fs::exists(file)) << file;
+    auto words = words_of(sgtest::read_file(file));
+    ASSERT_FALSE(words.empty());
+    EXPECT_EQ(words[0], 0x07230203u);
+    Status valid = validate_spirv(words);
+    EXPECT_TRUE(valid.ok()) << relative << ": " << (valid.ok() ? "" : valid.errors().front().message);
+    sgtest::ProcessResult val = sgtest::spirv_val(file);
+    EXPECT_EQ(val.exit_code, 0) << relative << "\n" << val.out << val.err;
+  }
 }
 
 TEST_F(SplitSecondBuild, IdenticalBlobsAreStoredOnce) {
-    std::set<std::string> hashes;
-    for (const auto& entry : (*manifest_)["raw"])
-        if (entry.contains("hash")) hashes.insert(entry["hash"].get<std::string>());
-    std::size_t files = 0;
-    for (const auto& e : fs::directory_iterator(out() / "spirv")) files += e.is_regular_file();
-    EXPECT_EQ(files, summary_->unique_blobs);
-    // 96 compiled raw permutations plus one blob per companion (tile vertex shader, the
-    // runtime's classification, index-build and scene shaders), at most.
-    const std::size_t companions = (*manifest_)["companions"].size();
-    EXPECT_GE(companions, 1u);
-    EXPECT_LE(summary_->unique_blobs, 96u + companions);
-    // Every optimised permutation has a raw twin with the same source: no extra compiles.
-    EXPECT_EQ(summary_->unique_sources, 96u + companions);
+  std::set<std::string> hashes;
+  for (const auto& entry : (*manifest_)["raw"])
+    if (entry.contains("hash")) hashes.insert(entry["hash"].get<std::string>());
+  std::size_t files = 0;
+  for (const auto& e : fs::directory_iterator(out() / "spirv")) files += e.is_regular_file();
+  EXPECT_EQ(files, summary_->unique_blobs);
+  // 96 compiled raw permutations plus one blob per companion (tile vertex shader, the
+  // runtime's classification, index-build and scene shaders), at most.
+  const std::size_t companions = (*manifest_)["companions"].size();
+  EXPECT_GE(companions, 1u);
+  EXPECT_LE(summary_->unique_blobs, 96u + companions);
+  // Every optimised permutation has a raw twin with the same source: no extra compiles.
+  EXPECT_EQ(summary_->unique_sources, 96u + companions);
 }
 
 TEST_F(SplitSecondBuild, RawEntriesCarryTheLookupTable) {
-    for (const auto& entry : (*manifest_)["raw"]) {
-        std::uint32_t id = entry["id"];
-        bool solid = id & 1, soft = id & 2, fade = id & 4, sun = id & 64;
-        std::uint32_t expected = ((id >> 3) & 7) | ((solid && fade && sun) || (!solid && sun && soft) ? 8u : 0u) |
-                                 (!solid && sun ? 16u : 0u);
-        EXPECT_EQ(entry["optimised"].get<std::uint32_t>(), expected) << "raw " << id;
-    }
+  for (const auto& entry : (*manifest_)["raw"]) {
+    std::uint32_t id = entry["id"];
+    bool solid = id & 1, soft = id & 2, fade = id & 4, sun = id & 64;
+    std::uint32_t expected =
+        ((id >> 3) & 7) | ((solid && fade && sun) || (!solid && sun && soft) ? 8u : 0u) | (!solid && sun ? 16u : 0u);
+    EXPECT_EQ(entry["optimised"].get<std::uint32_t>(), expected) << "raw " << id;
+  }
 }
 
 TEST_F(SplitSecondBuild, AllPermutationsShareOnePipelineLayout) {
-    const auto& bindings = (*manifest_)["pipeline_layout"]["bindings"];
-    ASSERT_EQ(bindings.size(), 6u);
-    EXPECT_EQ(bindings[0]["kind"], "uniform_buffer");
-    for (std::size_t i = 0; i < 6; ++i) {
-        EXPECT_EQ(bindings[i]["set"], 0);
-        EXPECT_EQ(bindings[i]["binding"], i);
-        if (i > 0) {
-            EXPECT_EQ(bindings[i]["kind"], "combined_image_sampler");
-        }
+  const auto& bindings = (*manifest_)["pipeline_layout"]["bindings"];
+  ASSERT_EQ(bindings.size(), 6u);
+  EXPECT_EQ(bindings[0]["kind"], "uniform_buffer");
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(bindings[i]["set"], 0);
+    EXPECT_EQ(bindings[i]["binding"], i);
+    if (i > 0) {
+      EXPECT_EQ(bindings[i]["kind"], "combined_image_sampler");
     }
-    const auto& push = (*manifest_)["pipeline_layout"]["push_constants"];
-    ASSERT_EQ(push.size(), 1u);
-    EXPECT_EQ(push[0]["size"], 8);  // tile.vert's inv_viewport
+  }
+  const auto& push = (*manifest_)["pipeline_layout"]["push_constants"];
+  ASSERT_EQ(push.size(), 1u);
+  EXPECT_EQ(push[0]["size"], 8);  // tile.vert's inv_viewport
 }
 
 TEST_F(SplitSecondBuild, GeneratedCppHasTheTableAndBanner) {
-    std::string header = sgtest::read_file(out() / "split_second.h");
-    EXPECT_NE(header.find("Do not edit"), std::string::npos);
-    EXPECT_NE(header.find("inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised"), std::string::npos);
-    EXPECT_NE(header.find("\n    16, 0, 24, 0, 16, 8, 24, 8, 17, 1, 25, 1, 17, 9, 25, 9,\n"), std::string::npos)
-        << "row 64 of the LUT (pruned entries carry the rules' value)";
-    EXPECT_NE(header.find("static_assert"), std::string::npos);
-    EXPECT_EQ(header.find("0x07230203"), std::string::npos) << "SPIR-V words belong in the source, not the header";
-    std::string source = sgtest::read_file(out() / "split_second.cpp");
-    EXPECT_NE(source.find("0x07230203u"), std::string::npos);
+  std::string header = sgtest::read_file(out() / "split_second.h");
+  EXPECT_NE(header.find("Do not edit"), std::string::npos);
+  EXPECT_NE(header.find("inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised"), std::string::npos);
+  EXPECT_NE(header.find("\n    16, 0, 24, 0, 16, 8, 24, 8, 17, 1, 25, 1, 17, 9, 25, 9,\n"), std::string::npos)
+      << "row 64 of the LUT (pruned entries carry the rules' value)";
+  EXPECT_NE(header.find("static_assert"), std::string::npos);
+  EXPECT_EQ(header.find("0x07230203"), std::string::npos) << "SPIR-V words belong in the source, not the header";
+  std::string source = sgtest::read_file(out() / "split_second.cpp");
+  EXPECT_NE(source.find("0x07230203u"), std::string::npos);
 }
 
 TEST_F(SplitSecondBuild, WarmRebuildHitsTheCacheAndChangesNothing) {
-    auto before = sgtest::snapshot(out());
-    auto time_before = fs::last_write_time(out() / "split_second.cpp");
-    auto summary = build_into(sgtest::split_second_spec(), out(), *root_ / "cache");
-    ASSERT_TRUE(summary.ok());
-    EXPECT_EQ(summary->compiled, 0u);
-    EXPECT_EQ(summary->cache_hits, summary->unique_sources);
-    EXPECT_FALSE(summary->output_changed);
-    EXPECT_EQ(sgtest::snapshot(out()), before);
-    EXPECT_EQ(fs::last_write_time(out() / "split_second.cpp"), time_before);
+  auto before = sgtest::snapshot(out());
+  auto time_before = fs::last_write_time(out() / "split_second.cpp");
+  auto summary = build_into(sgtest::split_second_spec(), out(), *root_ / "cache");
+  ASSERT_TRUE(summary.ok());
+  EXPECT_EQ(summary->compiled, 0u);
+  EXPECT_EQ(summary->cache_hits, summary->unique_sources);
+  EXPECT_FALSE(summary->output_changed);
+  EXPECT_EQ(sgtest::snapshot(out()), before);
+  EXPECT_EQ(fs::last_write_time(out() / "split_second.cpp"), time_before);
 }
 
 TEST_F(SplitSecondBuild, DeterministicWhateverTheJobCountAndCache) {
-    sgtest::TempDir serial_dir("serial");
-    fs::path other = serial_dir.path();
-    auto summary = build_into(sgtest::split_second_spec(), other / "out", other / "cache", 1, false);
-    ASSERT_TRUE(summary.ok());
-    EXPECT_EQ(summary->cache_hits, 0u);
-    EXPECT_EQ(sgtest::snapshot(other / "out"), sgtest::snapshot(out()));
+  sgtest::TempDir serial_dir("serial");
+  fs::path other = serial_dir.path();
+  auto summary = build_into(sgtest::split_second_spec(), other / "out", other / "cache", 1, false);
+  ASSERT_TRUE(summary.ok());
+  EXPECT_EQ(summary->cache_hits, 0u);
+  EXPECT_EQ(sgtest::snapshot(other / "out"), sgtest::snapshot(out()));
 }
 
 TEST(ToyBuild, FixtureDomainBuildsWithItsOwnLayout) {
-    sgtest::TempDir toy_dir("toy");
-    fs::path dir = toy_dir.path();
-    auto summary = build_into(sgtest::toy_spec(), dir / "out", dir / "cache", 4);
-    ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
-    EXPECT_EQ(summary->raw, 16u);
-    EXPECT_EQ(summary->pruned, 4u);
-    auto manifest = nlohmann::json::parse(sgtest::read_file(dir / "out" / "manifest.json"));
-    EXPECT_EQ(manifest["domain"], "toy_particles");
-    const auto& bindings = manifest["pipeline_layout"]["bindings"];
-    ASSERT_EQ(bindings.size(), 4u);
-    EXPECT_EQ(bindings[3]["set"], 1);
-    EXPECT_EQ(bindings[3]["kind"], "storage_buffer");
-    EXPECT_EQ(bindings[3]["stages"], nlohmann::json::array({"compute"}));
-    EXPECT_EQ(manifest["pipeline_layout"]["push_constants"][0]["size"], 4);
-    EXPECT_TRUE(fs::exists(dir / "out" / "toy_particles.h"));
+  sgtest::TempDir toy_dir("toy");
+  fs::path dir = toy_dir.path();
+  auto summary = build_into(sgtest::toy_spec(), dir / "out", dir / "cache", 4);
+  ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
+  EXPECT_EQ(summary->raw, 16u);
+  EXPECT_EQ(summary->pruned, 4u);
+  auto manifest = nlohmann::json::parse(sgtest::read_file(dir / "out" / "manifest.json"));
+  EXPECT_EQ(manifest["domain"], "toy_particles");
+  const auto& bindings = manifest["pipeline_layout"]["bindings"];
+  ASSERT_EQ(bindings.size(), 4u);
+  EXPECT_EQ(bindings[3]["set"], 1);
+  EXPECT_EQ(bindings[3]["kind"], "storage_buffer");
+  EXPECT_EQ(bindings[3]["stages"], nlohmann::json::array({"compute"}));
+  EXPECT_EQ(manifest["pipeline_layout"]["push_constants"][0]["size"], 4);
+  EXPECT_TRUE(fs::exists(dir / "out" / "toy_particles.h"));
 }
 
 TEST(ToyBuild, ConflictingBindingsAcrossPermutationsAreAnError) {
-    sgtest::TempDir conflict_dir("conflict");
-    fs::path dir = conflict_dir.path();
-    fs::copy(sgtest::toy_spec().parent_path(), dir / "domain", fs::copy_options::recursive);
-    // In textured permutations, binding 2 becomes a uniform buffer instead of a sampler.
-    std::string shader = sgtest::read_file(dir / "domain" / "particle.frag");
-    shader.replace(shader.find("void main() {"), 13,
-                   "#ifdef USE_TEXTURE\nlayout(set = 0, binding = 2) uniform Clash { vec4 c; } clash;\n#endif\n"
-                   "void main() {\n#ifdef USE_TEXTURE\n    vec4 unused = clash.c;\n#endif");
-    shader.replace(shader.find("out_color = color;"), 18, "out_color = color;\n#ifdef USE_TEXTURE\n    out_color += clash.c;\n#endif");
-    shader.replace(shader.find("#ifdef SOFT_PARTICLES"), 21, "#if defined(SOFT_PARTICLES) && !defined(USE_TEXTURE)");
-    sgtest::write_file(dir / "domain" / "particle.frag", shader);
-    auto summary = build_into(dir / "domain" / "toy.json", dir / "out", dir / "cache");
-    ASSERT_FALSE(summary.ok());
-    std::string message = summary.errors().front().to_string();
-    EXPECT_NE(message.find("permutations disagree on set 0 binding 2"), std::string::npos) << message;
-    EXPECT_FALSE(fs::exists(dir / "out"));
+  sgtest::TempDir conflict_dir("conflict");
+  fs::path dir = conflict_dir.path();
+  fs::copy(sgtest::toy_spec().parent_path(), dir / "domain", fs::copy_options::recursive);
+  // In textured permutations, binding 2 becomes a uniform buffer instead of a sampler.
+  std::string shader = sgtest::read_file(dir / "domain" / "particle.frag");
+  shader.replace(shader.find("void main() {"), 13,
+                 "#ifdef USE_TEXTURE\nlayout(set = 0, binding = 2) uniform Clash { vec4 c; } clash;\n#endif\n"
+                 "void main() {\n#ifdef USE_TEXTURE\n    vec4 unused = clash.c;\n#endif");
+  shader.replace(shader.find("out_color = color;"), 18,
+                 "out_color = color;\n#ifdef USE_TEXTURE\n    out_color += clash.c;\n#endif");
+  shader.replace(shader.find("#ifdef SOFT_PARTICLES"), 21, "#if defined(SOFT_PARTICLES) && !defined(USE_TEXTURE)");
+  sgtest::write_file(dir / "domain" / "particle.frag", shader);
+  auto summary = build_into(dir / "domain" / "toy.json", dir / "out", dir / "cache");
+  ASSERT_FALSE(summary.ok());
+  std::string message = summary.errors().front().to_string();
+  EXPECT_NE(message.find("permutations disagree on set 0 binding 2"), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
 }  // namespace

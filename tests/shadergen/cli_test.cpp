@@ -13,144 +13,145 @@ namespace {
 namespace fs = std::filesystem;
 
 struct CliRun {
-    int code;
-    std::string out;
-    std::string err;
+  int code;
+  std::string out;
+  std::string err;
 };
 
 CliRun cli(std::vector<std::string> args) {
-    std::ostringstream out, err;
-    int code = run_cli(args, out, err);
-    return {code, out.str(), err.str()};
+  std::ostringstream out, err;
+  int code = run_cli(args, out, err);
+  return {code, out.str(), err.str()};
 }
 
 TEST(Cli, HelpListsTheSubcommands) {
-    CliRun r = cli({"--help"});
-    EXPECT_EQ(r.code, 0);
-    for (const char* word : {"build", "lut", "list", "explain", "--version"})
-        EXPECT_NE(r.out.find(word), std::string::npos) << word;
+  CliRun r = cli({"--help"});
+  EXPECT_EQ(r.code, 0);
+  for (const char* word : {"build", "lut", "list", "explain", "--version"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
 TEST(Cli, BuildHelpDocumentsItsOptions) {
-    CliRun r = cli({"build", "--help"});
-    EXPECT_EQ(r.code, 0);
-    for (const char* word : {"--out", "--no-cache", "--cache-dir", "--depfile", "-j", "--stats", "-v"})
-        EXPECT_NE(r.out.find(word), std::string::npos) << word;
+  CliRun r = cli({"build", "--help"});
+  EXPECT_EQ(r.code, 0);
+  for (const char* word : {"--out", "--no-cache", "--cache-dir", "--depfile", "-j", "--stats", "-v"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
 TEST(Cli, Version) {
-    CliRun r = cli({"--version"});
-    EXPECT_EQ(r.code, 0);
-    EXPECT_EQ(r.out, "shadergen " SHADERGEN_VERSION_STRING "\n");
+  CliRun r = cli({"--version"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, "shadergen " SHADERGEN_VERSION_STRING "\n");
 }
 
 TEST(Cli, UsageErrorsExitTwo) {
-    EXPECT_EQ(cli({}).code, 2);
-    EXPECT_EQ(cli({"frobnicate"}).code, 2);
-    EXPECT_EQ(cli({"build", sgtest::toy_spec().string()}).code, 2) << "--out is required";
-    EXPECT_EQ(cli({"build", sgtest::toy_spec().string(), "--out", "x", "-j", "0"}).code, 2);
+  EXPECT_EQ(cli({}).code, 2);
+  EXPECT_EQ(cli({"frobnicate"}).code, 2);
+  EXPECT_EQ(cli({"build", sgtest::toy_spec().string()}).code, 2) << "--out is required";
+  EXPECT_EQ(cli({"build", sgtest::toy_spec().string(), "--out", "x", "-j", "0"}).code, 2);
 }
 
 TEST(Cli, LutPrintsTheGrid) {
-    CliRun r = cli({"lut", sgtest::split_second_spec().string()});
-    EXPECT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.out.find("  64:   16   0  24  --  16   8  24  --  17   1  25  --  17   9  25  --"), std::string::npos)
-        << r.out;
+  CliRun r = cli({"lut", sgtest::split_second_spec().string()});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("  64:   16   0  24  --  16   8  24  --  17   1  25  --  17   9  25  --"), std::string::npos)
+      << r.out;
 }
 
 TEST(Cli, ListNamesEveryPermutation) {
-    CliRun r = cli({"list", sgtest::split_second_spec().string()});
-    EXPECT_EQ(r.code, 0);
-    EXPECT_NE(r.out.find("raw permutations: 128 (32 pruned, 96 compiled)"), std::string::npos);
-    EXPECT_NE(r.out.find("optimised permutations: 32"), std::string::npos);
+  CliRun r = cli({"list", sgtest::split_second_spec().string()});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("raw permutations: 128 (32 pruned, 96 compiled)"), std::string::npos);
+  EXPECT_NE(r.out.find("optimised permutations: 32"), std::string::npos);
 }
 
 TEST(Cli, ExplainAcceptsNumbersAndNames) {
-    CliRun by_number = cli({"explain", sgtest::split_second_spec().string(), "69"});
-    EXPECT_EQ(by_number.code, 0);
-    EXPECT_NE(by_number.out.find("-> optimised ID 8"), std::string::npos) << by_number.out;
-    CliRun by_name = cli({"explain", sgtest::split_second_spec().string(), "SHADOW_SOLID|SHADOW_FADE|SUN_LIGHT"});
-    EXPECT_EQ(by_name.out, by_number.out);
-    CliRun hex = cli({"explain", sgtest::split_second_spec().string(), "0x45"});
-    EXPECT_EQ(hex.out, by_number.out);
+  CliRun by_number = cli({"explain", sgtest::split_second_spec().string(), "69"});
+  EXPECT_EQ(by_number.code, 0);
+  EXPECT_NE(by_number.out.find("-> optimised ID 8"), std::string::npos) << by_number.out;
+  CliRun by_name = cli({"explain", sgtest::split_second_spec().string(), "SHADOW_SOLID|SHADOW_FADE|SUN_LIGHT"});
+  EXPECT_EQ(by_name.out, by_number.out);
+  CliRun hex = cli({"explain", sgtest::split_second_spec().string(), "0x45"});
+  EXPECT_EQ(hex.out, by_number.out);
 }
 
 TEST(Cli, ExplainRejectsBadIdsNamingTheValue) {
-    CliRun out_of_range = cli({"explain", sgtest::split_second_spec().string(), "128"});
-    EXPECT_EQ(out_of_range.code, 2);
-    EXPECT_EQ(out_of_range.err,
-              "shadergen: error: raw ID 128 is out of range: domain split_second has raw IDs 0 to 127\n");
-    CliRun unknown = cli({"explain", sgtest::split_second_spec().string(), "SKY|MOON"});
-    EXPECT_EQ(unknown.code, 2);
-    EXPECT_NE(unknown.err.find("unknown raw feature \"MOON\""), std::string::npos) << unknown.err;
+  CliRun out_of_range = cli({"explain", sgtest::split_second_spec().string(), "128"});
+  EXPECT_EQ(out_of_range.code, 2);
+  EXPECT_EQ(out_of_range.err,
+            "shadergen: error: raw ID 128 is out of range: domain split_second has raw IDs 0 to 127\n");
+  CliRun unknown = cli({"explain", sgtest::split_second_spec().string(), "SKY|MOON"});
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.err.find("unknown raw feature \"MOON\""), std::string::npos) << unknown.err;
 }
 
 TEST(Cli, MissingSpecNamesThePath) {
-    CliRun r = cli({"lut", "/no/such/spec.json"});
-    EXPECT_EQ(r.code, 1);
-    EXPECT_EQ(r.err, "/no/such/spec.json: error: spec file does not exist\n");
+  CliRun r = cli({"lut", "/no/such/spec.json"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "/no/such/spec.json: error: spec file does not exist\n");
 }
 
 TEST(Cli, BitCollisionNamesFileAndLine) {
-    sgtest::TempDir collision_dir("collision");
-    fs::path dir = collision_dir.path();
-    std::string spec = sgtest::read_file(sgtest::toy_spec());
-    spec.replace(spec.find("\"bit\": 3"), 8, "\"bit\": 0");
-    sgtest::write_file(dir / "toy.json", spec);
-    CliRun r = cli({"build", (dir / "toy.json").string(), "--out", (dir / "out").string(), "--no-cache"});
-    EXPECT_EQ(r.code, 1);
-    EXPECT_NE(r.err.find("toy.json:15:"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("error: raw.features[3].bit: bit 0 of DISTORT collides with feature LIT"), std::string::npos)
-        << r.err;
-    EXPECT_FALSE(fs::exists(dir / "out"));
+  sgtest::TempDir collision_dir("collision");
+  fs::path dir = collision_dir.path();
+  std::string spec = sgtest::read_file(sgtest::toy_spec());
+  spec.replace(spec.find("\"bit\": 3"), 8, "\"bit\": 0");
+  sgtest::write_file(dir / "toy.json", spec);
+  CliRun r = cli({"build", (dir / "toy.json").string(), "--out", (dir / "out").string(), "--no-cache"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("toy.json:15:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("error: raw.features[3].bit: bit 0 of DISTORT collides with feature LIT"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
 // A GLSL error inside one feature's #ifdef is reported once, at its original file and line,
 // naming the permutations it occurs in; the previous output is left exactly as it was.
 TEST(Cli, GlslErrorInsideOneFeatureKeepsThePreviousOutput) {
-    sgtest::TempDir glsl_error_dir("glsl_error");
-    fs::path dir = glsl_error_dir.path();
-    fs::copy(sgtest::toy_spec().parent_path(), dir / "domain", fs::copy_options::recursive);
-    fs::path out = dir / "out";
-    std::string cache = (dir / "cache").string();
-    ASSERT_EQ(cli({"build", (dir / "domain" / "toy.json").string(), "--out", out.string(), "--cache-dir", cache}).code, 0);
-    auto before = sgtest::snapshot(out);
-    auto time_before = fs::last_write_time(out / "manifest.json");
+  sgtest::TempDir glsl_error_dir("glsl_error");
+  fs::path dir = glsl_error_dir.path();
+  fs::copy(sgtest::toy_spec().parent_path(), dir / "domain", fs::copy_options::recursive);
+  fs::path out = dir / "out";
+  std::string cache = (dir / "cache").string();
+  ASSERT_EQ(cli({"build", (dir / "domain" / "toy.json").string(), "--out", out.string(), "--cache-dir", cache}).code,
+            0);
+  auto before = sgtest::snapshot(out);
+  auto time_before = fs::last_write_time(out / "manifest.json");
 
-    std::string shader = sgtest::read_file(dir / "domain" / "particle.frag");
-    std::string good = "    color.a *= clamp((scene - gl_FragCoord.z) * 50.0, 0.0, 1.0);";
-    ASSERT_NE(shader.find(good), std::string::npos);
-    shader.replace(shader.find(good), good.size(), "    color.a *= clamp((scene - fragment_depth) * 50.0, 0.0, 1.0);");
-    sgtest::write_file(dir / "domain" / "particle.frag", shader);
+  std::string shader = sgtest::read_file(dir / "domain" / "particle.frag");
+  std::string good = "    color.a *= clamp((scene - gl_FragCoord.z) * 50.0, 0.0, 1.0);";
+  ASSERT_NE(shader.find(good), std::string::npos);
+  shader.replace(shader.find(good), good.size(), "    color.a *= clamp((scene - fragment_depth) * 50.0, 0.0, 1.0);");
+  sgtest::write_file(dir / "domain" / "particle.frag", shader);
 
-    CliRun r = cli({"build", (dir / "domain" / "toy.json").string(), "--out", out.string(), "--cache-dir", cache});
-    EXPECT_EQ(r.code, 1);
-    std::size_t errors = 0;
-    for (std::size_t at = r.err.find("error:"); at != std::string::npos; at = r.err.find("error:", at + 1)) ++errors;
-    EXPECT_EQ(errors, 1u) << "one grouped error, no follow-on noise:\n" << r.err;
-    std::string file = (dir / "domain" / "particle.frag").lexically_normal().string();
-    EXPECT_NE(r.err.find(file + ":19: error: 'fragment_depth' : undeclared identifier (in 6 of 12 raw permutations: "
-                                "those with SOFT_PARTICLES; 2 of 4 optimised permutations; e.g. raw 4 with "
-                                "SOFT_PARTICLES)"),
-              std::string::npos)
-        << r.err;
-    EXPECT_EQ(sgtest::snapshot(out), before);
-    EXPECT_EQ(fs::last_write_time(out / "manifest.json"), time_before);
-    for (const auto& entry : fs::directory_iterator(dir))
-        EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << "left behind: " << entry.path();
+  CliRun r = cli({"build", (dir / "domain" / "toy.json").string(), "--out", out.string(), "--cache-dir", cache});
+  EXPECT_EQ(r.code, 1);
+  std::size_t errors = 0;
+  for (std::size_t at = r.err.find("error:"); at != std::string::npos; at = r.err.find("error:", at + 1)) ++errors;
+  EXPECT_EQ(errors, 1u) << "one grouped error, no follow-on noise:\n" << r.err;
+  std::string file = (dir / "domain" / "particle.frag").lexically_normal().string();
+  EXPECT_NE(r.err.find(file + ":19: error: 'fragment_depth' : undeclared identifier (in 6 of 12 raw permutations: "
+                              "those with SOFT_PARTICLES; 2 of 4 optimised permutations; e.g. raw 4 with "
+                              "SOFT_PARTICLES)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(sgtest::snapshot(out), before);
+  EXPECT_EQ(fs::last_write_time(out / "manifest.json"), time_before);
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << "left behind: " << entry.path();
 }
 
 TEST(Cli, BuildPrintsASummaryAndWritesADepfile) {
-    sgtest::TempDir depfile_dir("depfile");
-    fs::path dir = depfile_dir.path();
-    CliRun r = cli({"build", sgtest::toy_spec().string(), "--out", (dir / "out").string(), "--cache-dir",
-                 (dir / "cache").string(), "--depfile", (dir / "toy.d").string()});
-    ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.out.find("16 raw (4 pruned), 4 optimised, 1 companion"), std::string::npos) << r.out;
-    std::string depfile = sgtest::read_file(dir / "toy.d");
-    EXPECT_EQ(depfile.rfind((dir / "out" / "toy_particles.h").string() + ":", 0), 0u) << depfile;
-    for (const char* dep : {"toy.json", "particle.frag", "particle_common.glsl", "sort.comp"})
-        EXPECT_NE(depfile.find(dep), std::string::npos) << dep;
+  sgtest::TempDir depfile_dir("depfile");
+  fs::path dir = depfile_dir.path();
+  CliRun r = cli({"build", sgtest::toy_spec().string(), "--out", (dir / "out").string(), "--cache-dir",
+                  (dir / "cache").string(), "--depfile", (dir / "toy.d").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("16 raw (4 pruned), 4 optimised, 1 companion"), std::string::npos) << r.out;
+  std::string depfile = sgtest::read_file(dir / "toy.d");
+  EXPECT_EQ(depfile.rfind((dir / "out" / "toy_particles.h").string() + ":", 0), 0u) << depfile;
+  for (const char* dep : {"toy.json", "particle.frag", "particle_common.glsl", "sort.comp"})
+    EXPECT_NE(depfile.find(dep), std::string::npos) << dep;
 }
 
 }  // namespace

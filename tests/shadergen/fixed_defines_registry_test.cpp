@@ -9,26 +9,26 @@
 namespace {
 
 TEST(FixedDefinesRegistry, CMakeDefinesReachEveryShader) {
-    const shadergen::Registry& r = fixed::registry();
-    ASSERT_EQ(r.push_constants.size(), 1u);
-    EXPECT_EQ(r.push_constants[0].size, 2u * 16u) << "DEFINES MAX_LIGHTS=2 replaced the spec's 4";
-    const shadergen::CompanionShader* prepass = r.companion("prepass");
-    const shadergen::CompanionShader* cull = r.companion("cull");
-    ASSERT_TRUE(prepass && cull);
-    EXPECT_EQ(prepass->shader.reflection.local_size[0], 16u) << "DEFINES GROUP_SIZE=16 replaced the spec's 64";
-    EXPECT_EQ(cull->shader.reflection.local_size[0], 256u) << "the companion's own GROUP_SIZE still wins";
+  const shadergen::Registry& r = fixed::registry();
+  ASSERT_EQ(r.push_constants.size(), 1u);
+  EXPECT_EQ(r.push_constants[0].size, 2u * 16u) << "DEFINES MAX_LIGHTS=2 replaced the spec's 4";
+  const shadergen::CompanionShader* prepass = r.companion("prepass");
+  const shadergen::CompanionShader* cull = r.companion("cull");
+  ASSERT_TRUE(prepass && cull);
+  EXPECT_EQ(prepass->shader.reflection.local_size[0], 16u) << "DEFINES GROUP_SIZE=16 replaced the spec's 64";
+  EXPECT_EQ(cull->shader.reflection.local_size[0], 256u) << "the companion's own GROUP_SIZE still wins";
 }
 
 TEST(FixedDefinesRegistry, CMakeTargetEnvSetsTheSpirvVersion) {
-    const shadergen::Registry& r = fixed::registry();
-    std::size_t blobs = 0;
-    for (const shadergen::Permutation& p : r.raw) {
-        ASSERT_GT(p.spirv.size(), 1u);
-        EXPECT_EQ(p.spirv[1], 0x00010300u) << "TARGET_ENV vulkan1.1 means SPIR-V 1.3";
-        ++blobs;
-    }
-    for (const shadergen::CompanionShader& c : r.companions) EXPECT_EQ(c.shader.spirv[1], 0x00010300u) << c.name;
-    EXPECT_EQ(blobs, 2u);
+  const shadergen::Registry& r = fixed::registry();
+  std::size_t blobs = 0;
+  for (const shadergen::Permutation& p : r.raw) {
+    ASSERT_GT(p.spirv.size(), 1u);
+    EXPECT_EQ(p.spirv[1], 0x00010300u) << "TARGET_ENV vulkan1.1 means SPIR-V 1.3";
+    ++blobs;
+  }
+  for (const shadergen::CompanionShader& c : r.companions) EXPECT_EQ(c.shader.spirv[1], 0x00010300u) << c.name;
+  EXPECT_EQ(blobs, 2u);
 }
 
 }  // namespace

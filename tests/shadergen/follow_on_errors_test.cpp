@@ -6,41 +6,41 @@
 #include <gtest/gtest.h>
 
 #include "error_grouping.h"
-#include "test_helpers.h"
 #include "shadergen/build.h"
+#include "test_helpers.h"
 
 namespace {
 
 TEST(FollowOnErrors, FirstErrorsFirstNoiseFoldedEveryPermutationCounted) {
-    sgtest::TempDir dir("follow-on");
-    shadergen::BuildOptions options;
-    options.spec_path = sgtest::fixtures_dir() / "follow_on" / "follow_on.json";
-    options.out_dir = dir / "out";
-    options.use_cache = false;
-    options.jobs = 2;
-    auto result = shadergen::build(options);
-    ASSERT_FALSE(result.ok());
-    const std::string folder = (sgtest::fixtures_dir() / "follow_on").lexically_normal().string();
-    std::vector<std::string> printed;
-    for (const shadergen::Diagnostic& d : result.errors()) printed.push_back(d.to_string());
-    EXPECT_EQ(printed, (std::vector<std::string>{
-                           folder + "/cascade.frag:9: error: 'undefined_fn' : no matching overloaded function found "
-                                    "(in 2 of 4 raw permutations: those with FANCY; e.g. raw 1 with FANCY)",
-                           folder + "/include/cascade_common.glsl:3: error: 'missing_alpha' : undeclared identifier "
-                                    "(in 4 of 4 raw permutations: all of them; e.g. raw 0 (no defines))",
-                       }));
-    EXPECT_FALSE(sgtest::fs::exists(dir / "out"));
+  sgtest::TempDir dir("follow-on");
+  shadergen::BuildOptions options;
+  options.spec_path = sgtest::fixtures_dir() / "follow_on" / "follow_on.json";
+  options.out_dir = dir / "out";
+  options.use_cache = false;
+  options.jobs = 2;
+  auto result = shadergen::build(options);
+  ASSERT_FALSE(result.ok());
+  const std::string folder = (sgtest::fixtures_dir() / "follow_on").lexically_normal().string();
+  std::vector<std::string> printed;
+  for (const shadergen::Diagnostic& d : result.errors()) printed.push_back(d.to_string());
+  EXPECT_EQ(printed, (std::vector<std::string>{
+                         folder + "/cascade.frag:9: error: 'undefined_fn' : no matching overloaded function found "
+                                  "(in 2 of 4 raw permutations: those with FANCY; e.g. raw 1 with FANCY)",
+                         folder + "/include/cascade_common.glsl:3: error: 'missing_alpha' : undeclared identifier "
+                                  "(in 4 of 4 raw permutations: all of them; e.g. raw 0 (no defines))",
+                     }));
+  EXPECT_FALSE(sgtest::fs::exists(dir / "out"));
 }
 
 TEST(FollowOnErrors, LiveLinesFollowIncludeMarkersAndSkipThePreamble) {
-    const std::string text =
-        "#extension GL_GOOGLE_include_directive : require\n#version 450\n\nvoid main(){\n#line 1 \"inc.glsl\"\n"
-        "float f(){\n#line 5 \"main.frag\"\n}\n";
-    shadergen::LiveLines lines = shadergen::live_lines(text, "main.frag");
-    EXPECT_EQ(lines, (shadergen::LiveLines{{{"main.frag", 1}, "#version 450"},
-                                           {{"main.frag", 3}, "void main(){"},
-                                           {{"inc.glsl", 1}, "float f(){"},
-                                           {{"main.frag", 5}, "}"}}));
+  const std::string text =
+      "#extension GL_GOOGLE_include_directive : require\n#version 450\n\nvoid main(){\n#line 1 \"inc.glsl\"\n"
+      "float f(){\n#line 5 \"main.frag\"\n}\n";
+  shadergen::LiveLines lines = shadergen::live_lines(text, "main.frag");
+  EXPECT_EQ(lines, (shadergen::LiveLines{{{"main.frag", 1}, "#version 450"},
+                                         {{"main.frag", 3}, "void main(){"},
+                                         {{"inc.glsl", 1}, "float f(){"},
+                                         {{"main.frag", 5}, "}"}}));
 }
 
 }  // namespace

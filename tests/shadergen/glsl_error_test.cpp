@@ -11,133 +11,134 @@
 #include <set>
 #include <sstream>
 
-#include "test_helpers.h"
 #include "shadergen/build.h"
 #include "shadergen/cli.h"
+#include "test_helpers.h"
 
 namespace {
 
 // The exact grouped diagnostic: 6 of the 12 compilable raw permutations have SOFT_PARTICLES
 // (raw 4, 5, 6, 7, 12, 14; 13 and 15 are pruned), and so do optimised 2 and 3.
 std::string expected_error() {
-    return (sgtest::fixtures_dir() / "glsl_error" / "particle.frag").lexically_normal().string() +
-           ":21: error: 'soft_fade_scale' : undeclared identifier (in 6 of 12 raw permutations: those with "
-           "SOFT_PARTICLES; 2 of 4 optimised permutations; e.g. raw 4 with SOFT_PARTICLES)";
+  return (sgtest::fixtures_dir() / "glsl_error" / "particle.frag").lexically_normal().string() +
+         ":21: error: 'soft_fade_scale' : undeclared identifier (in 6 of 12 raw permutations: those with "
+         "SOFT_PARTICLES; 2 of 4 optimised permutations; e.g. raw 4 with SOFT_PARTICLES)";
 }
 
 struct CliRun {
-    int code;
-    std::string out;
-    std::string err;
+  int code;
+  std::string out;
+  std::string err;
 };
 
 CliRun run_in_process(const std::vector<std::string>& args) {
-    std::ostringstream out, err;
-    int code = shadergen::run_cli(args, out, err);
-    return {code, out.str(), err.str()};
+  std::ostringstream out, err;
+  int code = shadergen::run_cli(args, out, err);
+  return {code, out.str(), err.str()};
 }
 
 std::vector<std::string> build_args(const sgtest::fs::path& spec, const sgtest::fs::path& out,
                                     const sgtest::fs::path& cache) {
-    return {"build", spec.string(), "--out", out.string(), "--cache-dir", cache.string()};
+  return {"build", spec.string(), "--out", out.string(), "--cache-dir", cache.string()};
 }
 
 // Nothing but `expected` may exist beside the output: no staging or backup folder left behind.
 void expect_only(const sgtest::fs::path& dir, const std::set<std::string>& expected) {
-    std::set<std::string> present;
-    for (const auto& entry : sgtest::fs::directory_iterator(dir)) present.insert(entry.path().filename().string());
-    EXPECT_EQ(present, expected);
+  std::set<std::string> present;
+  for (const auto& entry : sgtest::fs::directory_iterator(dir)) present.insert(entry.path().filename().string());
+  EXPECT_EQ(present, expected);
 }
 
 TEST(GlslError, FixtureIsTheToyDomainWithOneBrokenLine) {
-    std::string broken = sgtest::read_file(sgtest::fixtures_dir() / "glsl_error" / "particle.frag");
-    std::istringstream lines(broken);
-    std::string line;
-    for (int n = 1; n <= 21 && std::getline(lines, line); ++n) {
-    }
-    EXPECT_EQ(line, "    color.a *= clamp((scene - gl_FragCoord.z) * soft_fade_scale, 0.0, 1.0);")
-        << "the tests expect the error on line 21";
+  std::string broken = sgtest::read_file(sgtest::fixtures_dir() / "glsl_error" / "particle.frag");
+  std::istringstream lines(broken);
+  std::string line;
+  for (int n = 1; n <= 21 && std::getline(lines, line); ++n) {
+  }
+  EXPECT_EQ(line, "    color.a *= clamp((scene - gl_FragCoord.z) * soft_fade_scale, 0.0, 1.0);")
+      << "the tests expect the error on line 21";
 }
 
 TEST(GlslError, LibraryReportsOneGroupedDiagnostic) {
-    sgtest::TempDir dir("glsl-error-lib");
-    shadergen::BuildOptions options;
-    options.spec_path = sgtest::glsl_error_spec();
-    options.out_dir = dir / "out";
-    options.cache_dir = dir / "cache";
-    auto result = shadergen::build(options);
-    ASSERT_FALSE(result.ok());
-    ASSERT_EQ(result.errors().size(), 1u);
-    const shadergen::Diagnostic& d = result.errors().front();
-    EXPECT_EQ(d.line, 21);
-    EXPECT_EQ(d.to_string(), expected_error());
-    EXPECT_FALSE(sgtest::fs::exists(dir / "out"));
+  sgtest::TempDir dir("glsl-error-lib");
+  shadergen::BuildOptions options;
+  options.spec_path = sgtest::glsl_error_spec();
+  options.out_dir = dir / "out";
+  options.cache_dir = dir / "cache";
+  auto result = shadergen::build(options);
+  ASSERT_FALSE(result.ok());
+  ASSERT_EQ(result.errors().size(), 1u);
+  const shadergen::Diagnostic& d = result.errors().front();
+  EXPECT_EQ(d.line, 21);
+  EXPECT_EQ(d.to_string(), expected_error());
+  EXPECT_FALSE(sgtest::fs::exists(dir / "out"));
 }
 
 TEST(GlslError, CliKeepsThePreviousOutputIntact) {
-    sgtest::TempDir dir("glsl-error-cli");
-    const sgtest::fs::path out = dir / "out";
-    CliRun good = run_in_process(build_args(sgtest::toy_spec(), out, dir / "cache"));
-    ASSERT_EQ(good.code, 0) << good.err;
-    auto bytes_before = sgtest::snapshot(out);
-    auto times_before = sgtest::mtimes(out);
-    ASSERT_FALSE(bytes_before.empty());
+  sgtest::TempDir dir("glsl-error-cli");
+  const sgtest::fs::path out = dir / "out";
+  CliRun good = run_in_process(build_args(sgtest::toy_spec(), out, dir / "cache"));
+  ASSERT_EQ(good.code, 0) << good.err;
+  auto bytes_before = sgtest::snapshot(out);
+  auto times_before = sgtest::mtimes(out);
+  ASSERT_FALSE(bytes_before.empty());
 
-    CliRun bad = run_in_process(build_args(sgtest::glsl_error_spec(), out, dir / "cache"));
-    EXPECT_EQ(bad.code, 1);
-    EXPECT_TRUE(sgtest::contains(bad.err, expected_error() + "\n")) << bad.err;
-    EXPECT_EQ(sgtest::count_of(bad.err, "error:"), 1u) << "one grouped error, no follow-on noise:\n" << bad.err;
-    EXPECT_TRUE(bad.out.empty()) << bad.out;
+  CliRun bad = run_in_process(build_args(sgtest::glsl_error_spec(), out, dir / "cache"));
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_TRUE(sgtest::contains(bad.err, expected_error() + "\n")) << bad.err;
+  EXPECT_EQ(sgtest::count_of(bad.err, "error:"), 1u) << "one grouped error, no follow-on noise:\n" << bad.err;
+  EXPECT_TRUE(bad.out.empty()) << bad.out;
 
-    auto bytes_after = sgtest::snapshot(out);
-    EXPECT_EQ(bytes_after, bytes_before) << sgtest::describe_difference(bytes_before, bytes_after);
-    EXPECT_EQ(sgtest::mtimes(out), times_before);
-    expect_only(dir.path(), {"cache", "out"});
+  auto bytes_after = sgtest::snapshot(out);
+  EXPECT_EQ(bytes_after, bytes_before) << sgtest::describe_difference(bytes_before, bytes_after);
+  EXPECT_EQ(sgtest::mtimes(out), times_before);
+  expect_only(dir.path(), {"cache", "out"});
 }
 
 TEST(GlslError, ExecutableExitsOneAndKeepsThePreviousOutputIntact) {
-    sgtest::TempDir dir("glsl-error-exe");
-    const sgtest::fs::path out = dir / "out";
-    sgtest::ProcessResult good = sgtest::run_process(sgtest::shadergen_exe(), build_args(sgtest::toy_spec(), out, dir / "cache"));
-    ASSERT_EQ(good.exit_code, 0) << good.err;
-    auto bytes_before = sgtest::snapshot(out);
-    auto times_before = sgtest::mtimes(out);
+  sgtest::TempDir dir("glsl-error-exe");
+  const sgtest::fs::path out = dir / "out";
+  sgtest::ProcessResult good =
+      sgtest::run_process(sgtest::shadergen_exe(), build_args(sgtest::toy_spec(), out, dir / "cache"));
+  ASSERT_EQ(good.exit_code, 0) << good.err;
+  auto bytes_before = sgtest::snapshot(out);
+  auto times_before = sgtest::mtimes(out);
 
-    sgtest::ProcessResult bad =
-        sgtest::run_process(sgtest::shadergen_exe(), build_args(sgtest::glsl_error_spec(), out, dir / "cache"));
-    EXPECT_EQ(bad.exit_code, 1);
-    EXPECT_TRUE(sgtest::contains(bad.err, expected_error() + "\n")) << bad.err;
-    EXPECT_EQ(sgtest::count_of(bad.err, "error:"), 1u) << bad.err;
+  sgtest::ProcessResult bad =
+      sgtest::run_process(sgtest::shadergen_exe(), build_args(sgtest::glsl_error_spec(), out, dir / "cache"));
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_TRUE(sgtest::contains(bad.err, expected_error() + "\n")) << bad.err;
+  EXPECT_EQ(sgtest::count_of(bad.err, "error:"), 1u) << bad.err;
 
-    auto bytes_after = sgtest::snapshot(out);
-    EXPECT_EQ(bytes_after, bytes_before) << sgtest::describe_difference(bytes_before, bytes_after);
-    EXPECT_EQ(sgtest::mtimes(out), times_before);
-    expect_only(dir.path(), {"cache", "out"});
+  auto bytes_after = sgtest::snapshot(out);
+  EXPECT_EQ(bytes_after, bytes_before) << sgtest::describe_difference(bytes_before, bytes_after);
+  EXPECT_EQ(sgtest::mtimes(out), times_before);
+  expect_only(dir.path(), {"cache", "out"});
 }
 
 TEST(GlslError, FixingTheErrorBuildsAgain) {
-    // A copy of the broken fixture, repaired by declaring the missing constant before main().
-    sgtest::TempDir dir("glsl-error-fixed");
-    sgtest::fs::path domain = dir / "glsl_error";
-    sgtest::fs::create_directories(domain);
-    std::string spec = sgtest::read_file(sgtest::glsl_error_spec());
-    // The copy lives elsewhere: point its relative paths back at the toy fixture.
-    for (const std::string from : {"\"../toy/include\"", "\"../toy/sort.comp\""}) {
-        auto at = spec.find(from);
-        ASSERT_NE(at, std::string::npos) << from;
-        std::string absolute = "\"" + (sgtest::fixtures_dir() / "toy").string() + from.substr(7);
-        spec.replace(at, from.size(), absolute);
-    }
-    sgtest::write_file(domain / "glsl_error.json", spec);
-    std::string shader = sgtest::read_file(sgtest::fixtures_dir() / "glsl_error" / "particle.frag");
-    const std::string anchor = "void main() {";
-    ASSERT_NE(shader.find(anchor), std::string::npos);
-    shader.insert(shader.find(anchor), "const float soft_fade_scale = 50.0;\n");
-    sgtest::write_file(domain / "particle.frag", shader);
+  // A copy of the broken fixture, repaired by declaring the missing constant before main().
+  sgtest::TempDir dir("glsl-error-fixed");
+  sgtest::fs::path domain = dir / "glsl_error";
+  sgtest::fs::create_directories(domain);
+  std::string spec = sgtest::read_file(sgtest::glsl_error_spec());
+  // The copy lives elsewhere: point its relative paths back at the toy fixture.
+  for (const std::string from : {"\"../toy/include\"", "\"../toy/sort.comp\""}) {
+    auto at = spec.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    std::string absolute = "\"" + (sgtest::fixtures_dir() / "toy").string() + from.substr(7);
+    spec.replace(at, from.size(), absolute);
+  }
+  sgtest::write_file(domain / "glsl_error.json", spec);
+  std::string shader = sgtest::read_file(sgtest::fixtures_dir() / "glsl_error" / "particle.frag");
+  const std::string anchor = "void main() {";
+  ASSERT_NE(shader.find(anchor), std::string::npos);
+  shader.insert(shader.find(anchor), "const float soft_fade_scale = 50.0;\n");
+  sgtest::write_file(domain / "particle.frag", shader);
 
-    CliRun fixed = run_in_process(build_args(domain / "glsl_error.json", dir / "out", dir / "cache"));
-    EXPECT_EQ(fixed.code, 0) << fixed.err;
-    EXPECT_TRUE(sgtest::contains(fixed.out, "16 raw (4 pruned), 4 optimised, 1 companion")) << fixed.out;
+  CliRun fixed = run_in_process(build_args(domain / "glsl_error.json", dir / "out", dir / "cache"));
+  EXPECT_EQ(fixed.code, 0) << fixed.err;
+  EXPECT_TRUE(sgtest::contains(fixed.out, "16 raw (4 pruned), 4 optimised, 1 companion")) << fixed.out;
 }
 
 }  // namespace

@@ -11,21 +11,21 @@ static_assert(identity::kRawCount == 2048u);
 static_assert(identity::kOptimisedCount == 0u);
 
 TEST(IdentityRegistry, LookupByRawIdGivesTheRawPermutation) {
-    const shadergen::Registry& r = identity::registry();
-    EXPECT_TRUE(r.raw_to_optimised.empty());
-    EXPECT_TRUE(r.optimised.empty());
-    ASSERT_EQ(r.raw.size(), identity::kRawCount);
-    std::size_t compiled = 0;
-    for (std::uint32_t id = 0; id < identity::kRawCount; ++id) {
-        const shadergen::Permutation& p = r.optimised_for_raw(id);
-        EXPECT_EQ(&p, &r.raw[id]);
-        EXPECT_EQ(p.pruned, identity::kRawPruned[id]);
-        compiled += !p.pruned;
-    }
-    EXPECT_EQ(compiled, 405u);
-    constexpr std::uint32_t kAlbedoNormal = identity::raw_bit::ALBEDO_MAP | identity::raw_bit::NORMAL_MAP;
-    ASSERT_EQ(r.raw[kAlbedoNormal].defines.size(), 2u);
-    EXPECT_EQ(r.raw[kAlbedoNormal].defines[1], "USE_NORMAL_MAP");
+  const shadergen::Registry& r = identity::registry();
+  EXPECT_TRUE(r.raw_to_optimised.empty());
+  EXPECT_TRUE(r.optimised.empty());
+  ASSERT_EQ(r.raw.size(), identity::kRawCount);
+  std::size_t compiled = 0;
+  for (std::uint32_t id = 0; id < identity::kRawCount; ++id) {
+    const shadergen::Permutation& p = r.optimised_for_raw(id);
+    EXPECT_EQ(&p, &r.raw[id]);
+    EXPECT_EQ(p.pruned, identity::kRawPruned[id]);
+    compiled += !p.pruned;
+  }
+  EXPECT_EQ(compiled, 405u);
+  constexpr std::uint32_t kAlbedoNormal = identity::raw_bit::ALBEDO_MAP | identity::raw_bit::NORMAL_MAP;
+  ASSERT_EQ(r.raw[kAlbedoNormal].defines.size(), 2u);
+  EXPECT_EQ(r.raw[kAlbedoNormal].defines[1], "USE_NORMAL_MAP");
 }
 
 }  // namespace

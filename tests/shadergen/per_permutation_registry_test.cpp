@@ -11,40 +11,40 @@ namespace {
 
 const shadergen::DescriptorBinding* binding_at(const shadergen::Permutation& p, std::uint32_t set,
                                                std::uint32_t binding) {
-    auto& list = p.reflection.bindings;
-    auto found = std::find_if(list.begin(), list.end(), [&](const shadergen::DescriptorBinding& b) {
-        return b.set == set && b.binding == binding;
-    });
-    return found == list.end() ? nullptr : &*found;
+  auto& list = p.reflection.bindings;
+  auto found = std::find_if(list.begin(), list.end(), [&](const shadergen::DescriptorBinding& b) {
+    return b.set == set && b.binding == binding;
+  });
+  return found == list.end() ? nullptr : &*found;
 }
 
 TEST(PerPermutationRegistry, EachPermutationHasItsOwnLayout) {
-    const shadergen::Registry& r = per_permutation::registry();
-    EXPECT_TRUE(r.per_permutation_layout);
-    EXPECT_TRUE(r.pipeline_layout.empty());
-    ASSERT_EQ(r.raw.size(), 8u);
-    const auto* sampled = binding_at(r.raw[0], 0, 1);
-    const auto* subpass = binding_at(r.raw[1], 0, 1);
-    ASSERT_TRUE(sampled && subpass);
-    EXPECT_EQ(sampled->kind, shadergen::DescriptorKind::combined_image_sampler);
-    EXPECT_EQ(subpass->kind, shadergen::DescriptorKind::input_attachment);
-    EXPECT_EQ(subpass->input_attachment_index, 0u);
-    EXPECT_EQ(r.raw[0].reflection.outputs.size(), 1u);
-    EXPECT_EQ(r.raw[2].reflection.outputs.size(), 2u);
-    const auto* cookies = binding_at(r.raw[4], 1, 0);
-    ASSERT_NE(cookies, nullptr);
-    EXPECT_TRUE(cookies->runtime_sized);
-    EXPECT_EQ(cookies->count, 0u);
-    ASSERT_EQ(r.raw[0].reflection.specialization_constants.size(), 1u);
-    EXPECT_EQ(r.raw[0].reflection.specialization_constants[0].name, "LIGHT_SCALE");
-    const shadergen::CompanionShader* fft = r.companion("fft");
-    ASSERT_NE(fft, nullptr);
-    EXPECT_EQ(fft->stage, shadergen::Stage::compute);
-    EXPECT_EQ(fft->shader.reflection.local_size_ids[0], 3u);
-    EXPECT_EQ(fft->shader.reflection.local_size_ids[1], shadergen::Reflection::kNoConstant);
-    ASSERT_EQ(fft->shader.reflection.specialization_constants.size(), 2u);
-    EXPECT_EQ(fft->shader.reflection.specialization_constants[1].name, "RADIX");
-    EXPECT_EQ(fft->shader.reflection.specialization_constants[1].default_bits, 4u);
+  const shadergen::Registry& r = per_permutation::registry();
+  EXPECT_TRUE(r.per_permutation_layout);
+  EXPECT_TRUE(r.pipeline_layout.empty());
+  ASSERT_EQ(r.raw.size(), 8u);
+  const auto* sampled = binding_at(r.raw[0], 0, 1);
+  const auto* subpass = binding_at(r.raw[1], 0, 1);
+  ASSERT_TRUE(sampled && subpass);
+  EXPECT_EQ(sampled->kind, shadergen::DescriptorKind::combined_image_sampler);
+  EXPECT_EQ(subpass->kind, shadergen::DescriptorKind::input_attachment);
+  EXPECT_EQ(subpass->input_attachment_index, 0u);
+  EXPECT_EQ(r.raw[0].reflection.outputs.size(), 1u);
+  EXPECT_EQ(r.raw[2].reflection.outputs.size(), 2u);
+  const auto* cookies = binding_at(r.raw[4], 1, 0);
+  ASSERT_NE(cookies, nullptr);
+  EXPECT_TRUE(cookies->runtime_sized);
+  EXPECT_EQ(cookies->count, 0u);
+  ASSERT_EQ(r.raw[0].reflection.specialization_constants.size(), 1u);
+  EXPECT_EQ(r.raw[0].reflection.specialization_constants[0].name, "LIGHT_SCALE");
+  const shadergen::CompanionShader* fft = r.companion("fft");
+  ASSERT_NE(fft, nullptr);
+  EXPECT_EQ(fft->stage, shadergen::Stage::compute);
+  EXPECT_EQ(fft->shader.reflection.local_size_ids[0], 3u);
+  EXPECT_EQ(fft->shader.reflection.local_size_ids[1], shadergen::Reflection::kNoConstant);
+  ASSERT_EQ(fft->shader.reflection.specialization_constants.size(), 2u);
+  EXPECT_EQ(fft->shader.reflection.specialization_constants[1].name, "RADIX");
+  EXPECT_EQ(fft->shader.reflection.specialization_constants[1].default_bits, 4u);
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "test_helpers.h"
 #include "shadergen/build.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -15,84 +15,86 @@ using nlohmann::json;
 using sgtest::fs::path;
 
 shadergen::Result<shadergen::BuildSummary> build_program(const path& spec, const path& out, const path& cache) {
-    shadergen::BuildOptions options;
-    options.spec_path = spec;
-    options.out_dir = out;
-    options.cache_dir = cache;
-    options.jobs = 2;
-    return shadergen::build(options);
+  shadergen::BuildOptions options;
+  options.spec_path = spec;
+  options.out_dir = out;
+  options.cache_dir = cache;
+  options.jobs = 2;
+  return shadergen::build(options);
 }
 
 // A copy of the fixture with `from` replaced by `to` in `file`.
 path broken_copy(const sgtest::TempDir& dir, const std::string& file, const std::string& from, const std::string& to) {
-    for (const auto& [name, bytes] : sgtest::snapshot(sgtest::fixtures_dir() / "program"))
-        sgtest::write_file(dir / ("spec/" + name), bytes);
-    std::string text = sgtest::read_file(dir / ("spec/" + file));
-    text.replace(text.find(from), from.size(), to);
-    sgtest::write_file(dir / ("spec/" + file), text);
-    return dir / "spec" / "program.json";
+  for (const auto& [name, bytes] : sgtest::snapshot(sgtest::fixtures_dir() / "program"))
+    sgtest::write_file(dir / ("spec/" + name), bytes);
+  std::string text = sgtest::read_file(dir / ("spec/" + file));
+  text.replace(text.find(from), from.size(), to);
+  sgtest::write_file(dir / ("spec/" + file), text);
+  return dir / "spec" / "program.json";
 }
 
 TEST(ProgramForm, EveryPermutationHasBothHalvesWithTheSameDefines) {
-    sgtest::TempDir dir("program");
-    auto summary = build_program(sgtest::fixtures_dir() / "program" / "program.json", dir / "out", dir / "cache");
-    ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
-    EXPECT_EQ(summary->permutations, 8u) << "4 raw IDs, two shaders each";
-    EXPECT_EQ(summary->unique_sources, 8u);
-    json manifest = json::parse(sgtest::read_file(dir / "out" / "manifest.json"));
-    EXPECT_EQ(manifest["uber_shader"], "surface.frag");
-    EXPECT_EQ(manifest["vertex_shader"], "surface.vert");
-    for (const json& raw : manifest["raw"]) {
-        ASSERT_TRUE(raw.contains("vertex_spirv")) << raw.dump();
-        std::string vertex = raw["vertex_spirv"], fragment = raw["spirv"];
-        EXPECT_NE(vertex, fragment);
-        for (const json& blob : manifest["blobs"]) {
-            if (blob["spirv"] == vertex) {
-                EXPECT_EQ(blob["stage"], "vertex");
-            }
-            if (blob["spirv"] == fragment) {
-                EXPECT_EQ(blob["stage"], "fragment");
-            }
-        }
-        sgtest::ProcessResult val = sgtest::spirv_val(dir / "out" / vertex);
-        EXPECT_EQ(val.exit_code, 0) << val.err;
+  sgtest::TempDir dir("program");
+  auto summary = build_program(sgtest::fixtures_dir() / "program" / "program.json", dir / "out", dir / "cache");
+  ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
+  EXPECT_EQ(summary->permutations, 8u) << "4 raw IDs, two shaders each";
+  EXPECT_EQ(summary->unique_sources, 8u);
+  json manifest = json::parse(sgtest::read_file(dir / "out" / "manifest.json"));
+  EXPECT_EQ(manifest["uber_shader"], "surface.frag");
+  EXPECT_EQ(manifest["vertex_shader"], "surface.vert");
+  for (const json& raw : manifest["raw"]) {
+    ASSERT_TRUE(raw.contains("vertex_spirv")) << raw.dump();
+    std::string vertex = raw["vertex_spirv"], fragment = raw["spirv"];
+    EXPECT_NE(vertex, fragment);
+    for (const json& blob : manifest["blobs"]) {
+      if (blob["spirv"] == vertex) {
+        EXPECT_EQ(blob["stage"], "vertex");
+      }
+      if (blob["spirv"] == fragment) {
+        EXPECT_EQ(blob["stage"], "fragment");
+      }
     }
-    std::string source = sgtest::read_file(dir / "out" / "surface_program.cpp");
-    EXPECT_EQ(sgtest::count_of(source, "&kReflections["), 4u) << "each raw permutation points at its vertex half";
+    sgtest::ProcessResult val = sgtest::spirv_val(dir / "out" / vertex);
+    EXPECT_EQ(val.exit_code, 0) << val.err;
+  }
+  std::string source = sgtest::read_file(dir / "out" / "surface_program.cpp");
+  EXPECT_EQ(sgtest::count_of(source, "&kReflections["), 4u) << "each raw permutation points at its vertex half";
 }
 
 TEST(ProgramForm, AFragmentInputTheVertexHalfDoesNotWriteIsRefused) {
-    sgtest::TempDir dir("program-missing");
-    path spec = broken_copy(dir, "surface.vert", "layout(location = 2) out float out_fog;",
-                            "layout(location = 3) out float out_fog;");
-    auto result = build_program(spec, dir / "out", dir / "cache");
-    ASSERT_FALSE(result.ok());
-    ASSERT_EQ(result.errors().size(), 2u);
-    EXPECT_EQ(result.errors()[0].to_string(),
-              spec.string() + ": error: raw 2 (FOG): the fragment shader reads location 2 (\"in_fog\", 1 components), "
-                              "which the vertex shader does not write");
-    EXPECT_FALSE(sgtest::fs::exists(dir / "out"));
+  sgtest::TempDir dir("program-missing");
+  path spec = broken_copy(dir, "surface.vert", "layout(location = 2) out float out_fog;",
+                          "layout(location = 3) out float out_fog;");
+  auto result = build_program(spec, dir / "out", dir / "cache");
+  ASSERT_FALSE(result.ok());
+  ASSERT_EQ(result.errors().size(), 2u);
+  EXPECT_EQ(result.errors()[0].to_string(),
+            spec.string() +
+                ": error: raw 2 (FOG): the fragment shader reads location 2 (\"in_fog\", 1 components), "
+                "which the vertex shader does not write");
+  EXPECT_FALSE(sgtest::fs::exists(dir / "out"));
 }
 
 TEST(ProgramForm, ANarrowerVertexOutputIsRefused) {
-    sgtest::TempDir dir("program-narrow");
-    path spec = broken_copy(dir, "surface.frag", "layout(location = 0) in vec3 in_normal;",
-                            "layout(location = 0) in vec4 in_normal4;\n#define in_normal in_normal4.xyz");
-    auto result = build_program(spec, dir / "out", dir / "cache");
-    ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.errors()[0].to_string(),
-              spec.string() + ": error: raw 0: the fragment shader reads location 0 (\"in_normal4\", 4 components), "
-                              "which the vertex shader writes with 3 (\"out_normal\")");
+  sgtest::TempDir dir("program-narrow");
+  path spec = broken_copy(dir, "surface.frag", "layout(location = 0) in vec3 in_normal;",
+                          "layout(location = 0) in vec4 in_normal4;\n#define in_normal in_normal4.xyz");
+  auto result = build_program(spec, dir / "out", dir / "cache");
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.errors()[0].to_string(),
+            spec.string() +
+                ": error: raw 0: the fragment shader reads location 0 (\"in_normal4\", 4 components), "
+                "which the vertex shader writes with 3 (\"out_normal\")");
 }
 
 TEST(ProgramForm, UberShaderAndProgramTogetherIsAnError) {
-    sgtest::TempDir dir("program-both");
-    path spec = broken_copy(dir, "program.json", "\"program\":",
-                            "\"uber_shader\": { \"path\": \"surface.frag\" },\n  \"program\":");
-    auto result = build_program(spec, dir / "out", dir / "cache");
-    ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.errors()[0].to_string(),
-              spec.string() + ":6:14: error: program: a spec has \"uber_shader\" or \"program\", not both");
+  sgtest::TempDir dir("program-both");
+  path spec = broken_copy(dir, "program.json",
+                          "\"program\":", "\"uber_shader\": { \"path\": \"surface.frag\" },\n  \"program\":");
+  auto result = build_program(spec, dir / "out", dir / "cache");
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.errors()[0].to_string(),
+            spec.string() + ":6:14: error: program: a spec has \"uber_shader\" or \"program\", not both");
 }
 
 }  // namespace

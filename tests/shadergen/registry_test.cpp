@@ -8,59 +8,59 @@
 namespace {
 
 TEST(GeneratedRegistry, TableAndPermutations) {
-    const shadergen::Registry& r = split_second::registry();
-    EXPECT_EQ(r.name, "split_second");
-    ASSERT_EQ(r.raw.size(), 128u);
-    ASSERT_EQ(r.optimised.size(), 32u);
-    static_assert(split_second::kRawToOptimised[69] == 8);
-    static_assert(split_second::kRawPruned[3] && !split_second::kRawPruned[2]);
-    static_assert(split_second::raw_bit::SUN_LIGHT == 64u && split_second::optimised_bit::SUN_1 == 16u);
-    std::size_t pruned = 0;
-    for (std::uint32_t id = 0; id < r.raw.size(); ++id) {
-        const shadergen::Permutation& p = r.raw[id];
-        EXPECT_EQ(p.id, id);
-        EXPECT_EQ(r.raw_to_optimised[id], split_second::kRawToOptimised[id]);
-        EXPECT_EQ(p.pruned, split_second::kRawPruned[id]);
-        if (p.pruned) {
-            ++pruned;
-            EXPECT_TRUE(p.spirv.empty());
-            continue;
-        }
-        ASSERT_GT(p.spirv.size(), 5u);
-        EXPECT_EQ(p.spirv[0], 0x07230203u);
-        EXPECT_EQ(p.hash.size(), 64u);
-        ASSERT_EQ(p.reflection.outputs.size(), 1u);
-        EXPECT_EQ(p.reflection.outputs[0].location, 0u);
-        EXPECT_EQ(p.reflection.outputs[0].components, 4u);
+  const shadergen::Registry& r = split_second::registry();
+  EXPECT_EQ(r.name, "split_second");
+  ASSERT_EQ(r.raw.size(), 128u);
+  ASSERT_EQ(r.optimised.size(), 32u);
+  static_assert(split_second::kRawToOptimised[69] == 8);
+  static_assert(split_second::kRawPruned[3] && !split_second::kRawPruned[2]);
+  static_assert(split_second::raw_bit::SUN_LIGHT == 64u && split_second::optimised_bit::SUN_1 == 16u);
+  std::size_t pruned = 0;
+  for (std::uint32_t id = 0; id < r.raw.size(); ++id) {
+    const shadergen::Permutation& p = r.raw[id];
+    EXPECT_EQ(p.id, id);
+    EXPECT_EQ(r.raw_to_optimised[id], split_second::kRawToOptimised[id]);
+    EXPECT_EQ(p.pruned, split_second::kRawPruned[id]);
+    if (p.pruned) {
+      ++pruned;
+      EXPECT_TRUE(p.spirv.empty());
+      continue;
     }
-    EXPECT_EQ(pruned, 32u);
-    EXPECT_EQ(r.optimised[31].defines.size(), 6u);
-    EXPECT_EQ(&r.optimised_for_raw(69), &r.optimised[8]);
+    ASSERT_GT(p.spirv.size(), 5u);
+    EXPECT_EQ(p.spirv[0], 0x07230203u);
+    EXPECT_EQ(p.hash.size(), 64u);
+    ASSERT_EQ(p.reflection.outputs.size(), 1u);
+    EXPECT_EQ(p.reflection.outputs[0].location, 0u);
+    EXPECT_EQ(p.reflection.outputs[0].components, 4u);
+  }
+  EXPECT_EQ(pruned, 32u);
+  EXPECT_EQ(r.optimised[31].defines.size(), 6u);
+  EXPECT_EQ(&r.optimised_for_raw(69), &r.optimised[8]);
 }
 
 TEST(GeneratedRegistry, CompanionAndLayout) {
-    const shadergen::Registry& r = split_second::registry();
-    const shadergen::CompanionShader* tile = r.companion("tile");
-    ASSERT_NE(tile, nullptr);
-    EXPECT_EQ(tile->stage, shadergen::Stage::vertex);
-    ASSERT_EQ(tile->shader.reflection.inputs.size(), 1u);
-    EXPECT_EQ(tile->shader.reflection.inputs[0].components, 2u);
-    EXPECT_EQ(tile->shader.reflection.push_constant_size, 8u);
-    EXPECT_EQ(r.companion("nope"), nullptr);
-    ASSERT_EQ(r.pipeline_layout.size(), 6u);
-    EXPECT_EQ(r.pipeline_layout[0].kind, shadergen::DescriptorKind::uniform_buffer);
-    EXPECT_EQ(r.pipeline_layout[5].name, "shadow_map");
-    ASSERT_EQ(r.push_constants.size(), 1u);
-    EXPECT_EQ(r.push_constants[0].stages, static_cast<std::uint32_t>(shadergen::Stage::vertex));
+  const shadergen::Registry& r = split_second::registry();
+  const shadergen::CompanionShader* tile = r.companion("tile");
+  ASSERT_NE(tile, nullptr);
+  EXPECT_EQ(tile->stage, shadergen::Stage::vertex);
+  ASSERT_EQ(tile->shader.reflection.inputs.size(), 1u);
+  EXPECT_EQ(tile->shader.reflection.inputs[0].components, 2u);
+  EXPECT_EQ(tile->shader.reflection.push_constant_size, 8u);
+  EXPECT_EQ(r.companion("nope"), nullptr);
+  ASSERT_EQ(r.pipeline_layout.size(), 6u);
+  EXPECT_EQ(r.pipeline_layout[0].kind, shadergen::DescriptorKind::uniform_buffer);
+  EXPECT_EQ(r.pipeline_layout[5].name, "shadow_map");
+  ASSERT_EQ(r.push_constants.size(), 1u);
+  EXPECT_EQ(r.push_constants[0].stages, static_cast<std::uint32_t>(shadergen::Stage::vertex));
 }
 
 TEST(GeneratedRegistry, SharedBlobsAreOneArray) {
-    const shadergen::Registry& r = split_second::registry();
-    // Optimised permutations reuse their raw twin's words: same address, not a copy.
-    std::set<const std::uint32_t*> raw_words;
-    for (const auto& p : r.raw)
-        if (!p.pruned) raw_words.insert(p.spirv.data());
-    for (const auto& p : r.optimised) EXPECT_TRUE(raw_words.count(p.spirv.data())) << "optimised " << p.id;
+  const shadergen::Registry& r = split_second::registry();
+  // Optimised permutations reuse their raw twin's words: same address, not a copy.
+  std::set<const std::uint32_t*> raw_words;
+  for (const auto& p : r.raw)
+    if (!p.pruned) raw_words.insert(p.spirv.data());
+  for (const auto& p : r.optimised) EXPECT_TRUE(raw_words.count(p.spirv.data())) << "optimised " << p.id;
 }
 
 }  // namespace

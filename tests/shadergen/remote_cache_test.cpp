@@ -19,176 +19,175 @@ CachedBlob sample_blob() { return CachedBlob{{0x07230203u, 1u, 2u, 3u}, false, {
 
 // Answers from a map of URL -> response; `failure`, when set, is every request's transport error.
 class FakeHttp final : public HttpClient {
-public:
-    Result<HttpResponse> get(const std::string& url) override {
-        std::lock_guard lock(mutex_);
-        requests.push_back("GET " + url);
-        if (!failure.empty()) return make_error(failure);
-        auto found = objects.find(url);
-        if (found == objects.end()) return HttpResponse{404, "not found"};
-        return found->second;
-    }
-    Result<HttpResponse> put(const std::string& url, std::string_view body) override {
-        std::lock_guard lock(mutex_);
-        requests.push_back("PUT " + url);
-        if (!failure.empty()) return make_error(failure);
-        if (put_status != 201) return HttpResponse{put_status, {}};
-        objects[url] = HttpResponse{200, std::string(body)};
-        return HttpResponse{201, {}};
-    }
+ public:
+  Result<HttpResponse> get(const std::string& url) override {
+    std::lock_guard lock(mutex_);
+    requests.push_back("GET " + url);
+    if (!failure.empty()) return make_error(failure);
+    auto found = objects.find(url);
+    if (found == objects.end()) return HttpResponse{404, "not found"};
+    return found->second;
+  }
+  Result<HttpResponse> put(const std::string& url, std::string_view body) override {
+    std::lock_guard lock(mutex_);
+    requests.push_back("PUT " + url);
+    if (!failure.empty()) return make_error(failure);
+    if (put_status != 201) return HttpResponse{put_status, {}};
+    objects[url] = HttpResponse{200, std::string(body)};
+    return HttpResponse{201, {}};
+  }
 
-    std::map<std::string, HttpResponse> objects;
-    std::vector<std::string> requests;
-    std::string failure;
-    long put_status = 201;
+  std::map<std::string, HttpResponse> objects;
+  std::vector<std::string> requests;
+  std::string failure;
+  long put_status = 201;
 
-private:
-    std::mutex mutex_;
+ private:
+  std::mutex mutex_;
 };
 
 struct Fixture {
-    FakeHttp* http = nullptr;  // owned by `cache`
-    std::vector<std::string> warnings;
-    std::unique_ptr<RemoteCache> cache;
+  FakeHttp* http = nullptr;  // owned by `cache`
+  std::vector<std::string> warnings;
+  std::unique_ptr<RemoteCache> cache;
 
-    explicit Fixture(bool read_only = false) {
-        auto client = std::make_unique<FakeHttp>();
-        http = client.get();
-        cache = std::make_unique<RemoteCache>(kUrl + "/", read_only, std::move(client),
-                                              [this](const std::string& line) { warnings.push_back(line); });
-    }
-    std::string entry_url(const std::string& key) const { return kUrl + "/" + key.substr(0, 2) + "/" + key; }
+  explicit Fixture(bool read_only = false) {
+    auto client = std::make_unique<FakeHttp>();
+    http = client.get();
+    cache = std::make_unique<RemoteCache>(kUrl + "/", read_only, std::move(client),
+                                          [this](const std::string& line) { warnings.push_back(line); });
+  }
+  std::string entry_url(const std::string& key) const { return kUrl + "/" + key.substr(0, 2) + "/" + key; }
 };
 
 TEST(RemoteCache, EntriesLiveAtUrlPrefixKey) {
-    Fixture f;
-    EXPECT_EQ(f.cache->url(), kUrl) << "the trailing slash is dropped";
-    EXPECT_EQ(f.cache->entry_url(kKey), kUrl + "/ab/" + kKey);
+  Fixture f;
+  EXPECT_EQ(f.cache->url(), kUrl) << "the trailing slash is dropped";
+  EXPECT_EQ(f.cache->entry_url(kKey), kUrl + "/ab/" + kKey);
 }
 
 TEST(RemoteCache, UploadsThenServesAVerifiedEntry) {
-    Fixture f;
-    EXPECT_FALSE(f.cache->load(kKey)) << "an empty server";
-    f.cache->store(kKey, sample_blob());
-    auto loaded = f.cache->load(kKey);
-    ASSERT_TRUE(loaded);
-    EXPECT_EQ(loaded->words, sample_blob().words);
-    EXPECT_EQ(f.http->objects.at(f.entry_url(kKey)).body, encode_cache_entry(kKey, sample_blob()))
-        << "the server holds exactly a local entry's bytes";
-    EXPECT_EQ(f.http->requests, (std::vector<std::string>{"GET " + f.entry_url(kKey), "PUT " + f.entry_url(kKey),
-                                                          "GET " + f.entry_url(kKey)}));
-    RemoteCacheStats s = f.cache->stats();
-    EXPECT_EQ(s.fetched, 1u);
-    EXPECT_EQ(s.missed, 1u);
-    EXPECT_EQ(s.uploaded, 1u);
-    EXPECT_EQ(s.failed, 0u);
-    EXPECT_TRUE(f.warnings.empty());
+  Fixture f;
+  EXPECT_FALSE(f.cache->load(kKey)) << "an empty server";
+  f.cache->store(kKey, sample_blob());
+  auto loaded = f.cache->load(kKey);
+  ASSERT_TRUE(loaded);
+  EXPECT_EQ(loaded->words, sample_blob().words);
+  EXPECT_EQ(f.http->objects.at(f.entry_url(kKey)).body, encode_cache_entry(kKey, sample_blob()))
+      << "the server holds exactly a local entry's bytes";
+  EXPECT_EQ(f.http->requests, (std::vector<std::string>{"GET " + f.entry_url(kKey), "PUT " + f.entry_url(kKey),
+                                                        "GET " + f.entry_url(kKey)}));
+  RemoteCacheStats s = f.cache->stats();
+  EXPECT_EQ(s.fetched, 1u);
+  EXPECT_EQ(s.missed, 1u);
+  EXPECT_EQ(s.uploaded, 1u);
+  EXPECT_EQ(s.failed, 0u);
+  EXPECT_TRUE(f.warnings.empty());
 }
 
 // Each bad body is rejected by the same check local entries get, warned about once, and does not
 // stop the remote cache from serving the next good entry.
 TEST(RemoteCache, RejectsEveryDamagedEntryAndKeepsServingGoodOnes) {
-    const std::string good = encode_cache_entry(kKey, sample_blob());
-    std::string flipped = good;
-    flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
-    std::string other_format = good;
-    other_format.replace(0, 8, "SGCACHE2");
-    const std::map<std::string, std::string> bodies{
-        {"truncated", good.substr(0, good.size() - 3)},
-        {"one byte flipped", flipped},
-        {"another key's entry", encode_cache_entry(kOtherKey, sample_blob())},
-        {"another entry format", other_format},
-        {"empty", ""},
-        {"an HTML page", "<html><body>Welcome</body></html>"},
-    };
-    for (const auto& [what, body] : bodies) {
-        Fixture f;
-        f.http->objects[f.entry_url(kKey)] = HttpResponse{200, body};
-        f.http->objects[f.entry_url(kOtherKey)] = HttpResponse{200, encode_cache_entry(kOtherKey, sample_blob())};
-        EXPECT_FALSE(f.cache->load(kKey)) << what;
-        EXPECT_FALSE(f.cache->load(kKey)) << what << ", asked again";
-        EXPECT_TRUE(f.cache->load(kOtherKey)) << what;
-        EXPECT_EQ(f.warnings, std::vector<std::string>{"warning: remote cache " + kUrl + ": ab/" + kKey +
-                                                       " is not a valid entry (truncated, corrupted, foreign or from "
-                                                       "another version); compiled here instead"})
-            << what;
-        EXPECT_EQ(f.cache->stats().failed, 2u) << what;
-        EXPECT_EQ(f.cache->stats().fetched, 1u) << what;
-    }
+  const std::string good = encode_cache_entry(kKey, sample_blob());
+  std::string flipped = good;
+  flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
+  std::string other_format = good;
+  other_format.replace(0, 8, "SGCACHE2");
+  const std::map<std::string, std::string> bodies{
+      {"truncated", good.substr(0, good.size() - 3)},
+      {"one byte flipped", flipped},
+      {"another key's entry", encode_cache_entry(kOtherKey, sample_blob())},
+      {"another entry format", other_format},
+      {"empty", ""},
+      {"an HTML page", "<html><body>Welcome</body></html>"},
+  };
+  for (const auto& [what, body] : bodies) {
+    Fixture f;
+    f.http->objects[f.entry_url(kKey)] = HttpResponse{200, body};
+    f.http->objects[f.entry_url(kOtherKey)] = HttpResponse{200, encode_cache_entry(kOtherKey, sample_blob())};
+    EXPECT_FALSE(f.cache->load(kKey)) << what;
+    EXPECT_FALSE(f.cache->load(kKey)) << what << ", asked again";
+    EXPECT_TRUE(f.cache->load(kOtherKey)) << what;
+    EXPECT_EQ(f.warnings, std::vector<std::string>{"warning: remote cache " + kUrl + ": ab/" + kKey +
+                                                   " is not a valid entry (truncated, corrupted, foreign or from "
+                                                   "another version); compiled here instead"})
+        << what;
+    EXPECT_EQ(f.cache->stats().failed, 2u) << what;
+    EXPECT_EQ(f.cache->stats().fetched, 1u) << what;
+  }
 }
 
 struct FailureCase {
-    std::string what;
-    std::string transport_error;  // empty: the server answers with `get_status` / `put_status`
-    long get_status = 404;
-    long put_status = 201;
-    std::string expected_warning_tail;
+  std::string what;
+  std::string transport_error;  // empty: the server answers with `get_status` / `put_status`
+  long get_status = 404;
+  long put_status = 201;
+  std::string expected_warning_tail;
 };
 
 // A failed request warns once, naming the URL, the request and the failure; after it the remote
 // cache sends nothing more, so a dead server costs one request, not one per source.
 TEST(RemoteCache, FirstFailureWarnsOnceAndStopsAllRequests) {
-    const std::string get = "GET ab/" + kKey + ": ", put = "PUT ab/" + kKey + ": ";
-    const std::vector<FailureCase> cases{
-        {"connection refused", "Failed to connect: Couldn't connect to server", 404, 201,
-         get + "Failed to connect: Couldn't connect to server"},
-        {"timeout", "Operation timed out after 10000 milliseconds", 404, 201,
-         get + "Operation timed out after 10000 milliseconds"},
-        {"GET answered 500", "", 500, 201, get + "HTTP 500"},
-        {"GET answered 403", "", 403, 201, get + "HTTP 403"},
-        {"PUT answered 500", "", 404, 500, put + "HTTP 500"},
-        {"PUT answered 405 (PUT not enabled)", "", 404, 405, put + "HTTP 405"},
-    };
-    for (const FailureCase& c : cases) {
-        Fixture f;
-        f.http->failure = c.transport_error;
-        f.http->put_status = c.put_status;
-        if (c.get_status != 404) f.http->objects[f.entry_url(kKey)] = HttpResponse{c.get_status, "error page"};
-        EXPECT_FALSE(f.cache->load(kKey)) << c.what;
-        f.cache->store(kKey, sample_blob());
-        std::size_t requests = f.http->requests.size();
-        EXPECT_FALSE(f.cache->load(kOtherKey)) << c.what;
-        f.cache->store(kOtherKey, sample_blob());
-        EXPECT_EQ(f.http->requests.size(), requests) << c.what << ": no request after the failure";
-        EXPECT_EQ(f.warnings, std::vector<std::string>{"warning: remote cache " + kUrl + ": " +
-                                                       c.expected_warning_tail +
-                                                       "; the rest of this build does not use it"})
-            << c.what;
-        EXPECT_EQ(f.cache->stats().failed, 1u) << c.what;
-        EXPECT_EQ(f.cache->stats().uploaded, 0u) << c.what;
-    }
+  const std::string get = "GET ab/" + kKey + ": ", put = "PUT ab/" + kKey + ": ";
+  const std::vector<FailureCase> cases{
+      {"connection refused", "Failed to connect: Couldn't connect to server", 404, 201,
+       get + "Failed to connect: Couldn't connect to server"},
+      {"timeout", "Operation timed out after 10000 milliseconds", 404, 201,
+       get + "Operation timed out after 10000 milliseconds"},
+      {"GET answered 500", "", 500, 201, get + "HTTP 500"},
+      {"GET answered 403", "", 403, 201, get + "HTTP 403"},
+      {"PUT answered 500", "", 404, 500, put + "HTTP 500"},
+      {"PUT answered 405 (PUT not enabled)", "", 404, 405, put + "HTTP 405"},
+  };
+  for (const FailureCase& c : cases) {
+    Fixture f;
+    f.http->failure = c.transport_error;
+    f.http->put_status = c.put_status;
+    if (c.get_status != 404) f.http->objects[f.entry_url(kKey)] = HttpResponse{c.get_status, "error page"};
+    EXPECT_FALSE(f.cache->load(kKey)) << c.what;
+    f.cache->store(kKey, sample_blob());
+    std::size_t requests = f.http->requests.size();
+    EXPECT_FALSE(f.cache->load(kOtherKey)) << c.what;
+    f.cache->store(kOtherKey, sample_blob());
+    EXPECT_EQ(f.http->requests.size(), requests) << c.what << ": no request after the failure";
+    EXPECT_EQ(f.warnings, std::vector<std::string>{"warning: remote cache " + kUrl + ": " + c.expected_warning_tail +
+                                                   "; the rest of this build does not use it"})
+        << c.what;
+    EXPECT_EQ(f.cache->stats().failed, 1u) << c.what;
+    EXPECT_EQ(f.cache->stats().uploaded, 0u) << c.what;
+  }
 }
 
 TEST(RemoteCache, ReadOnlyNeverUploads) {
-    Fixture f(/*read_only=*/true);
-    f.http->objects[f.entry_url(kOtherKey)] = HttpResponse{200, encode_cache_entry(kOtherKey, sample_blob())};
-    EXPECT_FALSE(f.cache->load(kKey));
-    f.cache->store(kKey, sample_blob());
-    EXPECT_TRUE(f.cache->load(kOtherKey)) << "it still reads";
-    EXPECT_EQ(f.http->requests, (std::vector<std::string>{"GET " + f.entry_url(kKey), "GET " + f.entry_url(kOtherKey)}));
-    EXPECT_EQ(f.cache->stats().uploaded, 0u);
+  Fixture f(/*read_only=*/true);
+  f.http->objects[f.entry_url(kOtherKey)] = HttpResponse{200, encode_cache_entry(kOtherKey, sample_blob())};
+  EXPECT_FALSE(f.cache->load(kKey));
+  f.cache->store(kKey, sample_blob());
+  EXPECT_TRUE(f.cache->load(kOtherKey)) << "it still reads";
+  EXPECT_EQ(f.http->requests, (std::vector<std::string>{"GET " + f.entry_url(kKey), "GET " + f.entry_url(kOtherKey)}));
+  EXPECT_EQ(f.cache->stats().uploaded, 0u);
 }
 
 // Compile threads fail together when a server dies: one warning still, every failure counted.
 TEST(RemoteCache, ConcurrentFailuresWarnOnce) {
-    Fixture f;
-    f.http->failure = "Connection reset by peer";
-    std::vector<std::thread> threads;
-    for (int i = 0; i < 8; ++i)
-        threads.emplace_back([&] {
-            for (int j = 0; j < 50; ++j) f.cache->load(kKey);
-        });
-    for (std::thread& t : threads) t.join();
-    EXPECT_EQ(f.warnings.size(), 1u);
-    EXPECT_GE(f.cache->stats().failed, 1u);
-    EXPECT_EQ(f.cache->stats().failed, f.http->requests.size()) << "every request that went out failed";
+  Fixture f;
+  f.http->failure = "Connection reset by peer";
+  std::vector<std::thread> threads;
+  for (int i = 0; i < 8; ++i)
+    threads.emplace_back([&] {
+      for (int j = 0; j < 50; ++j) f.cache->load(kKey);
+    });
+  for (std::thread& t : threads) t.join();
+  EXPECT_EQ(f.warnings.size(), 1u);
+  EXPECT_GE(f.cache->stats().failed, 1u);
+  EXPECT_EQ(f.cache->stats().failed, f.http->requests.size()) << "every request that went out failed";
 }
 
 TEST(RemoteCache, AcceptsOnlyHttpUrls) {
-    for (const char* url : {"http://host", "https://host:9090/cache/", "http://127.0.0.1:1"})
-        EXPECT_TRUE(is_remote_cache_url(url)) << url;
-    for (const char* url : {"", "host:8080", "ftp://host", "http://", "file:///tmp/cache", "HTTP//host"})
-        EXPECT_FALSE(is_remote_cache_url(url)) << url;
+  for (const char* url : {"http://host", "https://host:9090/cache/", "http://127.0.0.1:1"})
+    EXPECT_TRUE(is_remote_cache_url(url)) << url;
+  for (const char* url : {"", "host:8080", "ftp://host", "http://", "file:///tmp/cache", "HTTP//host"})
+    EXPECT_FALSE(is_remote_cache_url(url)) << url;
 }
 
 }  // namespace

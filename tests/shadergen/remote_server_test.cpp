@@ -30,10 +30,10 @@ using testsupport::NginxServer;
 const std::string kTail = "; the rest of this build does not use it";
 
 struct RemoteBuild {
-    std::optional<BuildSummary> summary;  // nullopt: the build failed (see `errors`)
-    std::string errors;
-    std::vector<std::string> warnings;
-    std::map<std::string, std::string> output;
+  std::optional<BuildSummary> summary;  // nullopt: the build failed (see `errors`)
+  std::string errors;
+  std::vector<std::string> warnings;
+  std::map<std::string, std::string> output;
 };
 
 using ProgressHook = std::function<void(const std::string&)>;
@@ -42,233 +42,239 @@ using ProgressHook = std::function<void(const std::string&)>;
 // job at a time. `on_progress` sees every progress line (-v), on the compiling thread.
 RemoteBuild build_toy(const fs::path& dir, const std::string& name, const std::string& url, bool read_only = false,
                       const ProgressHook& on_progress = {}) {
-    BuildOptions options;
-    options.spec_path = sgtest::toy_spec();
-    options.out_dir = dir / (name + ".out");
-    options.cache_dir = dir / (name + ".cache");
-    options.jobs = 1;
-    options.verbose = true;
-    options.remote_cache_url = url;
-    options.remote_cache_read_only = read_only;
-    RemoteBuild result;
-    options.log = [&](const std::string& line) {
-        if (line.rfind("warning: ", 0) == 0) result.warnings.push_back(line);
-        else if (on_progress) on_progress(line);
-    };
-    auto summary = build(options);
-    if (summary) result.summary = *summary;
-    else result.errors = summary.errors().front().to_string();
-    result.output = sgtest::snapshot(options.out_dir);
-    return result;
+  BuildOptions options;
+  options.spec_path = sgtest::toy_spec();
+  options.out_dir = dir / (name + ".out");
+  options.cache_dir = dir / (name + ".cache");
+  options.jobs = 1;
+  options.verbose = true;
+  options.remote_cache_url = url;
+  options.remote_cache_read_only = read_only;
+  RemoteBuild result;
+  options.log = [&](const std::string& line) {
+    if (line.rfind("warning: ", 0) == 0)
+      result.warnings.push_back(line);
+    else if (on_progress)
+      on_progress(line);
+  };
+  auto summary = build(options);
+  if (summary)
+    result.summary = *summary;
+  else
+    result.errors = summary.errors().front().to_string();
+  result.output = sgtest::snapshot(options.out_dir);
+  return result;
 }
 
 // What every build must produce: the toy domain built here, without any cache.
 std::map<std::string, std::string> reference_output(const fs::path& dir) {
-    BuildOptions options;
-    options.spec_path = sgtest::toy_spec();
-    options.out_dir = dir / "reference.out";
-    options.use_cache = false;
-    options.jobs = 1;
-    EXPECT_TRUE(build(options).ok());
-    return sgtest::snapshot(options.out_dir);
+  BuildOptions options;
+  options.spec_path = sgtest::toy_spec();
+  options.out_dir = dir / "reference.out";
+  options.use_cache = false;
+  options.jobs = 1;
+  EXPECT_TRUE(build(options).ok());
+  return sgtest::snapshot(options.out_dir);
 }
 
 std::vector<fs::path> stored_objects(const NginxServer& server) {
-    std::vector<fs::path> objects;
-    for (const auto& entry : fs::recursive_directory_iterator(server.data_dir()))
-        if (entry.is_regular_file()) objects.push_back(entry.path());
-    std::sort(objects.begin(), objects.end());
-    return objects;
+  std::vector<fs::path> objects;
+  for (const auto& entry : fs::recursive_directory_iterator(server.data_dir()))
+    if (entry.is_regular_file()) objects.push_back(entry.path());
+  std::sort(objects.begin(), objects.end());
+  return objects;
 }
 
-#define START_SERVER(server, ...)                          \
-    NginxServer server(__VA_ARGS__);                       \
-    ASSERT_TRUE(server.running()) << server.error()
+#define START_SERVER(server, ...)  \
+  NginxServer server(__VA_ARGS__); \
+  ASSERT_TRUE(server.running()) << server.error()
 
 TEST(RemoteCacheServer, SecondMachineCompilesNothingAndWritesTheSameBytes) {
-    sgtest::TempDir run_dir("run");
-    fs::path dir = run_dir.path();
-    START_SERVER(server, dir / "nginx");
-    RemoteBuild first = build_toy(dir, "first", server.url());
-    ASSERT_TRUE(first.summary) << first.errors;
-    EXPECT_EQ(first.summary->compiled, 13u);
-    EXPECT_EQ(first.summary->remote_uploaded, 13u);
-    EXPECT_EQ(stored_objects(server).size(), 13u);
+  sgtest::TempDir run_dir("run");
+  fs::path dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  RemoteBuild first = build_toy(dir, "first", server.url());
+  ASSERT_TRUE(first.summary) << first.errors;
+  EXPECT_EQ(first.summary->compiled, 13u);
+  EXPECT_EQ(first.summary->remote_uploaded, 13u);
+  EXPECT_EQ(stored_objects(server).size(), 13u);
 
-    RemoteBuild second = build_toy(dir, "second", server.url());
-    ASSERT_TRUE(second.summary) << second.errors;
-    EXPECT_EQ(second.summary->compiled, 0u);
-    EXPECT_EQ(second.summary->remote_fetched, 13u);
-    EXPECT_EQ(second.summary->remote_uploaded, 0u);
-    EXPECT_EQ(second.summary->remote_failed, 0u);
-    EXPECT_TRUE(first.warnings.empty() && second.warnings.empty());
-    EXPECT_EQ(second.output, first.output);
-    EXPECT_EQ(second.output, reference_output(dir));
+  RemoteBuild second = build_toy(dir, "second", server.url());
+  ASSERT_TRUE(second.summary) << second.errors;
+  EXPECT_EQ(second.summary->compiled, 0u);
+  EXPECT_EQ(second.summary->remote_fetched, 13u);
+  EXPECT_EQ(second.summary->remote_uploaded, 0u);
+  EXPECT_EQ(second.summary->remote_failed, 0u);
+  EXPECT_TRUE(first.warnings.empty() && second.warnings.empty());
+  EXPECT_EQ(second.output, first.output);
+  EXPECT_EQ(second.output, reference_output(dir));
 
-    // What came from the server was kept locally: a third build on that machine needs no server.
-    server.kill();
-    RemoteBuild third = build_toy(dir, "second", server.url());
-    ASSERT_TRUE(third.summary) << third.errors;
-    EXPECT_EQ(third.summary->compiled, 0u);
-    EXPECT_EQ(third.summary->remote_fetched, 0u);
-    EXPECT_TRUE(third.warnings.empty()) << "a warm local cache sends no request";
+  // What came from the server was kept locally: a third build on that machine needs no server.
+  server.kill();
+  RemoteBuild third = build_toy(dir, "second", server.url());
+  ASSERT_TRUE(third.summary) << third.errors;
+  EXPECT_EQ(third.summary->compiled, 0u);
+  EXPECT_EQ(third.summary->remote_fetched, 0u);
+  EXPECT_TRUE(third.warnings.empty()) << "a warm local cache sends no request";
 }
 
 TEST(RemoteCacheServer, ServerKilledMidBuildDegradesToLocal) {
-    sgtest::TempDir run_dir("run");
-    fs::path dir = run_dir.path();
-    START_SERVER(server, dir / "nginx");
-    RemoteBuild killed = build_toy(dir, "killed", server.url(), false, [&](const std::string& line) {
-        if (line.rfind("[3/13] ", 0) == 0) server.kill();
-    });
-    ASSERT_TRUE(killed.summary) << killed.errors;
-    EXPECT_EQ(killed.summary->compiled, 13u);
-    EXPECT_EQ(killed.summary->remote_uploaded, 3u) << "the three sources done before the kill";
-    EXPECT_EQ(killed.summary->remote_failed, 1u) << "one failed request, then no more";
-    ASSERT_EQ(killed.warnings.size(), 1u);
-    EXPECT_EQ(killed.warnings[0].rfind("warning: remote cache " + server.url() + ": GET ", 0), 0u) << killed.warnings[0];
-    EXPECT_TRUE(killed.warnings[0].ends_with(kTail)) << killed.warnings[0];
-    EXPECT_EQ(killed.output, reference_output(dir));
+  sgtest::TempDir run_dir("run");
+  fs::path dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  RemoteBuild killed = build_toy(dir, "killed", server.url(), false, [&](const std::string& line) {
+    if (line.rfind("[3/13] ", 0) == 0) server.kill();
+  });
+  ASSERT_TRUE(killed.summary) << killed.errors;
+  EXPECT_EQ(killed.summary->compiled, 13u);
+  EXPECT_EQ(killed.summary->remote_uploaded, 3u) << "the three sources done before the kill";
+  EXPECT_EQ(killed.summary->remote_failed, 1u) << "one failed request, then no more";
+  ASSERT_EQ(killed.warnings.size(), 1u);
+  EXPECT_EQ(killed.warnings[0].rfind("warning: remote cache " + server.url() + ": GET ", 0), 0u) << killed.warnings[0];
+  EXPECT_TRUE(killed.warnings[0].ends_with(kTail)) << killed.warnings[0];
+  EXPECT_EQ(killed.output, reference_output(dir));
 }
 
 TEST(RemoteCacheServer, ServerErrorsDegradeToLocal) {
-    sgtest::TempDir run_dir("run");
-    fs::path dir = run_dir.path();
-    START_SERVER(server, dir / "nginx", NginxMode::errors);
-    RemoteBuild result = build_toy(dir, "errors", server.url());
-    ASSERT_TRUE(result.summary) << result.errors;
-    EXPECT_EQ(result.summary->compiled, 13u);
-    EXPECT_EQ(result.summary->remote_failed, 1u);
-    EXPECT_EQ(result.summary->remote_uploaded, 0u);
-    ASSERT_EQ(result.warnings.size(), 1u);
-    EXPECT_EQ(result.warnings[0].rfind("warning: remote cache " + server.url() + ": GET ", 0), 0u) << result.warnings[0];
-    EXPECT_TRUE(result.warnings[0].ends_with(": HTTP 500" + kTail)) << result.warnings[0];
-    EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET "), 1u) << "one request, not one per source";
-    EXPECT_EQ(result.output, reference_output(dir));
+  sgtest::TempDir run_dir("run");
+  fs::path dir = run_dir.path();
+  START_SERVER(server, dir / "nginx", NginxMode::errors);
+  RemoteBuild result = build_toy(dir, "errors", server.url());
+  ASSERT_TRUE(result.summary) << result.errors;
+  EXPECT_EQ(result.summary->compiled, 13u);
+  EXPECT_EQ(result.summary->remote_failed, 1u);
+  EXPECT_EQ(result.summary->remote_uploaded, 0u);
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_EQ(result.warnings[0].rfind("warning: remote cache " + server.url() + ": GET ", 0), 0u) << result.warnings[0];
+  EXPECT_TRUE(result.warnings[0].ends_with(": HTTP 500" + kTail)) << result.warnings[0];
+  EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET "), 1u)
+      << "one request, not one per source";
+  EXPECT_EQ(result.output, reference_output(dir));
 }
 
 // Each kind of damage to one object on the server: that source is compiled here (and its good
 // entry uploaded over the bad one), the other twelve come from the server.
 TEST(RemoteCacheServer, DamagedObjectIsRecompiledAndReplaced) {
-    sgtest::TempDir run_dir("run");
-    fs::path dir = run_dir.path();
-    START_SERVER(server, dir / "nginx");
-    ASSERT_TRUE(build_toy(dir, "writer", server.url()).summary);
-    const std::vector<fs::path> objects = stored_objects(server);
-    ASSERT_EQ(objects.size(), 13u);
-    const fs::path victim = objects[5];
-    const std::string key = victim.filename().string(), good = sgtest::read_file(victim);
-    const std::string other = sgtest::read_file(objects[6]);
-    std::string flipped = good;
-    flipped[good.size() - 5] = static_cast<char>(flipped[good.size() - 5] ^ 0x40);
-    const std::map<std::string, std::string> damage{{"truncated", good.substr(0, good.size() / 2)},
-                                                    {"one byte flipped", flipped},
-                                                    {"another key's entry", other},
-                                                    {"garbage", "<html>502 Bad Gateway</html>"}};
-    const std::map<std::string, std::string> expected = reference_output(dir);
-    int run = 0;
-    for (const auto& [what, bytes] : damage) {
-        sgtest::write_file(victim, bytes);
-        RemoteBuild result = build_toy(dir, "reader" + std::to_string(run++), server.url());
-        ASSERT_TRUE(result.summary) << what << ": " << result.errors;
-        EXPECT_EQ(result.summary->compiled, 1u) << what;
-        EXPECT_EQ(result.summary->remote_fetched, 12u) << what;
-        EXPECT_EQ(result.summary->remote_failed, 1u) << what;
-        EXPECT_EQ(result.summary->remote_uploaded, 1u) << what;
-        EXPECT_EQ(result.warnings, std::vector<std::string>{"warning: remote cache " + server.url() + ": " +
-                                                            key.substr(0, 2) + "/" + key +
-                                                            " is not a valid entry (truncated, corrupted, foreign or "
-                                                            "from another version); compiled here instead"})
-            << what;
-        EXPECT_EQ(result.output, expected) << what;
-        EXPECT_EQ(sgtest::read_file(victim), good) << what << ": the upload replaced the bad object";
-    }
+  sgtest::TempDir run_dir("run");
+  fs::path dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  ASSERT_TRUE(build_toy(dir, "writer", server.url()).summary);
+  const std::vector<fs::path> objects = stored_objects(server);
+  ASSERT_EQ(objects.size(), 13u);
+  const fs::path victim = objects[5];
+  const std::string key = victim.filename().string(), good = sgtest::read_file(victim);
+  const std::string other = sgtest::read_file(objects[6]);
+  std::string flipped = good;
+  flipped[good.size() - 5] = static_cast<char>(flipped[good.size() - 5] ^ 0x40);
+  const std::map<std::string, std::string> damage{{"truncated", good.substr(0, good.size() / 2)},
+                                                  {"one byte flipped", flipped},
+                                                  {"another key's entry", other},
+                                                  {"garbage", "<html>502 Bad Gateway</html>"}};
+  const std::map<std::string, std::string> expected = reference_output(dir);
+  int run = 0;
+  for (const auto& [what, bytes] : damage) {
+    sgtest::write_file(victim, bytes);
+    RemoteBuild result = build_toy(dir, "reader" + std::to_string(run++), server.url());
+    ASSERT_TRUE(result.summary) << what << ": " << result.errors;
+    EXPECT_EQ(result.summary->compiled, 1u) << what;
+    EXPECT_EQ(result.summary->remote_fetched, 12u) << what;
+    EXPECT_EQ(result.summary->remote_failed, 1u) << what;
+    EXPECT_EQ(result.summary->remote_uploaded, 1u) << what;
+    EXPECT_EQ(result.warnings,
+              std::vector<std::string>{"warning: remote cache " + server.url() + ": " + key.substr(0, 2) + "/" + key +
+                                       " is not a valid entry (truncated, corrupted, foreign or "
+                                       "from another version); compiled here instead"})
+        << what;
+    EXPECT_EQ(result.output, expected) << what;
+    EXPECT_EQ(sgtest::read_file(victim), good) << what << ": the upload replaced the bad object";
+  }
 }
 
 TEST(RemoteCacheServer, ReadOnlyNeverUploads) {
-    sgtest::TempDir run_dir("run");
-    fs::path dir = run_dir.path();
-    START_SERVER(server, dir / "nginx");
-    RemoteBuild empty = build_toy(dir, "developer1", server.url(), true);
-    ASSERT_TRUE(empty.summary) << empty.errors;
-    EXPECT_EQ(empty.summary->compiled, 13u);
-    EXPECT_EQ(empty.summary->remote_uploaded, 0u);
-    EXPECT_TRUE(stored_objects(server).empty());
-    EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"PUT "), 0u);
+  sgtest::TempDir run_dir("run");
+  fs::path dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  RemoteBuild empty = build_toy(dir, "developer1", server.url(), true);
+  ASSERT_TRUE(empty.summary) << empty.errors;
+  EXPECT_EQ(empty.summary->compiled, 13u);
+  EXPECT_EQ(empty.summary->remote_uploaded, 0u);
+  EXPECT_TRUE(stored_objects(server).empty());
+  EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"PUT "), 0u);
 
-    ASSERT_TRUE(build_toy(dir, "ci", server.url()).summary);  // read-write, like CI
-    RemoteBuild served = build_toy(dir, "developer2", server.url(), true);
-    ASSERT_TRUE(served.summary) << served.errors;
-    EXPECT_EQ(served.summary->compiled, 0u);
-    EXPECT_EQ(served.summary->remote_fetched, 13u);
-    EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"PUT "), 13u) << "only CI's uploads";
-    EXPECT_TRUE(empty.warnings.empty() && served.warnings.empty());
-    EXPECT_EQ(served.output, reference_output(dir));
+  ASSERT_TRUE(build_toy(dir, "ci", server.url()).summary);  // read-write, like CI
+  RemoteBuild served = build_toy(dir, "developer2", server.url(), true);
+  ASSERT_TRUE(served.summary) << served.errors;
+  EXPECT_EQ(served.summary->compiled, 0u);
+  EXPECT_EQ(served.summary->remote_fetched, 13u);
+  EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"PUT "), 13u) << "only CI's uploads";
+  EXPECT_TRUE(empty.warnings.empty() && served.warnings.empty());
+  EXPECT_EQ(served.output, reference_output(dir));
 }
 
 TEST(RemoteCacheServer, UnreachableUrlDegradesToLocal) {
-    sgtest::TempDir run_dir("run");
-    fs::path dir = run_dir.path();
-    const std::string url = "http://127.0.0.1:" + std::to_string(testsupport::unused_local_port()) + "/cache";
-    RemoteBuild result = build_toy(dir, "offline", url);
-    ASSERT_TRUE(result.summary) << result.errors;
-    EXPECT_EQ(result.summary->compiled, 13u);
-    EXPECT_EQ(result.summary->remote_failed, 1u);
-    ASSERT_EQ(result.warnings.size(), 1u);
-    EXPECT_EQ(result.warnings[0].rfind("warning: remote cache " + url + ": GET ", 0), 0u) << result.warnings[0];
-    EXPECT_NE(result.warnings[0].find("Couldn't connect to server"), std::string::npos) << result.warnings[0];
-    EXPECT_TRUE(result.warnings[0].ends_with(kTail)) << result.warnings[0];
-    EXPECT_EQ(result.output, reference_output(dir));
+  sgtest::TempDir run_dir("run");
+  fs::path dir = run_dir.path();
+  const std::string url = "http://127.0.0.1:" + std::to_string(testsupport::unused_local_port()) + "/cache";
+  RemoteBuild result = build_toy(dir, "offline", url);
+  ASSERT_TRUE(result.summary) << result.errors;
+  EXPECT_EQ(result.summary->compiled, 13u);
+  EXPECT_EQ(result.summary->remote_failed, 1u);
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_EQ(result.warnings[0].rfind("warning: remote cache " + url + ": GET ", 0), 0u) << result.warnings[0];
+  EXPECT_NE(result.warnings[0].find("Couldn't connect to server"), std::string::npos) << result.warnings[0];
+  EXPECT_TRUE(result.warnings[0].ends_with(kTail)) << result.warnings[0];
+  EXPECT_EQ(result.output, reference_output(dir));
 }
 
 // A server that accepts the connection and never answers costs one bounded wait, not a hang.
 TEST(RemoteCacheServer, StalledServerTimesOut) {
-    int listener = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t size = sizeof address;
-    ASSERT_EQ(::bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-    ASSERT_EQ(::listen(listener, 4), 0);  // the kernel completes the handshake; nobody reads
-    ASSERT_EQ(::getsockname(listener, reinterpret_cast<sockaddr*>(&address), &size), 0);
-    auto client = make_curl_http_client(HttpTimeouts{std::chrono::milliseconds(500), std::chrono::milliseconds(700)});
-    auto start = std::chrono::steady_clock::now();
-    auto response = client->get("http://127.0.0.1:" + std::to_string(ntohs(address.sin_port)) + "/cache/ab/ab");
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ::close(listener);
-    ASSERT_FALSE(response.ok());
-    EXPECT_NE(response.errors().front().message.find("timed out"), std::string::npos)
-        << response.errors().front().message;
-    EXPECT_LT(seconds, 5.0);
+  int listener = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t size = sizeof address;
+  ASSERT_EQ(::bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  ASSERT_EQ(::listen(listener, 4), 0);  // the kernel completes the handshake; nobody reads
+  ASSERT_EQ(::getsockname(listener, reinterpret_cast<sockaddr*>(&address), &size), 0);
+  auto client = make_curl_http_client(HttpTimeouts{std::chrono::milliseconds(500), std::chrono::milliseconds(700)});
+  auto start = std::chrono::steady_clock::now();
+  auto response = client->get("http://127.0.0.1:" + std::to_string(ntohs(address.sin_port)) + "/cache/ab/ab");
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ::close(listener);
+  ASSERT_FALSE(response.ok());
+  EXPECT_NE(response.errors().front().message.find("timed out"), std::string::npos)
+      << response.errors().front().message;
+  EXPECT_LT(seconds, 5.0);
 }
 
 // The CLI takes the URL from SHADERGEN_REMOTE_CACHE and prints the counts in its summary.
 TEST(RemoteCacheServer, CliReadsTheEnvironmentAndReportsCounts) {
-    sgtest::TempDir run_dir("run");
-    fs::path dir = run_dir.path();
-    START_SERVER(server, dir / "nginx");
-    ::setenv("SHADERGEN_REMOTE_CACHE", server.url().c_str(), 1);
-    auto cli = [&](const std::string& name, std::vector<std::string> extra) {
-        std::vector<std::string> args{"build", sgtest::toy_spec().string(), "--out", (dir / name).string(),
-                                      "--cache-dir", (dir / (name + ".cache")).string(), "-j", "1"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        std::ostringstream out, err;
-        EXPECT_EQ(run_cli(args, out, err), 0) << err.str();
-        return out.str();
-    };
-    std::string first = cli("first", {}), second = cli("second", {"--remote-cache-readonly"});
-    ::unsetenv("SHADERGEN_REMOTE_CACHE");
-    EXPECT_NE(first.find("(13 compiled, 0 cached; remote: 0 fetched, 13 uploaded, 0 failed)"), std::string::npos)
-        << first;
-    EXPECT_NE(second.find("(0 compiled, 13 cached; remote: 13 fetched, 0 uploaded, 0 failed)"), std::string::npos)
-        << second;
+  sgtest::TempDir run_dir("run");
+  fs::path dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  ::setenv("SHADERGEN_REMOTE_CACHE", server.url().c_str(), 1);
+  auto cli = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args{"build",       sgtest::toy_spec().string(),        "--out", (dir / name).string(),
+                                  "--cache-dir", (dir / (name + ".cache")).string(), "-j",    "1"};
+    args.insert(args.end(), extra.begin(), extra.end());
     std::ostringstream out, err;
-    EXPECT_EQ(run_cli({"build", sgtest::toy_spec().string(), "--out", (dir / "bad").string(), "--remote-cache",
-                       "ftp://host/cache"},
-                      out, err),
-              1);
-    EXPECT_EQ(err.str(), "shadergen: error: --remote-cache: \"ftp://host/cache\" is not an http:// or https:// URL "
-                         "(set by the option or SHADERGEN_REMOTE_CACHE)\n");
+    EXPECT_EQ(run_cli(args, out, err), 0) << err.str();
+    return out.str();
+  };
+  std::string first = cli("first", {}), second = cli("second", {"--remote-cache-readonly"});
+  ::unsetenv("SHADERGEN_REMOTE_CACHE");
+  EXPECT_NE(first.find("(13 compiled, 0 cached; remote: 0 fetched, 13 uploaded, 0 failed)"), std::string::npos)
+      << first;
+  EXPECT_NE(second.find("(0 compiled, 13 cached; remote: 13 fetched, 0 uploaded, 0 failed)"), std::string::npos)
+      << second;
+  std::ostringstream out, err;
+  EXPECT_EQ(run_cli({"build", sgtest::toy_spec().string(), "--out", (dir / "bad").string(), "--remote-cache",
+                     "ftp://host/cache"},
+                    out, err),
+            1);
+  EXPECT_EQ(err.str(),
+            "shadergen: error: --remote-cache: \"ftp://host/cache\" is not an http:// or https:// URL "
+            "(set by the option or SHADERGEN_REMOTE_CACHE)\n");
 }
 
 }  // namespace

@@ -15,53 +15,51 @@
 namespace {
 
 struct KnownAnswer {
-    const char* name;
-    std::string message;
-    const char* digest;
+  const char* name;
+  std::string message;
+  const char* digest;
 };
 
 // The first `n` bytes of "0123456789abcdef" repeated.
 std::string hex_pattern(std::size_t n) {
-    std::string text;
-    while (text.size() < n) text += "0123456789abcdef";
-    return text.substr(0, n);
+  std::string text;
+  while (text.size() < n) text += "0123456789abcdef";
+  return text.substr(0, n);
 }
 
 std::vector<KnownAnswer> known_answers() {
-    return {
-        {"empty", "", "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855"},
-        {"abc", "abc", "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"},
-        {"nist_448_bits", "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq",
-         "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1"},
-        {"million_a", std::string(1000000, 'a'), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0"},
-        {"pattern_55", hex_pattern(55), "72fa96f64bf2dd082aafb08cf80ed17f5b3d2c6cd527c4b138b69506f5e5c173"},
-        {"pattern_56", hex_pattern(56), "67e4026bfbe6f1cd3f40518f324bcdf4426ae00faf5a0cddeae67a0e60ecf665"},
-        {"pattern_57", hex_pattern(57), "c5acf2328bc8bb46744c0d87810eb30571e953de6e4e2edc18e5e522aae917dc"},
-        {"pattern_63", hex_pattern(63), "057ee79ece0b9a849552ab8d3c335fe9a5f1c46ef5f1d9b190c295728628299c"},
-        {"pattern_64", hex_pattern(64), "a8ae6e6ee929abea3afcfc5258c8ccd6f85273e0d4626d26c7279f3250f77c8e"},
-        {"pattern_65", hex_pattern(65), "2a6ad82f3620d3ebe9d678c812ae12312699d673240d5be8fac0910a70000d93"},
-        {"pattern_119", hex_pattern(119), "d35c1f1837833831770e239839643070c6502a21b1df3b55fe81a4f7f6d33063"},
-        {"pattern_120", hex_pattern(120), "b55c6052a3c9b52cfe373d8a12149b45d01df4477a91ad7c7925b0a02d8f2a30"},
-        {"pattern_128", hex_pattern(128), "b320e85978db05134003a2914eebddd8d3b8726818f2e2c679e1898c721562a9"},
-    };
+  return {
+      {"empty", "", "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855"},
+      {"abc", "abc", "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"},
+      {"nist_448_bits", "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq",
+       "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1"},
+      {"million_a", std::string(1000000, 'a'), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0"},
+      {"pattern_55", hex_pattern(55), "72fa96f64bf2dd082aafb08cf80ed17f5b3d2c6cd527c4b138b69506f5e5c173"},
+      {"pattern_56", hex_pattern(56), "67e4026bfbe6f1cd3f40518f324bcdf4426ae00faf5a0cddeae67a0e60ecf665"},
+      {"pattern_57", hex_pattern(57), "c5acf2328bc8bb46744c0d87810eb30571e953de6e4e2edc18e5e522aae917dc"},
+      {"pattern_63", hex_pattern(63), "057ee79ece0b9a849552ab8d3c335fe9a5f1c46ef5f1d9b190c295728628299c"},
+      {"pattern_64", hex_pattern(64), "a8ae6e6ee929abea3afcfc5258c8ccd6f85273e0d4626d26c7279f3250f77c8e"},
+      {"pattern_65", hex_pattern(65), "2a6ad82f3620d3ebe9d678c812ae12312699d673240d5be8fac0910a70000d93"},
+      {"pattern_119", hex_pattern(119), "d35c1f1837833831770e239839643070c6502a21b1df3b55fe81a4f7f6d33063"},
+      {"pattern_120", hex_pattern(120), "b55c6052a3c9b52cfe373d8a12149b45d01df4477a91ad7c7925b0a02d8f2a30"},
+      {"pattern_128", hex_pattern(128), "b320e85978db05134003a2914eebddd8d3b8726818f2e2c679e1898c721562a9"},
+  };
 }
 
 class Sha256KnownAnswer : public ::testing::TestWithParam<KnownAnswer> {};
 
-TEST_P(Sha256KnownAnswer, WholeMessage) {
-    EXPECT_EQ(shadergen::sha256_hex(GetParam().message), GetParam().digest);
-}
+TEST_P(Sha256KnownAnswer, WholeMessage) { EXPECT_EQ(shadergen::sha256_hex(GetParam().message), GetParam().digest); }
 
 // Piece sizes that straddle the 64-byte block in different ways.
 TEST_P(Sha256KnownAnswer, MessageInPieces) {
-    const std::string& message = GetParam().message;
-    for (std::size_t piece : {1u, 7u, 55u, 56u, 63u, 64u, 65u}) {
-        if (message.size() > 4096 && piece < 55) continue;  // the million: whole blocks are enough
-        shadergen::Sha256 hasher;
-        for (std::size_t at = 0; at < message.size(); at += piece)
-            hasher.update(std::string_view(message).substr(at, piece));
-        EXPECT_EQ(hasher.finish_hex(), GetParam().digest) << "pieces of " << piece << " bytes";
-    }
+  const std::string& message = GetParam().message;
+  for (std::size_t piece : {1u, 7u, 55u, 56u, 63u, 64u, 65u}) {
+    if (message.size() > 4096 && piece < 55) continue;  // the million: whole blocks are enough
+    shadergen::Sha256 hasher;
+    for (std::size_t at = 0; at < message.size(); at += piece)
+      hasher.update(std::string_view(message).substr(at, piece));
+    EXPECT_EQ(hasher.finish_hex(), GetParam().digest) << "pieces of " << piece << " bytes";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Fips180, Sha256KnownAnswer, ::testing::ValuesIn(known_answers()),
@@ -70,22 +68,22 @@ INSTANTIATE_TEST_SUITE_P(Fips180, Sha256KnownAnswer, ::testing::ValuesIn(known_a
 // SPIR-V words are hashed as the little-endian bytes a .spv file holds: the word 0x64636261 is
 // the bytes "abcd" (printf abcd | sha256sum).
 TEST(Sha256Words, HashesWordsAsLittleEndianBytes) {
-    const std::vector<std::uint32_t> words = {0x64636261u};
-    EXPECT_EQ(shadergen::sha256_hex(words), "88d4266fd4e6338d13b845fcf289579d209c897823b9217da3e161936f031589");
-    EXPECT_EQ(shadergen::sha256_hex(std::vector<std::uint32_t>{}), shadergen::sha256_hex(""));
+  const std::vector<std::uint32_t> words = {0x64636261u};
+  EXPECT_EQ(shadergen::sha256_hex(words), "88d4266fd4e6338d13b845fcf289579d209c897823b9217da3e161936f031589");
+  EXPECT_EQ(shadergen::sha256_hex(std::vector<std::uint32_t>{}), shadergen::sha256_hex(""));
 }
 
 // Cache keys are built from fields: moving a byte across a field boundary must change the key.
 TEST(Sha256Fields, FieldBoundariesAreHashed) {
-    const std::string ab_c = shadergen::Sha256().field("ab").field("c").finish_hex();
-    const std::string a_bc = shadergen::Sha256().field("a").field("bc").finish_hex();
-    EXPECT_NE(ab_c, a_bc);
-    EXPECT_NE(ab_c, shadergen::sha256_hex("abc"));
+  const std::string ab_c = shadergen::Sha256().field("ab").field("c").finish_hex();
+  const std::string a_bc = shadergen::Sha256().field("a").field("bc").finish_hex();
+  EXPECT_NE(ab_c, a_bc);
+  EXPECT_NE(ab_c, shadergen::sha256_hex("abc"));
 }
 
 TEST(Sha256Hex, LowercaseTwoDigitsPerByte) {
-    const std::vector<std::uint8_t> bytes = {0x00, 0x0f, 0xa0, 0xff};
-    EXPECT_EQ(shadergen::to_hex(bytes), "000fa0ff");
+  const std::vector<std::uint8_t> bytes = {0x00, 0x0f, 0xa0, 0xff};
+  EXPECT_EQ(shadergen::to_hex(bytes), "000fa0ff");
 }
 
 }  // namespace

@@ -33,23 +33,23 @@ const std::string kBase = R"({
 )";
 
 std::string replace(std::string text, const std::string& from, const std::string& to) {
-    auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base spec";
-    if (at != std::string::npos) text.replace(at, from.size(), to);
-    return text;
+  auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base spec";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
 }
 
 TEST(SpecErrors, BaseSpecIsValid) {
-    auto result = parse_domain(kBase, "dir/spec.json");
-    ASSERT_TRUE(result.ok()) << result.errors().front().to_string();
-    EXPECT_EQ(result->uber.path, std::filesystem::path("dir/tiny.frag"));
-    EXPECT_EQ(result->raw_count(), 8u);
+  auto result = parse_domain(kBase, "dir/spec.json");
+  ASSERT_TRUE(result.ok()) << result.errors().front().to_string();
+  EXPECT_EQ(result->uber.path, std::filesystem::path("dir/tiny.frag"));
+  EXPECT_EQ(result->raw_count(), 8u);
 }
 
 struct ErrorCase {
-    const char* name;
-    std::string text;
-    std::string expected;
+  const char* name;
+  std::string text;
+  std::string expected;
 };
 
 // Show the case's name in test names and messages, not the bytes of the struct.
@@ -57,9 +57,7 @@ void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
 
 class SpecErrorTable : public ::testing::TestWithParam<ErrorCase> {};
 
-TEST_P(SpecErrorTable, ExactDiagnostic) {
-    EXPECT_EQ(sgtest::first_spec_error(GetParam().text), GetParam().expected);
-}
+TEST_P(SpecErrorTable, ExactDiagnostic) { EXPECT_EQ(sgtest::first_spec_error(GetParam().text), GetParam().expected); }
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, SpecErrorTable,
@@ -94,10 +92,11 @@ INSTANTIATE_TEST_SUITE_P(
                   "tess_control, tess_evaluation, geometry, fragment, compute, task, mesh, ray_generation, any_hit, "
                   "closest_hit, miss, intersection, callable, or .vert .tesc .tese .geom .frag .comp .task .mesh .rgen "
                   ".rahit .rchit .rmiss .rint .rcall without the dot)"},
-        ErrorCase{"no_stage_and_an_extension_that_names_none",
-                  replace(kBase, "{ \"path\": \"tiny.frag\", \"stage\": \"fragment\" }", "{ \"path\": \"tiny.glsl\" }"),
-                  "spec.json:4:18: error: uber_shader: missing \"stage\", and the extension of \"tiny.glsl\" names none "
-                  "(one of .vert .tesc .tese .geom .frag .comp .task .mesh .rgen .rahit .rchit .rmiss .rint .rcall does)"},
+        ErrorCase{
+            "no_stage_and_an_extension_that_names_none",
+            replace(kBase, "{ \"path\": \"tiny.frag\", \"stage\": \"fragment\" }", "{ \"path\": \"tiny.glsl\" }"),
+            "spec.json:4:18: error: uber_shader: missing \"stage\", and the extension of \"tiny.glsl\" names none "
+            "(one of .vert .tesc .tese .geom .frag .comp .task .mesh .rgen .rahit .rchit .rmiss .rint .rcall does)"},
         ErrorCase{"missing_name", replace(kBase, "\"name\": \"tiny\",", ""),
                   "spec.json:1:1: error: spec: missing \"name\""},
         ErrorCase{"not_an_object", "[1, 2]\n", "spec.json:1:1: error: spec: the spec must be a JSON object"},
@@ -105,11 +104,13 @@ INSTANTIATE_TEST_SUITE_P(
                   "spec.json:11:62: error: expected a quoted key"},
         ErrorCase{"nesting_limit", std::string(40, '[') + std::string(40, ']'),
                   "spec.json:1:33: error: nesting deeper than 32 levels"},
-        ErrorCase{"define_value_not_a_string", replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"N\": 4 },"),
+        ErrorCase{"define_value_not_a_string",
+                  replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"N\": 4 },"),
                   "spec.json:2:34: error: defines.N: expected a string value, found a number (write \"N\": \"1\")"},
-        ErrorCase{"define_name_not_an_identifier",
-                  replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"A-B\": \"1\" },"),
-                  "spec.json:2:36: error: defines.A-B: \"A-B\" is not an identifier ([A-Za-z_][A-Za-z0-9_]*, at most 64)"},
+        ErrorCase{
+            "define_name_not_an_identifier",
+            replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"A-B\": \"1\" },"),
+            "spec.json:2:36: error: defines.A-B: \"A-B\" is not an identifier ([A-Za-z_][A-Za-z0-9_]*, at most 64)"},
         ErrorCase{"define_name_reserved",
                   replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": { \"GL_X\": \"1\" },"),
                   "spec.json:2:37: error: defines.GL_X: \"GL_X\" is reserved by GLSL (a GL_ prefix or a double "
@@ -124,81 +125,88 @@ INSTANTIATE_TEST_SUITE_P(
                   "also be a feature"},
         ErrorCase{"defines_not_an_object", replace(kBase, "\"format\": 1,", "\"format\": 1, \"defines\": [\"X\"],"),
                   "spec.json:2:27: error: spec.defines: expected an object, found an array"},
-        ErrorCase{"values_duplicate", replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [1, 2, 1]"),
+        ErrorCase{"values_duplicate",
+                  replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [1, 2, 1]"),
                   "spec.json:9:68: error: raw.features[2].values[2]: value 1 is listed twice"},
         ErrorCase{"value_not_integer_or_identifier",
                   replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [1, 2.5]"),
                   "spec.json:9:65: error: raw.features[2].values[1]: expected an integer or an identifier, found 2.5"},
-        ErrorCase{"value_not_identifier",
-                  replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [\"a-b\", \"c\"]"),
-                  "spec.json:9:62: error: raw.features[2].values[0]: expected an integer or an identifier, found \"a-b\""},
+        ErrorCase{
+            "value_not_identifier",
+            replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [\"a-b\", \"c\"]"),
+            "spec.json:9:62: error: raw.features[2].values[0]: expected an integer or an identifier, found \"a-b\""},
         ErrorCase{"one_value", replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [1]"),
                   "spec.json:9:61: error: raw.features[2].values: a valued feature has 2 to 256 values, found 1"},
         ErrorCase{"boolean_compared_with_number", replace(kBase, "\"A && B\"", "\"A == 1\""),
                   "spec.json:11:31: error: raw.impossible[0].when: 'A' is a boolean feature; it cannot be compared "
                   "with a number (write A or !A) in \"A == 1\" at column 1 (rules here name raw features)"},
-        ErrorCase{"unknown_value", replace(replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [0, 1, 2]"),
-                                           "\"A && B\"", "\"C == 3\""),
-                  "spec.json:11:31: error: raw.impossible[0].when: 'C' has no value 3 (values: 0, 1, 2) in \"C == 3\" at "
-                  "column 6 (rules here name raw features)"},
-        ErrorCase{"order_on_identifiers",
-                  replace(replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [\"LOW\", \"HIGH\"]"),
-                          "\"A && B\"", "\"C >= HIGH\""),
-                  "spec.json:11:31: error: raw.impossible[0].when: '>=' needs integer values; C has values (LOW, HIGH) "
-                  "and HIGH is compared; use '==' or '!=' in \"C >= HIGH\" at column 6 (rules here name raw features)"},
-        ErrorCase{"valued_name_alone",
-                  replace(replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [0, 1, 2]"),
-                          "\"A && B\"", "\"C && B\""),
-                  "spec.json:11:31: error: raw.impossible[0].when: 'C' has values (0, 1, 2); compare it, e.g. C == 0 in "
-                  "\"C && B\" at column 2 (rules here name raw features)"},
-        ErrorCase{"valued_variant_without_value",
-                  replace(replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [0, 1, 2]"),
-                          "\"A || C\"", "\"A || C == 1\""),
-                  "spec.json:15:56: error: optimised.variants[0].raw_features[1]: C has values (0, 1, 2); name one, e.g. "
-                  "\"C=0\""},
+        ErrorCase{
+            "unknown_value",
+            replace(replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [0, 1, 2]"),
+                    "\"A && B\"", "\"C == 3\""),
+            "spec.json:11:31: error: raw.impossible[0].when: 'C' has no value 3 (values: 0, 1, 2) in \"C == 3\" at "
+            "column 6 (rules here name raw features)"},
+        ErrorCase{
+            "order_on_identifiers",
+            replace(replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [\"LOW\", \"HIGH\"]"),
+                    "\"A && B\"", "\"C >= HIGH\""),
+            "spec.json:11:31: error: raw.impossible[0].when: '>=' needs integer values; C has values (LOW, HIGH) "
+            "and HIGH is compared; use '==' or '!=' in \"C >= HIGH\" at column 6 (rules here name raw features)"},
+        ErrorCase{
+            "valued_name_alone",
+            replace(replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [0, 1, 2]"),
+                    "\"A && B\"", "\"C && B\""),
+            "spec.json:11:31: error: raw.impossible[0].when: 'C' has values (0, 1, 2); compare it, e.g. C == 0 in "
+            "\"C && B\" at column 2 (rules here name raw features)"},
+        ErrorCase{
+            "valued_variant_without_value",
+            replace(replace(kBase, "\"define\": \"HAS_C\"", "\"define\": \"HAS_C\", \"values\": [0, 1, 2]"),
+                    "\"A || C\"", "\"A || C == 1\""),
+            "spec.json:15:56: error: optimised.variants[0].raw_features[1]: C has values (0, 1, 2); name one, e.g. "
+            "\"C=0\""},
         ErrorCase{"impossible_optimised_variant",
                   replace(kBase, "\"raw_features\": [\"A\", \"C\"]", "\"raw_features\": [\"A\", \"B\"]"),
                   "(no error)"}),
     [](const ::testing::TestParamInfo<ErrorCase>& param) { return std::string(param.param.name); });
 
 TEST(SpecErrors, OptimisedPermutationThatIsImpossibleFailsExpansion) {
-    auto spec = parse_domain(replace(kBase, "\"raw_features\": [\"A\", \"C\"]", "\"raw_features\": [\"A\", \"B\"]"),
-                             "spec.json");
-    ASSERT_TRUE(spec.ok());
-    // Parsing accepts it; expansion proves every optimised permutation compilable and refuses.
-    auto plan = expand(*spec);
-    ASSERT_FALSE(plan.ok());
-    EXPECT_EQ(plan.errors().front().to_string(),
-              "spec.json:11: error: optimised ID 1 (X) is compiled with raw features A | B, which the impossible rule "
-              "\"A && B\" prunes");
+  auto spec =
+      parse_domain(replace(kBase, "\"raw_features\": [\"A\", \"C\"]", "\"raw_features\": [\"A\", \"B\"]"), "spec.json");
+  ASSERT_TRUE(spec.ok());
+  // Parsing accepts it; expansion proves every optimised permutation compilable and refuses.
+  auto plan = expand(*spec);
+  ASSERT_FALSE(plan.ok());
+  EXPECT_EQ(plan.errors().front().to_string(),
+            "spec.json:11: error: optimised ID 1 (X) is compiled with raw features A | B, which the impossible rule "
+            "\"A && B\" prunes");
 }
 
 TEST(SpecErrors, MissingFileNamesThePath) {
-    auto result = load_domain("/nonexistent/folder/spec.json");
-    ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.errors().front().to_string(), "/nonexistent/folder/spec.json: error: spec file does not exist");
+  auto result = load_domain("/nonexistent/folder/spec.json");
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.errors().front().to_string(), "/nonexistent/folder/spec.json: error: spec file does not exist");
 }
 
 TEST(SpecErrors, DirectoryIsNotASpec) {
-    auto result = load_domain(sgtest::source_dir());
-    ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.errors().front().message, "spec path is a directory, not a file");
+  auto result = load_domain(sgtest::source_dir());
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.errors().front().message, "spec path is a directory, not a file");
 }
 
 TEST(SpecErrors, OversizedSpecIsRejectedBeforeParsing) {
-    sgtest::TempDir big_dir("big");
-    std::filesystem::path big = big_dir / "big.json";
-    sgtest::write_file(big, "\"" + std::string(json::kMaxJsonBytes + 10, 'x') + "\"");
-    auto result = load_domain(big);
-    ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.errors().front().message, "spec is larger than 1048576 bytes");
+  sgtest::TempDir big_dir("big");
+  std::filesystem::path big = big_dir / "big.json";
+  sgtest::write_file(big, "\"" + std::string(json::kMaxJsonBytes + 10, 'x') + "\"");
+  auto result = load_domain(big);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.errors().front().message, "spec is larger than 1048576 bytes");
 }
 
 TEST(SpecErrors, EveryProblemIsReportedNotJustTheFirst) {
-    std::string text = replace(replace(kBase, "\"HAS_C\"", "\"HAS_A\""), "\"format\": 1", "\"formats\": 1");
-    auto result = parse_domain(text, "spec.json");
-    ASSERT_FALSE(result.ok());
-    EXPECT_EQ(result.errors().size(), 2u);
+  std::string text = replace(replace(kBase, "\"HAS_C\"", "\"HAS_A\""), "\"format\": 1", "\"formats\": 1");
+  auto result = parse_domain(text, "spec.json");
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.errors().size(), 2u);
 }
 
 }  // namespace

@@ -14,60 +14,66 @@ namespace shadergen {
 namespace {
 
 std::string repeat(const std::string& item, std::size_t count, const std::string& separator = ", ") {
-    std::string out;
-    for (std::size_t i = 0; i < count; ++i) out += (i ? separator : "") + item;
-    return out;
+  std::string out;
+  for (std::size_t i = 0; i < count; ++i) out += (i ? separator : "") + item;
+  return out;
 }
 
 // A valid spec with the given list lengths and optimised rule. Each list is on a line of its
 // own, so the expected line numbers below stay fixed: include_dirs 4, impossible 7, the
 // optimised rule 10, variants 11.
 struct Shape {
-    std::size_t include_dirs = 0;
-    std::size_t impossible = 1;
-    std::size_t variants = 1;
-    std::string rule = "A || B";
+  std::size_t include_dirs = 0;
+  std::size_t impossible = 1;
+  std::size_t variants = 1;
+  std::string rule = "A || B";
 };
 
 std::string spec_text(const Shape& shape) {
-    return "{\n"
-           "  \"name\": \"limits\",\n"
-           "  \"uber_shader\": { \"path\": \"u.frag\", \"stage\": \"fragment\" },\n"
-           "  \"include_dirs\": [" + repeat("\"inc\"", shape.include_dirs) + "],\n"
-           "  \"raw\": {\n"
-           "    \"features\": [ { \"name\": \"A\", \"bit\": 0, \"define\": \"HAS_A\" }, "
-           "{ \"name\": \"B\", \"bit\": 1, \"define\": \"HAS_B\" } ],\n"
-           "    \"impossible\": [" + repeat("{ \"when\": \"A && B\" }", shape.impossible) + "]\n"
-           "  },\n"
-           "  \"optimised\": {\n"
-           "    \"bits\": [ { \"name\": \"X\", \"bit\": 0, \"when\": \"" + shape.rule + "\" } ],\n"
-           "    \"variants\": [" + repeat("{ \"when\": \"X\", \"raw_features\": [\"A\"] }", shape.variants) + "]\n"
-           "  }\n"
-           "}\n";
+  return "{\n"
+         "  \"name\": \"limits\",\n"
+         "  \"uber_shader\": { \"path\": \"u.frag\", \"stage\": \"fragment\" },\n"
+         "  \"include_dirs\": [" +
+         repeat("\"inc\"", shape.include_dirs) +
+         "],\n"
+         "  \"raw\": {\n"
+         "    \"features\": [ { \"name\": \"A\", \"bit\": 0, \"define\": \"HAS_A\" }, "
+         "{ \"name\": \"B\", \"bit\": 1, \"define\": \"HAS_B\" } ],\n"
+         "    \"impossible\": [" +
+         repeat("{ \"when\": \"A && B\" }", shape.impossible) +
+         "]\n"
+         "  },\n"
+         "  \"optimised\": {\n"
+         "    \"bits\": [ { \"name\": \"X\", \"bit\": 0, \"when\": \"" +
+         shape.rule +
+         "\" } ],\n"
+         "    \"variants\": [" +
+         repeat("{ \"when\": \"X\", \"raw_features\": [\"A\"] }", shape.variants) +
+         "]\n"
+         "  }\n"
+         "}\n";
 }
 
 // "A || A || ... A" padded with spaces to exactly `length` characters (length >= 1).
 std::string rule_of_length(std::size_t length) {
-    std::string rule = "A" + repeat(" || A", (length - 1) / 5, "");
-    return rule + std::string(length - rule.size(), ' ');
+  std::string rule = "A" + repeat(" || A", (length - 1) / 5, "");
+  return rule + std::string(length - rule.size(), ' ');
 }
 
 // An array holding `count` zeros: count + 1 JSON values in all.
 std::string array_of_zeros(std::size_t count) { return "[" + repeat("0", count, ",") + "]"; }
 
 struct LimitCase {
-    const char* name;
-    std::string text;
-    std::string expected;
+  const char* name;
+  std::string text;
+  std::string expected;
 };
 
 void PrintTo(const LimitCase& c, std::ostream* os) { *os << c.name; }
 
 class SpecLimitTable : public ::testing::TestWithParam<LimitCase> {};
 
-TEST_P(SpecLimitTable, ExactDiagnostic) {
-    EXPECT_EQ(sgtest::first_spec_error(GetParam().text), GetParam().expected);
-}
+TEST_P(SpecLimitTable, ExactDiagnostic) { EXPECT_EQ(sgtest::first_spec_error(GetParam().text), GetParam().expected); }
 
 INSTANTIATE_TEST_SUITE_P(
     Limits, SpecLimitTable,
@@ -95,14 +101,14 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<LimitCase>& param) { return std::string(param.param.name); });
 
 TEST(SpecLimits, ProblemsBeyondTheLimitAreCountedNotListed) {
-    // Every unknown key is a problem of its own; 60 of them exceed the list's bound.
-    std::string text = "{ ";
-    for (int i = 0; i < 60; ++i) text += "\"unknown" + std::to_string(i) + "\": 0, ";
-    text += "\"name\": \"x\" }";
-    auto result = parse_domain(text, "spec.json");
-    ASSERT_FALSE(result.ok());
-    ASSERT_EQ(result.errors().size(), kMaxSpecErrors + 1);
-    EXPECT_EQ(result.errors().back().to_string(), "spec.json: error: more than 50 problems; the rest are not reported");
+  // Every unknown key is a problem of its own; 60 of them exceed the list's bound.
+  std::string text = "{ ";
+  for (int i = 0; i < 60; ++i) text += "\"unknown" + std::to_string(i) + "\": 0, ";
+  text += "\"name\": \"x\" }";
+  auto result = parse_domain(text, "spec.json");
+  ASSERT_FALSE(result.ok());
+  ASSERT_EQ(result.errors().size(), kMaxSpecErrors + 1);
+  EXPECT_EQ(result.errors().back().to_string(), "spec.json: error: more than 50 problems; the rest are not reported");
 }
 
 }  // namespace

@@ -5,81 +5,90 @@
 
 #include <nlohmann/json.hpp>
 
-#include "test_helpers.h"
 #include "shadergen/build.h"
+#include "test_helpers.h"
 
 namespace {
 
 using nlohmann::json;
 
 class EveryStage : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() {
-        dir_ = std::make_unique<sgtest::TempDir>("every-stage");
-        shadergen::BuildOptions options;
-        options.spec_path = sgtest::fixtures_dir() / "stages" / "stages.json";
-        options.out_dir = dir_->path() / "out";
-        options.cache_dir = dir_->path() / "cache";
-        options.jobs = 2;
-        auto summary = shadergen::build(options);
-        if (!summary.ok()) error_ = summary.errors().front().to_string();
-        else manifest_ = json::parse(sgtest::read_file(dir_->path() / "out" / "manifest.json"));
-    }
-    static void TearDownTestSuite() { dir_.reset(); }
-    void SetUp() override { ASSERT_TRUE(error_.empty()) << error_; }
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = std::make_unique<sgtest::TempDir>("every-stage");
+    shadergen::BuildOptions options;
+    options.spec_path = sgtest::fixtures_dir() / "stages" / "stages.json";
+    options.out_dir = dir_->path() / "out";
+    options.cache_dir = dir_->path() / "cache";
+    options.jobs = 2;
+    auto summary = shadergen::build(options);
+    if (!summary.ok())
+      error_ = summary.errors().front().to_string();
+    else
+      manifest_ = json::parse(sgtest::read_file(dir_->path() / "out" / "manifest.json"));
+  }
+  static void TearDownTestSuite() { dir_.reset(); }
+  void SetUp() override { ASSERT_TRUE(error_.empty()) << error_; }
 
-    static const json& blob_of(const std::string& companion) {
-        for (const json& c : manifest_["companions"])
-            if (c["name"] == companion)
-                for (const json& b : manifest_["blobs"])
-                    if (b["spirv"] == c["spirv"]) return b;
-        static const json none;
-        return none;
-    }
+  static const json& blob_of(const std::string& companion) {
+    for (const json& c : manifest_["companions"])
+      if (c["name"] == companion)
+        for (const json& b : manifest_["blobs"])
+          if (b["spirv"] == c["spirv"]) return b;
+    static const json none;
+    return none;
+  }
 
-    static inline std::unique_ptr<sgtest::TempDir> dir_;
-    static inline json manifest_;
-    static inline std::string error_;
+  static inline std::unique_ptr<sgtest::TempDir> dir_;
+  static inline json manifest_;
+  static inline std::string error_;
 };
 
 TEST_F(EveryStage, EachStageComesFromTheExtension) {
-    EXPECT_EQ(manifest_["stage"], "vertex") << "surface.vert, no \"stage\" key";
-    const std::vector<std::pair<std::string, std::string>> expected = {
-        {"patch_control", "tess_control"}, {"patch_evaluation", "tess_evaluation"}, {"outline", "geometry"},
-        {"shade", "fragment"},             {"cull", "compute"},                     {"meshlet_task", "task"},
-        {"meshlet", "mesh"},               {"primary_rays", "ray_generation"},      {"opaque_hit", "closest_hit"},
-        {"alpha_hit", "any_hit"},          {"sky", "miss"},                         {"sphere", "intersection"},
-        {"light_call", "callable"}};
-    ASSERT_EQ(manifest_["companions"].size(), expected.size());
-    for (std::size_t i = 0; i < expected.size(); ++i) {
-        EXPECT_EQ(manifest_["companions"][i]["name"], expected[i].first);
-        EXPECT_EQ(manifest_["companions"][i]["stage"], expected[i].second) << expected[i].first;
-        EXPECT_EQ(blob_of(expected[i].first)["stage"], expected[i].second) << expected[i].first;
-    }
+  EXPECT_EQ(manifest_["stage"], "vertex") << "surface.vert, no \"stage\" key";
+  const std::vector<std::pair<std::string, std::string>> expected = {{"patch_control", "tess_control"},
+                                                                     {"patch_evaluation", "tess_evaluation"},
+                                                                     {"outline", "geometry"},
+                                                                     {"shade", "fragment"},
+                                                                     {"cull", "compute"},
+                                                                     {"meshlet_task", "task"},
+                                                                     {"meshlet", "mesh"},
+                                                                     {"primary_rays", "ray_generation"},
+                                                                     {"opaque_hit", "closest_hit"},
+                                                                     {"alpha_hit", "any_hit"},
+                                                                     {"sky", "miss"},
+                                                                     {"sphere", "intersection"},
+                                                                     {"light_call", "callable"}};
+  ASSERT_EQ(manifest_["companions"].size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(manifest_["companions"][i]["name"], expected[i].first);
+    EXPECT_EQ(manifest_["companions"][i]["stage"], expected[i].second) << expected[i].first;
+    EXPECT_EQ(blob_of(expected[i].first)["stage"], expected[i].second) << expected[i].first;
+  }
 }
 
 TEST_F(EveryStage, EveryBlobPassesSpirvValForVulkan12) {
-    ASSERT_EQ(manifest_["blobs"].size(), 15u);
-    for (const json& blob : manifest_["blobs"]) {
-        std::string path = blob["spirv"];
-        sgtest::ProcessResult val = sgtest::spirv_val(dir_->path() / "out" / path, "vulkan1.2");
-        EXPECT_EQ(val.exit_code, 0) << blob["stage"] << " " << path << "\n" << val.out << val.err;
-    }
+  ASSERT_EQ(manifest_["blobs"].size(), 15u);
+  for (const json& blob : manifest_["blobs"]) {
+    std::string path = blob["spirv"];
+    sgtest::ProcessResult val = sgtest::spirv_val(dir_->path() / "out" / path, "vulkan1.2");
+    EXPECT_EQ(val.exit_code, 0) << blob["stage"] << " " << path << "\n" << val.out << val.err;
+  }
 }
 
 TEST_F(EveryStage, TaskAndMeshReportTheirWorkGroups) {
-    EXPECT_EQ(blob_of("meshlet_task")["local_size"], json::array({32, 1, 1}));
-    EXPECT_EQ(blob_of("meshlet")["local_size"], json::array({1, 1, 1}));
-    EXPECT_EQ(blob_of("meshlet")["outputs"][0]["location"], 0);
-    EXPECT_FALSE(blob_of("shade").contains("local_size")) << "a graphics stage has no work group";
+  EXPECT_EQ(blob_of("meshlet_task")["local_size"], json::array({32, 1, 1}));
+  EXPECT_EQ(blob_of("meshlet")["local_size"], json::array({1, 1, 1}));
+  EXPECT_EQ(blob_of("meshlet")["outputs"][0]["location"], 0);
+  EXPECT_FALSE(blob_of("shade").contains("local_size")) << "a graphics stage has no work group";
 }
 
 TEST_F(EveryStage, RayGenerationBindsTheSceneAndTheTarget) {
-    const json& bindings = blob_of("primary_rays")["bindings"];
-    ASSERT_EQ(bindings.size(), 2u);
-    EXPECT_EQ(bindings[0]["kind"], "acceleration_structure");
-    EXPECT_EQ(bindings[0]["stages"], json::array({"ray_generation"}));
-    EXPECT_EQ(bindings[1]["kind"], "storage_image");
+  const json& bindings = blob_of("primary_rays")["bindings"];
+  ASSERT_EQ(bindings.size(), 2u);
+  EXPECT_EQ(bindings[0]["kind"], "acceleration_structure");
+  EXPECT_EQ(bindings[0]["stages"], json::array({"ray_generation"}));
+  EXPECT_EQ(bindings[1]["kind"], "storage_image");
 }
 
 }  // namespace

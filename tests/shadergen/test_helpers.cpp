@@ -20,120 +20,124 @@ fs::path glsl_error_spec() { return fixtures_dir() / "glsl_error" / "glsl_error.
 fs::path split_second_spec() { return source_dir() / "permutations" / "split_second.json"; }
 
 std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 void write_file(const fs::path& path, const std::string& bytes) {
-    if (path.has_parent_path()) fs::create_directories(path.parent_path());
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << bytes;
+  if (path.has_parent_path()) fs::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << bytes;
 }
 
 TempDir::TempDir(const std::string& tag) {
-    static std::atomic<unsigned> counter{0};
-    auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
-    path_ = fs::temp_directory_path() / ("shadergen-test-" + tag + "-" + std::to_string(::getpid()) + "-" +
-                                         std::to_string(counter++) + "-" + std::to_string(ticks));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
+  static std::atomic<unsigned> counter{0};
+  auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
+  path_ = fs::temp_directory_path() / ("shadergen-test-" + tag + "-" + std::to_string(::getpid()) + "-" +
+                                       std::to_string(counter++) + "-" + std::to_string(ticks));
+  fs::remove_all(path_);
+  fs::create_directories(path_);
 }
 
 TempDir::~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
+  std::error_code ec;
+  fs::remove_all(path_, ec);
 }
 
 std::map<std::string, std::string> snapshot(const fs::path& dir) {
-    std::map<std::string, std::string> files;
-    if (!fs::exists(dir)) return files;
-    for (const auto& entry : fs::recursive_directory_iterator(dir))
-        if (entry.is_regular_file()) files[entry.path().lexically_relative(dir).generic_string()] = read_file(entry.path());
-    return files;
+  std::map<std::string, std::string> files;
+  if (!fs::exists(dir)) return files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.is_regular_file()) files[entry.path().lexically_relative(dir).generic_string()] = read_file(entry.path());
+  return files;
 }
 
 std::map<std::string, fs::file_time_type> mtimes(const fs::path& dir) {
-    std::map<std::string, fs::file_time_type> times;
-    if (!fs::exists(dir)) return times;
-    for (const auto& entry : fs::recursive_directory_iterator(dir))
-        if (entry.is_regular_file()) times[entry.path().lexically_relative(dir).generic_string()] = entry.last_write_time();
-    return times;
+  std::map<std::string, fs::file_time_type> times;
+  if (!fs::exists(dir)) return times;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.is_regular_file()) times[entry.path().lexically_relative(dir).generic_string()] = entry.last_write_time();
+  return times;
 }
 
 std::string describe_difference(const std::map<std::string, std::string>& a,
                                 const std::map<std::string, std::string>& b) {
-    std::string text;
-    for (const auto& [name, bytes] : a) {
-        auto other = b.find(name);
-        if (other == b.end()) text += "  only in the first: " + name + "\n";
-        else if (other->second != bytes) text += "  differs: " + name + "\n";
-    }
-    for (const auto& [name, bytes] : b)
-        if (!a.count(name)) text += "  only in the second: " + name + "\n";
-    return text.empty() ? "  (identical)\n" : text;
+  std::string text;
+  for (const auto& [name, bytes] : a) {
+    auto other = b.find(name);
+    if (other == b.end())
+      text += "  only in the first: " + name + "\n";
+    else if (other->second != bytes)
+      text += "  differs: " + name + "\n";
+  }
+  for (const auto& [name, bytes] : b)
+    if (!a.count(name)) text += "  only in the second: " + name + "\n";
+  return text.empty() ? "  (identical)\n" : text;
 }
 
 std::string shell_quote(const std::string& text) {
-    std::string quoted = "'";
-    for (char c : text) {
-        if (c == '\'') quoted += "'\\''";
-        else quoted += c;
-    }
-    return quoted + "'";
+  std::string quoted = "'";
+  for (char c : text) {
+    if (c == '\'')
+      quoted += "'\\''";
+    else
+      quoted += c;
+  }
+  return quoted + "'";
 }
 
 ProcessResult run_process(const fs::path& program, const std::vector<std::string>& args) {
-    TempDir capture("capture");
-    std::string command = shell_quote(program.string());
-    for (const std::string& arg : args) command += " " + shell_quote(arg);
-    command += " >" + shell_quote((capture / "out").string()) + " 2>" + shell_quote((capture / "err").string()) +
-               " </dev/null";
-    int status = std::system(command.c_str());
-    ProcessResult result;
-    result.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-    result.out = read_file(capture / "out");
-    result.err = read_file(capture / "err");
-    return result;
+  TempDir capture("capture");
+  std::string command = shell_quote(program.string());
+  for (const std::string& arg : args) command += " " + shell_quote(arg);
+  command +=
+      " >" + shell_quote((capture / "out").string()) + " 2>" + shell_quote((capture / "err").string()) + " </dev/null";
+  int status = std::system(command.c_str());
+  ProcessResult result;
+  result.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+  result.out = read_file(capture / "out");
+  result.err = read_file(capture / "err");
+  return result;
 }
 
 ProcessResult spirv_val(const fs::path& blob, const std::string& target_env) {
-    const fs::path installed = "/usr/bin/spirv-val";
-    return run_process(fs::exists(installed) ? installed : fs::path("spirv-val"),
-                       {"--target-env", target_env, blob.string()});
+  const fs::path installed = "/usr/bin/spirv-val";
+  return run_process(fs::exists(installed) ? installed : fs::path("spirv-val"),
+                     {"--target-env", target_env, blob.string()});
 }
 
 std::string first_spec_error(const std::string& text) {
-    auto result = shadergen::parse_domain(text, "spec.json");
-    if (result.ok()) return "(no error)";
-    return result.errors().front().to_string();
+  auto result = shadergen::parse_domain(text, "spec.json");
+  if (result.ok()) return "(no error)";
+  return result.errors().front().to_string();
 }
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 std::size_t count_of(const std::string& text, const std::string& part) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++n;
-    return n;
+  std::size_t n = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++n;
+  return n;
 }
 
 Position position_of(const std::string& text, std::size_t offset) {
-    Position p;
-    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-        if (text[i] == '\n') {
-            ++p.line;
-            p.column = 1;
-        } else {
-            ++p.column;
-        }
+  Position p;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++p.line;
+      p.column = 1;
+    } else {
+      ++p.column;
     }
-    return p;
+  }
+  return p;
 }
 
 std::string where(const std::string& file, const std::string& text, std::size_t offset) {
-    Position p = position_of(text, offset);
-    return file + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
+  Position p = position_of(text, offset);
+  return file + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
 }
 
 }  // namespace sgtest

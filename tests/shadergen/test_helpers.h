@@ -34,17 +34,17 @@ void write_file(const fs::path& path, const std::string& bytes);
 
 // A fresh, empty folder under the system temporary folder, removed when the object dies.
 class TempDir {
-public:
-    explicit TempDir(const std::string& tag);
-    ~TempDir();
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
+ public:
+  explicit TempDir(const std::string& tag);
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
 
-    const fs::path& path() const { return path_; }
-    fs::path operator/(const std::string& name) const { return path_ / name; }
+  const fs::path& path() const { return path_; }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
 
-private:
-    fs::path path_;
+ private:
+  fs::path path_;
 };
 
 // Every regular file under `dir`: relative path -> bytes.
@@ -58,9 +58,9 @@ std::string describe_difference(const std::map<std::string, std::string>& a,
 std::string shell_quote(const std::string& text);
 
 struct ProcessResult {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
+  int exit_code = -1;
+  std::string out;
+  std::string err;
 };
 
 // Runs `program args...` through the shell with stdout and stderr captured into files in a
@@ -79,8 +79,8 @@ std::size_t count_of(const std::string& text, const std::string& part);
 
 // 1-based line and column of byte `offset` in `text`, as shadergen's diagnostics count them.
 struct Position {
-    int line = 1;
-    int column = 1;
+  int line = 1;
+  int column = 1;
 };
 Position position_of(const std::string& text, std::size_t offset);
 // "file:line:column" of byte `offset` of `text`.

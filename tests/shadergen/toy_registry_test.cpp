@@ -31,142 +31,142 @@ constexpr std::array<int, 16> kExpected = {0, 1, 2, 3, 2, 3, 2, 3, 1, -1, 3, -1,
 constexpr std::uint32_t kSpirvMagic = 0x07230203u;
 
 TEST(ToyRegistry, NamesAndCounts) {
-    const shadergen::Registry& r = toy::registry();
-    EXPECT_EQ(r.name, "toy_particles");
-    EXPECT_EQ(r.uber_stage, shadergen::Stage::fragment);
-    ASSERT_EQ(r.raw.size(), 16u);
-    ASSERT_EQ(r.optimised.size(), 4u);
-    ASSERT_EQ(r.raw_to_optimised.size(), 16u);
-    const std::array<std::string_view, 4> features = {"LIT", "TEXTURED", "SOFT", "DISTORT"};
-    ASSERT_EQ(r.raw_feature_names.size(), 4u);
-    for (std::size_t bit = 0; bit < 4; ++bit) EXPECT_EQ(r.raw_feature_names[bit], features[bit]);
-    ASSERT_EQ(r.optimised_bit_names.size(), 2u);
-    EXPECT_EQ(r.optimised_bit_names[0], "SHADED");
-    EXPECT_EQ(r.optimised_bit_names[1], "SAMPLED");
+  const shadergen::Registry& r = toy::registry();
+  EXPECT_EQ(r.name, "toy_particles");
+  EXPECT_EQ(r.uber_stage, shadergen::Stage::fragment);
+  ASSERT_EQ(r.raw.size(), 16u);
+  ASSERT_EQ(r.optimised.size(), 4u);
+  ASSERT_EQ(r.raw_to_optimised.size(), 16u);
+  const std::array<std::string_view, 4> features = {"LIT", "TEXTURED", "SOFT", "DISTORT"};
+  ASSERT_EQ(r.raw_feature_names.size(), 4u);
+  for (std::size_t bit = 0; bit < 4; ++bit) EXPECT_EQ(r.raw_feature_names[bit], features[bit]);
+  ASSERT_EQ(r.optimised_bit_names.size(), 2u);
+  EXPECT_EQ(r.optimised_bit_names[0], "SHADED");
+  EXPECT_EQ(r.optimised_bit_names[1], "SAMPLED");
 }
 
 TEST(ToyRegistry, TableMatchesTheConstexprTableAndTheSpec) {
-    const shadergen::Registry& r = toy::registry();
-    for (std::uint32_t id = 0; id < 16; ++id) {
-        SCOPED_TRACE("raw " + std::to_string(id));
-        EXPECT_EQ(r.raw_to_optimised[id], toy::kRawToOptimised[id]);
-        EXPECT_EQ(r.raw[id].pruned, toy::kRawPruned[id]);
-        EXPECT_EQ(r.raw[id].pruned, kExpected[id] < 0);
-        if (kExpected[id] >= 0) {
-            EXPECT_EQ(static_cast<int>(r.raw_to_optimised[id]), kExpected[id]);
-            EXPECT_EQ(&r.optimised_for_raw(id), &r.optimised[static_cast<std::size_t>(kExpected[id])]);
-        }
+  const shadergen::Registry& r = toy::registry();
+  for (std::uint32_t id = 0; id < 16; ++id) {
+    SCOPED_TRACE("raw " + std::to_string(id));
+    EXPECT_EQ(r.raw_to_optimised[id], toy::kRawToOptimised[id]);
+    EXPECT_EQ(r.raw[id].pruned, toy::kRawPruned[id]);
+    EXPECT_EQ(r.raw[id].pruned, kExpected[id] < 0);
+    if (kExpected[id] >= 0) {
+      EXPECT_EQ(static_cast<int>(r.raw_to_optimised[id]), kExpected[id]);
+      EXPECT_EQ(&r.optimised_for_raw(id), &r.optimised[static_cast<std::size_t>(kExpected[id])]);
     }
+  }
 }
 
 TEST(ToyRegistry, PermutationsCarrySpirvUnlessPruned) {
-    const shadergen::Registry& r = toy::registry();
-    std::size_t pruned = 0;
-    for (std::uint32_t id = 0; id < r.raw.size(); ++id) {
-        const shadergen::Permutation& p = r.raw[id];
-        SCOPED_TRACE("raw " + std::to_string(id));
-        EXPECT_EQ(p.id, id);
-        if (p.pruned) {
-            ++pruned;
-            EXPECT_TRUE(p.spirv.empty());
-            EXPECT_TRUE(p.hash.empty());
-            continue;
-        }
-        ASSERT_GT(p.spirv.size(), 5u);
-        EXPECT_EQ(p.spirv[0], kSpirvMagic);
-        EXPECT_EQ(p.hash.size(), 64u);
-        ASSERT_EQ(p.reflection.outputs.size(), 1u);
-        EXPECT_EQ(p.reflection.outputs[0].location, 0u);
-        EXPECT_EQ(p.reflection.outputs[0].components, 4u);
-        EXPECT_EQ(p.reflection.local_size[0], 0u);
+  const shadergen::Registry& r = toy::registry();
+  std::size_t pruned = 0;
+  for (std::uint32_t id = 0; id < r.raw.size(); ++id) {
+    const shadergen::Permutation& p = r.raw[id];
+    SCOPED_TRACE("raw " + std::to_string(id));
+    EXPECT_EQ(p.id, id);
+    if (p.pruned) {
+      ++pruned;
+      EXPECT_TRUE(p.spirv.empty());
+      EXPECT_TRUE(p.hash.empty());
+      continue;
     }
-    EXPECT_EQ(pruned, 4u);
-    for (const shadergen::Permutation& o : r.optimised) {
-        SCOPED_TRACE("optimised " + std::to_string(o.id));
-        EXPECT_FALSE(o.pruned);
-        ASSERT_FALSE(o.spirv.empty());
-        EXPECT_EQ(o.spirv[0], kSpirvMagic);
-    }
+    ASSERT_GT(p.spirv.size(), 5u);
+    EXPECT_EQ(p.spirv[0], kSpirvMagic);
+    EXPECT_EQ(p.hash.size(), 64u);
+    ASSERT_EQ(p.reflection.outputs.size(), 1u);
+    EXPECT_EQ(p.reflection.outputs[0].location, 0u);
+    EXPECT_EQ(p.reflection.outputs[0].components, 4u);
+    EXPECT_EQ(p.reflection.local_size[0], 0u);
+  }
+  EXPECT_EQ(pruned, 4u);
+  for (const shadergen::Permutation& o : r.optimised) {
+    SCOPED_TRACE("optimised " + std::to_string(o.id));
+    EXPECT_FALSE(o.pruned);
+    ASSERT_FALSE(o.spirv.empty());
+    EXPECT_EQ(o.spirv[0], kSpirvMagic);
+  }
 }
 
 TEST(ToyRegistry, DefinesFollowTheRawBits) {
-    const shadergen::Registry& r = toy::registry();
-    auto defines = [](const shadergen::Permutation& p) {
-        std::vector<std::string_view> list(p.defines.begin(), p.defines.end());
-        return list;
-    };
-    EXPECT_TRUE(defines(r.raw[0]).empty());
-    EXPECT_EQ(defines(r.raw[7]), (std::vector<std::string_view>{"LIT", "USE_TEXTURE", "SOFT_PARTICLES"}));
-    EXPECT_EQ(defines(r.raw[9]), (std::vector<std::string_view>{"LIT", "DISTORTION"})) << "pruned, but named";
-    EXPECT_EQ(defines(r.optimised[2]), (std::vector<std::string_view>{"USE_TEXTURE", "SOFT_PARTICLES"}));
-    EXPECT_EQ(defines(r.optimised[3]), (std::vector<std::string_view>{"LIT", "USE_TEXTURE", "SOFT_PARTICLES"}));
+  const shadergen::Registry& r = toy::registry();
+  auto defines = [](const shadergen::Permutation& p) {
+    std::vector<std::string_view> list(p.defines.begin(), p.defines.end());
+    return list;
+  };
+  EXPECT_TRUE(defines(r.raw[0]).empty());
+  EXPECT_EQ(defines(r.raw[7]), (std::vector<std::string_view>{"LIT", "USE_TEXTURE", "SOFT_PARTICLES"}));
+  EXPECT_EQ(defines(r.raw[9]), (std::vector<std::string_view>{"LIT", "DISTORTION"})) << "pruned, but named";
+  EXPECT_EQ(defines(r.optimised[2]), (std::vector<std::string_view>{"USE_TEXTURE", "SOFT_PARTICLES"}));
+  EXPECT_EQ(defines(r.optimised[3]), (std::vector<std::string_view>{"LIT", "USE_TEXTURE", "SOFT_PARTICLES"}));
 }
 
 TEST(ToyRegistry, OptimisedBlobsAreSharedWithTheirRawTwins) {
-    const shadergen::Registry& r = toy::registry();
-    // Optimised 0..3 are compiled with the defines of raw 0, 1, 6, 7: the same words, stored once.
-    const std::array<std::uint32_t, 4> twin = {0, 1, 6, 7};
-    for (std::uint32_t id = 0; id < 4; ++id) {
-        EXPECT_EQ(r.optimised[id].spirv.data(), r.raw[twin[id]].spirv.data()) << "optimised " << id;
-        EXPECT_EQ(r.optimised[id].hash, r.raw[twin[id]].hash) << "optimised " << id;
-    }
-    std::set<std::string_view> hashes;
-    for (const shadergen::Permutation& p : r.raw)
-        if (!p.pruned) hashes.insert(p.hash);
-    EXPECT_EQ(hashes.size(), 12u) << "every compilable raw permutation of the toy has its own code";
+  const shadergen::Registry& r = toy::registry();
+  // Optimised 0..3 are compiled with the defines of raw 0, 1, 6, 7: the same words, stored once.
+  const std::array<std::uint32_t, 4> twin = {0, 1, 6, 7};
+  for (std::uint32_t id = 0; id < 4; ++id) {
+    EXPECT_EQ(r.optimised[id].spirv.data(), r.raw[twin[id]].spirv.data()) << "optimised " << id;
+    EXPECT_EQ(r.optimised[id].hash, r.raw[twin[id]].hash) << "optimised " << id;
+  }
+  std::set<std::string_view> hashes;
+  for (const shadergen::Permutation& p : r.raw)
+    if (!p.pruned) hashes.insert(p.hash);
+  EXPECT_EQ(hashes.size(), 12u) << "every compilable raw permutation of the toy has its own code";
 }
 
 TEST(ToyRegistry, ComputeCompanionReflectsItsWorkGroupAndBuffer) {
-    const shadergen::Registry& r = toy::registry();
-    ASSERT_EQ(r.companions.size(), 1u);
-    const shadergen::CompanionShader* sort = r.companion("sort");
-    ASSERT_NE(sort, nullptr);
-    EXPECT_EQ(r.companion("particle"), nullptr);
-    EXPECT_EQ(sort->name, "sort");
-    EXPECT_EQ(sort->stage, shadergen::Stage::compute);
-    const shadergen::Permutation& shader = sort->shader;
-    ASSERT_GT(shader.spirv.size(), 5u);
-    EXPECT_EQ(shader.spirv[0], kSpirvMagic);
-    ASSERT_EQ(shader.defines.size(), 1u);
-    EXPECT_EQ(shader.defines[0], "WIDE_GROUPS");
-    // WIDE_GROUPS selects local_size_x = 128.
-    EXPECT_EQ(shader.reflection.local_size[0], 128u);
-    EXPECT_EQ(shader.reflection.local_size[1], 1u);
-    EXPECT_EQ(shader.reflection.local_size[2], 1u);
-    EXPECT_EQ(shader.reflection.push_constant_size, 4u);
-    ASSERT_EQ(shader.reflection.bindings.size(), 1u);
-    EXPECT_EQ(shader.reflection.bindings[0].set, 1u);
-    EXPECT_EQ(shader.reflection.bindings[0].binding, 0u);
-    EXPECT_EQ(shader.reflection.bindings[0].kind, shadergen::DescriptorKind::storage_buffer);
+  const shadergen::Registry& r = toy::registry();
+  ASSERT_EQ(r.companions.size(), 1u);
+  const shadergen::CompanionShader* sort = r.companion("sort");
+  ASSERT_NE(sort, nullptr);
+  EXPECT_EQ(r.companion("particle"), nullptr);
+  EXPECT_EQ(sort->name, "sort");
+  EXPECT_EQ(sort->stage, shadergen::Stage::compute);
+  const shadergen::Permutation& shader = sort->shader;
+  ASSERT_GT(shader.spirv.size(), 5u);
+  EXPECT_EQ(shader.spirv[0], kSpirvMagic);
+  ASSERT_EQ(shader.defines.size(), 1u);
+  EXPECT_EQ(shader.defines[0], "WIDE_GROUPS");
+  // WIDE_GROUPS selects local_size_x = 128.
+  EXPECT_EQ(shader.reflection.local_size[0], 128u);
+  EXPECT_EQ(shader.reflection.local_size[1], 1u);
+  EXPECT_EQ(shader.reflection.local_size[2], 1u);
+  EXPECT_EQ(shader.reflection.push_constant_size, 4u);
+  ASSERT_EQ(shader.reflection.bindings.size(), 1u);
+  EXPECT_EQ(shader.reflection.bindings[0].set, 1u);
+  EXPECT_EQ(shader.reflection.bindings[0].binding, 0u);
+  EXPECT_EQ(shader.reflection.bindings[0].kind, shadergen::DescriptorKind::storage_buffer);
 }
 
 TEST(ToyRegistry, MergedPipelineLayout) {
-    const shadergen::Registry& r = toy::registry();
-    struct Expected {
-        std::uint32_t set, binding;
-        shadergen::DescriptorKind kind;
-        shadergen::Stage stage;
-        std::string_view name;
-    };
-    const std::array<Expected, 4> expected = {{
-        {0, 0, shadergen::DescriptorKind::uniform_buffer, shadergen::Stage::fragment, "ParticleParams"},
-        {0, 1, shadergen::DescriptorKind::combined_image_sampler, shadergen::Stage::fragment, "particle_texture"},
-        {0, 2, shadergen::DescriptorKind::combined_image_sampler, shadergen::Stage::fragment, "scene_depth"},
-        {1, 0, shadergen::DescriptorKind::storage_buffer, shadergen::Stage::compute, "Keys"},
-    }};
-    ASSERT_EQ(r.pipeline_layout.size(), expected.size());
-    for (std::size_t i = 0; i < expected.size(); ++i) {
-        SCOPED_TRACE("binding " + std::to_string(i));
-        EXPECT_EQ(r.pipeline_layout[i].set, expected[i].set);
-        EXPECT_EQ(r.pipeline_layout[i].binding, expected[i].binding);
-        EXPECT_EQ(r.pipeline_layout[i].kind, expected[i].kind);
-        EXPECT_EQ(r.pipeline_layout[i].count, 1u);
-        EXPECT_EQ(r.pipeline_layout[i].stages, static_cast<std::uint32_t>(expected[i].stage));
-        EXPECT_EQ(r.pipeline_layout[i].name, expected[i].name);
-    }
-    ASSERT_EQ(r.push_constants.size(), 1u);
-    EXPECT_EQ(r.push_constants[0].size, 4u);
-    EXPECT_EQ(r.push_constants[0].stages, static_cast<std::uint32_t>(shadergen::Stage::compute));
+  const shadergen::Registry& r = toy::registry();
+  struct Expected {
+    std::uint32_t set, binding;
+    shadergen::DescriptorKind kind;
+    shadergen::Stage stage;
+    std::string_view name;
+  };
+  const std::array<Expected, 4> expected = {{
+      {0, 0, shadergen::DescriptorKind::uniform_buffer, shadergen::Stage::fragment, "ParticleParams"},
+      {0, 1, shadergen::DescriptorKind::combined_image_sampler, shadergen::Stage::fragment, "particle_texture"},
+      {0, 2, shadergen::DescriptorKind::combined_image_sampler, shadergen::Stage::fragment, "scene_depth"},
+      {1, 0, shadergen::DescriptorKind::storage_buffer, shadergen::Stage::compute, "Keys"},
+  }};
+  ASSERT_EQ(r.pipeline_layout.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE("binding " + std::to_string(i));
+    EXPECT_EQ(r.pipeline_layout[i].set, expected[i].set);
+    EXPECT_EQ(r.pipeline_layout[i].binding, expected[i].binding);
+    EXPECT_EQ(r.pipeline_layout[i].kind, expected[i].kind);
+    EXPECT_EQ(r.pipeline_layout[i].count, 1u);
+    EXPECT_EQ(r.pipeline_layout[i].stages, static_cast<std::uint32_t>(expected[i].stage));
+    EXPECT_EQ(r.pipeline_layout[i].name, expected[i].name);
+  }
+  ASSERT_EQ(r.push_constants.size(), 1u);
+  EXPECT_EQ(r.push_constants[0].size, 4u);
+  EXPECT_EQ(r.push_constants[0].stages, static_cast<std::uint32_t>(shadergen::Stage::compute));
 }
 
 }  // namespace

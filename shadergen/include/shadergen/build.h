@@ -13,60 +13,60 @@
 namespace shadergen {
 
 struct BuildOptions {
-    std::filesystem::path spec_path;
-    std::filesystem::path out_dir;
-    unsigned jobs = 0;                // 0 = one per hardware thread
-    bool use_cache = true;            // false: compile everything (a cold build)
-    std::filesystem::path cache_dir;  // empty: default_cache_directory()
-    std::filesystem::path depfile;    // empty: none. Make syntax, target = the generated header
-    std::string cpp_name;             // base name of the generated .h/.cpp; empty: the domain name
-    std::string cpp_namespace;        // C++ namespace of the generated code; empty: the domain name
-    // `--define` arguments, "NAME=VALUE" or "NAME" (= 1): they add to and replace the spec's
-    // top-level "defines", so they reach every shader of the domain. They change the outputs
-    // only through the preprocessed text, which is what the content cache is keyed on.
-    std::vector<std::string> defines;
-    // `--target-env`: "vulkan1.0" ... "vulkan1.3"; empty: the spec's "target_env" (default vulkan1.2).
-    std::string target_env;
-    bool write_stats = false;         // also write <out>/stats.json (timings: not deterministic)
-    bool verbose = false;             // one progress line per compiled source
-    // A content cache shared over HTTP: GET/PUT <url>/<key[0:2]>/<key>, asked after a local miss,
-    // given every entry compiled here unless read-only. Empty: none; unused without use_cache.
-    // Precondition: empty or an http:// or https:// URL (else build() fails naming it).
-    std::string remote_cache_url;
-    bool remote_cache_read_only = false;
-    // Receives progress lines (the CLI prints them on stderr). May be empty.
-    std::function<void(const std::string&)> log;
-    // Polled between jobs; when it returns true the build stops and fails, output untouched.
-    std::function<bool()> cancelled;
+  std::filesystem::path spec_path;
+  std::filesystem::path out_dir;
+  unsigned jobs = 0;                // 0 = one per hardware thread
+  bool use_cache = true;            // false: compile everything (a cold build)
+  std::filesystem::path cache_dir;  // empty: default_cache_directory()
+  std::filesystem::path depfile;    // empty: none. Make syntax, target = the generated header
+  std::string cpp_name;             // base name of the generated .h/.cpp; empty: the domain name
+  std::string cpp_namespace;        // C++ namespace of the generated code; empty: the domain name
+  // `--define` arguments, "NAME=VALUE" or "NAME" (= 1): they add to and replace the spec's
+  // top-level "defines", so they reach every shader of the domain. They change the outputs
+  // only through the preprocessed text, which is what the content cache is keyed on.
+  std::vector<std::string> defines;
+  // `--target-env`: "vulkan1.0" ... "vulkan1.3"; empty: the spec's "target_env" (default vulkan1.2).
+  std::string target_env;
+  bool write_stats = false;  // also write <out>/stats.json (timings: not deterministic)
+  bool verbose = false;      // one progress line per compiled source
+  // A content cache shared over HTTP: GET/PUT <url>/<key[0:2]>/<key>, asked after a local miss,
+  // given every entry compiled here unless read-only. Empty: none; unused without use_cache.
+  // Precondition: empty or an http:// or https:// URL (else build() fails naming it).
+  std::string remote_cache_url;
+  bool remote_cache_read_only = false;
+  // Receives progress lines (the CLI prints them on stderr). May be empty.
+  std::function<void(const std::string&)> log;
+  // Polled between jobs; when it returns true the build stops and fails, output untouched.
+  std::function<bool()> cancelled;
 };
 
 // Wall time of one phase of a build ("parse spec", "preprocess", "compile or load", ...).
 struct PhaseTime {
-    std::string name;
-    double ms = 0.0;
+  std::string name;
+  double ms = 0.0;
 };
 
 struct BuildSummary {
-    std::uint32_t raw = 0;             // raw permutations in the domain
-    std::uint32_t pruned = 0;          // of which impossible
-    std::uint32_t optimised = 0;
-    std::uint32_t companions = 0;
-    std::uint32_t unique_sources = 0;  // distinct preprocessed texts
-    std::uint32_t compiled = 0;        // of which compiled now (cache misses)
-    std::uint32_t cache_hits = 0;
-    std::uint32_t unique_blobs = 0;    // distinct SPIR-V blobs written
-    std::uint32_t optimiser_fallbacks = 0;
-    std::uint32_t permutations = 0;    // compile jobs: unpruned raw + optimised + companions
-    std::uint32_t recompiled = 0;      // of which compiled now (their preprocessed source missed)
-    std::uint32_t reused = 0;          // of which taken from the cache
-    bool inputs_reused = false;        // every input unchanged: preprocessing was skipped
-    bool output_changed = false;       // false when every output file already had these bytes
-    bool remote_cache = false;         // a remote cache was configured; then the three counts:
-    std::uint32_t remote_fetched = 0;  // of cache_hits, entries taken from the remote cache
-    std::uint32_t remote_uploaded = 0;
-    std::uint32_t remote_failed = 0;   // requests without a usable answer, and rejected entries
-    double seconds = 0.0;
-    std::vector<PhaseTime> phases;     // in order; their sum is close to `seconds`
+  std::uint32_t raw = 0;     // raw permutations in the domain
+  std::uint32_t pruned = 0;  // of which impossible
+  std::uint32_t optimised = 0;
+  std::uint32_t companions = 0;
+  std::uint32_t unique_sources = 0;  // distinct preprocessed texts
+  std::uint32_t compiled = 0;        // of which compiled now (cache misses)
+  std::uint32_t cache_hits = 0;
+  std::uint32_t unique_blobs = 0;  // distinct SPIR-V blobs written
+  std::uint32_t optimiser_fallbacks = 0;
+  std::uint32_t permutations = 0;    // compile jobs: unpruned raw + optimised + companions
+  std::uint32_t recompiled = 0;      // of which compiled now (their preprocessed source missed)
+  std::uint32_t reused = 0;          // of which taken from the cache
+  bool inputs_reused = false;        // every input unchanged: preprocessing was skipped
+  bool output_changed = false;       // false when every output file already had these bytes
+  bool remote_cache = false;         // a remote cache was configured; then the three counts:
+  std::uint32_t remote_fetched = 0;  // of cache_hits, entries taken from the remote cache
+  std::uint32_t remote_uploaded = 0;
+  std::uint32_t remote_failed = 0;  // requests without a usable answer, and rejected entries
+  double seconds = 0.0;
+  std::vector<PhaseTime> phases;  // in order; their sum is close to `seconds`
 };
 
 // Two lines for `--stats`: permutations recompiled vs reused, whether preprocessing was

@@ -24,8 +24,8 @@ namespace shadergen {
 // Raw bits, not features: a valued feature takes several. 16 bits are 65,536 raw IDs, which
 // expansion handles in linear time and the generated table holds in 64 KiB.
 inline constexpr std::uint32_t kMaxRawFeatures = 16;
-inline constexpr std::size_t kMaxFeatureValues = 256;     // a valued feature's field: at most 8 bits
-inline constexpr std::uint32_t kMaxOptimisedBits = 8;       // the LUT stores optimised IDs as bytes
+inline constexpr std::size_t kMaxFeatureValues = 256;  // a valued feature's field: at most 8 bits
+inline constexpr std::uint32_t kMaxOptimisedBits = 8;  // the LUT stores optimised IDs as bytes
 inline constexpr std::size_t kMaxCompanions = 64;
 inline constexpr std::size_t kMaxIncludeDirs = 64;
 // Rule counts bound the cost of expansion: every impossible rule is evaluated for each of up to
@@ -37,51 +37,51 @@ inline constexpr std::size_t kMaxSpecErrors = 50;
 
 // A rule as written in the spec, with where it was written (for messages).
 struct Rule {
-    Expression expression;
-    std::string text;
-    int line = 0;
+  Expression expression;
+  std::string text;
+  int line = 0;
 };
 
 struct RawFeature {
-    std::string name;    // e.g. SHADOW_SOLID; the name rules use
-    std::uint32_t bit;   // bit in the raw ID (a valued feature's lowest bit)
-    std::string define;  // GLSL define the uber-shader tests, e.g. SOLID_SHADOW
-    std::string description;
-    // Empty: a boolean feature, one bit, `#define NAME 1` when set. Otherwise the values, as
-    // written (integers or identifiers): the field of `width` bits from `bit` holds the index
-    // of one, compiled as `#define NAME <value>`; indices past the end are pruned.
-    std::vector<std::string> values;
-    std::uint32_t width = 1;
+  std::string name;    // e.g. SHADOW_SOLID; the name rules use
+  std::uint32_t bit;   // bit in the raw ID (a valued feature's lowest bit)
+  std::string define;  // GLSL define the uber-shader tests, e.g. SOLID_SHADOW
+  std::string description;
+  // Empty: a boolean feature, one bit, `#define NAME 1` when set. Otherwise the values, as
+  // written (integers or identifiers): the field of `width` bits from `bit` holds the index
+  // of one, compiled as `#define NAME <value>`; indices past the end are pruned.
+  std::vector<std::string> values;
+  std::uint32_t width = 1;
 
-    bool valued() const { return !values.empty(); }
-    std::uint32_t mask() const { return ((1u << width) - 1u) << bit; }
-    // The value index this raw ID holds in the feature's field (may be >= values.size()).
-    std::uint32_t index_in(std::uint32_t raw_id) const { return (raw_id >> bit) & ((1u << width) - 1u); }
+  bool valued() const { return !values.empty(); }
+  std::uint32_t mask() const { return ((1u << width) - 1u) << bit; }
+  // The value index this raw ID holds in the feature's field (may be >= values.size()).
+  std::uint32_t index_in(std::uint32_t raw_id) const { return (raw_id >> bit) & ((1u << width) - 1u); }
 };
 
 struct ImpossibleSet {
-    Rule when;           // over raw feature names
-    std::string why;
+  Rule when;  // over raw feature names
+  std::string why;
 };
 
 struct OptimisedBit {
-    std::string name;    // e.g. SUN_0
-    std::uint32_t bit;
-    Rule when;           // over raw feature names: set in the optimised ID when true
-    std::string description;
+  std::string name;  // e.g. SUN_0
+  std::uint32_t bit;
+  Rule when;  // over raw feature names: set in the optimised ID when true
+  std::string description;
 };
 
 // One raw feature as a variant sets it: `bits` within `mask` (a boolean's bit, or a valued
 // feature's field holding a value index).
 struct FeatureSetting {
-    std::uint32_t mask = 0;
-    std::uint32_t bits = 0;
+  std::uint32_t mask = 0;
+  std::uint32_t bits = 0;
 };
 
 // "When these optimised bits hold, compile with these raw features' defines."
 struct OptimisedVariant {
-    Rule when;                              // over optimised bit names
-    std::vector<FeatureSetting> raw_features;
+  Rule when;  // over optimised bit names
+  std::vector<FeatureSetting> raw_features;
 };
 
 // The Vulkan version a domain's SPIR-V is compiled and validated for. Each implies a SPIR-V
@@ -100,51 +100,51 @@ std::string_view target_env_choices();
 enum class LayoutMode { shared, per_permutation };
 
 struct ShaderFile {
-    std::filesystem::path path;  // resolved against the spec's folder
-    Stage stage = Stage::fragment;
+  std::filesystem::path path;  // resolved against the spec's folder
+  Stage stage = Stage::fragment;
 };
 
 struct CompanionSpec {
-    std::string name;
-    ShaderFile file;
-    // "NAME" (= 1) or "NAME=VALUE"; they replace a top-level define of the same name.
-    std::vector<std::string> defines;
-    // True: the companion runs in the uber-shader's pipeline layout (a tile vertex shader), so
-    // it takes part in the cross-permutation layout check and the merged layout. False: it
-    // has a layout of its own (a compute pass), described only by its own reflection.
-    bool shared_layout = true;
+  std::string name;
+  ShaderFile file;
+  // "NAME" (= 1) or "NAME=VALUE"; they replace a top-level define of the same name.
+  std::vector<std::string> defines;
+  // True: the companion runs in the uber-shader's pipeline layout (a tile vertex shader), so
+  // it takes part in the cross-permutation layout check and the merged layout. False: it
+  // has a layout of its own (a compute pass), described only by its own reflection.
+  bool shared_layout = true;
 };
 
 struct DomainSpec {
-    std::filesystem::path spec_path;   // as given by the user
-    std::string name;
-    std::string description;
-    ShaderFile uber;
-    // The "program" form: the vertex half of a permuted vertex + fragment pair (then `uber` is
-    // the fragment half). Each permutation compiles both with the same defines, and the
-    // fragment inputs must be vertex outputs of the same width.
-    std::optional<ShaderFile> program_vertex;
-    std::vector<std::filesystem::path> include_dirs;
-    TargetEnv target_env = TargetEnv::vulkan1_2;  // "target_env", or build --target-env
-    LayoutMode layout = LayoutMode::shared;
-    // Fixed defines, "NAME=VALUE", in spec order: every shader of the domain (uber-shader and
-    // companions) is compiled with them. None names a raw feature's define.
-    std::vector<std::string> defines;
-    std::vector<CompanionSpec> companions;
-    std::vector<RawFeature> raw_features;      // sorted by bit; together they cover bits 0..raw_bits()-1
-    std::vector<ImpossibleSet> impossible;
-    std::vector<OptimisedBit> optimised_bits;  // indexed by bit
-    std::vector<OptimisedVariant> variants;
-    // False when the spec has no "optimised" section: no collapse, every non-pruned raw ID is
-    // compiled as its own permutation and there is no lookup table.
-    bool collapsed = true;
+  std::filesystem::path spec_path;  // as given by the user
+  std::string name;
+  std::string description;
+  ShaderFile uber;
+  // The "program" form: the vertex half of a permuted vertex + fragment pair (then `uber` is
+  // the fragment half). Each permutation compiles both with the same defines, and the
+  // fragment inputs must be vertex outputs of the same width.
+  std::optional<ShaderFile> program_vertex;
+  std::vector<std::filesystem::path> include_dirs;
+  TargetEnv target_env = TargetEnv::vulkan1_2;  // "target_env", or build --target-env
+  LayoutMode layout = LayoutMode::shared;
+  // Fixed defines, "NAME=VALUE", in spec order: every shader of the domain (uber-shader and
+  // companions) is compiled with them. None names a raw feature's define.
+  std::vector<std::string> defines;
+  std::vector<CompanionSpec> companions;
+  std::vector<RawFeature> raw_features;  // sorted by bit; together they cover bits 0..raw_bits()-1
+  std::vector<ImpossibleSet> impossible;
+  std::vector<OptimisedBit> optimised_bits;  // indexed by bit
+  std::vector<OptimisedVariant> variants;
+  // False when the spec has no "optimised" section: no collapse, every non-pruned raw ID is
+  // compiled as its own permutation and there is no lookup table.
+  bool collapsed = true;
 
-    std::uint32_t raw_bits() const;
-    std::uint32_t raw_count() const { return 1u << raw_bits(); }
-    std::uint32_t optimised_count() const { return collapsed ? 1u << optimised_bits.size() : 0u; }
-    std::vector<std::string> raw_feature_names() const;
-    std::vector<ExpressionSymbol> raw_symbols() const;   // for rules over raw features
-    std::vector<std::string> optimised_bit_names() const;
+  std::uint32_t raw_bits() const;
+  std::uint32_t raw_count() const { return 1u << raw_bits(); }
+  std::uint32_t optimised_count() const { return collapsed ? 1u << optimised_bits.size() : 0u; }
+  std::vector<std::string> raw_feature_names() const;
+  std::vector<ExpressionSymbol> raw_symbols() const;  // for rules over raw features
+  std::vector<std::string> optimised_bit_names() const;
 };
 
 // Reads and checks a spec. Diagnostics name the spec path and the line of the offending value.

@@ -24,39 +24,39 @@ namespace shadergen {
 // One name a rule may use: a boolean (one bit) or a valued feature (a field of `width` bits
 // from `bit` holding the index of one of `values`).
 struct ExpressionSymbol {
-    std::string name;
-    std::uint32_t bit = 0;
-    std::uint32_t width = 1;
-    std::vector<std::string> values;  // empty: boolean
+  std::string name;
+  std::uint32_t bit = 0;
+  std::uint32_t width = 1;
+  std::vector<std::string> values;  // empty: boolean
 };
 
 class Expression {
-public:
-    // Evaluates the rule for a set of bits (bit i set = symbol i true).
-    bool evaluate(std::uint32_t bits) const;
-    // The rule as written, normalised spacing, for explanations.
-    std::string to_string() const;
+ public:
+  // Evaluates the rule for a set of bits (bit i set = symbol i true).
+  bool evaluate(std::uint32_t bits) const;
+  // The rule as written, normalised spacing, for explanations.
+  std::string to_string() const;
 
-    struct Node;
+  struct Node;
 
-    Expression() = default;
-    explicit Expression(std::shared_ptr<const Node> root) : root_(std::move(root)) {}
-    bool empty() const { return root_ == nullptr; }
+  Expression() = default;
+  explicit Expression(std::shared_ptr<const Node> root) : root_(std::move(root)) {}
+  bool empty() const { return root_ == nullptr; }
 
-private:
-    std::shared_ptr<const Node> root_;
+ private:
+  std::shared_ptr<const Node> root_;
 };
 
 struct Expression::Node {
-    enum class Kind { constant, symbol, comparison, negation, conjunction, disjunction } kind;
-    bool constant = false;
-    std::uint32_t symbol = 0;  // first bit of the symbol's field
-    std::uint32_t width = 1;   // comparison: bits of the field
-    // comparison: accepted[i] says whether value index i satisfies it, worked out once at
-    // parse time; an index past the end (a field holding no value) is false.
-    std::vector<bool> accepted;
-    std::string text;          // symbol: its name; comparison: "NAME OP VALUE"
-    std::shared_ptr<const Node> left, right;
+  enum class Kind { constant, symbol, comparison, negation, conjunction, disjunction } kind;
+  bool constant = false;
+  std::uint32_t symbol = 0;  // first bit of the symbol's field
+  std::uint32_t width = 1;   // comparison: bits of the field
+  // comparison: accepted[i] says whether value index i satisfies it, worked out once at
+  // parse time; an index past the end (a field holding no value) is false.
+  std::vector<bool> accepted;
+  std::string text;  // symbol: its name; comparison: "NAME OP VALUE"
+  std::shared_ptr<const Node> left, right;
 };
 
 // Maximum nesting of parentheses and negations; deeper input is rejected (bounded recursion).

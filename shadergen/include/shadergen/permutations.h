@@ -12,25 +12,25 @@
 namespace shadergen {
 
 struct RawPermutation {
-    std::uint32_t id = 0;
-    std::vector<std::string> defines;  // GLSL defines, in raw bit order ("NAME" or "NAME=VALUE")
-    bool pruned = false;               // matches an impossible rule or holds no value: never compiled
-    int pruned_by = -1;                // index into DomainSpec::impossible, or -1
-    int unvalued = -1;                 // index into DomainSpec::raw_features of a valued feature
-                                       // whose field holds no value, or -1
-    std::uint32_t optimised = 0;       // the lookup table's entry
+  std::uint32_t id = 0;
+  std::vector<std::string> defines;  // GLSL defines, in raw bit order ("NAME" or "NAME=VALUE")
+  bool pruned = false;               // matches an impossible rule or holds no value: never compiled
+  int pruned_by = -1;                // index into DomainSpec::impossible, or -1
+  int unvalued = -1;                 // index into DomainSpec::raw_features of a valued feature
+                                     // whose field holds no value, or -1
+  std::uint32_t optimised = 0;       // the lookup table's entry
 };
 
 struct OptimisedPermutation {
-    std::uint32_t id = 0;
-    std::vector<std::string> defines;
-    std::uint32_t raw_equivalent = 0;  // the raw ID with the same defines (same source)
-    std::uint32_t raw_mapped = 0;      // how many non-pruned raw IDs map here
+  std::uint32_t id = 0;
+  std::vector<std::string> defines;
+  std::uint32_t raw_equivalent = 0;  // the raw ID with the same defines (same source)
+  std::uint32_t raw_mapped = 0;      // how many non-pruned raw IDs map here
 };
 
 struct PermutationPlan {
-    std::vector<RawPermutation> raw;              // indexed by raw ID
-    std::vector<OptimisedPermutation> optimised;  // indexed by optimised ID
+  std::vector<RawPermutation> raw;              // indexed by raw ID
+  std::vector<OptimisedPermutation> optimised;  // indexed by optimised ID
 };
 
 // Expands the domain. Fails when an optimised ID would be compiled with an impossible raw
