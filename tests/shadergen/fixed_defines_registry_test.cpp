@@ -4,6 +4,8 @@
 // --target-env and --define, and every shader is compiled with them.
 #include <gtest/gtest.h>
 
+#include "registry_digests.h"
+
 #include <fixed_defines_permutations.h>
 
 namespace {
@@ -29,6 +31,11 @@ TEST(FixedDefinesRegistry, CMakeTargetEnvSetsTheSpirvVersion) {
   }
   for (const shadergen::CompanionShader& c : r.companions) EXPECT_EQ(c.shader.spirv[1], 0x00010300u) << c.name;
   EXPECT_EQ(blobs, 2u);
+}
+
+// Every hash in the generated code is the SHA-256 of its words, by coreutils' implementation.
+TEST(FixedDefinesRegistry, HashesAreTheSha256OfTheirWords) {
+  EXPECT_GT(registry_digests::expect_hashes_are_sha256_of_words(fixed::registry()), 0u);
 }
 
 }  // namespace

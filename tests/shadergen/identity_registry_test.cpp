@@ -3,6 +3,8 @@
 // permutation itself, so code written for collapsed domains works unchanged.
 #include <gtest/gtest.h>
 
+#include "registry_digests.h"
+
 #include <identity_permutations.h>
 
 namespace {
@@ -26,6 +28,11 @@ TEST(IdentityRegistry, LookupByRawIdGivesTheRawPermutation) {
   constexpr std::uint32_t kAlbedoNormal = identity::raw_bit::ALBEDO_MAP | identity::raw_bit::NORMAL_MAP;
   ASSERT_EQ(r.raw[kAlbedoNormal].defines.size(), 2u);
   EXPECT_EQ(r.raw[kAlbedoNormal].defines[1], "USE_NORMAL_MAP");
+}
+
+// Every hash in the generated code is the SHA-256 of its words, by coreutils' implementation.
+TEST(IdentityRegistry, HashesAreTheSha256OfTheirWords) {
+  EXPECT_GT(registry_digests::expect_hashes_are_sha256_of_words(identity::registry()), 0u);
 }
 
 }  // namespace

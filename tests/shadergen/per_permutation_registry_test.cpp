@@ -3,6 +3,8 @@
 // outputs and runtime-sized arrays as the manifest has them).
 #include <gtest/gtest.h>
 
+#include "registry_digests.h"
+
 #include <per_permutation_permutations.h>
 
 #include <algorithm>
@@ -45,6 +47,11 @@ TEST(PerPermutationRegistry, EachPermutationHasItsOwnLayout) {
   ASSERT_EQ(fft->shader.reflection.specialization_constants.size(), 2u);
   EXPECT_EQ(fft->shader.reflection.specialization_constants[1].name, "RADIX");
   EXPECT_EQ(fft->shader.reflection.specialization_constants[1].default_bits, 4u);
+}
+
+// Every hash in the generated code is the SHA-256 of its words, by coreutils' implementation.
+TEST(PerPermutationRegistry, HashesAreTheSha256OfTheirWords) {
+  EXPECT_GT(registry_digests::expect_hashes_are_sha256_of_words(per_permutation::registry()), 0u);
 }
 
 }  // namespace
