@@ -1,5 +1,7 @@
 #include "tilelight_testing/test_support.h"
 
+#include "scratch_dir.h"
+
 #include <cstdlib>
 #include <string_view>
 
@@ -24,13 +26,6 @@ void VulkanTest::TearDown() {
   }
 }
 
-std::filesystem::path scratch_dir() {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::filesystem::path dir =
-      std::filesystem::path(TILELIGHT_TEST_SCRATCH) / (std::string(info->test_suite_name()) + "." + info->name());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::filesystem::path scratch_dir() { return testsupport::scratch_dir(TILELIGHT_TEST_SCRATCH); }
 
 }  // namespace tilelight::test

@@ -1,11 +1,10 @@
 // PNG output: correct pixels, atomic replacement, errors that name the path.
-#include "tilelight_testing/test_support.h"
-
-#include "tilelight/base/error.h"
 #include "tilelight/picture/png.h"
+#include "tilelight/base/error.h"
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
+#include "scratch_dir.h"
 
 #include <fstream>
 #include <limits>
@@ -48,7 +47,7 @@ TEST(Png, ToRgba8ClampsAndRounds) {
 }
 
 TEST(Png, WritesDecodablePixelsAndNoTemporaryFile) {
-  const std::filesystem::path dir = test::scratch_dir();
+  const std::filesystem::path dir = testsupport::scratch_dir(TILELIGHT_PICTURE_OUT);
   const std::filesystem::path path = dir / "lit.png";
   const RgbaImage image = gradient(17, 9);
   write_png(path, image);
@@ -69,7 +68,7 @@ TEST(Png, WritesDecodablePixelsAndNoTemporaryFile) {
 }
 
 TEST(Png, UnwritableFolderNamesThePath) {
-  const std::filesystem::path dir = test::scratch_dir();
+  const std::filesystem::path dir = testsupport::scratch_dir(TILELIGHT_PICTURE_OUT);
   // A regular file where a folder should be: fails even for root, unlike permission bits.
   std::ofstream(dir / "not-a-folder") << "x";
   const std::filesystem::path path = dir / "not-a-folder" / "out.png";
@@ -85,7 +84,7 @@ TEST(Png, UnwritableFolderNamesThePath) {
 }
 
 TEST(Png, SizeMismatchIsAnError) {
-  const std::filesystem::path dir = test::scratch_dir();
+  const std::filesystem::path dir = testsupport::scratch_dir(TILELIGHT_PICTURE_OUT);
   const std::vector<std::uint8_t> too_short(4 * 3);
   EXPECT_THROW(write_png_rgba8(dir / "x.png", 2, 2, too_short), Error);
   EXPECT_TRUE(entries(dir).empty());
