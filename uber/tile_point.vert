@@ -3,8 +3,8 @@
 //
 // A point is a screen-aligned square with no interior edge: unlike the two triangles of a
 // rectangle, it has no diagonal cutting through the pixels it covers, so a rasteriser shades
-// each of them once (runtime/include/tilelight/tile_primitive.h). The index is the corner-grid
-// vertex of the square's top-left corner, with (side in tiles - 1) in bits 30..31; no
+// each of them once (runtime/tiles/include/tilelight/tiles/tile_primitive.h). The index is the
+// corner-grid vertex of the square's top-left corner, with (side in tiles - 1) in bits 30..31; no
 // per-vertex data is read. The viewport spans whole tiles (tiles_x * tile_size pixels wide), so
 // the centre of a partial tile at the right or bottom edge lies inside it (a point whose centre
 // is outside is culled whole); the scissor keeps drawing inside the frame.

@@ -1,8 +1,8 @@
 // scene_params.glsl -- the descriptor interface of the scene passes (G-buffer, sky, shadow map).
 //
 // Set 0 of the scene pipelines; the runtime mirrors this block field for field (std140, see
-// runtime/include/tilelight/scene_renderer.h). Kept apart from lighting_params.glsl because the
-// scene passes run before the lighting and bind none of its images.
+// runtime/scene/include/tilelight/scene/uniform_blocks.h). Kept apart from lighting_params.glsl
+// because the scene passes run before the lighting and bind none of its images.
 
 #ifndef UBER_SCENE_PARAMS_GLSL
 #define UBER_SCENE_PARAMS_GLSL

@@ -1,13 +1,13 @@
 // tile_rects.glsl -- the GPU-driven index build: shared interface and the coalescing rule.
 //
-// The same rule as the CPU builder (runtime/src/tiles/tile_index_builder.cpp), so both paths
+// The same rule as the CPU builder (runtime/tiles/src/tile_index_builder.cpp), so both paths
 // emit the same rectangles: a block of 4x4 tiles whose tiles (inside the frame) all have one
 // optimised ID becomes one rectangle; otherwise each maximal run of equal IDs in a block row
 // becomes one rectangle. Counting and filling both call for_each_rectangle-style code below
 // with a different action, so they cannot disagree.
 //
-// Each rectangle becomes primitives as runtime/include/tilelight/tile_primitive.h says:
-// two triangles (6 indices over the corner grid), or with POINT_PRIMITIVES one point per square
+// Each rectangle becomes primitives as runtime/tiles/include/tilelight/tiles/tile_primitive.h
+// says: two triangles (6 indices over the corner grid), or with POINT_PRIMITIVES one point per square
 // (a square rectangle whole, any other one tile at a time), indexed by the square's top-left
 // corner vertex with (side in tiles - 1) in bits 30..31.
 
