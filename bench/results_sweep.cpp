@@ -15,8 +15,8 @@
 
 #include "plot/bar_chart.h"
 #include "tilelight/app/output_files.h"
+#include "tilelight/base/atomic_write.h"
 #include "tilelight/base/error.h"
-#include "tilelight/base/staged_file.h"
 #include "tilelight/picture/png.h"
 #include "tilelight/scene/scene.h"
 #include "tilelight/vulkan/context.h"

@@ -1,7 +1,8 @@
 #include "file_io.h"
 
+#include <atomic_file/atomic_file.h>
+
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -39,31 +40,14 @@ Result<std::string> read_file(const std::filesystem::path& path) {
   return bytes;
 }
 
-std::string temporary_name(std::string_view stem) {
-  static std::atomic<unsigned> counter{0};
-  return "." + std::string(stem) + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-}
-
 Status write_file_atomic(const std::filesystem::path& path, std::string_view bytes) {
-  std::filesystem::path temp = path.parent_path() / temporary_name(path.filename().string());
-  std::FILE* file = std::fopen(temp.c_str(), "wb");
-  if (!file) return make_error(path.string(), 0, std::string("cannot write: ") + std::strerror(errno));
-  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-  int write_errno = errno;
-  ok = (std::fflush(file) == 0) && ok;
-  if (!ok) write_errno = errno;
-  ok = (::fsync(::fileno(file)) == 0 || errno == EINVAL) && ok;
-  ok = (std::fclose(file) == 0) && ok;
-  if (!ok) {
-    std::remove(temp.c_str());
-    return make_error(path.string(), 0, std::string("write failed: ") + std::strerror(write_errno ? write_errno : EIO));
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    int rename_errno = errno;
-    std::remove(temp.c_str());
-    return make_error(path.string(), 0, std::string("cannot replace: ") + std::strerror(rename_errno));
-  }
-  return Ok{};
+  std::optional<atomic_file::Failure> failure = atomic_file::write(path, bytes);
+  if (!failure) return Ok{};
+  // Named after the output the user asked for, never the temporary that no longer exists.
+  const char* what = failure->step == atomic_file::Failure::Step::create  ? "cannot write: "
+                     : failure->step == atomic_file::Failure::Step::write ? "write failed: "
+                                                                          : "cannot replace: ";
+  return make_error(path.string(), 0, what + failure->reason.message());
 }
 
 // Compares in blocks, so checking megabytes of unchanged output allocates nothing.

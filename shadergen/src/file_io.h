@@ -12,14 +12,13 @@ namespace shadergen {
 // The whole file. Errors: "<path>: error: cannot read: <reason>".
 Result<std::string> read_file(const std::filesystem::path& path);
 
-// Writes `bytes` to a temporary file beside `path`, flushes it and renames it over `path`, so
-// readers see the old file or the new one, never a part. Fails on short writes (disk full).
+// The project's atomic write (<atomic_file/atomic_file.h>: a temporary beside `path`, flushed,
+// renamed over it) in shadergen's error model: readers see the old file or the new one, never a
+// part. Errors name `path`: "cannot write: <reason>", "write failed: <reason>" (a short write,
+// such as a full disk) or "cannot replace: <reason>".
 Status write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
 
 // True when `path` exists and holds exactly `bytes`.
 bool file_has_bytes(const std::filesystem::path& path, std::string_view bytes);
-
-// A name unique to this process and call, for temporaries: ".<stem>.tmp-<pid>-<n>".
-std::string temporary_name(std::string_view stem);
 
 }  // namespace shadergen

@@ -12,6 +12,8 @@
 
 #include "file_io.h"
 
+#include <atomic_file/atomic_file.h>
+
 namespace shadergen {
 namespace fs = std::filesystem;
 
@@ -28,7 +30,7 @@ std::set<std::string> existing_files(const fs::path& dir) {
 // A sibling of the output folder, so that renames stay on one file system.
 fs::path sibling(const fs::path& out_dir, std::string_view what) {
   fs::path name = out_dir.filename();
-  return out_dir.parent_path() / temporary_name(name.string() + "." + std::string(what));
+  return out_dir.parent_path() / atomic_file::temporary_name(name.string() + "." + std::string(what));
 }
 
 // The start of every sibling(out_dir, what) name (see temporary_name()).

@@ -13,15 +13,14 @@ OutputFiles::OutputFiles(fs::path folder) : folder_(std::move(folder)) {
   fs::create_directories(folder_, ec);
   if (ec) throw Error("--out " + folder_.string() + ": cannot create the folder: " + ec.message());
   if (!fs::is_directory(folder_)) throw Error("--out " + folder_.string() + ": not a folder");
-  try {
-    StagedFile probe(folder_ / "write-test", {});  // removed again by its destructor
-  } catch (const Error& e) {
-    throw Error("--out " + folder_.string() + ": cannot write there: " + e.what());
+  atomic_file::StagedFile probe(folder_ / "write-test", {});  // removed again by its destructor
+  if (probe.failure()) {
+    throw Error("--out " + folder_.string() + ": cannot write there: " + atomic_file::describe(*probe.failure()));
   }
 }
 
 void OutputFiles::stage(const std::string& name, std::span<const std::uint8_t> bytes) {
-  staged_.emplace_back(folder_ / name, bytes);
+  staged_.push_back(stage_file(folder_ / name, bytes));
 }
 
 void OutputFiles::stage_text(const std::string& name, std::string_view text) {
@@ -29,7 +28,7 @@ void OutputFiles::stage_text(const std::string& name, std::string_view text) {
 }
 
 void OutputFiles::commit() {
-  for (StagedFile& file : staged_) file.commit();
+  for (atomic_file::StagedFile& file : staged_) commit_staged(file);
   staged_.clear();
 }
 

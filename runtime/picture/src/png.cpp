@@ -1,7 +1,7 @@
 #include "tilelight/picture/png.h"
 
+#include "tilelight/base/atomic_write.h"
 #include "tilelight/base/error.h"
-#include "tilelight/base/staged_file.h"
 
 #include <fmt/format.h>
 #include <stb/stb_image_write.h>

@@ -1,12 +1,12 @@
 #pragma once
 // The run's output set: every file is written first under its temporary name in the output
-// folder (tilelight/base/staged_file.h), and renamed into place only once all of them were
+// folder (tilelight/base/atomic_write.h), and renamed into place only once all of them were
 // written. So a failed run (any error up to and including the last write) changes nothing in
 // the folder: earlier results stay, no partial file is left. The renames themselves happen one
 // file at a time: only a crash between two of them could leave new and earlier files side by
 // side.
 
-#include "tilelight/base/staged_file.h"
+#include "tilelight/base/atomic_write.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -31,7 +31,7 @@ class OutputFiles {
 
  private:
   std::filesystem::path folder_;
-  std::vector<StagedFile> staged_;  // their destructors remove what was never committed
+  std::vector<atomic_file::StagedFile> staged_;  // their destructors remove what was never committed
 };
 
 }  // namespace tilelight::app

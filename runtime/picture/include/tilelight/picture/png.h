@@ -1,5 +1,5 @@
 #pragma once
-// PNG output. Files are written atomically (tilelight/base/staged_file.h), so a crashed or
+// PNG output. Files are written atomically (tilelight/base/atomic_write.h), so a crashed or
 // concurrent run never leaves a half-written image that a later comparison would read.
 
 #include "tilelight/picture/rgba_image.h"

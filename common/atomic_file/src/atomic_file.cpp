@@ -1,0 +1,86 @@
+#include "atomic_file/atomic_file.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <utility>
+
+namespace atomic_file {
+namespace fs = std::filesystem;
+namespace {
+
+std::error_code os_error(int number) { return {number != 0 ? number : EIO, std::generic_category()}; }
+
+// Writes, flushes and syncs `bytes` into a new file at `path`, and closes it.
+std::optional<Failure> write_whole_file(const fs::path& path, std::string_view bytes) {
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (file == nullptr) return Failure{Failure::Step::create, path, os_error(errno)};
+  // fwrite's buffer must not be null, even for 0 bytes (an empty view's data() may be).
+  bool ok = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+  int reason = ok ? 0 : errno;
+  // A full disk may only show up at the flush; fsync makes the rename publish written bytes
+  // (EINVAL: a file system that cannot sync, such as some FUSE mounts, is not an error).
+  if (ok && std::fflush(file) != 0) ok = false, reason = errno;
+  if (ok && ::fsync(::fileno(file)) != 0 && errno != EINVAL) ok = false, reason = errno;
+  if (std::fclose(file) != 0 && ok) ok = false, reason = errno;
+  if (!ok) return Failure{Failure::Step::write, path, os_error(reason)};
+  return std::nullopt;
+}
+
+void remove_quietly(const fs::path& path) {
+  std::error_code ignored;
+  fs::remove(path, ignored);
+}
+
+}  // namespace
+
+std::string describe(const Failure& failure) {
+  const char* verb = failure.step == Failure::Step::create  ? "cannot create "
+                     : failure.step == Failure::Step::write ? "cannot write "
+                                                            : "cannot replace ";
+  return verb + failure.path.string() + ": " + failure.reason.message();
+}
+
+std::string temporary_name(std::string_view stem) {
+  static std::atomic<unsigned> counter{0};
+  return "." + std::string(stem) + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+}
+
+StagedFile::StagedFile(fs::path final_path, std::string_view bytes)
+    : final_(std::move(final_path)), temporary_(final_.parent_path() / temporary_name(final_.filename().string())) {
+  failure_ = write_whole_file(temporary_, bytes);
+  if (failure_) {
+    remove_quietly(temporary_);
+    temporary_.clear();
+  }
+}
+
+StagedFile::~StagedFile() {
+  if (!temporary_.empty()) remove_quietly(temporary_);
+}
+
+StagedFile::StagedFile(StagedFile&& other) noexcept
+    : final_(std::move(other.final_)),
+      temporary_(std::exchange(other.temporary_, {})),
+      failure_(std::move(other.failure_)) {}
+
+std::optional<Failure> StagedFile::commit() {
+  std::error_code ec;
+  fs::rename(temporary_, final_, ec);
+  if (ec) {
+    remove_quietly(std::exchange(temporary_, {}));
+    return Failure{Failure::Step::replace, final_, ec};
+  }
+  temporary_.clear();
+  return std::nullopt;
+}
+
+std::optional<Failure> write(const fs::path& path, std::string_view bytes) {
+  StagedFile staged(path, bytes);
+  if (staged.failure()) return staged.failure();
+  return staged.commit();
+}
+
+}  // namespace atomic_file
