@@ -1,5 +1,8 @@
 #!/bin/sh
 # Installs the Debian 12 packages the project builds with, if any is missing (needs root).
+#   scripts/install-deps.sh           what the build and the main job need
+#   scripts/install-deps.sh --tests   that, and what only the test suite uses (clang-format for
+#                                     the style test)
 set -eu
 
 PACKAGES="cmake ninja-build g++ pkg-config
@@ -8,6 +11,9 @@ libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
 libglm-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
 libcli11-dev nlohmann-json3-dev libstb-dev
 libcurl4-openssl-dev nginx"
+if [ "${1:-}" = "--tests" ]; then
+    PACKAGES="$PACKAGES clang-format"
+fi
 
 missing=""
 for package in $PACKAGES; do

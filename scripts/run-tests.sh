@@ -4,7 +4,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 
-./scripts/install-deps.sh
+./scripts/install-deps.sh --tests
 # The presets (CMakePresets.json) build in build/tests and build/sanitize. Tests pass their own
 # scratch cache folders; the presets' SHADERGEN_CACHE_DIR keeps the build-time shadergen runs of
 # the test targets (and the outside-consumer project) out of the user's cache as well. ctest

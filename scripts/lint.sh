@@ -1,0 +1,45 @@
+#!/bin/sh
+# The project's style checks, by hand or before a commit (CI runs only the clang-format half,
+# as the test style.clang_format; clang-tidy over everything takes longer than the whole suite):
+#   scripts/lint.sh            clang-format, then clang-tidy (.clang-tidy) over every project
+#                              source in build/tests/compile_commands.json
+#   scripts/lint.sh --format   clang-format only
+# BUILD_DIR=<folder> names another configured build (any build type; compile commands are
+# exported by every preset). Exit status: non-zero when either tool reports anything.
+set -eu
+cd "$(dirname "$0")/.."
+build_dir=${BUILD_DIR:-build/tests}
+
+need() {
+  command -v "$1" >/dev/null || { echo "lint: $1 not found (Debian 12: apt-get install $2)" >&2; exit 2; }
+}
+need clang-format clang-format
+
+# Tracked C++ sources only: generated code lives in build trees and is not ours to format.
+# Outside a git checkout (a source archive), every C++ file outside build folders.
+if ! sources=$(git ls-files '*.cpp' '*.h' 2>/dev/null); then
+  sources=$(find . -path './build*' -prune -o -path './.*' -prune -o \( -name '*.cpp' -o -name '*.h' \) -print)
+fi
+echo "lint: clang-format --dry-run over $(echo "$sources" | wc -l) files"
+# shellcheck disable=SC2086 # one word per file name; the repository has no spaces in paths
+clang-format --dry-run --Werror $sources
+
+[ "${1:-}" = "--format" ] && exit 0
+
+need clang-tidy clang-tidy
+need run-clang-tidy clang-tidy
+
+if [ ! -f "$build_dir/compile_commands.json" ]; then
+  echo "lint: $build_dir/compile_commands.json is missing: configure first (cmake --preset tests)" >&2
+  exit 2
+fi
+# GCC-only warning flags in the compile commands are not clang-tidy's business.
+echo "lint: clang-tidy over the project's sources in $build_dir"
+run-clang-tidy -quiet -p "$build_dir" -j "$(nproc)" -extra-arg=-Wno-unknown-warning-option \
+  "$(pwd)/(shadergen|runtime|common|bench|tests)/.*\.cpp$" >"$build_dir/clang-tidy.log" 2>&1 || true
+if grep -E "(warning|error): " "$build_dir/clang-tidy.log" | grep -v "^Suppressed\|clang-diagnostic-" | sort -u >"$build_dir/clang-tidy.findings"; [ -s "$build_dir/clang-tidy.findings" ]; then
+  cat "$build_dir/clang-tidy.findings"
+  echo "lint: clang-tidy reported $(wc -l <"$build_dir/clang-tidy.findings") finding(s); full log: $build_dir/clang-tidy.log" >&2
+  exit 1
+fi
+echo "lint: clean"
