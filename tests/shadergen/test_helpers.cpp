@@ -1,6 +1,5 @@
 #include "test_helpers.h"
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -77,29 +76,8 @@ std::string describe_difference(const std::map<std::string, std::string>& a,
   return text.empty() ? "  (identical)\n" : text;
 }
 
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) {
-    if (c == '\'')
-      quoted += "'\\''";
-    else
-      quoted += c;
-  }
-  return quoted + "'";
-}
-
 ProcessResult run_process(const fs::path& program, const std::vector<std::string>& args) {
-  TempDir capture("capture");
-  std::string command = shell_quote(program.string());
-  for (const std::string& arg : args) command += " " + shell_quote(arg);
-  command +=
-      " >" + shell_quote((capture / "out").string()) + " 2>" + shell_quote((capture / "err").string()) + " </dev/null";
-  int status = std::system(command.c_str());
-  ProcessResult result;
-  result.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-  result.out = read_file(capture / "out");
-  result.err = read_file(capture / "err");
-  return result;
+  return testsupport::Child(program, args).wait();
 }
 
 ProcessResult spirv_val(const fs::path& blob, const std::string& target_env) {

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "child_process.h"
+
 namespace sgtest {
 
 namespace fs = std::filesystem;
@@ -55,16 +57,11 @@ std::map<std::string, fs::file_time_type> mtimes(const fs::path& dir);
 std::string describe_difference(const std::map<std::string, std::string>& a,
                                 const std::map<std::string, std::string>& b);
 
-std::string shell_quote(const std::string& text);
+// exit_code, out, err: exit_code is -1 when the process did not exit normally.
+using ProcessResult = testsupport::ChildOutcome;
 
-struct ProcessResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-// Runs `program args...` through the shell with stdout and stderr captured into files in a
-// temporary folder; exit_code is -1 when the process did not exit normally.
+// Runs `program args...` (a bare name is looked up in PATH) with stdout and stderr captured and
+// stdin empty, through testsupport::Child.
 ProcessResult run_process(const fs::path& program, const std::vector<std::string>& args);
 
 // The external validator, as a second opinion beside shadergen's own validate_spirv().

@@ -1,4 +1,4 @@
-// A child process for the fault and soak tests (shadergen and tilelight): started with
+// The tests' one way to run a program (shadergen, tilelight, spirv-val, sha256sum, nginx): started with
 // fork/exec, so the test can set resource limits, drop privileges and send signals to exactly
 // that process; its stdout and stderr read through pipes. Pipes, not files: RLIMIT_FSIZE
 // applies to every regular file a process writes, its captured stderr included, but not to
@@ -68,7 +68,7 @@ class Child {
       }
       if (setup.drop_to_nobody && (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0))
         ::_exit(125);
-      ::execv(argv[0], argv.data());
+      ::execvp(argv[0], argv.data());  // a bare name is looked up in PATH
       ::_exit(127);
     }
     ::close(out_pipe[1]);
