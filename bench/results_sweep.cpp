@@ -60,10 +60,11 @@ std::map<std::string, std::string> empty_sections(const SweepPlan& plan) {
   return sections;
 }
 
-void update_document(const std::filesystem::path& path, std::map<std::string, std::string> sections) {
+void update_document(const std::filesystem::path& path, const std::map<std::string, std::string>& sections) {
   // Blank lines around each section keep the markers (HTML comments) apart from the tables.
-  for (auto& [id, content] : sections) content = "\n" + content + "\n";
-  const std::string text = replace_marked_sections(read_document(path), sections, path.string());
+  std::map<std::string, std::string> padded;
+  for (const auto& [id, content] : sections) padded[id] = "\n" + content + "\n";
+  const std::string text = replace_marked_sections(read_document(path), padded, path.string());
   write_file_atomically(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
 }
 

@@ -301,9 +301,9 @@ int usage() {
   return 2;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The whole bench; main() adds only the last word on a failure nothing else reported (a
+// file-system error from std::filesystem, out of memory).
+int run(int argc, char** argv) {
   auto options = parse_args(argc, argv);
   if (!options) return usage();
   bool temporary = options->work.empty();
@@ -329,4 +329,15 @@ int main(int argc, char** argv) {
   if (ok) bench.report();
   if (temporary) fs::remove_all(options->work);
   return ok ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "shadergen_build_bench: error: " << e.what() << "\n";
+    return 1;
+  }
 }

@@ -37,7 +37,10 @@ fi
 echo "lint: clang-tidy over the project's sources in $build_dir"
 run-clang-tidy -quiet -p "$build_dir" -j "$(nproc)" -extra-arg=-Wno-unknown-warning-option \
   "$(pwd)/(shadergen|runtime|common|bench|tests)/.*\.cpp$" >"$build_dir/clang-tidy.log" 2>&1 || true
-if grep -E "(warning|error): " "$build_dir/clang-tidy.log" | grep -v "^Suppressed\|clang-diagnostic-" | sort -u >"$build_dir/clang-tidy.findings"; [ -s "$build_dir/clang-tidy.findings" ]; then
+# One line per finding, "file:line:col: warning: text [check]", colour codes removed.
+sed 's/\x1b\[[0-9;]*m//g' "$build_dir/clang-tidy.log" |
+  grep -E '^/.*:[0-9]+:[0-9]+: (warning|error): .*\]$' | sort -u >"$build_dir/clang-tidy.findings" || true
+if [ -s "$build_dir/clang-tidy.findings" ]; then
   cat "$build_dir/clang-tidy.findings"
   echo "lint: clang-tidy reported $(wc -l <"$build_dir/clang-tidy.findings") finding(s); full log: $build_dir/clang-tidy.log" >&2
   exit 1

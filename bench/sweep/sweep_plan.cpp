@@ -29,7 +29,7 @@ class PlanBuilder {
 
  private:
   std::string add(const RendererOptions& options) {
-    const std::string key = configuration_key(options);
+    std::string key = configuration_key(options);  // not const: returned by move
     const bool known = std::any_of(plan_.configurations.begin(), plan_.configurations.end(),
                                    [&](const RendererOptions& o) { return configuration_key(o) == key; });
     if (!known) plan_.configurations.push_back(options);

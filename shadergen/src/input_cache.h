@@ -59,7 +59,7 @@ std::optional<InputSet> decode_input_set(std::string_view key, std::string_view 
 class InputCache {
  public:
   InputCache() = default;  // disabled: every lookup misses, stores are dropped
-  explicit InputCache(std::filesystem::path cache_dir) : directory_(std::move(cache_dir) / "inputs") {}
+  explicit InputCache(const std::filesystem::path& cache_dir) : directory_(cache_dir / "inputs") {}
 
   bool enabled() const { return !directory_.empty(); }
   std::filesystem::path entry_path(std::string_view key) const { return directory_ / std::string(key); }

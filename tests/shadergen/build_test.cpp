@@ -175,7 +175,7 @@ TEST_F(SplitSecondBuild, WarmRebuildHitsTheCacheAndChangesNothing) {
 
 TEST_F(SplitSecondBuild, DeterministicWhateverTheJobCountAndCache) {
   sgtest::TempDir serial_dir("serial");
-  fs::path other = serial_dir.path();
+  const fs::path& other = serial_dir.path();
   auto summary = build_into(sgtest::split_second_spec(), other / "out", other / "cache", 1, false);
   ASSERT_TRUE(summary.ok());
   EXPECT_EQ(summary->cache_hits, 0u);
@@ -184,7 +184,7 @@ TEST_F(SplitSecondBuild, DeterministicWhateverTheJobCountAndCache) {
 
 TEST(ToyBuild, FixtureDomainBuildsWithItsOwnLayout) {
   sgtest::TempDir toy_dir("toy");
-  fs::path dir = toy_dir.path();
+  const fs::path& dir = toy_dir.path();
   auto summary = build_into(sgtest::toy_spec(), dir / "out", dir / "cache", 4);
   ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
   EXPECT_EQ(summary->raw, 16u);
@@ -202,7 +202,7 @@ TEST(ToyBuild, FixtureDomainBuildsWithItsOwnLayout) {
 
 TEST(ToyBuild, ConflictingBindingsAcrossPermutationsAreAnError) {
   sgtest::TempDir conflict_dir("conflict");
-  fs::path dir = conflict_dir.path();
+  const fs::path& dir = conflict_dir.path();
   fs::copy(sgtest::toy_spec().parent_path(), dir / "domain", fs::copy_options::recursive);
   // In textured permutations, binding 2 becomes a uniform buffer instead of a sampler.
   std::string shader = sgtest::read_file(dir / "domain" / "particle.frag");

@@ -87,7 +87,7 @@ Result<BuildSummary> build_toy(const fs::path& out, const fs::path& cache, bool 
 
 TEST(CacheIntegrity, RebuildOverACorruptedCacheEqualsAColdBuild) {
   sgtest::TempDir corrupt_dir("corrupt");
-  fs::path dir = corrupt_dir.path();
+  const fs::path& dir = corrupt_dir.path();
   ASSERT_TRUE(build_toy(dir / "cold", dir / "unused", false).ok());
   ASSERT_TRUE(build_toy(dir / "first", dir / "cache", true).ok());
 
@@ -119,7 +119,7 @@ TEST(CacheIntegrity, RebuildOverACorruptedCacheEqualsAColdBuild) {
 
 TEST(CacheIntegrity, UnwritableCacheOnlyCostsTime) {
   sgtest::TempDir readonly_dir("readonly");
-  fs::path dir = readonly_dir.path();
+  const fs::path& dir = readonly_dir.path();
   sgtest::write_file(dir / "cache", "a file where the cache folder should be");
   auto summary = build_toy(dir / "out", dir / "cache", true);
   ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();

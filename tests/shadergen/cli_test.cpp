@@ -18,7 +18,7 @@ struct CliRun {
   std::string err;
 };
 
-CliRun cli(std::vector<std::string> args) {
+CliRun cli(const std::vector<std::string>& args) {
   std::ostringstream out, err;
   int code = run_cli(args, out, err);
   return {code, out.str(), err.str()};
@@ -93,7 +93,7 @@ TEST(Cli, MissingSpecNamesThePath) {
 
 TEST(Cli, BitCollisionNamesFileAndLine) {
   sgtest::TempDir collision_dir("collision");
-  fs::path dir = collision_dir.path();
+  const fs::path& dir = collision_dir.path();
   std::string spec = sgtest::read_file(sgtest::toy_spec());
   spec.replace(spec.find("\"bit\": 3"), 8, "\"bit\": 0");
   sgtest::write_file(dir / "toy.json", spec);
@@ -109,7 +109,7 @@ TEST(Cli, BitCollisionNamesFileAndLine) {
 // naming the permutations it occurs in; the previous output is left exactly as it was.
 TEST(Cli, GlslErrorInsideOneFeatureKeepsThePreviousOutput) {
   sgtest::TempDir glsl_error_dir("glsl_error");
-  fs::path dir = glsl_error_dir.path();
+  const fs::path& dir = glsl_error_dir.path();
   fs::copy(sgtest::toy_spec().parent_path(), dir / "domain", fs::copy_options::recursive);
   fs::path out = dir / "out";
   std::string cache = (dir / "cache").string();
@@ -143,7 +143,7 @@ TEST(Cli, GlslErrorInsideOneFeatureKeepsThePreviousOutput) {
 
 TEST(Cli, BuildPrintsASummaryAndWritesADepfile) {
   sgtest::TempDir depfile_dir("depfile");
-  fs::path dir = depfile_dir.path();
+  const fs::path& dir = depfile_dir.path();
   CliRun r = cli({"build", sgtest::toy_spec().string(), "--out", (dir / "out").string(), "--cache-dir",
                   (dir / "cache").string(), "--depfile", (dir / "toy.d").string()});
   ASSERT_EQ(r.code, 0) << r.err;

@@ -91,7 +91,7 @@ std::vector<fs::path> stored_objects(const NginxServer& server) {
 
 TEST(RemoteCacheServer, SecondMachineCompilesNothingAndWritesTheSameBytes) {
   sgtest::TempDir run_dir("run");
-  fs::path dir = run_dir.path();
+  const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
   RemoteBuild first = build_toy(dir, "first", server.url());
   ASSERT_TRUE(first.summary) << first.errors;
@@ -120,7 +120,7 @@ TEST(RemoteCacheServer, SecondMachineCompilesNothingAndWritesTheSameBytes) {
 
 TEST(RemoteCacheServer, ServerKilledMidBuildDegradesToLocal) {
   sgtest::TempDir run_dir("run");
-  fs::path dir = run_dir.path();
+  const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
   RemoteBuild killed = build_toy(dir, "killed", server.url(), false, [&](const std::string& line) {
     if (line.rfind("[3/13] ", 0) == 0) server.kill();
@@ -137,7 +137,7 @@ TEST(RemoteCacheServer, ServerKilledMidBuildDegradesToLocal) {
 
 TEST(RemoteCacheServer, ServerErrorsDegradeToLocal) {
   sgtest::TempDir run_dir("run");
-  fs::path dir = run_dir.path();
+  const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx", NginxMode::errors);
   RemoteBuild result = build_toy(dir, "errors", server.url());
   ASSERT_TRUE(result.summary) << result.errors;
@@ -156,12 +156,12 @@ TEST(RemoteCacheServer, ServerErrorsDegradeToLocal) {
 // entry uploaded over the bad one), the other twelve come from the server.
 TEST(RemoteCacheServer, DamagedObjectIsRecompiledAndReplaced) {
   sgtest::TempDir run_dir("run");
-  fs::path dir = run_dir.path();
+  const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
   ASSERT_TRUE(build_toy(dir, "writer", server.url()).summary);
   const std::vector<fs::path> objects = stored_objects(server);
   ASSERT_EQ(objects.size(), 13u);
-  const fs::path victim = objects[5];
+  const fs::path& victim = objects[5];
   const std::string key = victim.filename().string(), good = sgtest::read_file(victim);
   const std::string other = sgtest::read_file(objects[6]);
   std::string flipped = good;
@@ -192,7 +192,7 @@ TEST(RemoteCacheServer, DamagedObjectIsRecompiledAndReplaced) {
 
 TEST(RemoteCacheServer, ReadOnlyNeverUploads) {
   sgtest::TempDir run_dir("run");
-  fs::path dir = run_dir.path();
+  const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
   RemoteBuild empty = build_toy(dir, "developer1", server.url(), true);
   ASSERT_TRUE(empty.summary) << empty.errors;
@@ -213,7 +213,7 @@ TEST(RemoteCacheServer, ReadOnlyNeverUploads) {
 
 TEST(RemoteCacheServer, UnreachableUrlDegradesToLocal) {
   sgtest::TempDir run_dir("run");
-  fs::path dir = run_dir.path();
+  const fs::path& dir = run_dir.path();
   const std::string url = "http://127.0.0.1:" + std::to_string(testsupport::unused_local_port()) + "/cache";
   RemoteBuild result = build_toy(dir, "offline", url);
   ASSERT_TRUE(result.summary) << result.errors;
@@ -250,7 +250,7 @@ TEST(RemoteCacheServer, StalledServerTimesOut) {
 // The CLI takes the URL from SHADERGEN_REMOTE_CACHE and prints the counts in its summary.
 TEST(RemoteCacheServer, CliReadsTheEnvironmentAndReportsCounts) {
   sgtest::TempDir run_dir("run");
-  fs::path dir = run_dir.path();
+  const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
   ::setenv("SHADERGEN_REMOTE_CACHE", server.url().c_str(), 1);
   auto cli = [&](const std::string& name, std::vector<std::string> extra) {

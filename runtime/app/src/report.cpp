@@ -47,7 +47,8 @@ void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids) 
   report.tiles = static_cast<std::uint32_t>(raw_ids.size());
   report.raw_property_tiles.clear();
   for (const auto& [name, mask] : properties) {
-    const auto count = std::count_if(raw_ids.begin(), raw_ids.end(), [&](std::uint8_t id) { return (id & mask) != 0; });
+    const auto count =
+        std::count_if(raw_ids.begin(), raw_ids.end(), [mask = mask](std::uint8_t id) { return (id & mask) != 0; });
     report.raw_property_tiles.emplace_back(name, static_cast<std::uint32_t>(count));
   }
   report.optimised_tiles.assign(split_second::kOptimisedCount, 0);

@@ -92,7 +92,7 @@ void check_tiles(std::uint32_t frame_width, std::uint32_t frame_height, std::uin
 std::uint8_t to_unorm8(float v) {
   const float clamped = std::isnan(v) ? 0.0f : std::fmin(std::fmax(v, 0.0f), 1.0f);
   const float scaled = clamped * 255.0f;
-  return static_cast<std::uint8_t>(static_cast<double>(scaled) + 0.5);
+  return static_cast<std::uint8_t>(std::lround(scaled));
 }
 
 std::uint32_t to_u32(int v) { return static_cast<std::uint32_t>(v); }
@@ -269,8 +269,8 @@ Rgba8Canvas compose_tile_class_image(const RgbaImage& frame, std::uint32_t tile_
       for (std::uint32_t x = x0; x < x1; ++x) {
         const bool outline = top_outline || (left_outline && x == x0);
         for (std::size_t c = 0; c < 3; ++c) {
-          const unsigned blend = (to_unorm8(src[x * 4 + c]) + unsigned{tint[c]} + 1u) / 2u;
-          dst[x * 4 + c] = static_cast<std::uint8_t>(outline ? blend / 2u : blend);
+          const unsigned blend = (to_unorm8(src[std::size_t{x} * 4 + c]) + unsigned{tint[c]} + 1u) / 2u;
+          dst[std::size_t{x} * 4 + c] = static_cast<std::uint8_t>(outline ? blend / 2u : blend);
         }
         dst[x * 4 + 3] = 255;
       }

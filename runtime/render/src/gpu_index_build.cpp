@@ -111,13 +111,13 @@ GpuIndexBuild::Counts GpuIndexBuild::read_counts() const {
   const std::span<const std::uint32_t> values = host_counters_.as<const std::uint32_t>();
   Counts counts;
   const auto per_class = [&](std::uint32_t array) {
-    const auto first = values.begin() + array * kMaxDrawClasses;
+    const auto first = values.begin() + std::ptrdiff_t{array} * kMaxDrawClasses;
     return std::vector<std::uint32_t>(first, first + class_count_);
   };
   counts.primitives = per_class(0);
   counts.rectangles = per_class(1);
   counts.tiles = per_class(2);
-  counts.invalid_tiles = values[4 * kMaxDrawClasses];
+  counts.invalid_tiles = values[std::size_t{4} * kMaxDrawClasses];
   return counts;
 }
 

@@ -133,7 +133,7 @@ std::uint32_t TileIndexBuilder::full_block(const std::uint8_t* raw, std::uint32_
     return counts.emit(out, bx % Counts::kLanes, v00, mapped[0], kBlockTiles, kBlockTiles);
   }
   for (std::uint32_t row = 0; row < kBlockTiles; ++row) {
-    const std::uint8_t* ids = mapped + row * kBlockTiles;
+    const std::uint8_t* ids = mapped + std::size_t{row} * kBlockTiles;
     const std::uint32_t v_row = v00 + row * stride;
     if (row_is_uniform(rows[row])) {
       n += counts.emit(out + n, row, v_row, ids[0], kBlockTiles, 1);
@@ -174,7 +174,7 @@ std::uint32_t TileIndexBuilder::partial_block(const std::uint8_t* raw, std::uint
 
   std::uint32_t n = 0;
   for (std::uint32_t row = 0; row < h; ++row) {
-    const std::uint8_t* ids = mapped + row * kBlockTiles;
+    const std::uint8_t* ids = mapped + std::size_t{row} * kBlockTiles;
     const std::uint32_t v_row = v00 + row * stride;
     std::uint32_t start = 0;
     for (std::uint32_t col = 1; col <= w; ++col) {
