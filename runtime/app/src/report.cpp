@@ -61,6 +61,7 @@ MedianTimings median_timings(const std::vector<FrameTimings>& frames) {
   MedianTimings m;
   for (const auto& [name, field] : kStages) {
     std::vector<double> values;
+    values.reserve(frames.size());
     for (const FrameTimings& f : frames) values.push_back(f.*field);
     m.*field = median(values);
   }
