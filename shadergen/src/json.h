@@ -1,5 +1,5 @@
-// json.h - a small JSON reader that remembers where every value came from, and a writer with
-// deterministic output.
+// json.h - a small JSON reader that remembers where every value came from. (manifest.json and
+// stats.json are written with nlohmann::ordered_json.)
 //
 // The domain spec is JSON, and a rendering engineer fixing a spec wants "split_second.json:41:
 // error: ..." rather than "key not found". Debian's JSON libraries do not report value
@@ -10,7 +10,6 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -54,37 +53,5 @@ struct Member {
 
 // Parses `text`; diagnostics name `file` and the line and column at fault.
 Result<Value> parse(std::string_view text, const std::string& file);
-
-// Writes JSON with two-space indentation, keys in insertion order, "\n" line ends.
-class Writer {
- public:
-  void begin_object();
-  void end_object();
-  void begin_array();
-  void end_array();
-  void key(std::string_view name);
-  void value(std::string_view text);
-  void value(const char* text) { value(std::string_view(text)); }
-  void value(std::int64_t number);
-  void value(std::uint32_t number) { value(static_cast<std::int64_t>(number)); }
-  void value(int number) { value(static_cast<std::int64_t>(number)); }
-  void value(double number);
-  void value(bool flag);
-  void null();
-  // Arrays of scalars are written on one line; this keeps manifests readable.
-  void inline_string_array(const std::vector<std::string>& items);
-
-  std::string take();
-
- private:
-  void before_value();
-  void newline();
-
-  std::string out_;
-  std::vector<bool> first_in_container_;
-  bool after_key_ = false;
-};
-
-std::string quote(std::string_view text);
 
 }  // namespace shadergen::json
