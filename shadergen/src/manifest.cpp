@@ -19,9 +19,7 @@ using Json = nlohmann::ordered_json;
 // written as it is; bytes that are not UTF-8 (possible only in a file name or a command-line
 // define, since the spec reader rejects them) become U+FFFD, so the output is always valid JSON
 // and writing never throws.
-std::string dump(const Json& document) {
-  return document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
-}
+std::string dump(const Json& document) { return document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; }
 
 Json stage_list(std::uint32_t stages) {
   Json names = Json::array();
@@ -79,7 +77,8 @@ void add_vertex_half(Json& entry, const Blob* blob) {
 
 void add_features(Json& manifest, const DomainSpec& spec) {
   Json& raw = manifest["raw_features"] = Json::array();
-  for (const RawFeature& f : spec.raw_features) raw.push_back(Json{{"name", f.name}, {"bit", f.bit}, {"define", f.define}});
+  for (const RawFeature& f : spec.raw_features)
+    raw.push_back(Json{{"name", f.name}, {"bit", f.bit}, {"define", f.define}});
   Json& optimised = manifest["optimised_bits"] = Json::array();
   for (const OptimisedBit& b : spec.optimised_bits)
     optimised.push_back(Json{{"name", b.name}, {"bit", b.bit}, {"when", b.when.text}});
@@ -159,14 +158,14 @@ Json default_json(const SpecConstantInfo& c) {
 void add_workgroup(Json& entry, const ReflectionInfo& r) {
   entry["local_size"] = Json(r.local_size);
   Json& ids = entry["local_size_ids"] = Json::array();
-  for (std::uint32_t id : r.local_size_ids)
-    ids.push_back(id == Reflection::kNoConstant ? Json(nullptr) : Json(id));
+  for (std::uint32_t id : r.local_size_ids) ids.push_back(id == Reflection::kNoConstant ? Json(nullptr) : Json(id));
 }
 
 Json specialization_constants_json(const ReflectionInfo& r) {
   Json out = Json::array();
   for (const SpecConstantInfo& c : r.specialization_constants)
-    out.push_back(Json{{"id", c.id}, {"name", c.name}, {"type", scalar_type_name(c.type)}, {"default", default_json(c)}});
+    out.push_back(
+        Json{{"id", c.id}, {"name", c.name}, {"type", scalar_type_name(c.type)}, {"default", default_json(c)}});
   return out;
 }
 
@@ -226,17 +225,20 @@ Json stage_counts(const CompiledDomain& d) {
   for (const RawPermutation& raw : d.plan.raw) pruned += raw.pruned;
   for (const SourceRecord& s : d.sources) hits += s.cache_hit;
   for (const Blob& b : d.blobs) fallbacks += b.fell_back;
-  return Json{{"raw", d.plan.raw.size()},
-              {"pruned", pruned},
-              {"canonical", d.jobs.size()},
-              {"unique_sources", d.sources.size()},
-              {"cache_hits", hits},
-              {"unique_blobs", d.blobs.size()},
-              {"optimiser_fallbacks", fallbacks}};
+  Json counts = Json::object();
+  counts["raw"] = d.plan.raw.size();
+  counts["pruned"] = pruned;
+  counts["canonical"] = d.jobs.size();
+  counts["unique_sources"] = d.sources.size();
+  counts["cache_hits"] = hits;
+  counts["unique_blobs"] = d.blobs.size();
+  counts["optimiser_fallbacks"] = fallbacks;
+  return counts;
 }
 
 Json remote_counts(const RemoteCacheStats& remote) {
-  return Json{{"fetched", remote.fetched}, {"missed", remote.missed}, {"uploaded", remote.uploaded}, {"failed", remote.failed}};
+  return Json{
+      {"fetched", remote.fetched}, {"missed", remote.missed}, {"uploaded", remote.uploaded}, {"failed", remote.failed}};
 }
 
 Json permutation_timings(const CompiledDomain& d) {
@@ -244,13 +246,14 @@ Json permutation_timings(const CompiledDomain& d) {
   for (const CompileJob& job : d.jobs) {
     const SourceRecord& source = d.sources[static_cast<std::size_t>(job.source)];
     const Blob& blob = d.blobs[static_cast<std::size_t>(job.blob)];
-    Json& entry = out.emplace_back(Json{{"permutation", job.label()},
-                                        {"source", job.source},
-                                        {"compiled_here", source.first_job == static_cast<std::size_t>(&job - d.jobs.data())},
-                                        {"cache_hit", source.cache_hit},
-                                        {"preprocess_ms", job.preprocess_ms},
-                                        {"compile_ms", source.compile_ms},
-                                        {"spirv_bytes", blob.words.size() * 4}});
+    Json& entry =
+        out.emplace_back(Json{{"permutation", job.label()},
+                              {"source", job.source},
+                              {"compiled_here", source.first_job == static_cast<std::size_t>(&job - d.jobs.data())},
+                              {"cache_hit", source.cache_hit},
+                              {"preprocess_ms", job.preprocess_ms},
+                              {"compile_ms", source.compile_ms},
+                              {"spirv_bytes", blob.words.size() * 4}});
     if (blob.fell_back) entry["optimiser_fallback"] = blob.fallback_reason;
   }
   return out;

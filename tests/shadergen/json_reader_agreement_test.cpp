@@ -10,8 +10,8 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <ostream>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -40,7 +40,8 @@ std::string object_difference(const json::Value& ours, const Theirs& theirs, con
     return at + ": " + std::to_string(ours.object.size()) + " members vs " + std::to_string(theirs.size());
   auto theirs_member = theirs.items().begin();
   for (const json::Member& member : ours.object) {
-    if (member.first != theirs_member.key()) return at + ": key \"" + member.first + "\" vs \"" + theirs_member.key() + "\"";
+    if (member.first != theirs_member.key())
+      return at + ": key \"" + member.first + "\" vs \"" + theirs_member.key() + "\"";
     if (std::string d = difference(member.second, theirs_member.value(), at + "." + member.first); !d.empty()) return d;
     ++theirs_member;
   }
@@ -133,7 +134,9 @@ std::string disagreement(const std::string& text) {
   return d.empty() ? "" : "values differ at " + d;
 }
 
-std::string nested(int depth) { return std::string(static_cast<std::size_t>(depth), '[') + std::string(static_cast<std::size_t>(depth), ']'); }
+std::string nested(int depth) {
+  return std::string(static_cast<std::size_t>(depth), '[') + std::string(static_cast<std::size_t>(depth), ']');
+}
 
 // An array of `items` zeros: items + 1 values.
 std::string zeros(std::size_t items) {
@@ -213,8 +216,7 @@ INSTANTIATE_TEST_SUITE_P(
         EdgeCase{"fraction_without_integer", "[.5]", Outcome::both_reject},
         EdgeCase{"leading_zero", "[01]", Outcome::both_reject},
         EdgeCase{"leading_zero_negative", "[-01]", Outcome::both_reject},
-        EdgeCase{"plus_sign", "[+1]", Outcome::both_reject},
-        EdgeCase{"minus_alone", "[-]", Outcome::both_reject},
+        EdgeCase{"plus_sign", "[+1]", Outcome::both_reject}, EdgeCase{"minus_alone", "[-]", Outcome::both_reject},
         EdgeCase{"hex_number", "[0x10]", Outcome::both_reject},
         EdgeCase{"nan_and_infinity", "[NaN, Infinity]", Outcome::both_reject},
         EdgeCase{"trailing_comma_array", "[1, 2,]", Outcome::both_reject},
