@@ -16,8 +16,8 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // Two-space indentation, keys in insertion order, "\n" line ends and a final newline. UTF-8 is
-// written as it is; bytes that are not UTF-8 (possible only in a file name or a command-line
-// define, since the spec reader rejects them) become U+FFFD, so the output is always valid JSON
+// written as it is. The spec reader accepts only UTF-8; should a byte that is not UTF-8 reach
+// here from elsewhere (an optimiser's message), it becomes U+FFFD: the output stays valid JSON
 // and writing never throws.
 std::string dump(const Json& document) { return document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; }
 
