@@ -26,6 +26,36 @@ const Value* Value::find(std::string_view key) const {
 
 namespace {
 
+bool in_range(std::string_view bytes, std::size_t i, unsigned low, unsigned high) {
+  if (i >= bytes.size()) return false;
+  auto byte = static_cast<unsigned char>(bytes[i]);
+  return byte >= low && byte <= high;
+}
+
+// The length of the well-formed UTF-8 sequence at the start of `bytes` (2 to 4), or 0.
+std::size_t utf8_sequence_length(std::string_view bytes) {
+  auto lead = static_cast<unsigned char>(bytes[0]);
+  unsigned second_low = 0x80, second_high = 0xBF;
+  std::size_t length = 0;
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    length = 2;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    length = 3;
+    if (lead == 0xE0) second_low = 0xA0;   // shorter forms are overlong
+    if (lead == 0xED) second_high = 0x9F;  // U+D800..U+DFFF are surrogates
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    length = 4;
+    if (lead == 0xF0) second_low = 0x90;   // overlong
+    if (lead == 0xF4) second_high = 0x8F;  // above U+10FFFF
+  } else {
+    return 0;
+  }
+  if (!in_range(bytes, 1, second_low, second_high)) return 0;
+  for (std::size_t i = 2; i < length; ++i)
+    if (!in_range(bytes, i, 0x80, 0xBF)) return 0;
+  return length;
+}
+
 class Parser {
  public:
   Parser(std::string_view text, const std::string& file) : text_(text), file_(file) {}
@@ -33,6 +63,7 @@ class Parser {
   Result<Value> run() {
     if (text_.size() > kMaxJsonBytes)
       return fail("spec is " + std::to_string(text_.size()) + " bytes; the limit is " + std::to_string(kMaxJsonBytes));
+    skip_byte_order_mark();
     skip_space();
     Value root;
     if (!parse_value(root, 0)) return error_;
@@ -49,6 +80,13 @@ class Parser {
   int column() const { return static_cast<int>(pos_ - line_start_) + 1; }
   bool at_end() const { return pos_ >= text_.size(); }
   char peek() const { return at_end() ? '\0' : text_[pos_]; }
+
+  // RFC 8259 lets a reader ignore a leading UTF-8 byte order mark, and some editors write one;
+  // nlohmann accepts it too. Columns count from after it, as an editor shows the line.
+  void skip_byte_order_mark() {
+    if (text_.substr(0, 3) != "\xEF\xBB\xBF") return;
+    pos_ = line_start_ = 3;
+  }
 
   void skip_space() {
     while (!at_end()) {
@@ -165,6 +203,10 @@ class Parser {
       if (c == '"') return true;
       if (c == '\n') return --pos_, fail("newline inside a string"), false;
       if (static_cast<unsigned char>(c) < 0x20) return --pos_, fail("control character inside a string"), false;
+      if (static_cast<unsigned char>(c) >= 0x80) {
+        if (!copy_utf8_sequence(out)) return false;
+        continue;
+      }
       if (c != '\\') {
         out += c;
         continue;
@@ -186,6 +228,18 @@ class Parser {
         default: return --pos_, fail(std::string("invalid escape '\\") + printable(e) + "'"), false;
       }
     }
+  }
+
+  // Copies the UTF-8 sequence whose lead byte was just read. RFC 8259 text is UTF-8: overlong
+  // forms, encoded surrogates and code points above U+10FFFF are rejected (Unicode's table of
+  // well-formed byte sequences), as nlohmann does.
+  bool copy_utf8_sequence(std::string& out) {
+    std::size_t start = --pos_;
+    std::size_t length = utf8_sequence_length(text_.substr(start));
+    if (length == 0) return fail("invalid UTF-8 in a string"), false;
+    out.append(text_.substr(start, length));
+    pos_ = start + length;
+    return true;
   }
 
   bool parse_hex4(unsigned& code) {
@@ -281,118 +335,5 @@ class Parser {
 }  // namespace
 
 Result<Value> parse(std::string_view text, const std::string& file) { return Parser(text, file).run(); }
-
-std::string quote(std::string_view text) {
-  std::string out = "\"";
-  for (char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buffer[8];
-          std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned char>(c));
-          out += buffer;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + '"';
-}
-
-void Writer::newline() {
-  out_ += '\n';
-  out_.append(first_in_container_.size() * 2, ' ');
-}
-
-void Writer::before_value() {
-  if (after_key_) {
-    after_key_ = false;
-    return;
-  }
-  if (first_in_container_.empty()) return;
-  if (!first_in_container_.back()) out_ += ',';
-  first_in_container_.back() = false;
-  newline();
-}
-
-void Writer::begin_object() {
-  before_value();
-  out_ += '{';
-  first_in_container_.push_back(true);
-}
-
-void Writer::end_object() {
-  bool empty = first_in_container_.back();
-  first_in_container_.pop_back();
-  if (!empty) newline();
-  out_ += '}';
-}
-
-void Writer::begin_array() {
-  before_value();
-  out_ += '[';
-  first_in_container_.push_back(true);
-}
-
-void Writer::end_array() {
-  bool empty = first_in_container_.back();
-  first_in_container_.pop_back();
-  if (!empty) newline();
-  out_ += ']';
-}
-
-void Writer::key(std::string_view name) {
-  before_value();
-  out_ += quote(name);
-  out_ += ": ";
-  after_key_ = true;
-}
-
-void Writer::value(std::string_view text) {
-  before_value();
-  out_ += quote(text);
-}
-
-void Writer::value(std::int64_t number) {
-  before_value();
-  out_ += std::to_string(number);
-}
-
-void Writer::value(double number) {
-  before_value();
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", number);
-  out_ += buffer;
-}
-
-void Writer::value(bool flag) {
-  before_value();
-  out_ += flag ? "true" : "false";
-}
-
-void Writer::null() {
-  before_value();
-  out_ += "null";
-}
-
-void Writer::inline_string_array(const std::vector<std::string>& items) {
-  before_value();
-  out_ += '[';
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (i) out_ += ", ";
-    out_ += quote(items[i]);
-  }
-  out_ += ']';
-}
-
-std::string Writer::take() {
-  out_ += '\n';
-  return std::move(out_);
-}
 
 }  // namespace shadergen::json

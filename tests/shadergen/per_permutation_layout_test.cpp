@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "shadergen/build.h"
 #include "test_helpers.h"
@@ -24,6 +26,15 @@ shadergen::Result<shadergen::BuildSummary> build_spec(const path& spec, const pa
   options.cache_dir = cache;
   options.jobs = 2;
   return shadergen::build(options);
+}
+
+// Where `value` holds a number written with a fraction or an exponent (a JSON float).
+void find_floats(const json& value, const std::string& at, std::vector<std::string>& out) {
+  if (value.is_number_float()) out.push_back(at + " = " + value.dump());
+  if (value.is_object())
+    for (const auto& [key, item] : value.items()) find_floats(item, at + "." + key, out);
+  if (value.is_array())
+    for (std::size_t i = 0; i < value.size(); ++i) find_floats(value[i], at + "[" + std::to_string(i) + "]", out);
 }
 
 const json* binding_at(const json& layout, int set, int binding) {
@@ -69,6 +80,15 @@ TEST(PerPermutationLayout, EachPermutationCarriesItsOwnKindsAndOutputs) {
     EXPECT_EQ(blob["local_size_ids"], json::parse("[3, null, null]"));
     EXPECT_EQ(blob["specialization_constants"], json::parse(R"([{"id": 3, "name": "", "type": "uint", "default": 1},
                                   {"id": 4, "name": "RADIX", "type": "uint", "default": 4}])"));
+  }
+  // Integers are written as integers (4, not 4.0); the only JSON floats are the defaults of
+  // float constants: LIGHT_SCALE = 2.0 in the fragment shader's blobs.
+  std::vector<std::string> floats;
+  find_floats(manifest, "$", floats);
+  ASSERT_FALSE(floats.empty());
+  for (const std::string& f : floats) {
+    EXPECT_TRUE(sgtest::contains(f, ".specialization_constants[0].default = 2.0")) << f;
+    EXPECT_EQ(f.rfind("$.blobs[", 0), 0u) << f;
   }
   for (const json& blob : manifest["blobs"]) {
     sgtest::ProcessResult val = sgtest::spirv_val(dir / "out" / blob["spirv"].get<std::string>());

@@ -102,6 +102,12 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"not_an_object", "[1, 2]\n", "spec.json:1:1: error: spec: the spec must be a JSON object"},
         ErrorCase{"trailing_comma", replace(kBase, "\"never both\" }", "\"never both\", }"),
                   "spec.json:11:62: error: expected a quoted key"},
+        // RFC 8259 text is UTF-8: a Latin-1 "é" (one byte 0xE9) is rejected where it starts.
+        ErrorCase{"latin1_byte_in_a_string", replace(kBase, "\"tiny\",", "\"tin\xE9\","),
+                  "spec.json:3:15: error: invalid UTF-8 in a string"},
+        // A leading byte order mark is skipped, and columns count from after it.
+        ErrorCase{"byte_order_mark_then_an_error", "\xEF\xBB\xBF{ \"format\": 1, }",
+                  "spec.json:1:16: error: expected a quoted key"},
         ErrorCase{"nesting_limit", std::string(40, '[') + std::string(40, ']'),
                   "spec.json:1:33: error: nesting deeper than 32 levels"},
         ErrorCase{"define_value_not_a_string",
