@@ -148,6 +148,12 @@ TEST(TilelightCli, BaselineChoosesThePassesTimed) {
   EXPECT_TRUE(fs::exists(dynamic_out / "frame_dynamic.png"));
   EXPECT_NE(dynamic.out.find("classified vs dynamic: 0 pixels differ"), std::string::npos) << dynamic.out;
 
+  // Into the folder of the naive run: its frame_naive.png, from another run, goes.
+  ASSERT_EQ(
+      run_cli({"--width", "96", "--height", "64", "--baseline", "dynamic", "--out", naive_out.string()}).exit_code, 0);
+  EXPECT_FALSE(fs::exists(naive_out / "frame_naive.png"));
+  EXPECT_TRUE(fs::exists(naive_out / "frame_dynamic.png"));
+
   EXPECT_EQ(run_cli({"--baseline", "fastest", "--out", (scratch_dir() / "bad").string()}).exit_code, 2);
 }
 

@@ -217,8 +217,13 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
 
   const RgbaImage shown = display_encoded(classified);
   files.stage("frame_classified.png", encode_png(shown));
-  if (naive) files.stage("frame_naive.png", encode_png(display_encoded(*naive)));
-  if (dynamic) files.stage("frame_dynamic.png", encode_png(display_encoded(*dynamic)));
+  for (const auto& [name, frame] : {std::pair{"frame_naive.png", &naive}, std::pair{"frame_dynamic.png", &dynamic}}) {
+    if (*frame) {
+      files.stage(name, encode_png(display_encoded(**frame)));
+    } else {
+      files.retire(name);
+    }
+  }
   {
     const Rgba8Canvas canvas = compose_tile_class_image(shown, a.tile_size, optimised_ids(raw_ids));
     files.stage("tile_classes.png", encode_png(canvas.width, canvas.height, canvas.pixels));

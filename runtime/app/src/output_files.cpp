@@ -27,9 +27,17 @@ void OutputFiles::stage_text(const std::string& name, std::string_view text) {
   stage(name, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
 }
 
+void OutputFiles::retire(const std::string& name) { retired_.push_back(name); }
+
 void OutputFiles::commit() {
   for (atomic_file::StagedFile& file : staged_) commit_staged(file);
   staged_.clear();
+  for (const std::string& name : retired_) {
+    std::error_code ec;
+    fs::remove(folder_ / name, ec);  // false without an error when there was none
+    if (ec) throw Error("cannot remove the earlier run's " + (folder_ / name).string() + ": " + ec.message());
+  }
+  retired_.clear();
 }
 
 }  // namespace tilelight::app

@@ -25,13 +25,19 @@ class OutputFiles {
   // Writes `name`'s bytes under its temporary name; throws tilelight::Error naming that file.
   void stage(const std::string& name, std::span<const std::uint8_t> bytes);
   void stage_text(const std::string& name, std::string_view text);
-  // Renames every staged file into place, in the order staged.
+  // Marks `name` as a file of the output set that this run does not produce (a baseline that
+  // did not run): commit() removes an earlier run's copy, so the folder never shows a frame
+  // from another run beside this run's report.
+  void retire(const std::string& name);
+  // Renames every staged file into place, in the order staged, then removes the retired ones.
+  // Throws tilelight::Error naming the file that could not be renamed or removed.
   void commit();
   const std::filesystem::path& folder() const { return folder_; }
 
  private:
   std::filesystem::path folder_;
   std::vector<atomic_file::StagedFile> staged_;  // their destructors remove what was never committed
+  std::vector<std::string> retired_;
 };
 
 }  // namespace tilelight::app
