@@ -24,11 +24,7 @@ path fixed_spec() { return sgtest::fixtures_dir() / "fixed_defines" / "fixed_def
 
 shadergen::Result<shadergen::BuildSummary> build_fixed(const path& out, const path& cache,
                                                        std::vector<std::string> defines = {}) {
-  shadergen::BuildOptions options;
-  options.spec_path = fixed_spec();
-  options.out_dir = out;
-  options.cache_dir = cache;
-  options.jobs = 2;
+  shadergen::BuildOptions options = sgtest::build_options(fixed_spec(), out, cache);
   options.defines = std::move(defines);
   return shadergen::build(options);
 }

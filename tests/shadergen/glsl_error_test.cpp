@@ -61,11 +61,7 @@ TEST(GlslError, FixtureIsTheToyDomainWithOneBrokenLine) {
 
 TEST(GlslError, LibraryReportsOneGroupedDiagnostic) {
   sgtest::TempDir dir("glsl-error-lib");
-  shadergen::BuildOptions options;
-  options.spec_path = sgtest::glsl_error_spec();
-  options.out_dir = dir / "out";
-  options.cache_dir = dir / "cache";
-  auto result = shadergen::build(options);
+  auto result = sgtest::build(sgtest::glsl_error_spec(), dir / "out", dir / "cache");
   ASSERT_FALSE(result.ok());
   ASSERT_EQ(result.errors().size(), 1u);
   const shadergen::Diagnostic& d = result.errors().front();

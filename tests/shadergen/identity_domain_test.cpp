@@ -48,12 +48,7 @@ TEST(IdentityDomain, ExpandsToTheRawPermutationsAlone) {
 
 TEST(IdentityDomain, BuildsEveryCompiledRawIdAsItsOwnBlob) {
   sgtest::TempDir dir("identity-build");
-  shadergen::BuildOptions options;
-  options.spec_path = identity_spec();
-  options.out_dir = dir / "out";
-  options.cache_dir = dir / "cache";
-  options.jobs = 2;
-  auto summary = shadergen::build(options);
+  auto summary = sgtest::build(identity_spec(), dir / "out", dir / "cache");
   ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
   EXPECT_EQ(summary->optimised, 0u);
   EXPECT_EQ(summary->permutations, 405u) << "one compile job per compiled raw ID, nothing else";

@@ -35,13 +35,9 @@ class ToyCopy {
   fs::path path(const std::string& name) const { return dir_ / name; }
 
   shadergen::Result<shadergen::BuildSummary> build(const std::string& out, bool use_cache = true) const {
-    shadergen::BuildOptions options;
-    options.spec_path = spec();
-    options.out_dir = dir_ / out;
-    options.cache_dir = cache();
+    shadergen::BuildOptions options = sgtest::build_options(spec(), dir_ / out, cache());
     options.use_cache = use_cache;
     options.depfile = dir_ / (out + ".d");
-    options.jobs = 2;
     return shadergen::build(options);
   }
 

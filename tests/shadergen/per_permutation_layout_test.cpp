@@ -19,15 +19,6 @@ using sgtest::fs::path;
 
 path fixture_dir() { return sgtest::fixtures_dir() / "per_permutation"; }
 
-shadergen::Result<shadergen::BuildSummary> build_spec(const path& spec, const path& out, const path& cache) {
-  shadergen::BuildOptions options;
-  options.spec_path = spec;
-  options.out_dir = out;
-  options.cache_dir = cache;
-  options.jobs = 2;
-  return shadergen::build(options);
-}
-
 // Where `value` holds a number written with a fraction or an exponent (a JSON float).
 void find_floats(const json& value, const std::string& at, std::vector<std::string>& out) {
   if (value.is_number_float()) out.push_back(at + " = " + value.dump());
@@ -45,7 +36,7 @@ const json* binding_at(const json& layout, int set, int binding) {
 
 TEST(PerPermutationLayout, EachPermutationCarriesItsOwnKindsAndOutputs) {
   sgtest::TempDir dir("per-permutation");
-  auto summary = build_spec(fixture_dir() / "per_permutation.json", dir / "out", dir / "cache");
+  auto summary = sgtest::build(fixture_dir() / "per_permutation.json", dir / "out", dir / "cache");
   ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
   json manifest = json::parse(sgtest::read_file(dir / "out" / "manifest.json"));
   EXPECT_EQ(manifest["layout"], "per_permutation");
@@ -106,7 +97,7 @@ TEST(PerPermutationLayout, ASharedLayoutNamesTheConflictAndTheWayOut) {
   std::string text = sgtest::read_file(spec);
   text.erase(text.find("\"layout\": \"per_permutation\","), 30);
   sgtest::write_file(spec, text);
-  auto result = build_spec(spec, dir / "out", dir / "cache");
+  auto result = sgtest::build(spec, dir / "out", dir / "cache");
   ASSERT_FALSE(result.ok());
   const std::string hint =
       " (the spec's \"layout\" is \"shared\"; \"layout\": \"per_permutation\" gives each "
@@ -137,7 +128,7 @@ TEST(PerPermutationLayout, AnUnknownLayoutIsAnError) {
   std::string text = sgtest::read_file(spec);
   text.replace(text.find("\"per_permutation\","), 17, "\"separate\"");
   sgtest::write_file(spec, text);
-  auto result = build_spec(spec, dir / "out", dir / "cache");
+  auto result = sgtest::build(spec, dir / "out", dir / "cache");
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.errors().front().to_string(),
             spec.string() + ":6:13: error: layout: unknown layout \"separate\" (expected shared or per_permutation)");

@@ -14,15 +14,6 @@ namespace {
 using nlohmann::json;
 using sgtest::fs::path;
 
-shadergen::Result<shadergen::BuildSummary> build_program(const path& spec, const path& out, const path& cache) {
-  shadergen::BuildOptions options;
-  options.spec_path = spec;
-  options.out_dir = out;
-  options.cache_dir = cache;
-  options.jobs = 2;
-  return shadergen::build(options);
-}
-
 // A copy of the fixture with `from` replaced by `to` in `file`.
 path broken_copy(const sgtest::TempDir& dir, const std::string& file, const std::string& from, const std::string& to) {
   for (const auto& [name, bytes] : sgtest::snapshot(sgtest::fixtures_dir() / "program"))
@@ -35,7 +26,7 @@ path broken_copy(const sgtest::TempDir& dir, const std::string& file, const std:
 
 TEST(ProgramForm, EveryPermutationHasBothHalvesWithTheSameDefines) {
   sgtest::TempDir dir("program");
-  auto summary = build_program(sgtest::fixtures_dir() / "program" / "program.json", dir / "out", dir / "cache");
+  auto summary = sgtest::build(sgtest::fixtures_dir() / "program" / "program.json", dir / "out", dir / "cache");
   ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
   EXPECT_EQ(summary->permutations, 8u) << "4 raw IDs, two shaders each";
   EXPECT_EQ(summary->unique_sources, 8u);
@@ -65,7 +56,7 @@ TEST(ProgramForm, AFragmentInputTheVertexHalfDoesNotWriteIsRefused) {
   sgtest::TempDir dir("program-missing");
   path spec = broken_copy(dir, "surface.vert", "layout(location = 2) out float out_fog;",
                           "layout(location = 3) out float out_fog;");
-  auto result = build_program(spec, dir / "out", dir / "cache");
+  auto result = sgtest::build(spec, dir / "out", dir / "cache");
   ASSERT_FALSE(result.ok());
   ASSERT_EQ(result.errors().size(), 2u);
   EXPECT_EQ(result.errors()[0].to_string(),
@@ -79,7 +70,7 @@ TEST(ProgramForm, ANarrowerVertexOutputIsRefused) {
   sgtest::TempDir dir("program-narrow");
   path spec = broken_copy(dir, "surface.frag", "layout(location = 0) in vec3 in_normal;",
                           "layout(location = 0) in vec4 in_normal4;\n#define in_normal in_normal4.xyz");
-  auto result = build_program(spec, dir / "out", dir / "cache");
+  auto result = sgtest::build(spec, dir / "out", dir / "cache");
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.errors()[0].to_string(),
             spec.string() +
@@ -91,7 +82,7 @@ TEST(ProgramForm, UberShaderAndProgramTogetherIsAnError) {
   sgtest::TempDir dir("program-both");
   path spec = broken_copy(dir, "program.json",
                           "\"program\":", "\"uber_shader\": { \"path\": \"surface.frag\" },\n  \"program\":");
-  auto result = build_program(spec, dir / "out", dir / "cache");
+  auto result = sgtest::build(spec, dir / "out", dir / "cache");
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.errors()[0].to_string(),
             spec.string() + ":6:14: error: program: a spec has \"uber_shader\" or \"program\", not both");

@@ -34,12 +34,7 @@ TEST(Scaling, SixteenFeaturesExpandToEveryRawId) {
 
 TEST(Scaling, SixteenFeaturesBuildToFourDistinctSources) {
   sgtest::TempDir dir("scale16");
-  shadergen::BuildOptions options;
-  options.spec_path = scale_spec();
-  options.out_dir = dir / "out";
-  options.cache_dir = dir / "cache";
-  options.jobs = 2;
-  auto cold = shadergen::build(options);
+  auto cold = sgtest::build(scale_spec(), dir / "out", dir / "cache");
   ASSERT_TRUE(cold.ok()) << cold.errors().front().to_string();
   EXPECT_EQ(cold->raw, 65536u);
   EXPECT_EQ(cold->pruned, 41344u);
@@ -48,7 +43,7 @@ TEST(Scaling, SixteenFeaturesBuildToFourDistinctSources) {
   EXPECT_EQ(cold->compiled, 4u);
   std::string header = sgtest::read_file(dir / "out" / "scale16.h");
   EXPECT_TRUE(sgtest::contains(header, "inline constexpr std::uint32_t kRawCount = 65536;"));
-  auto warm = shadergen::build(options);
+  auto warm = sgtest::build(scale_spec(), dir / "out", dir / "cache");
   ASSERT_TRUE(warm.ok()) << warm.errors().front().to_string();
   EXPECT_TRUE(warm->inputs_reused);
   EXPECT_FALSE(warm->output_changed);

@@ -16,12 +16,8 @@ class EveryStage : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = std::make_unique<sgtest::TempDir>("every-stage");
-    shadergen::BuildOptions options;
-    options.spec_path = sgtest::fixtures_dir() / "stages" / "stages.json";
-    options.out_dir = dir_->path() / "out";
-    options.cache_dir = dir_->path() / "cache";
-    options.jobs = 2;
-    auto summary = shadergen::build(options);
+    auto summary =
+        sgtest::build(sgtest::fixtures_dir() / "stages" / "stages.json", dir_->path() / "out", dir_->path() / "cache");
     if (!summary.ok())
       error_ = summary.errors().front().to_string();
     else

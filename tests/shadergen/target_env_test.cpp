@@ -19,11 +19,7 @@ using sgtest::fs::path;
 
 shadergen::Result<shadergen::BuildSummary> build_spec(const path& spec, const path& out, const path& cache,
                                                       const std::string& target_env) {
-  shadergen::BuildOptions options;
-  options.spec_path = spec;
-  options.out_dir = out;
-  options.cache_dir = cache;
-  options.jobs = 2;
+  shadergen::BuildOptions options = sgtest::build_options(spec, out, cache);
   options.target_env = target_env;
   return shadergen::build(options);
 }

@@ -18,6 +18,19 @@ fs::path toy_spec() { return fixtures_dir() / "toy" / "toy.json"; }
 fs::path glsl_error_spec() { return fixtures_dir() / "glsl_error" / "glsl_error.json"; }
 fs::path split_second_spec() { return source_dir() / "permutations" / "split_second.json"; }
 
+shadergen::BuildOptions build_options(const fs::path& spec, const fs::path& out, const fs::path& cache) {
+  shadergen::BuildOptions options;
+  options.spec_path = spec;
+  options.out_dir = out;
+  options.cache_dir = cache;
+  options.jobs = 2;
+  return options;
+}
+
+shadergen::Result<shadergen::BuildSummary> build(const fs::path& spec, const fs::path& out, const fs::path& cache) {
+  return shadergen::build(build_options(spec, out, cache));
+}
+
 std::string read_file(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "child_process.h"
+#include "shadergen/build.h"
 
 namespace sgtest {
 
@@ -29,6 +30,13 @@ fs::path split_second_spec();
 #ifdef SHADERGEN_EXE
 inline fs::path shadergen_exe() { return fs::path(SHADERGEN_EXE); }
 #endif
+
+// What a test's build starts from: `spec` built into `out` with the test's own cache folder
+// `cache` (never the user's) and two jobs. A test sets whatever else it checks, then calls
+// shadergen::build().
+shadergen::BuildOptions build_options(const fs::path& spec, const fs::path& out, const fs::path& cache);
+// shadergen::build(build_options(spec, out, cache)).
+shadergen::Result<shadergen::BuildSummary> build(const fs::path& spec, const fs::path& out, const fs::path& cache);
 
 std::string read_file(const fs::path& path);
 // Creates the parent folders; replaces the file.

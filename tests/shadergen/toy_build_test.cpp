@@ -33,10 +33,7 @@ constexpr std::array<int, 16> kToyTable = {0, 1, 2, 3, 2, 3, 2, 3, 1, -1, 3, -1,
 
 shadergen::Result<shadergen::BuildSummary> build_toy(const path& out, const path& cache, unsigned jobs,
                                                      bool use_cache) {
-  shadergen::BuildOptions options;
-  options.spec_path = sgtest::toy_spec();
-  options.out_dir = out;
-  options.cache_dir = cache;
+  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), out, cache);
   options.use_cache = use_cache;
   options.jobs = jobs;
   return shadergen::build(options);
@@ -339,10 +336,7 @@ TEST_F(ToyBuild, RebuildIntoTheSameFolderChangesNothing) {
 
 TEST_F(ToyBuild, StatsReportCountsEveryStage) {
   sgtest::TempDir other("toy-stats");
-  shadergen::BuildOptions options;
-  options.spec_path = sgtest::toy_spec();
-  options.out_dir = other / "out";
-  options.cache_dir = cache();
+  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), other / "out", cache());
   options.write_stats = true;
   auto summary = shadergen::build(options);
   ASSERT_TRUE(summary.ok()) << first_error(summary);
@@ -406,10 +400,7 @@ TEST(ToyBuildCache, AnExplicitCacheFolderIsTheOnlyOneUsed) {
 
 TEST(ToyBuildNames, CppNameAndNamespaceOptionsNameTheGeneratedFiles) {
   sgtest::TempDir dir("toy-names");
-  shadergen::BuildOptions options;
-  options.spec_path = sgtest::toy_spec();
-  options.out_dir = dir / "out";
-  options.cache_dir = dir / "cache";
+  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), dir / "out", dir / "cache");
   options.cpp_name = "particles_gen";
   options.cpp_namespace = "game::fx";
   auto summary = shadergen::build(options);
@@ -423,10 +414,7 @@ TEST(ToyBuildNames, CppNameAndNamespaceOptionsNameTheGeneratedFiles) {
 
 TEST(ToyBuildNames, InvalidNamespaceIsRefusedBeforeAnythingIsWritten) {
   sgtest::TempDir dir("toy-bad-ns");
-  shadergen::BuildOptions options;
-  options.spec_path = sgtest::toy_spec();
-  options.out_dir = dir / "out";
-  options.cache_dir = dir / "cache";
+  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), dir / "out", dir / "cache");
   options.cpp_namespace = "game::2fx";
   auto summary = shadergen::build(options);
   ASSERT_FALSE(summary.ok());

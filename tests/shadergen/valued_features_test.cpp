@@ -114,12 +114,7 @@ TEST(ValuedFeaturesCli, ExplainTakesNameEqualsValue) {
 // Each value reaches the shader: the three TAA qualities give three different blobs.
 TEST(ValuedFeaturesBuild, EveryValueReachesTheShader) {
   sgtest::TempDir dir("valued-build");
-  shadergen::BuildOptions options;
-  options.spec_path = valued_spec();
-  options.out_dir = dir / "out";
-  options.cache_dir = dir / "cache";
-  options.jobs = 2;
-  auto summary = shadergen::build(options);
+  auto summary = sgtest::build(valued_spec(), dir / "out", dir / "cache");
   ASSERT_TRUE(summary.ok()) << summary.errors().front().to_string();
   EXPECT_EQ(summary->pruned, 17u);
   EXPECT_EQ(summary->unique_sources, 15u);
