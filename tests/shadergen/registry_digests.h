@@ -58,7 +58,7 @@ inline std::vector<std::string> sha256sum_of(const std::vector<Blob>& blobs) {
     std::fclose(file);
     files.push_back(it->second);
   }
-  testsupport::ChildOutcome run = testsupport::Child("/usr/bin/sha256sum", files).wait();
+  testsupport::ChildOutcome run = testsupport::Child("sha256sum", files).wait();
   fs::remove_all(folder);
   if (run.exit_code != 0) return {};
   std::map<std::string, std::string> digest_of_file;

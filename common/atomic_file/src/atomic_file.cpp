@@ -11,21 +11,24 @@ namespace atomic_file {
 namespace fs = std::filesystem;
 namespace {
 
-std::error_code os_error(int number) { return {number != 0 ? number : EIO, std::generic_category()}; }
+// errno after a failed call; EIO when the call failed without setting it (a short fwrite may).
+int last_error() { return errno != 0 ? errno : EIO; }
 
 // Writes, flushes and syncs `bytes` into a new file at `path`, and closes it.
 std::optional<Failure> write_whole_file(const fs::path& path, std::string_view bytes) {
   std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (file == nullptr) return Failure{Failure::Step::create, path, os_error(errno)};
+  if (file == nullptr)
+    return Failure{Failure::Step::create, path, std::error_code(last_error(), std::generic_category())};
+  // Each step runs only while the ones before it succeeded; `reason` is the first failure's.
+  int reason = 0;
   // fwrite's buffer must not be null, even for 0 bytes (an empty view's data() may be).
-  bool ok = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-  int reason = ok ? 0 : errno;
+  if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size()) reason = last_error();
   // A full disk may only show up at the flush; fsync makes the rename publish written bytes
   // (EINVAL: a file system that cannot sync, such as some FUSE mounts, is not an error).
-  if (ok && std::fflush(file) != 0) ok = false, reason = errno;
-  if (ok && ::fsync(::fileno(file)) != 0 && errno != EINVAL) ok = false, reason = errno;
-  if (std::fclose(file) != 0 && ok) ok = false, reason = errno;
-  if (!ok) return Failure{Failure::Step::write, path, os_error(reason)};
+  if (reason == 0 && std::fflush(file) != 0) reason = last_error();
+  if (reason == 0 && ::fsync(::fileno(file)) != 0 && errno != EINVAL) reason = last_error();
+  if (std::fclose(file) != 0 && reason == 0) reason = last_error();
+  if (reason != 0) return Failure{Failure::Step::write, path, std::error_code(reason, std::generic_category())};
   return std::nullopt;
 }
 
