@@ -1,128 +1,18 @@
 #version 450
-// lighting.frag -- the deferred global-light pass as one uber-shader.
-//
-// Seven switches, each a raw tile property (DESIGN.md §1). A permutation is the full shader
-// restricted to the pixels its tile class admits, so on those pixels it computes the same
-// value as the all-features shader:
-//   SKY              sky pixels exist; without it every pixel is assumed to be geometry.
-//   SUN_LIGHT        some pixel faces the sun; without it the sun term is exactly zero.
-//   SOLID_SHADOW     every non-sky pixel is fully shadowed: shadow factor 0, no lookups.
-//   SOFT_SHADOW      shadow edge: 8-tap PCF. With neither shadow define: fully lit, factor 1.
-//   SHADOW_FADE      some pixel lies beyond the fade start; before it the fade is the identity.
-//   LIGHT_SCATTERING some pixel lies beyond the scattering start; before it, the identity.
-//   MSAA_EDGE        some pixel's samples differ: shade every sample and average; otherwise
-//                    all samples are equal and sample 0 alone gives the same average.
-// (Built with GBUFFER_SINGLE_SAMPLED, the G-buffer has one sample and MSAA_EDGE adds nothing.)
-// Each feature is one call into the include library with the same arguments in every
-// permutation, so the arithmetic that does run is identical to the full shader's.
-//
-// DYNAMIC_BRANCHING builds the per-pixel baseline instead (tilelight's "dynamic" light pass):
-// every feature compiled in, as in the naive pass, but each taken only where this pixel needs
-// it, decided per pixel with the same tests the tile classifier applies per tile: no sun term
-// and no shadow lookups where the pixel does not face the sun, every sample shaded only where
-// the pixel's samples may differ (its MSAA-edge bits). Sky, fade and scattering already branch
-// per pixel inside their functions. Skipped work is exactly the identity there (the same
-// contract the permutations rely on), so the result equals the naive pass.
+// lighting.frag -- the deferred global-light pass as one uber-shader, raster form: the tile pass
+// draws each class's tiles with this permutation, the naive and dynamic passes draw it over the
+// whole frame. The shading itself, its seven switches and DYNAMIC_BRANCHING are in
+// light_pass.glsl, shared with the compute form (lighting.comp).
 
 // shadergen enables #include itself; naming it here keeps the file compilable by plain
 // glslangValidator -I<include dir> as well.
 #extension GL_GOOGLE_include_directive : require
 
-#include "gbuffer.glsl"
-#include "light_scattering.glsl"
-#include "shadow_fade.glsl"
-#include "sun_lighting.glsl"
-#include "sun_shadow.glsl"
-#include "world_position.glsl"
+#include "light_pass.glsl"
 
 layout(location = 0) out vec4 out_color;
 
-#ifdef DYNAMIC_BRANCHING
-#define SUN_LIGHT
-#define SOFT_SHADOW
-#define SHADOW_FADE
-#define LIGHT_SCATTERING
-#define MSAA_EDGE
-#define SKY
-const bool PER_PIXEL_BRANCHES = true;
-#else
-const bool PER_PIXEL_BRANCHES = false; // the tile's class decided: every test below folds away
-#endif
-
-#if defined(SOLID_SHADOW) && defined(SOFT_SHADOW)
-#error "SOLID_SHADOW and SOFT_SHADOW are mutually exclusive: such a tile is impossible"
-#endif
-
-// Sun visibility at a surface point, 0 (shadowed) .. 1 (lit), after the distance fade.
-float sun_visibility(vec3 world_pos, float view_depth)
-{
-#if defined(SOLID_SHADOW)
-    float shadow = 0.0;
-#elif defined(SOFT_SHADOW)
-    float shadow = sun_shadow_pcf(world_pos);
-#else
-    float shadow = 1.0;
-#endif
-#ifdef SHADOW_FADE
-    shadow = shadow_fade_apply(shadow, view_depth);
-#endif
-    return shadow;
-}
-
-vec3 shade_geometry(GSample g, ivec2 pixel)
-{
-    vec3 world_pos = world_position_from_depth(pixel, g.depth);
-    float view_depth = linear_view_depth(world_pos);
-    vec3 colour = g.prelit;
-#ifdef SUN_LIGHT
-    if (!PER_PIXEL_BRANCHES || g.faces_sun) {
-        vec3 sun = sun_surface_radiance(g.albedo, g.faces_sun, g.normal, world_pos, g.spec_amount, g.spec_power);
-        colour += sun * sun_visibility(world_pos, view_depth);
-    }
-#endif
-#ifdef LIGHT_SCATTERING
-    colour = light_scattering_apply(colour, view_depth);
-#endif
-    return colour;
-}
-
-vec3 shade_sample(ivec2 pixel, int sample_index)
-{
-    GSample g = gbuffer_load(pixel, sample_index);
-#ifdef SKY
-    // The scene wrote the sky's final colour (atmosphere included): no sun, no scattering, so
-    // nothing here depends on the sky's depth and its distance bits are harmless.
-    if (g.is_sky) {
-        return g.prelit;
-    }
-#endif
-    return shade_geometry(g, pixel);
-}
-
-// The average of every sample, as a running mean, given sample 0's colour. A component equal to
-// the mean so far is kept as it is (a select, no arithmetic), so a pixel whose samples all shade
-// alike averages to exactly its sample-0 colour for any sample count, Inf included; a plain sum
-// would not (v + v + v rounds, Inf - Inf is NaN). That is what lets a non-edge tile shade sample
-// 0 alone. (With one sample per pixel there is nothing to add: the loop runs no pass.)
-vec3 add_other_samples(ivec2 pixel, vec3 sample0_colour)
-{
-    int samples = gbuffer_sample_count();
-    vec3 mean = sample0_colour;
-    for (int s = 1; s < samples; ++s) {
-        vec3 colour = shade_sample(pixel, s);
-        mean = mix(mean + (colour - mean) / float(s + 1), mean, equal(colour, mean));
-    }
-    return mean;
-}
-
 void main()
 {
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec3 colour = shade_sample(pixel, 0);
-#ifdef MSAA_EDGE
-    if (!PER_PIXEL_BRANCHES || gbuffer_pixel_is_edge(pixel)) {
-        colour = add_other_samples(pixel, colour);
-    }
-#endif
-    out_color = vec4(colour, 1.0);
+    out_color = vec4(shade_pixel(ivec2(gl_FragCoord.xy)), 1.0);
 }

@@ -56,10 +56,10 @@ double Measurement::speedup_over_dynamic() const {
 }
 
 std::string configuration_key(const RendererOptions& o) {
-  return fmt::format("{}x{} tile {} {} {} {} {} camera {} msaa {}", o.width, o.height, o.tile_size,
+  return fmt::format("{}x{} tile {} {} {} {} {} camera {} msaa {} {}", o.width, o.height, o.tile_size,
                      o.path == IndexPath::gpu ? "gpu" : "cpu", o.raw_permutations ? "raw" : "optimised",
                      o.coalesce ? "coalesced" : "uncoalesced", o.primitive ? to_string(*o.primitive) : "auto", o.camera,
-                     o.msaa == 0 ? std::string("auto") : std::to_string(o.msaa));
+                     o.msaa == 0 ? std::string("auto") : std::to_string(o.msaa), to_string(o.light_pass));
 }
 
 std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,

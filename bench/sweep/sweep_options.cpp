@@ -57,13 +57,20 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
   cli.add_option("--path", path, "index build of the baseline comparison: cpu (host patching) or gpu (compute)")
       ->check(CLI::IsMember({"cpu", "gpu"}))
       ->capture_default_str();
+  cli.add_option("--light-passes", options.light_passes,
+                 "light-pass kinds of the baseline comparison: raster, compute (each view measured with each)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"raster", "compute"}))
+      ->capture_default_str();
   cli.add_option("--only", options.only,
                  "run only these comparisons: permutations, tile_size, index_path, coalescing, primitive, "
                  "resolution, stages, baselines (default: all)")
       ->delimiter(',')
       ->check(CLI::IsMember(
           {"permutations", "tile_size", "index_path", "coalescing", "primitive", "resolution", "stages", "baselines"}));
-  cli.add_option("--device", options.device, "Vulkan device: index or name substring (default: lavapipe)");
+  cli.add_option("--device", options.device,
+                 "Vulkan device: auto (a discrete GPU, else an integrated one, else lavapipe), an index or a name "
+                 "substring (default: lavapipe)");
   cli.add_option("--update-doc", options.update_doc,
                  "markdown file whose <!-- sweep:ID --> sections get the new tables (docs/results.md)");
   cli.add_flag("--quick", options.quick, "smoke run: sizes 64x36,96x54 and 1 frame (overrides --sizes, --frames)");

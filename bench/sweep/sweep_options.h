@@ -24,6 +24,8 @@ struct SweepOptions {
   std::vector<std::string> cameras;
   std::vector<std::uint32_t> msaa;
   bool gpu_path = false;  // the index build of the baseline comparison: false = CPU patching
+  // The light-pass kinds of the baseline comparison (tilelight --light-pass), each a row per view.
+  std::vector<std::string> light_passes{"raster", "compute"};
   // The comparisons to run, by id (sweep_plan.h); empty = all.
   std::vector<std::string> only;
   std::string device;  // as tilelight --device: "" = lavapipe, an index or a name substring

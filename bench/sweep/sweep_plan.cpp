@@ -68,18 +68,22 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
                        });
   b.compare<bool>(Facet::stages, "stages", "Per-stage cost, naive vs classified" + at, {true},
                   [](RendererOptions&, const bool&) {});
-  // Every MSAA mode, size and camera: the rows are grouped by MSAA mode, then size.
+  // Every light-pass kind, MSAA mode, size and camera: rows grouped by pass kind, MSAA mode, then size.
   struct View {
     std::uint32_t msaa;
     FrameSize size;
     std::string camera;
     IndexPath path;
+    LightPass light_pass;
   };
   std::vector<View> views;
-  for (std::uint32_t msaa : options.msaa) {
-    for (const FrameSize& size : options.sizes) {
-      for (const std::string& camera : options.cameras) {
-        views.push_back({msaa, size, camera, options.gpu_path ? IndexPath::gpu : IndexPath::cpu});
+  for (const std::string& pass : options.light_passes) {
+    for (std::uint32_t msaa : options.msaa) {
+      for (const FrameSize& size : options.sizes) {
+        for (const std::string& camera : options.cameras) {
+          views.push_back({msaa, size, camera, options.gpu_path ? IndexPath::gpu : IndexPath::cpu,
+                           pass == "compute" ? LightPass::compute : LightPass::raster});
+        }
       }
     }
   }
@@ -90,6 +94,7 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
                     o.height = v.size.height;
                     o.camera = v.camera;
                     o.path = v.path;
+                    o.light_pass = v.light_pass;
                   });
   return b.take();
 }
@@ -104,7 +109,8 @@ std::string row_label(Facet facet, const Measurement& m) {
     case Facet::primitive: return fmt::format("{} ({})", to_string(m.primitive), o.primitive ? "asked for" : "auto");
     case Facet::resolution:
     case Facet::stages: return fmt::format("{}x{}", o.width, o.height);
-    case Facet::baselines: return fmt::format("{}x {}x{} {}", m.msaa_samples, o.width, o.height, o.camera);
+    case Facet::baselines:
+      return fmt::format("{} {}x {}x{} {}", to_string(o.light_pass), m.msaa_samples, o.width, o.height, o.camera);
   }
   return m.key;
 }

@@ -53,29 +53,30 @@ std::string min_median_max(const std::vector<double>& values) {
 // Classified vs dynamic vs naive per row, then per MSAA mode and size the spread over cameras.
 std::string baselines_table(const std::vector<const Measurement*>& rows) {
   std::string out =
-      "| MSAA | size | camera | sky tiles | naive light | dynamic light | classification | index build | "
+      "| light pass | MSAA | size | camera | sky tiles | naive light | dynamic light | classification | index build | "
       "tiled light | classified total | vs naive | vs dynamic | pixels differ (classified, dynamic) |\n"
-      "|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   // (MSAA, size) -> speed-ups over the cameras, in row order.
   std::vector<std::pair<std::string, std::pair<std::vector<double>, std::vector<double>>>> groups;
   for (const Measurement* m : rows) {
     const RendererOptions& o = m->options;
     const bool gpu = o.path == IndexPath::gpu;
     out += fmt::format(
-        "| {}x | {}x{} | {} | {:.0f} % | {} | {} | {} | {} ({}) | {} | {} | {:.2f}x | {:.2f}x | {}, {} |\n",
-        m->msaa_samples, o.width, o.height, o.camera, m->tiles > 0 ? 100.0 * m->sky_tiles / m->tiles : 0.0,
-        ms(m->timings.naive_light), ms(m->timings.dynamic_light), ms(m->timings.classification), ms(m->index_build()),
-        gpu ? "GPU" : "CPU", ms(m->timings.tiled_light), ms(m->classified_light()), m->speedup(),
-        m->speedup_over_dynamic(), m->equivalence.pixels_different, m->dynamic_equivalence.pixels_different);
-    const std::string group =
-        fmt::format("{}x MSAA, {}x{}, {} index build", m->msaa_samples, o.width, o.height, gpu ? "GPU" : "CPU");
+        "| {} | {}x | {}x{} | {} | {:.0f} % | {} | {} | {} | {} ({}) | {} | {} | {:.2f}x | {:.2f}x | {}, {} |\n",
+        to_string(o.light_pass), m->msaa_samples, o.width, o.height, o.camera,
+        m->tiles > 0 ? 100.0 * m->sky_tiles / m->tiles : 0.0, ms(m->timings.naive_light), ms(m->timings.dynamic_light),
+        ms(m->timings.classification), ms(m->index_build()), gpu ? "GPU" : "CPU", ms(m->timings.tiled_light),
+        ms(m->classified_light()), m->speedup(), m->speedup_over_dynamic(), m->equivalence.pixels_different,
+        m->dynamic_equivalence.pixels_different);
+    const std::string group = fmt::format("{}, {}x MSAA, {}x{}, {} index build", to_string(o.light_pass),
+                                          m->msaa_samples, o.width, o.height, gpu ? "GPU" : "CPU");
     if (groups.empty() || groups.back().first != group) groups.push_back({group, {}});
     groups.back().second.first.push_back(m->speedup());
     groups.back().second.second.push_back(m->speedup_over_dynamic());
   }
   out +=
       "\nSpeed-up of the classified light path over the cameras, min / median / max:\n\n"
-      "| MSAA, size | cameras | vs naive | vs dynamic |\n|---|---:|---|---|\n";
+      "| light pass, MSAA, size | cameras | vs naive | vs dynamic |\n|---|---:|---|---|\n";
   for (const auto& [group, speedups] : groups) {
     out += fmt::format("| {} | {} | {} | {} |\n", group, speedups.first.size(), min_median_max(speedups.first),
                        min_median_max(speedups.second));

@@ -32,14 +32,16 @@ struct Case {
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
-std::string case_name(const ::testing::TestParamInfo<Case>& info) { return info.param.name; }
+// Every case runs with both kinds of light pass: the tile pass and the baselines drawn (raster)
+// or dispatched (compute).
+using CaseAndPass = std::tuple<Case, LightPass>;
 
-class Equivalence : public VulkanTest, public ::testing::WithParamInterface<Case> {};
+std::string case_name(const ::testing::TestParamInfo<CaseAndPass>& info) {
+  return std::string(std::get<0>(info.param).name) +
+         (std::get<1>(info.param) == LightPass::compute ? "_compute" : "_raster");
+}
 
-TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
-  const Case& c = GetParam();
-  Scene scene = make_demo_scene();
-  scene.cameras.push_back(telephoto_camera());
+RendererOptions options_for(const Case& c, LightPass light_pass) {
   RendererOptions options;
   options.width = c.width;
   options.height = c.height;
@@ -50,8 +52,56 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
   options.tile_size = c.tile_size;
   options.primitive = c.primitive;
   options.msaa = c.msaa;
-  TileRenderer renderer(context(), scene, options);
+  options.light_pass = light_pass;
+  return options;
+}
+
+Scene test_scene() {
+  Scene scene = make_demo_scene();
+  scene.cameras.push_back(telephoto_camera());
+  return scene;
+}
+
+// The raster tile pass's figures: primitives (rectangles, coalesced or not) per class.
+void expect_raster_primitives(const Case& c, const TileRenderer& renderer, const FrameStats& stats) {
   ASSERT_EQ(renderer.tile_primitive(), c.primitive.value_or(TilePrimitive::points));
+  if (c.coalesce) {
+    EXPECT_LT(stats.primitives_coalesced, stats.primitives_uncoalesced);
+  } else {
+    EXPECT_EQ(stats.primitives_coalesced, stats.primitives_uncoalesced);
+  }
+  // Triangles draw each rectangle as one pair; points draw a non-square one tile by tile.
+  const std::uint32_t drawn_primitives =
+      std::accumulate(stats.class_primitives.begin(), stats.class_primitives.end(), 0u);
+  EXPECT_EQ(drawn_primitives, stats.primitives_coalesced);
+  if (renderer.tile_primitive() == TilePrimitive::triangles) {
+    EXPECT_EQ(stats.class_primitives, stats.class_rectangles);
+    EXPECT_EQ(stats.primitives_coalesced, stats.rectangles);
+  } else {
+    EXPECT_GE(stats.primitives_coalesced, stats.rectangles);
+  }
+}
+
+// The compute tile pass's figures: per class, ceil(tiles / tiles per workgroup) workgroups.
+void expect_compute_workgroups(const TileRenderer& renderer, const FrameStats& stats) {
+  const std::uint32_t tile_pixels = renderer.grid().tile_size * renderer.grid().tile_size;
+  const std::uint32_t per_group = std::max(1u, 64u / tile_pixels);
+  std::uint32_t groups = 0;
+  for (std::size_t c = 0; c < stats.class_tiles.size(); ++c) {
+    EXPECT_EQ(stats.class_primitives[c], (stats.class_tiles[c] + per_group - 1) / per_group) << "class " << c;
+    groups += stats.class_primitives[c];
+  }
+  EXPECT_EQ(stats.primitives_coalesced, groups);
+  EXPECT_EQ(stats.rectangles, 0u);
+}
+
+class Equivalence : public VulkanTest, public ::testing::WithParamInterface<CaseAndPass> {};
+
+TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
+  const auto& [c, light_pass] = GetParam();
+  const Scene scene = test_scene();
+  TileRenderer renderer(context(), scene, options_for(c, light_pass));
+  ASSERT_EQ(renderer.light_pass(), light_pass);
   ASSERT_EQ(renderer.msaa_samples(), c.msaa == 0 ? 4u : c.msaa);
   const FrameResult frame = renderer.render_frame();
 
@@ -76,62 +126,85 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
   const std::uint32_t drawn = std::accumulate(frame.stats.class_tiles.begin(), frame.stats.class_tiles.end(), 0u);
   EXPECT_EQ(drawn, renderer.grid().tile_count());
   EXPECT_EQ(frame.stats.primitives_uncoalesced, renderer.grid().tile_count());
-  if (c.coalesce) {
-    EXPECT_LT(frame.stats.primitives_coalesced, frame.stats.primitives_uncoalesced);
+  if (light_pass == LightPass::compute) {
+    expect_compute_workgroups(renderer, frame.stats);
   } else {
-    EXPECT_EQ(frame.stats.primitives_coalesced, frame.stats.primitives_uncoalesced);
-  }
-  // Triangles draw each rectangle as one pair; points draw a non-square one tile by tile.
-  const std::uint32_t drawn_primitives =
-      std::accumulate(frame.stats.class_primitives.begin(), frame.stats.class_primitives.end(), 0u);
-  EXPECT_EQ(drawn_primitives, frame.stats.primitives_coalesced);
-  if (renderer.tile_primitive() == TilePrimitive::triangles) {
-    EXPECT_EQ(frame.stats.class_primitives, frame.stats.class_rectangles);
-    EXPECT_EQ(frame.stats.primitives_coalesced, frame.stats.rectangles);
-  } else {
-    EXPECT_GE(frame.stats.primitives_coalesced, frame.stats.rectangles);
+    expect_raster_primitives(c, renderer, frame.stats);
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Frames, Equivalence,
-    ::testing::Values(
-        Case{"cpu_default", 320, 180, IndexPath::cpu, false, true, "default"},
-        Case{"gpu_default", 320, 180, IndexPath::gpu, false, true, "default"},
-        Case{"cpu_odd_size", 333, 197, IndexPath::cpu, false, true, "default"},
-        Case{"gpu_odd_size", 333, 197, IndexPath::gpu, false, true, "default"},
-        Case{"cpu_uncoalesced", 161, 93, IndexPath::cpu, false, false, "default"},
-        Case{"gpu_uncoalesced", 161, 93, IndexPath::gpu, false, false, "default"},
-        Case{"cpu_raw", 256, 144, IndexPath::cpu, true, true, "default"},
-        Case{"gpu_raw", 256, 144, IndexPath::gpu, true, true, "default"},
-        Case{"cpu_sky", 200, 120, IndexPath::cpu, false, true, "sky"},
-        Case{"gpu_sky", 200, 120, IndexPath::gpu, false, true, "sky"},
-        Case{"cpu_shadow", 200, 120, IndexPath::cpu, false, true, "shadow"},
-        Case{"gpu_shadow", 200, 120, IndexPath::gpu, false, true, "shadow"},
-        Case{"cpu_low", 257, 131, IndexPath::cpu, false, true, "low"},
-        // Larger tiles: one depth-plane prism spans 8x8 / 16x16 pixels.
-        Case{"cpu_tile8", 320, 180, IndexPath::cpu, false, true, "default", 8},
-        Case{"gpu_tile16_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 16},
-        // Partial tiles 6 px wide and tall: their points' centres (8 px in) lie
-        // outside the frame, inside the tile pass's whole-tile viewport. (lavapipe
-        // draws such points even without that viewport, so this cannot show the
-        // culling the Vulkan spec allows; it does check their coverage.)
-        Case{"cpu_tile16_narrow_partials", 326, 198, IndexPath::cpu, false, true, "default", 16},
-        // Thin prisms at 55-85 m, where the rounding margins decide most.
-        Case{"cpu_telephoto", 320, 180, IndexPath::cpu, false, true, "telephoto"},
-        // The chapter's two triangles per rectangle, where auto would choose points.
-        Case{"cpu_triangles", 320, 180, IndexPath::cpu, false, true, "default", 4, TilePrimitive::triangles},
-        Case{"gpu_triangles_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4, TilePrimitive::triangles},
-        // The views with little or no sky.
-        Case{"cpu_street", 240, 136, IndexPath::cpu, false, true, "street"},
-        Case{"gpu_closeup", 240, 136, IndexPath::gpu, false, true, "closeup"},
-        // No MSAA: the single-sampled G-buffer and the split_second_1x shaders.
-        Case{"cpu_1x", 320, 180, IndexPath::cpu, false, true, "default", 4, std::nullopt, 1},
-        Case{"gpu_1x_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4, std::nullopt, 1},
-        Case{"cpu_1x_raw", 256, 144, IndexPath::cpu, true, true, "default", 4, std::nullopt, 1},
-        Case{"gpu_1x_low", 257, 131, IndexPath::gpu, false, true, "low", 4, std::nullopt, 1},
-        Case{"cpu_1x_triangles", 200, 120, IndexPath::cpu, false, true, "closeup", 4, TilePrimitive::triangles, 1}),
-    case_name);
+const Case kCases[] = {
+    Case{"cpu_default", 320, 180, IndexPath::cpu, false, true, "default"},
+    Case{"gpu_default", 320, 180, IndexPath::gpu, false, true, "default"},
+    Case{"cpu_odd_size", 333, 197, IndexPath::cpu, false, true, "default"},
+    Case{"gpu_odd_size", 333, 197, IndexPath::gpu, false, true, "default"},
+    Case{"cpu_uncoalesced", 161, 93, IndexPath::cpu, false, false, "default"},
+    Case{"gpu_uncoalesced", 161, 93, IndexPath::gpu, false, false, "default"},
+    Case{"cpu_raw", 256, 144, IndexPath::cpu, true, true, "default"},
+    Case{"gpu_raw", 256, 144, IndexPath::gpu, true, true, "default"},
+    Case{"cpu_sky", 200, 120, IndexPath::cpu, false, true, "sky"},
+    Case{"gpu_sky", 200, 120, IndexPath::gpu, false, true, "sky"},
+    Case{"cpu_shadow", 200, 120, IndexPath::cpu, false, true, "shadow"},
+    Case{"gpu_shadow", 200, 120, IndexPath::gpu, false, true, "shadow"},
+    Case{"cpu_low", 257, 131, IndexPath::cpu, false, true, "low"},
+    // Larger tiles: one depth-plane prism spans 8x8 / 16x16 pixels.
+    Case{"cpu_tile8", 320, 180, IndexPath::cpu, false, true, "default", 8},
+    Case{"gpu_tile16_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 16},
+    // Partial tiles 6 px wide and tall: their points' centres (8 px in) lie
+    // outside the frame, inside the tile pass's whole-tile viewport. (lavapipe
+    // draws such points even without that viewport, so this cannot show the
+    // culling the Vulkan spec allows; it does check their coverage.)
+    Case{"cpu_tile16_narrow_partials", 326, 198, IndexPath::cpu, false, true, "default", 16},
+    // Thin prisms at 55-85 m, where the rounding margins decide most.
+    Case{"cpu_telephoto", 320, 180, IndexPath::cpu, false, true, "telephoto"},
+    // The chapter's two triangles per rectangle, where auto would choose points.
+    Case{"cpu_triangles", 320, 180, IndexPath::cpu, false, true, "default", 4, TilePrimitive::triangles},
+    Case{"gpu_triangles_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4, TilePrimitive::triangles},
+    // The views with little or no sky.
+    Case{"cpu_street", 240, 136, IndexPath::cpu, false, true, "street"},
+    Case{"gpu_closeup", 240, 136, IndexPath::gpu, false, true, "closeup"},
+    // No MSAA: the single-sampled G-buffer and the split_second_1x shaders.
+    Case{"cpu_1x", 320, 180, IndexPath::cpu, false, true, "default", 4, std::nullopt, 1},
+    Case{"gpu_1x_odd_size", 333, 197, IndexPath::gpu, false, true, "default", 4, std::nullopt, 1},
+    Case{"cpu_1x_raw", 256, 144, IndexPath::cpu, true, true, "default", 4, std::nullopt, 1},
+    Case{"gpu_1x_low", 257, 131, IndexPath::gpu, false, true, "low", 4, std::nullopt, 1},
+    Case{"cpu_1x_triangles", 200, 120, IndexPath::cpu, false, true, "closeup", 4, TilePrimitive::triangles, 1}};
+
+INSTANTIATE_TEST_SUITE_P(Frames, Equivalence,
+                         ::testing::Combine(::testing::ValuesIn(kCases),
+                                            ::testing::Values(LightPass::raster, LightPass::compute)),
+                         case_name);
+
+// The two kinds of light pass run the same shading code (uber/include/light_pass.glsl) in the
+// same order on the same G-buffer: on lavapipe their frames are equal bit for bit, the
+// classified, naive and dynamic ones alike.
+class ComputeMatchesRaster : public VulkanTest, public ::testing::WithParamInterface<Case> {};
+
+TEST_P(ComputeMatchesRaster, EveryFrameBitForBit) {
+  const Case& c = GetParam();
+  const Scene scene = test_scene();
+  TileRenderer raster(context(), scene, options_for(c, LightPass::raster));
+  raster.render_frame();
+  TileRenderer compute(context(), scene, options_for(c, LightPass::compute));
+  compute.render_frame();
+  const std::pair<const char*, RgbaImage (TileRenderer::*)() const> frames[] = {
+      {"classified", &TileRenderer::read_classified},
+      {"naive", &TileRenderer::read_naive},
+      {"dynamic", &TileRenderer::read_dynamic}};
+  for (const auto& [name, read] : frames) {
+    const FrameComparison cmp = compare((compute.*read)(), (raster.*read)(), 0.0);
+    EXPECT_EQ(cmp.magenta_pixels, 0u) << name;
+    EXPECT_EQ(cmp.pixels_over_tolerance, 0u)
+        << name << ": " << cmp.first_difference << " (max difference " << cmp.max_abs_difference << ")";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Frames, ComputeMatchesRaster,
+                         ::testing::Values(Case{"msaa4", 320, 180, IndexPath::gpu, false, true, "default"},
+                                           Case{"msaa1", 200, 120, IndexPath::cpu, false, true, "street", 4,
+                                                std::nullopt, 1},
+                                           Case{"raw_tile16", 333, 197, IndexPath::cpu, true, true, "low", 16}),
+                         [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace tilelight::test

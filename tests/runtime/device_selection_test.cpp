@@ -18,7 +18,9 @@ DeviceInfo device(std::uint32_t index, std::string name, VkPhysicalDeviceType ty
   return info;
 }
 
-const std::vector<DeviceInfo> kDevices = {
+using device_list = std::vector<DeviceInfo>;
+
+const device_list kDevices = {
     device(0, "NVIDIA H100 PCIe", VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU),
     device(1, "Some CPU rasteriser", VK_PHYSICAL_DEVICE_TYPE_CPU),
     device(2, "llvmpipe (LLVM 15.0.6, 256 bits)", VK_PHYSICAL_DEVICE_TYPE_CPU),
@@ -40,6 +42,18 @@ TEST(DeviceSelection, DefaultPrefersLlvmpipeThenCpuThenFirstUsable) {
   EXPECT_EQ(select_device(no_llvmpipe, "").index, 1u);
   const std::vector<DeviceInfo> gpus_only = {kDevices[3], kDevices[0]};
   EXPECT_EQ(select_device(gpus_only, "").index, 0u);  // index 3 is unusable
+}
+
+TEST(DeviceSelection, AutoPrefersDiscreteThenIntegratedThenTheDefault) {
+  EXPECT_EQ(select_device(kDevices, "auto").index, 0u);
+  const device_list integrated_and_cpu = {device(0, "Some iGPU", VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU), kDevices[2]};
+  EXPECT_EQ(select_device(integrated_and_cpu, "auto").index, 0u);
+  const device_list cpus_only = {kDevices[1], kDevices[2]};
+  EXPECT_EQ(select_device(cpus_only, "auto").index, 2u);  // lavapipe, as the default
+  const device_list unusable_gpu = {kDevices[3], kDevices[2]};
+  EXPECT_EQ(select_device(unusable_gpu, "auto").index, 2u);
+  EXPECT_TRUE(DeviceRequest::parse("auto").automatic);
+  EXPECT_FALSE(DeviceRequest::parse("auto").is_default());
 }
 
 TEST(DeviceSelection, ByIndexOrCaseInsensitiveNameSubstring) {

@@ -35,7 +35,8 @@ struct Arguments {
   std::string camera = "default";
   std::string primitive = "auto";
   std::string baseline = "both";
-  std::string device;
+  std::string light_pass = "raster";
+  std::string device = "auto";
   std::string out = "tilelight-out";
   bool validation = false;
   bool no_coalesce = false;
@@ -95,7 +96,9 @@ void add_options(CLI::App& cli, Arguments& a) {
   cli.add_option("--frames", a.frames, "timed frames (after one warm-up frame); timings are medians over them")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cli.add_option("--tile-size", a.tile_size, "tile size in pixels: 4, 8 or 16")->capture_default_str();
+  cli.add_option("--tile-size", a.tile_size, "tile size in pixels: 4, 8 or 16")
+      ->check(CLI::IsMember({4u, 8u, 16u}))
+      ->capture_default_str();
   cli.add_flag("--no-coalesce", a.no_coalesce, "one rectangle per tile (no tile coalescing)");
   cli.add_option("--primitive", a.primitive,
                  "tile pass primitive: points (a point sprite per square of tiles), triangles (two per "
@@ -107,7 +110,15 @@ void add_options(CLI::App& cli, Arguments& a) {
                  "dynamic (one pass branching per pixel), both")
       ->check(CLI::IsMember({"naive", "dynamic", "both"}))
       ->capture_default_str();
-  cli.add_option("--device", a.device, "Vulkan device: index or name substring (default: the CPU device, lavapipe)");
+  cli.add_option("--light-pass", a.light_pass,
+                 "how the light passes run: raster (the tile pass draws each class's tiles) or compute (one "
+                 "indirect dispatch per class over its tile list); the baselines run as the same kind")
+      ->check(CLI::IsMember({"raster", "compute"}))
+      ->capture_default_str();
+  cli.add_option("--device", a.device,
+                 "Vulkan device: auto (a discrete GPU, else an integrated one, else lavapipe), an index or a "
+                 "name substring (llvmpipe: lavapipe, the CPU driver)")
+      ->capture_default_str();
   cli.add_flag("--validation", a.validation, "enable the Khronos validation layer; any message fails the run");
   cli.add_option("--out", a.out, "output folder")->capture_default_str();
   cli.add_option("--timeout", a.timeout_s, "seconds to wait for the GPU at any one point")->capture_default_str();
@@ -129,6 +140,7 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
   options.msaa = parse_msaa(a.msaa);
   options.tile_size = a.tile_size;
   options.path = a.path == "gpu" ? IndexPath::gpu : IndexPath::cpu;
+  options.light_pass = a.light_pass == "compute" ? LightPass::compute : LightPass::raster;
   options.raw_permutations = a.permutations == "raw";
   options.coalesce = !a.no_coalesce;
   if (a.primitive != "auto") options.primitive = parse_tile_primitive(a.primitive);
@@ -205,8 +217,10 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
                 a.camera,
                 options.coalesce,
                 threads != nullptr ? threads : "",
-                std::string(to_string(renderer.tile_primitive())),
-                a.baseline};
+                options.light_pass == LightPass::compute ? std::string("workgroups")
+                                                         : std::string(to_string(renderer.tile_primitive())),
+                a.baseline,
+                a.light_pass};
   count_tiles(report, raw_ids);
   report.primitives_uncoalesced = last.stats.primitives_uncoalesced;
   report.primitives_coalesced = last.stats.primitives_coalesced;

@@ -108,6 +108,7 @@ std::string report_json(const FrameReport& r) {
   j["coalesce"] = r.run.coalesce;
   j["primitive"] = r.run.primitive;
   j["baselines"] = r.run.baselines;
+  j["light_pass"] = r.run.light_pass;
   j["frames"] = r.run.frames;
   j["lavapipe_threads"] =
       r.run.lavapipe_threads.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.run.lavapipe_threads);
@@ -147,9 +148,9 @@ std::string timing_table(const FrameReport& r) {
   const double classified_light = t.classification + t.index_build_cpu + t.index_build_gpu + t.tiled_light;
   auto cell = [](bool ran, double ms) { return ran ? fmt::format("{:.3f}", ms) : std::string("-"); };
   std::string out;
-  out += fmt::format("{}x{}, {}x MSAA, {}, path {}, {} permutations, camera {}, median of {} frame(s)\n", r.run.width,
-                     r.run.height, r.run.msaa_samples, r.run.device, r.run.path, r.run.permutations, r.run.camera,
-                     r.run.frames);
+  out += fmt::format("{}x{}, {}x MSAA, {}, {} light pass, path {}, {} permutations, camera {}, median of {} frame(s)\n",
+                     r.run.width, r.run.height, r.run.msaa_samples, r.run.device, r.run.light_pass, r.run.path,
+                     r.run.permutations, r.run.camera, r.run.frames);
   out += fmt::format("{:<28}{:>12}{:>12}{:>14}\n", "stage (ms)", "naive", "dynamic", "classified");
   auto row = [&](const char* name, bool in_baselines, double naive_ms, double dynamic_ms, double classified_ms) {
     out += fmt::format("{:<28}{:>12}{:>12}{:>14.3f}\n", name, cell(naive && in_baselines, naive_ms),
@@ -171,10 +172,14 @@ std::string timing_table(const FrameReport& r) {
   };
   if (naive) speedup("naive", t.naive_light);
   if (dynamic) speedup("dynamic", t.dynamic_light);
-  out += fmt::format("tiles {}, {} {} -> {} coalesced ({} rectangles); classified vs {}: {} pixels differ (max {:.3g})",
-                     r.tiles, r.run.primitive, r.primitives_uncoalesced, r.primitives_coalesced, r.rectangles,
-                     r.equivalence.reference, r.equivalence.classified.pixels_different,
-                     r.equivalence.classified.max_abs_difference);
+  if (r.run.light_pass == "compute") {
+    out += fmt::format("tiles {}, dispatched in {} workgroups", r.tiles, r.primitives_coalesced);
+  } else {
+    out += fmt::format("tiles {}, {} {} -> {} coalesced ({} rectangles)", r.tiles, r.run.primitive,
+                       r.primitives_uncoalesced, r.primitives_coalesced, r.rectangles);
+  }
+  out += fmt::format("; classified vs {}: {} pixels differ (max {:.3g})", r.equivalence.reference,
+                     r.equivalence.classified.pixels_different, r.equivalence.classified.max_abs_difference);
   if (r.equivalence.dynamic) {
     out += fmt::format("; dynamic vs naive: {} differ (max {:.3g})", r.equivalence.dynamic->pixels_different,
                        r.equivalence.dynamic->max_abs_difference);

@@ -7,11 +7,24 @@
 
 namespace tilelight {
 
+namespace {
+
+// Descriptors of each type per set, at most, over every set a renderer allocates: set 0 of the
+// lighting interface has 1 uniform buffer and 5 images; the GPU index and tile-list builds have
+// 5 storage buffers; the compute light pass's sets have 1 storage image and 1 storage buffer.
+constexpr std::uint32_t kUniformBuffersPerSet = 4;
+constexpr std::uint32_t kSampledImagesPerSet = 8;
+constexpr std::uint32_t kStorageBuffersPerSet = 8;
+constexpr std::uint32_t kStorageImagesPerSet = 2;
+
+}  // namespace
+
 UniqueDescriptorPool create_descriptor_pool(const Context& context, std::uint32_t max_sets, std::string_view name) {
-  const std::array<VkDescriptorPoolSize, 3> sizes{{
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 4 * max_sets},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 8 * max_sets},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 8 * max_sets},
+  const std::array<VkDescriptorPoolSize, 4> sizes{{
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kUniformBuffersPerSet * max_sets},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kSampledImagesPerSet * max_sets},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStorageBuffersPerSet * max_sets},
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kStorageImagesPerSet * max_sets},
   }};
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   info.maxSets = max_sets;
@@ -48,16 +61,30 @@ void write_buffer_descriptor(const Context& context, VkDescriptorSet set, std::u
   vkUpdateDescriptorSets(context.device(), 1, &write, 0, nullptr);
 }
 
-void write_image_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkSampler sampler,
-                            VkImageView view, VkImageLayout layout) {
-  const VkDescriptorImageInfo info{sampler, view, layout};
+namespace {
+
+void write_image_info(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type,
+                      const VkDescriptorImageInfo& info) {
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = set;
   write.dstBinding = binding;
   write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.descriptorType = type;
   write.pImageInfo = &info;
   vkUpdateDescriptorSets(context.device(), 1, &write, 0, nullptr);
+}
+
+}  // namespace
+
+void write_image_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkSampler sampler,
+                            VkImageView view, VkImageLayout layout) {
+  write_image_info(context, set, binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {sampler, view, layout});
+}
+
+void write_storage_image_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding,
+                                    VkImageView view) {
+  write_image_info(context, set, binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                   {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
 }
 
 }  // namespace tilelight

@@ -1,5 +1,5 @@
 #pragma once
-// Descriptor pool and set allocation, and the two kinds of writes the runtime makes.
+// Descriptor pool and set allocation, and the kinds of writes the runtime makes.
 
 #include "tilelight/vulkan/vk_handles.h"
 
@@ -23,5 +23,9 @@ void write_buffer_descriptor(const Context& context, VkDescriptorSet set, std::u
 
 void write_image_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkSampler sampler,
                             VkImageView view, VkImageLayout layout);
+
+// A storage image, accessed in VK_IMAGE_LAYOUT_GENERAL.
+void write_storage_image_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding,
+                                    VkImageView view);
 
 }  // namespace tilelight

@@ -8,6 +8,26 @@
 #include <array>
 
 namespace tilelight {
+namespace {
+
+// layout_bindings_for_set() casts the registry's kinds to VkDescriptorType: they must be the
+// same numbers.
+using shadergen::DescriptorKind;
+constexpr bool same_kind(DescriptorKind kind, VkDescriptorType type) {
+  return static_cast<std::uint32_t>(kind) == static_cast<std::uint32_t>(type);
+}
+static_assert(same_kind(DescriptorKind::sampler, VK_DESCRIPTOR_TYPE_SAMPLER));
+static_assert(same_kind(DescriptorKind::combined_image_sampler, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER));
+static_assert(same_kind(DescriptorKind::sampled_image, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE));
+static_assert(same_kind(DescriptorKind::storage_image, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE));
+static_assert(same_kind(DescriptorKind::uniform_texel_buffer, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER));
+static_assert(same_kind(DescriptorKind::storage_texel_buffer, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER));
+static_assert(same_kind(DescriptorKind::uniform_buffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER));
+static_assert(same_kind(DescriptorKind::storage_buffer, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER));
+static_assert(same_kind(DescriptorKind::input_attachment, VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT));
+static_assert(same_kind(DescriptorKind::acceleration_structure, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR));
+
+}  // namespace
 
 UniqueShaderModule create_shader_module(const Context& context, std::span<const std::uint32_t> spirv,
                                         std::string_view name) {
@@ -93,7 +113,7 @@ UniquePipeline create_compute_pipeline(const Context& context, VkPipelineLayout 
   info.stage.pSpecializationInfo = spec.info();
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  check(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+  check(vkCreateComputePipelines(context.device(), context.pipeline_cache(), 1, &info, nullptr, &pipeline),
         "vkCreateComputePipelines", name);
   UniquePipeline owned(pipeline, {context.device()});
   context.name_object(pipeline, name);
@@ -183,7 +203,7 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
   info.layout = desc.layout;
   info.renderPass = desc.render_pass;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  check(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+  check(vkCreateGraphicsPipelines(context.device(), context.pipeline_cache(), 1, &info, nullptr, &pipeline),
         "vkCreateGraphicsPipelines", desc.name);
   UniquePipeline owned(pipeline, {context.device()});
   context.name_object(pipeline, desc.name);

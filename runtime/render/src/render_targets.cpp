@@ -94,7 +94,7 @@ Image gbuffer_image(const Context& context, VkExtent2D extent, VkFormat format, 
 }  // namespace
 
 RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSampleCountFlagBits samples,
-                             std::uint32_t shadow_map_size)
+                             std::uint32_t shadow_map_size, bool storage_light_targets)
     : extent_(extent), samples_(samples), shadow_map_size_(shadow_map_size) {
   rt0_ = gbuffer_image(context, extent, kGBufferRt0Format, samples, "G-buffer RT0 (albedo, specular)");
   rt1_ = gbuffer_image(context, extent, kGBufferRt1Format, samples, "G-buffer RT1 (normal, motion ID)");
@@ -109,7 +109,8 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
                                 VK_SAMPLE_COUNT_1_BIT,
                                 VK_IMAGE_ASPECT_DEPTH_BIT,
                                 "sun shadow map"});
-  const VkImageUsageFlags light_usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  VkImageUsageFlags light_usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  if (storage_light_targets) light_usage |= VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   auto light_target = [&](const char* name) {
     return Image(context, {extent, kLightFormat, light_usage, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT, name});
   };

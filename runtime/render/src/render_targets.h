@@ -26,8 +26,11 @@ class RenderTargets {
  public:
   // Preconditions: the caller checked extent against the device limits and `samples` against
   // the device's G-buffer sample counts.
-  RenderTargets(const Context& context, VkExtent2D extent, VkSampleCountFlagBits samples,
-                std::uint32_t shadow_map_size);
+  // `storage_light_targets`: the light targets are also written by compute (the compute light
+  // pass: storage image, cleared by transfer); the device must support storage images of
+  // kLightFormat (Image says so when it does not).
+  RenderTargets(const Context& context, VkExtent2D extent, VkSampleCountFlagBits samples, std::uint32_t shadow_map_size,
+                bool storage_light_targets = false);
 
   VkExtent2D extent() const { return extent_; }
   VkSampleCountFlagBits samples() const { return samples_; }

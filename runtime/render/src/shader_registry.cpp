@@ -3,6 +3,8 @@
 #include "tilelight/vulkan/error.h"
 
 #include <split_second_1x_shaders.h>
+#include <split_second_compute_1x_shaders.h>
+#include <split_second_compute_shaders.h>
 #include <split_second_shaders.h>
 
 #include <string>
@@ -14,9 +16,19 @@ namespace tilelight {
 static_assert(split_second::kRawCount == split_second_1x::kRawCount);
 static_assert(split_second::kOptimisedCount == split_second_1x::kOptimisedCount);
 static_assert(split_second::kRawToOptimised == split_second_1x::kRawToOptimised);
+// The compute form's spec repeats the domain: it must collapse exactly as the fragment form does.
+static_assert(split_second::kRawCount == split_second_compute::kRawCount);
+static_assert(split_second::kOptimisedCount == split_second_compute::kOptimisedCount);
+static_assert(split_second::kRawToOptimised == split_second_compute::kRawToOptimised);
+static_assert(split_second::kRawToOptimised == split_second_compute_1x::kRawToOptimised);
 
 const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples) {
   return gbuffer_samples == VK_SAMPLE_COUNT_1_BIT ? split_second_1x::registry() : split_second::registry();
+}
+
+const shadergen::Registry& compute_shaders_for(VkSampleCountFlagBits gbuffer_samples) {
+  return gbuffer_samples == VK_SAMPLE_COUNT_1_BIT ? split_second_compute_1x::registry()
+                                                  : split_second_compute::registry();
 }
 
 std::span<const std::uint32_t> companion_spirv(const shadergen::Registry& registry, std::string_view name) {

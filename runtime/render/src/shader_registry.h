@@ -21,6 +21,11 @@ namespace tilelight {
 // The registry whose shaders read a G-buffer of `gbuffer_samples` samples per pixel.
 const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples);
 
+// The compute form of the light pass (permutations/split_second_compute.json: the same domain,
+// uber/lighting.comp), for a G-buffer of `gbuffer_samples` samples per pixel. Its LUT and IDs are
+// those of shaders_for() (static_asserted).
+const shadergen::Registry& compute_shaders_for(VkSampleCountFlagBits gbuffer_samples);
+
 // The SPIR-V of companion `name` in `registry`; throws tilelight::Error if it has none by that name.
 std::span<const std::uint32_t> companion_spirv(const shadergen::Registry& registry, std::string_view name);
 

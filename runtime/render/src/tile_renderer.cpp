@@ -1,14 +1,17 @@
 #include "tilelight/render/tile_renderer.h"
 
+#include "compute_lighting_passes.h"
 #include "descriptors.h"
 #include "gbuffer_upload.h"
 #include "gpu_index_build.h"
+#include "gpu_tile_lists.h"
 #include "lighting_interface.h"
 #include "lighting_passes.h"
 #include "render_targets.h"
 #include "scene_passes.h"
 #include "tile_classification.h"
 #include "tilelight/tiles/tile_index_builder.h"
+#include "tilelight/tiles/tile_list_builder.h"
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/commands.h"
 #include "tilelight/vulkan/error.h"
@@ -35,6 +38,11 @@ static_assert(offsetof(DrawRecord, instanceCount) == offsetof(VkDrawIndexedIndir
 static_assert(offsetof(DrawRecord, firstIndex) == offsetof(VkDrawIndexedIndirectCommand, firstIndex));
 static_assert(offsetof(DrawRecord, vertexOffset) == offsetof(VkDrawIndexedIndirectCommand, vertexOffset));
 static_assert(offsetof(DrawRecord, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance));
+// ... and the tile-list builder the mapped dispatch buffer through DispatchRecord.
+static_assert(sizeof(DispatchRecord) == sizeof(VkDispatchIndirectCommand));
+static_assert(offsetof(DispatchRecord, x) == offsetof(VkDispatchIndirectCommand, x));
+static_assert(offsetof(DispatchRecord, y) == offsetof(VkDispatchIndirectCommand, y));
+static_assert(offsetof(DispatchRecord, z) == offsetof(VkDispatchIndirectCommand, z));
 
 namespace {
 
@@ -112,9 +120,11 @@ struct TileRenderer::Impl {
   std::unique_ptr<ScenePasses> scene_passes;
   std::unique_ptr<LightingInterface> lighting;
   std::unique_ptr<TileClassification> classification;
-  std::unique_ptr<LightingPasses> light_passes;
-  std::unique_ptr<GpuIndexBuild> gpu_build;
-  std::unique_ptr<GBufferUpload> gbuffer_upload;  // replaces the scene's G-buffer when set
+  std::unique_ptr<LightingPasses> light_passes;           // LightPass::raster
+  std::unique_ptr<ComputeLightingPasses> compute_passes;  // LightPass::compute
+  std::unique_ptr<GpuIndexBuild> gpu_build;               // raster, --path gpu
+  std::unique_ptr<GpuTileLists> gpu_lists;                // compute, --path gpu
+  std::unique_ptr<GBufferUpload> gbuffer_upload;          // replaces the scene's G-buffer when set
 
   // The CPU path's draw list: one preallocated index buffer and one indirect record per class,
   // host-visible and coherent, written after the tile pass was submitted.
@@ -122,6 +132,9 @@ struct TileRenderer::Impl {
   std::array<bool, split_second::kRawCount> pruned{};
   std::unique_ptr<TileIndexBuilder> cpu_builder;
   Buffer cpu_indices, cpu_draws;
+  // The same for the compute light pass: the tile lists and one dispatch record per class.
+  std::unique_ptr<TileListBuilder> cpu_list_builder;
+  Buffer cpu_lists, cpu_dispatches;
 
   UniqueCommandBuffer frame_commands;  // submit A, re-recorded each frame
   UniqueCommandBuffer tile_commands;   // submit B, recorded once
@@ -140,18 +153,37 @@ struct TileRenderer::Impl {
         pool(ctx, "tilelight frame") {
     const Camera& camera = scene.camera(opts.camera);
     descriptor_pool = create_descriptor_pool(ctx, 16, "tilelight descriptors");
-    targets =
-        std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples, scene.sun.shadow_map_size);
+    targets = std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples,
+                                              scene.sun.shadow_map_size, opts.light_pass == LightPass::compute);
     scene_passes = std::make_unique<ScenePasses>(ctx, scene, camera, *targets, descriptor_pool.get());
     lighting = std::make_unique<LightingInterface>(ctx, make_lighting_params(scene, camera, opts.width, opts.height),
                                                    *targets, descriptor_pool.get());
     classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());
-    light_passes = std::make_unique<LightingPasses>(
-        ctx, grid, *targets, *lighting, opts.raw_permutations ? PermutationSet::raw : PermutationSet::optimised,
-        primitive);
-
     class_for_raw = draw_classes(lighting->shaders(), opts.raw_permutations);
     pruned = pruned_raw_ids(lighting->shaders());
+    if (opts.light_pass == LightPass::compute) {
+      create_compute_pass();
+    } else {
+      create_raster_pass();
+    }
+
+    frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
+    tile_queries = TimestampQueries(ctx, "tile pass timestamps", 4);
+    timeline = TimelineSemaphore(ctx, "classification/patch timeline", 0);
+    frame_done = Fence(ctx, "frame done");
+    frame_commands = pool.allocate("frame (submit A)");
+    tile_commands = pool.allocate("tile pass (submit B, pre-recorded)");
+    record_tile_pass();
+  }
+
+  PermutationSet permutation_set() const {
+    return options.raw_permutations ? PermutationSet::raw : PermutationSet::optimised;
+  }
+
+  void create_raster_pass() {
+    const Context& ctx = context;
+    const RendererOptions& opts = options;
+    light_passes = std::make_unique<LightingPasses>(ctx, grid, *targets, *lighting, permutation_set(), primitive);
     const std::uint32_t classes = light_passes->class_count();
     if (opts.path == IndexPath::cpu) {
       cpu_builder = std::make_unique<TileIndexBuilder>(grid, class_for_raw, pruned, classes, primitive);
@@ -165,14 +197,35 @@ struct TileRenderer::Impl {
           std::make_unique<GpuIndexBuild>(ctx, lighting->shaders(), grid, class_for_raw, pruned, classes, opts.coalesce,
                                           primitive, classification->device_ids(), descriptor_pool.get());
     }
+  }
 
-    frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
-    tile_queries = TimestampQueries(ctx, "tile pass timestamps", 4);
-    timeline = TimelineSemaphore(ctx, "classification/patch timeline", 0);
-    frame_done = Fence(ctx, "frame done");
-    frame_commands = pool.allocate("frame (submit A)");
-    tile_commands = pool.allocate("tile pass (submit B, pre-recorded)");
-    record_tile_pass();
+  // The compute light pass reads per-class tile lists: written by the host (CPU path, into
+  // host-visible coherent memory, after the tile pass was submitted) or by the GPU build.
+  void create_compute_pass() {
+    const Context& ctx = context;
+    const std::uint32_t classes = options.raw_permutations ? kRawClassCount : kOptimisedClassCount;
+    const std::uint32_t per_group = ComputeLightingPasses::tiles_per_workgroup(grid.tile_size);
+    const Buffer* lists = nullptr;
+    if (options.path == IndexPath::cpu) {
+      cpu_list_builder = std::make_unique<TileListBuilder>(grid, class_for_raw, pruned, classes, per_group);
+      cpu_lists = Buffer(ctx, {(kTileListHeaderWords + std::size_t{grid.tile_count()}) * sizeof(std::uint32_t),
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, "tile lists (host-built)"});
+      cpu_dispatches = Buffer(ctx, {classes * sizeof(VkDispatchIndirectCommand), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                                    MemoryUse::HostUpload, "indirect dispatches (host-patched)"});
+      clear_draws();
+      lists = &cpu_lists;
+    } else {
+      gpu_lists =
+          std::make_unique<GpuTileLists>(ctx, compute_shaders_for(samples), grid, class_for_raw, pruned, classes,
+                                         per_group, classification->device_ids(), descriptor_pool.get());
+      lists = &gpu_lists->lists();
+    }
+    compute_passes = std::make_unique<ComputeLightingPasses>(ctx, grid, *targets, *lighting, permutation_set(),
+                                                             descriptor_pool.get(), *lists);
+  }
+
+  std::uint32_t class_count() const {
+    return compute_passes ? compute_passes->class_count() : light_passes->class_count();
   }
 
   bool runs_naive() const { return options.baselines != Baselines::dynamic; }
@@ -180,21 +233,27 @@ struct TileRenderer::Impl {
 
   const Buffer& tile_indices() const { return gpu_build ? gpu_build->indices() : cpu_indices; }
   const Buffer& tile_draws() const { return gpu_build ? gpu_build->draws() : cpu_draws; }
+  const Buffer& tile_dispatches() const { return gpu_lists ? gpu_lists->dispatches() : cpu_dispatches; }
 
   // Recorded once, before any classification: the draws it holds are patched every frame.
   void record_tile_pass() {
     VkCommandBuffer cmd = tile_commands.get();
     begin_commands(cmd, "tile pass", 0);
     tile_queries.reset(cmd);
+    if (compute_passes) compute_passes->record_prepare(cmd, *targets);
     tile_queries.write(cmd, "start");
-    light_passes->record_tiled(cmd, *targets, tile_indices(), tile_draws());
+    if (compute_passes) {
+      compute_passes->record_tiled(cmd, *targets, tile_dispatches());
+    } else {
+      light_passes->record_tiled(cmd, *targets, tile_indices(), tile_draws());
+    }
     tile_queries.write(cmd, "tiled");
     if (runs_naive()) {
-      light_passes->record_naive(cmd, *targets);
+      compute_passes ? compute_passes->record_naive(cmd, *targets) : light_passes->record_naive(cmd, *targets);
       tile_queries.write(cmd, "naive");
     }
     if (runs_dynamic()) {
-      light_passes->record_dynamic(cmd, *targets);
+      compute_passes ? compute_passes->record_dynamic(cmd, *targets) : light_passes->record_dynamic(cmd, *targets);
       tile_queries.write(cmd, "dynamic");
     }
     end_commands(cmd, "tile pass");
@@ -220,18 +279,35 @@ struct TileRenderer::Impl {
       gpu_build->record(cmd);
       frame_queries.write(cmd, "built");
     }
+    if (gpu_lists) {
+      gpu_lists->record(cmd);
+      frame_queries.write(cmd, "built");
+    }
     end_commands(cmd, "frame");
   }
 
+  // Every CPU-path draw or dispatch does nothing: the state before a build, and after a failed one.
   void clear_draws() {
-    std::span<DrawRecord> draws = cpu_draws.as<DrawRecord>();
-    for (DrawRecord& d : draws) d = {0, 1, 0, 0, 0};
+    if (cpu_draws.handle() != VK_NULL_HANDLE) {
+      for (DrawRecord& d : cpu_draws.as<DrawRecord>()) d = {0, 1, 0, 0, 0};
+    }
+    if (cpu_dispatches.handle() != VK_NULL_HANDLE) {
+      for (DispatchRecord& d : cpu_dispatches.as<DispatchRecord>()) d = {0, 1, 1};
+    }
   }
 
   // The host's part of the CPU path: wait for classification, build, patch, signal.
   FrameStats build_and_patch(std::uint64_t classified_value, std::uint64_t patched_value, double& build_ms) {
     timeline.wait(classified_value, "classification", options.timeout);
     const auto start = std::chrono::steady_clock::now();
+    if (cpu_list_builder) {
+      const TileListStats built = cpu_list_builder->build(classification->host_ids(), cpu_lists.as<std::uint32_t>(),
+                                                          cpu_dispatches.as<DispatchRecord>());
+      build_ms = milliseconds_since(start);
+      if (before_host_signal) before_host_signal();
+      timeline.signal(patched_value);
+      return list_stats(std::span(built.class_tiles).first(class_count()));
+    }
     const IndexBuildStats built = cpu_builder->build(classification->host_ids(), options.coalesce,
                                                      cpu_indices.as<std::uint32_t>(), cpu_draws.as<DrawRecord>());
     build_ms = milliseconds_since(start);
@@ -239,7 +315,7 @@ struct TileRenderer::Impl {
     timeline.signal(patched_value);
     FrameStats stats;
     // One entry per draw class, like the GPU path's counts.
-    const std::size_t classes = light_passes->class_count();
+    const std::size_t classes = class_count();
     stats.class_tiles.assign(built.class_tiles.begin(), built.class_tiles.begin() + classes);
     stats.class_rectangles.assign(built.rectangles.begin(), built.rectangles.begin() + classes);
     stats.class_primitives.assign(built.primitives.begin(), built.primitives.begin() + classes);
@@ -249,7 +325,29 @@ struct TileRenderer::Impl {
     return stats;
   }
 
+  // The compute tile pass's figures: tiles per class, and the workgroups that shade them.
+  FrameStats list_stats(std::span<const std::uint32_t> class_tiles) const {
+    const std::uint32_t per_group = ComputeLightingPasses::tiles_per_workgroup(grid.tile_size);
+    FrameStats stats;
+    stats.class_tiles.assign(class_tiles.begin(), class_tiles.end());
+    stats.class_rectangles.assign(class_tiles.size(), 0);
+    for (const std::uint32_t tiles : class_tiles) stats.class_primitives.push_back((tiles + per_group - 1) / per_group);
+    stats.primitives_uncoalesced = std::accumulate(class_tiles.begin(), class_tiles.end(), 0u);
+    stats.primitives_coalesced = std::accumulate(stats.class_primitives.begin(), stats.class_primitives.end(), 0u);
+    return stats;
+  }
+
+  FrameStats gpu_list_stats() const {
+    const GpuTileLists::Counts counts = gpu_lists->read_counts();
+    if (counts.invalid_tiles != 0) {
+      throw Error(std::to_string(counts.invalid_tiles) +
+                  " tiles were classified with an impossible raw ID (GPU-driven tile-list build)");
+    }
+    return list_stats(counts.tiles);
+  }
+
   FrameStats gpu_stats() const {
+    if (gpu_lists) return gpu_list_stats();
     const GpuIndexBuild::Counts counts = gpu_build->read_counts();
     if (counts.invalid_tiles != 0) {
       throw Error(std::to_string(counts.invalid_tiles) +
@@ -278,7 +376,7 @@ struct TileRenderer::Impl {
 
     const VkCommandBuffer b = tile_commands.get();
     FrameResult result;
-    if (cpu_builder) {
+    if (cpu_builder || cpu_list_builder) {
       // Submitted before the host has built anything: the GPU holds it until the signal.
       const SemaphoreWait patched{timeline.handle(), patched_value, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT};
       submit(context, {std::span(&b, 1), std::span(&patched, 1), {}, frame_done.handle()}, "tile pass (submit B)");
@@ -292,7 +390,7 @@ struct TileRenderer::Impl {
       submit(context, {std::span(&b, 1), {}, {}, frame_done.handle()}, "tile pass (submit B)");
     }
     frame_done.wait("the tile and baseline light passes", options.timeout);
-    if (gpu_build) result.stats = gpu_stats();
+    if (gpu_build || gpu_lists) result.stats = gpu_stats();
     read_timings(result.timings);
     return result;
   }
@@ -317,7 +415,7 @@ struct TileRenderer::Impl {
     t.shadow_map = between(frame_stamps, 0);
     t.gbuffer = between(frame_stamps, 1);
     t.classification = between(frame_stamps, 2);
-    if (gpu_build) t.index_build_gpu = between(frame_stamps, 3);
+    if (gpu_build || gpu_lists) t.index_build_gpu = between(frame_stamps, 3);
     t.tiled_light = between(tile_stamps, 0);
     std::size_t next = 1;
     if (runs_naive()) t.naive_light = between(tile_stamps, next++);
@@ -341,9 +439,12 @@ TileRenderer::~TileRenderer() {
 FrameResult TileRenderer::render_frame() { return impl_->render_frame(); }
 const TileGrid& TileRenderer::grid() const { return impl_->grid; }
 std::uint32_t TileRenderer::msaa_samples() const { return static_cast<std::uint32_t>(impl_->samples); }
-std::uint32_t TileRenderer::draw_class_count() const { return impl_->light_passes->class_count(); }
+std::uint32_t TileRenderer::draw_class_count() const { return impl_->class_count(); }
 TilePrimitive TileRenderer::tile_primitive() const { return impl_->primitive; }
-std::uint32_t TileRenderer::pipeline_count() const { return impl_->light_passes->pipeline_count(); }
+std::uint32_t TileRenderer::pipeline_count() const {
+  return impl_->compute_passes ? impl_->compute_passes->pipeline_count() : impl_->light_passes->pipeline_count();
+}
+LightPass TileRenderer::light_pass() const { return impl_->options.light_pass; }
 const LightingParamsBlock& TileRenderer::lighting_params() const { return impl_->lighting->params(); }
 
 std::vector<std::uint8_t> TileRenderer::raw_tile_ids() const {

@@ -210,6 +210,12 @@ void Context::create_device() {
   device_ = UniqueDevice(device, DeviceDeleter{});
   vkGetDeviceQueue(device, queue_family_, 0, &queue_);
   name_object(queue_, "main queue");
+
+  const VkPipelineCacheCreateInfo cache_info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+  VkPipelineCache cache = VK_NULL_HANDLE;
+  check(vkCreatePipelineCache(device, &cache_info, nullptr, &cache), "vkCreatePipelineCache", "the pipeline cache");
+  pipeline_cache_ = UniquePipelineCache(cache, {device});
+  name_object(cache, "pipeline cache");
 }
 
 VkSampleCountFlags Context::msaa_counts() const { return msaa_supported_counts(limits_); }

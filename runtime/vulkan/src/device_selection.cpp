@@ -65,6 +65,10 @@ DeviceRequest DeviceRequest::parse(std::string_view text) {
   if (text.empty()) {
     return request;
   }
+  if (text == "auto") {
+    request.automatic = true;
+    return request;
+  }
   const bool digits = text.size() <= 9 && std::all_of(text.begin(), text.end(), [](char c) {
                         return std::isdigit(static_cast<unsigned char>(c)) != 0;
                       });
@@ -109,6 +113,12 @@ std::size_t select_device(std::span<const DeviceInfo> candidates, const DeviceRe
     fail(fmt::format("no {}Vulkan device matches \"{}\"", unusable_match ? "usable " : "", request.name), candidates);
   }
 
+  if (request.automatic) {
+    for (const VkPhysicalDeviceType type :
+         {VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU}) {
+      if (auto found = first_usable(candidates, [type](const DeviceInfo& c) { return c.type == type; })) return *found;
+    }
+  }
   if (auto found = first_usable(candidates, [](const DeviceInfo& c) { return contains_ci(c.name, "llvmpipe"); })) {
     return *found;
   }

@@ -18,8 +18,9 @@ struct RunDescription {
   std::string camera;
   bool coalesce = true;
   std::string lavapipe_threads;  // LP_NUM_THREADS as set, or "" (driver default)
-  std::string primitive;         // "points" | "triangles": what the tile pass drew
+  std::string primitive;         // "points" | "triangles": what the tile pass drew; "workgroups" (compute)
   std::string baselines;         // "naive" | "dynamic" | "both": the full-screen passes that ran
+  std::string light_pass;        // "raster" | "compute": how every light pass ran
 };
 
 // Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).
@@ -48,8 +49,11 @@ struct FrameReport {
   std::uint32_t tiles = 0;
   std::vector<std::pair<std::string, std::uint32_t>> raw_property_tiles;  // in the order
   std::vector<std::uint32_t> optimised_tiles;                             // 32 counts
+  // Raster: one primitive per tile uncoalesced, the primitives drawn after coalescing, and the
+  // rectangles they draw (a non-square one is drawn as one point per tile). Compute: the tiles
+  // dispatched, the workgroups that shade them, and 0.
   std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0;
-  std::uint32_t rectangles = 0;  // after coalescing; a non-square one is drawn as one point per tile
+  std::uint32_t rectangles = 0;
   MedianTimings timings;
   std::vector<FrameTimings> frame_timings;  // every timed frame, in order (timings: their medians)
   Equivalences equivalence;

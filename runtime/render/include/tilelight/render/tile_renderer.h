@@ -12,6 +12,8 @@
 //             (submitted before that signal: wait-before-signal)
 //   host      waits for 2k-1, maps IDs through the generated LUT, builds the index buffer
 //             (3 passes + coalescing), writes the indirect records, signals 2k
+// With LightPass::compute the tile pass is one indirect dispatch per class instead of one draw,
+// and what the host (or the GPU build) writes is per-class tile lists and dispatch records.
 // Every wait is bounded (`timeout`); a failure between submit B and the host signal still
 // signals (with empty draws) so the queue is never left blocked.
 
@@ -34,6 +36,15 @@ namespace tilelight {
 
 enum class IndexPath { cpu, gpu };
 
+// How the light passes run: as draws (the tile pass draws each class's tiles with the fragment
+// permutation; the baselines draw two full-frame triangles) or as compute dispatches (the tile
+// pass dispatches each class over its tile list; the baselines are one full-frame dispatch).
+// Every pass of a frame is of the one kind, so ratios compare like with like.
+enum class LightPass { raster, compute };
+
+// "raster" | "compute", as tilelight's --light-pass spells it.
+constexpr const char* to_string(LightPass pass) { return pass == LightPass::compute ? "compute" : "raster"; }
+
 // The full-screen passes the classified frame is measured against: naive (the uber-shader with
 // every feature, on every pixel) and dynamic (every feature compiled in, each taken only where
 // the pixel needs it: per-pixel branching).
@@ -45,6 +56,7 @@ struct RendererOptions {
   std::uint32_t msaa = 0;       // 0: automatic (2x where offered, else 4x); else 1, 2, 4, 8, 16
   std::uint32_t tile_size = 4;  // pixels: 4, 8 or 16
   IndexPath path = IndexPath::cpu;
+  LightPass light_pass = LightPass::raster;
   bool raw_permutations = false;  // draw the 96 raw permutations instead of the 32 optimised ones
   bool coalesce = true;
   // How the tile pass draws its rectangles (tile_primitive.h); empty: points where the device
@@ -63,10 +75,13 @@ struct FrameTimings {  // milliseconds
   double dynamic_light = 0;  // the per-pixel-branching pass; 0 when it did not run (RendererOptions::baselines)
 };
 
+// The raster tile pass draws primitives (coalesced rectangles, as triangle pairs or points); the
+// compute tile pass dispatches workgroups over tile lists: there `primitives` count workgroups
+// and `rectangles` stay 0.
 struct FrameStats {
   std::vector<std::uint32_t> class_tiles;       // per draw class (32 optimised or 128 raw)
   std::vector<std::uint32_t> class_rectangles;  // per draw class
-  std::vector<std::uint32_t> class_primitives;  // per draw class
+  std::vector<std::uint32_t> class_primitives;  // per draw class: primitives drawn, or workgroups dispatched
   std::uint32_t primitives_uncoalesced = 0;     // one primitive per tile
   std::uint32_t primitives_coalesced = 0;       // primitives drawn (points, or rectangles as triangle pairs)
   std::uint32_t rectangles = 0;                 // rectangles after coalescing
@@ -103,6 +118,7 @@ class TileRenderer {
   std::uint32_t draw_class_count() const;  // 32 or 128
   TilePrimitive tile_primitive() const;    // the one chosen (RendererOptions::primitive)
   std::uint32_t pipeline_count() const;    // 32 or 96
+  LightPass light_pass() const;
 
   // Results of the last frame.
   std::vector<std::uint8_t> raw_tile_ids() const;  // row-major, tiles_x * tiles_y

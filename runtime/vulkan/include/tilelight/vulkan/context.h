@@ -64,6 +64,10 @@ class Context {
   VkInstance instance() const { return instance_.get(); }
   VkPhysicalDevice physical_device() const { return physical_device_; }
   VkDevice device() const { return device_.get(); }
+  // One pipeline cache for every pipeline made on this device: a renderer builds up to 96 light
+  // pipelines (raw permutations) and several renderers of one process (tests, the sweep) build
+  // the same ones again; the driver then compiles each shader once.
+  VkPipelineCache pipeline_cache() const { return pipeline_cache_.get(); }
   // The one queue (graphics + compute + transfer). Vulkan requires external synchronisation:
   // submit from one thread at a time.
   VkQueue queue() const { return queue_; }
@@ -131,6 +135,7 @@ class Context {
   VkPhysicalDeviceMemoryProperties memory_properties_{};
 
   UniqueDevice device_;
+  UniquePipelineCache pipeline_cache_;  // after device_: destroyed before it
   VkQueue queue_ = VK_NULL_HANDLE;
 };
 

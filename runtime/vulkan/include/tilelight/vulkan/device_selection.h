@@ -26,21 +26,25 @@ struct DeviceInfo {
   bool usable() const { return unusable_reason.empty(); }
 };
 
-// How the caller asks for a device. Both empty: the default (see select_device).
+// How the caller asks for a device. All empty: the default (see select_device).
 struct DeviceRequest {
   std::string name;                    // case-insensitive substring of the device name
   std::optional<std::uint32_t> index;  // enumeration index
+  bool automatic = false;              // the fastest kind present (see select_device)
 
-  // "" -> default, all digits -> index, anything else -> name substring. For --device options.
+  // "" -> default, "auto" -> automatic, all digits -> index, anything else -> name substring.
+  // For --device options.
   static DeviceRequest parse(std::string_view text);
-  bool is_default() const { return name.empty() && !index; }
+  bool is_default() const { return name.empty() && !index && !automatic; }
 };
 
 // Returns the position in `devices` of the device to use:
 // - by index: that device;
 // - by name: the first usable device whose name contains `request.name` (case-insensitive);
 // - default: the first usable device named "llvmpipe" (lavapipe, the CPU driver the tests and
-//   the reference images use), else the first usable CPU-type device, else the first usable one.
+//   the reference images use), else the first usable CPU-type device, else the first usable one;
+// - automatic: the first usable discrete GPU, else the first usable integrated GPU, else as the
+//   default (tilelight's --device auto: a real GPU where the machine has one).
 // Throws tilelight::Error listing every device (and why unusable ones are) when nothing
 // matches, the match is unusable, or the list is empty.
 std::size_t select_device(std::span<const DeviceInfo> devices, const DeviceRequest& request);

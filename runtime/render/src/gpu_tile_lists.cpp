@@ -1,0 +1,114 @@
+#include "gpu_tile_lists.h"
+
+#include "descriptors.h"
+#include "pipelines.h"
+#include "shader_registry.h"
+#include "tilelight/tiles/tile_list_builder.h"
+#include "tilelight/vulkan/barriers.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
+
+#include <array>
+
+namespace tilelight {
+namespace {
+
+// Mirrors tile_lists.comp.
+constexpr std::uint32_t kNoClass = 0xFF;
+constexpr std::uint32_t kPassCount = 0, kPassPrefix = 1, kPassFill = 2;  // constant_id 0: PASS
+constexpr std::uint32_t kRowsPerGroup = 128;                             // local_size_x
+// tiles, cursor (kTileListMaxClasses each), invalid_tiles.
+constexpr VkDeviceSize kCountersBytes = (2 * kTileListMaxClasses + 1) * sizeof(std::uint32_t);
+constexpr VkDeviceSize kDispatchRecordBytes = sizeof(VkDispatchIndirectCommand);
+constexpr std::uint32_t kBindings = 5;  // tile IDs, LUT, counters, lists, dispatches
+
+}  // namespace
+
+GpuTileLists::GpuTileLists(const Context& context, const shadergen::Registry& shaders, const TileGrid& grid,
+                           std::span<const std::uint8_t> class_for_raw, std::span<const bool> pruned,
+                           std::uint32_t class_count, std::uint32_t tiles_per_group, const Buffer& tile_ids,
+                           VkDescriptorPool pool)
+    : grid_(grid), class_count_(class_count), tiles_per_group_(tiles_per_group) {
+  if (class_count > kTileListMaxClasses) throw Error("the GPU tile-list build supports at most 128 draw classes");
+  std::array<std::uint32_t, 256> lut{};
+  lut.fill(kNoClass);
+  for (std::size_t raw = 0; raw < class_for_raw.size(); ++raw) {
+    if (!pruned[raw]) lut[raw] = class_for_raw[raw];
+  }
+  lut_ = Buffer(context, {sizeof(lut), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, "tile-list LUT"});
+  lut_.write_values(std::span<const std::uint32_t>(lut));
+  counters_ = Buffer(context, {kCountersBytes,
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                               MemoryUse::DeviceLocal, "tile-list counters"});
+  host_counters_ = Buffer(context, {kCountersBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback,
+                                    "tile-list counters (host copy)"});
+  lists_ = Buffer(context, {(kTileListHeaderWords + std::size_t{grid.tile_count()}) * sizeof(std::uint32_t),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal, "tile lists (GPU-built)"});
+  dispatches_ = Buffer(context, {kTileListMaxClasses * kDispatchRecordBytes,
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                                 MemoryUse::DeviceLocal, "indirect dispatches (GPU-built)"});
+
+  std::array<VkDescriptorSetLayoutBinding, kBindings> bindings{};
+  for (std::uint32_t i = 0; i < kBindings; ++i) {
+    bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+  }
+  set_layout_ = create_descriptor_set_layout(context, bindings, "GPU tile-list build set layout");
+  const VkDescriptorSetLayout set_layouts[] = {set_layout_.get()};
+  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, 8 * sizeof(std::uint32_t)};
+  layout_ = create_pipeline_layout(context, set_layouts, std::span(&push, 1), "GPU tile-list build layout");
+  set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "GPU tile-list build set");
+  const std::array<VkBuffer, kBindings> buffers{tile_ids.handle(), lut_.handle(), counters_.handle(), lists_.handle(),
+                                                dispatches_.handle()};
+  for (std::uint32_t i = 0; i < kBindings; ++i) {
+    write_buffer_descriptor(context, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
+  }
+  const std::span<const std::uint32_t> spirv = companion_spirv(shaders, "tile_lists");
+  count_ = create_compute_pipeline(context, layout_.get(), spirv, SpecConstants{}.set(0, kPassCount),
+                                   "GPU tile-list build: count");
+  prefix_ = create_compute_pipeline(context, layout_.get(), spirv, SpecConstants{}.set(0, kPassPrefix),
+                                    "GPU tile-list build: prefix sum");
+  fill_ = create_compute_pipeline(context, layout_.get(), spirv, SpecConstants{}.set(0, kPassFill),
+                                  "GPU tile-list build: fill");
+}
+
+void GpuTileLists::record(VkCommandBuffer cmd) const {
+  const Scope compute_rw{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+  vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+  buffer_barrier(cmd, counters_.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT}, compute_rw);
+
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &set_, 0, nullptr);
+  const std::array<std::uint32_t, 8> push{
+      grid_.tiles_x, grid_.tiles_y, grid_.blocks_x, grid_.blocks_y, class_count_, tiles_per_group_, 0, 0};
+  vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), push.data());
+  const std::uint32_t rows = grid_.block_count() * kBlockTiles;
+  const std::uint32_t groups = (rows + kRowsPerGroup - 1) / kRowsPerGroup;
+
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, count_.get());
+  vkCmdDispatch(cmd, groups, 1, 1);
+  memory_barrier(cmd, compute_rw, compute_rw);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, prefix_.get());
+  vkCmdDispatch(cmd, 1, 1, 1);
+  memory_barrier(cmd, compute_rw, compute_rw);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, fill_.get());
+  vkCmdDispatch(cmd, groups, 1, 1);
+
+  memory_barrier(
+      cmd, compute_rw,
+      {VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+       VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT});
+  const VkBufferCopy copy{0, 0, kCountersBytes};
+  vkCmdCopyBuffer(cmd, counters_.handle(), host_counters_.handle(), 1, &copy);
+  buffer_barrier(cmd, host_counters_.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                 {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
+}
+
+GpuTileLists::Counts GpuTileLists::read_counts() const {
+  const std::span<const std::uint32_t> values = host_counters_.as<const std::uint32_t>();
+  Counts counts;
+  counts.tiles.assign(values.begin(), values.begin() + class_count_);
+  counts.invalid_tiles = values[std::size_t{2} * kTileListMaxClasses];
+  return counts;
+}
+
+}  // namespace tilelight
