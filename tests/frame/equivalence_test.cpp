@@ -204,7 +204,7 @@ INSTANTIATE_TEST_SUITE_P(Frames, ComputeMatchesRaster,
                                            Case{"msaa1", 200, 120, IndexPath::cpu, false, true, "street", 4,
                                                 std::nullopt, 1},
                                            Case{"raw_tile16", 333, 197, IndexPath::cpu, true, true, "low", 16}),
-                         [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+                         [](const ::testing::TestParamInfo<Case>& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace
 }  // namespace tilelight::test

@@ -212,21 +212,28 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
             add_sun_offset(tile, plane, pixel - first_pixel, depth[k]);
         }
     }
-    if (edge_pixels != 0u) {
-        tile.flags |= TILE_FLAG_EDGE;
-    }
-    // Samples 1.. of the edge pixels (the G-buffer always has 2 or more), one (edge pixel,
-    // sample) pair per pass, so that the pass the loop always runs once more (masked) costs one
-    // sample's fetches, not a pixel's.
+    // Samples 1.. of the pixels with an edge bit (the G-buffer always has 2 or more), one
+    // (pixel, sample) pair per pass, so that the pass the loop always runs once more (masked)
+    // costs one sample's fetches, not a pixel's. Such a pixel is an MSAA edge only if some
+    // sample differs from sample 0 (gbuffer_pixel_is_edge(), the lighting's own test): its
+    // depth first, the colour targets only where the depths agree (a flat face's inner
+    // diagonal, which is no edge).
     uint pending = edge_pixels;
     int s = 1;
+    bool samples_differ = false;
     while (pending != 0u) {
         uint k = uint(findLSB(pending));
         ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
-        add_sample(tile, plane, pixel - first_pixel, gbuffer_load_depth(pixel, s));
+        GDepthSample g = gbuffer_load_depth(pixel, s);
+        add_sample(tile, plane, pixel - first_pixel, g);
+        samples_differ = samples_differ || floatBitsToUint(g.depth) != floatBitsToUint(depth[k]) ||
+                         !gbuffer_colours_equal_first(pixel, s);
         bool pixel_done = s >= GBUFFER_SAMPLES - 1;
         pending = pixel_done ? pending & (pending - 1u) : pending;
         s = pixel_done ? 1 : s + 1;
+    }
+    if (samples_differ) {
+        tile.flags |= TILE_FLAG_EDGE;
     }
 }
 

@@ -41,13 +41,16 @@
 // reads it from every sample of every pixel: a D32 texel is half the bytes of
 // an RGBA16F one and takes the cheaper fetch path on a CPU driver (lavapipe),
 // and the classifier reads sample 0's depth anyway.
-// The classifier ORs the bit over a pixel's samples instead of comparing them:
-// because each fragment stores one depth in all its samples (below), two
-// fragments that both cover the whole pixel win the depth test on the same
-// samples, so a pixel whose samples differ always keeps a sample from a partial
-// fragment. The converse does not hold (two partial fragments may store equal
-// values), which is safe: the MSAA_EDGE permutation's running mean of equal
-// samples is exactly the colour of sample 0.
+// The bit marks a pixel whose samples MAY differ: because each fragment stores
+// one depth in all its samples (below), two fragments that both cover the whole
+// pixel win the depth test on the same samples, so a pixel whose samples differ
+// always keeps a sample from a partial fragment. The converse does not hold:
+// the two triangles of one flat face both cover part of the pixels along their
+// shared diagonal, and store equal values there (gbuffer.frag computes them
+// from the face's plane). So a pixel is an MSAA edge (gbuffer_pixel_is_edge(),
+// the classifier's test) only where the bit is set AND some sample differs from
+// sample 0 in some target; only such pixels are read beyond their depths, and
+// only pixels with the bit are compared at all.
 //
 // Per-pixel depth: a non-edge pixel must have bit-identical samples, because
 // the lighting shades only sample 0 of it. Colour targets are written once per
@@ -248,15 +251,40 @@ GDepthSample gbuffer_load_depth(ivec2 pixel, int sample_index)
     return gbuffer_decode_depth(gbuffer_fetch(gbuffer_depth, pixel, sample_index).r);
 }
 
-// True when some sample of `pixel` carries the MSAA-edge bit: the pixel's samples may differ.
-// False means they are bit-identical, so sample 0 alone shades the pixel (see above).
+// True when sample `s` of `pixel` stores what its sample 0 stores, bit for bit, in the colour
+// targets (the caller compares the depths, which it has read already).
+bool gbuffer_colours_equal_first(ivec2 pixel, int s)
+{
+    return all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_albedo_spec, pixel, s)),
+                     floatBitsToUint(gbuffer_fetch(gbuffer_albedo_spec, pixel, 0)))) &&
+           all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_normal_motion, pixel, s)),
+                     floatBitsToUint(gbuffer_fetch(gbuffer_normal_motion, pixel, 0)))) &&
+           all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_prelit_power, pixel, s)),
+                     floatBitsToUint(gbuffer_fetch(gbuffer_prelit_power, pixel, 0))));
+}
+
+// True when the samples of `pixel` differ: some sample carries the MSAA-edge bit (a fragment
+// covered part of the pixel) and some sample differs from sample 0 in some target. Partial
+// fragments of one surface that stored equal values (a flat face's inner diagonal,
+// gbuffer.frag) make no edge. False means the samples are bit-identical, so sample 0 alone
+// shades the pixel (see above).
 bool gbuffer_pixel_is_edge(ivec2 pixel)
 {
-    bool edge = false;
+    bool partial = false;
     for (int s = 0; s < gbuffer_sample_count(); ++s) {
-        edge = edge || gbuffer_load_depth(pixel, s).msaa_edge;
+        partial = partial || gbuffer_load_depth(pixel, s).msaa_edge;
     }
-    return edge;
+    if (!partial) {
+        return false;
+    }
+    uint first_depth = floatBitsToUint(gbuffer_fetch(gbuffer_depth, pixel, 0).r);
+    for (int s = 1; s < gbuffer_sample_count(); ++s) {
+        if (floatBitsToUint(gbuffer_fetch(gbuffer_depth, pixel, s).r) != first_depth ||
+            !gbuffer_colours_equal_first(pixel, s)) {
+            return true;
+        }
+    }
+    return false;
 }
 
 

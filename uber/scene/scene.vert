@@ -13,12 +13,18 @@ layout(location = 3) in vec4 in_model_col1;
 layout(location = 4) in vec4 in_model_col2;
 layout(location = 5) in vec4 in_model_col3;
 layout(location = 6) in vec4 in_albedo_spec; // per instance: rgb albedo, a specular amount
-layout(location = 7) in vec4 in_material;    // x specular power, y motion ID, z checker scale
+layout(location = 7) in vec4 in_material;    // x specular power, y motion ID, z checker scale, w flat faces
 
 layout(location = 0) out vec3 out_world_pos;
 layout(location = 1) out vec3 out_normal;
 layout(location = 2) flat out vec4 out_albedo_spec;
 layout(location = 3) flat out vec4 out_material;
+// The plane of this vertex's face, for meshes whose faces are flat (in_material.w): its world
+// normal (w = 1; 0 on other meshes) and a world point on it. Both are computed only from the
+// normal, dot(normal, position) and the instance, which every vertex of a flat face shares
+// exactly, so every triangle of the face passes the same plane whichever vertex provokes it.
+layout(location = 4) flat out vec4 out_face_normal;
+layout(location = 5) flat out vec3 out_face_point;
 
 void main()
 {
@@ -30,5 +36,7 @@ void main()
     out_normal = normal_matrix * in_normal;
     out_albedo_spec = in_albedo_spec;
     out_material = in_material;
+    out_face_normal = vec4(normal_matrix * in_normal, in_material.w);
+    out_face_point = (model * vec4(in_normal * dot(in_normal, in_position), 1.0)).xyz;
     gl_Position = scene.view_proj * world;
 }

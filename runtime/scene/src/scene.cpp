@@ -25,7 +25,7 @@ void add_quad_face(Mesh& mesh, glm::vec3 centre, glm::vec3 u, glm::vec3 v) {
 
 // Unit cube from -0.5 to 0.5, one flat-shaded quad per face.
 Mesh make_cube() {
-  Mesh mesh{"cube", {}, {}};
+  Mesh mesh{"cube", {}, {}, true};
   const glm::vec3 x{0.5f, 0, 0}, y{0, 0.5f, 0}, z{0, 0, 0.5f};
   add_quad_face(mesh, x, -z, y);
   add_quad_face(mesh, -x, z, y);
@@ -59,7 +59,7 @@ Mesh make_sphere(std::uint32_t rings, std::uint32_t segments) {
 
 // Ground: one large quad at y = 0 facing up.
 Mesh make_ground(float half_size) {
-  Mesh mesh{"ground", {}, {}};
+  Mesh mesh{"ground", {}, {}, true};
   add_quad_face(mesh, {0, 0, 0}, {0, 0, half_size}, {half_size, 0, 0});
   return mesh;
 }
@@ -202,6 +202,14 @@ std::vector<std::string> Scene::camera_names() const {
   return names;
 }
 
+// material.w of every instance of a flat_faces mesh (see Mesh).
+void mark_flat_faced_instances(Scene& scene) {
+  for (const MeshBatch& batch : scene.batches) {
+    const float flat = scene.meshes[batch.mesh].flat_faces ? 1.0f : 0.0f;
+    for (std::uint32_t i = 0; i < batch.instance_count; ++i) scene.instances[batch.first_instance + i].material.w = flat;
+  }
+}
+
 Scene make_demo_scene() {
   Scene scene;
   scene.sun = demo_sun();
@@ -222,6 +230,7 @@ Scene make_demo_scene() {
   add_spheres(scene, maker, rng);
   scene.batches.push_back({2, first_sphere, static_cast<std::uint32_t>(scene.instances.size()) - first_sphere});
 
+  mark_flat_faced_instances(scene);
   scene.cameras = demo_cameras(scene.sun);
   return scene;
 }

@@ -43,6 +43,9 @@ struct Flags {
   }
 };
 
+// What a G-buffer sample stores: rt0[4], rt1[4], rt2[4], depth (GBufferSamples pads to 16).
+constexpr std::size_t kStoredFloats = 13;
+
 struct Sample {
   const float* v;  // rt0[4], rt1[4], rt2[4], depth
   // gbuffer.glsl: the sky lies at depth 1.0, every material depth below it.
@@ -176,9 +179,15 @@ class SampleClassifier {
 };
 
 Flags classify_pixel(const SampleClassifier& classifier, const GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
-  // The MSAA-edge bit of any sample (gbuffer.glsl: materials set it on partial coverage).
+  // The MSAA-edge bit of any sample (gbuffer.glsl: materials set it on partial coverage) makes an
+  // edge only where some sample differs from sample 0, bit for bit, in some target
+  // (gbuffer_pixel_is_edge()).
+  bool partial = false;
+  for (std::uint32_t s = 0; s < g.samples; ++s) partial = partial || Sample{g.at(x, y, s)}.edge_bit();
   bool edge = false;
-  for (std::uint32_t s = 0; s < g.samples; ++s) edge = edge || Sample{g.at(x, y, s)}.edge_bit();
+  for (std::uint32_t s = 1; partial && s < g.samples; ++s) {
+    edge = edge || std::memcmp(g.at(x, y, s), g.at(x, y, 0), kStoredFloats * sizeof(float)) != 0;
+  }
   Flags f;
   f.add(kEdge, edge, false);
   const std::uint32_t classified = edge ? g.samples : 1;

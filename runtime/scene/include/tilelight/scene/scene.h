@@ -24,13 +24,19 @@ struct Mesh {
   std::string name;
   std::vector<MeshVertex> vertices;
   std::vector<std::uint32_t> indices;  // triangle list
+  // Every face is planar and all its vertices carry the same normal n and the same dot(n,
+  // position), exactly (the cube's and the ground's quads). Its instances get material.w = 1, and
+  // the G-buffer pass then stores the same values for both triangles of a face where they share
+  // a pixel (uber/scene/gbuffer.frag), so a face's inner diagonal is no MSAA edge.
+  bool flat_faces = false;
 };
 
 // Per-instance vertex data (binding 1 of the scene pipelines; see uber/scene/scene.vert).
 struct Instance {
   glm::mat4 model;
   glm::vec4 albedo_spec;  // rgb albedo, a specular amount (0..1)
-  glm::vec4 material;     // x specular power, y motion ID (1..127; 0 is the sky), z checker scale (0 = none)
+  glm::vec4 material;     // x specular power, y motion ID (1..127; 0 is the sky), z checker scale (0 = none),
+                          // w 1 when the mesh has flat_faces, else 0
 };
 
 // One mesh drawn with a contiguous range of the instance buffer.
