@@ -199,12 +199,12 @@ TEST_P(ComputeMatchesRaster, EveryFrameBitForBit) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Frames, ComputeMatchesRaster,
-                         ::testing::Values(Case{"msaa4", 320, 180, IndexPath::gpu, false, true, "default"},
-                                           Case{"msaa1", 200, 120, IndexPath::cpu, false, true, "street", 4,
-                                                std::nullopt, 1},
-                                           Case{"raw_tile16", 333, 197, IndexPath::cpu, true, true, "low", 16}),
-                         [](const ::testing::TestParamInfo<Case>& param_info) { return std::string(param_info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Frames, ComputeMatchesRaster,
+    ::testing::Values(Case{"msaa4", 320, 180, IndexPath::gpu, false, true, "default"},
+                      Case{"msaa1", 200, 120, IndexPath::cpu, false, true, "street", 4, std::nullopt, 1},
+                      Case{"raw_tile16", 333, 197, IndexPath::cpu, true, true, "low", 16}),
+    [](const ::testing::TestParamInfo<Case>& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace
 }  // namespace tilelight::test

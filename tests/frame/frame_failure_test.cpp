@@ -3,6 +3,7 @@
 #include "tilelight/base/error.h"
 #include "tilelight/render/tile_renderer.h"
 #include "tilelight/scene/scene.h"
+#include "tilelight/vulkan/error.h"
 #include "tilelight_testing/renderer_test_seam.h"
 #include "tilelight_testing/test_support.h"
 
@@ -30,6 +31,30 @@ TEST_F(FrameFailure, ErrorBeforeTheHostSignalStillReleasesTheGpu) {
   // And the renderer still works.
   TileRendererTestSeam::set_before_host_signal(renderer, {});
   EXPECT_NO_THROW(renderer.render_frame());
+}
+
+// The fault: a GPU slower than the renderer's timeout, so the host's wait for classification
+// itself times out while submit A's signal is still pending. Releasing the tile pass must first
+// let that signal land (a host signal below a pending one is invalid: the validation layer
+// checks it, and VulkanTest fails on any message), then signal, then drain.
+TEST_F(FrameFailure, ATimedOutClassificationWaitStillReleasesTheGpuValidly) {
+  const Scene scene = make_demo_scene();
+  for (const LightPass pass : {LightPass::raster, LightPass::compute}) {
+    RendererOptions options;
+    options.width = 640;
+    options.height = 360;
+    options.light_pass = pass;
+    options.timeout = Seconds(1e-9);  // no lavapipe frame is this fast
+    TileRenderer renderer(context(), scene, options);
+    try {
+      renderer.render_frame();
+      FAIL() << "render_frame() did not time out";
+    } catch (const TimeoutError& e) {
+      EXPECT_NE(std::string(e.what()).find("classification"), std::string::npos) << e.what();
+    }
+    EXPECT_NO_THROW(context().wait_idle("after the timed-out frame", Seconds(20)));
+    EXPECT_EQ(context().validation_log().count(), 0u) << to_string(pass);
+  }
 }
 
 TEST_F(FrameFailure, BadSizesAreRejectedWithTheValue) {

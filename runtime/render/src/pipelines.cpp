@@ -164,8 +164,8 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.0f;
   raster.depthBiasEnable = desc.depth_bias ? VK_TRUE : VK_FALSE;
-  raster.depthBiasConstantFactor = desc.depth_bias ? 1.25f : 0.0f;
-  raster.depthBiasSlopeFactor = desc.depth_bias ? 1.75f : 0.0f;
+  raster.depthBiasConstantFactor = desc.depth_bias ? desc.depth_bias->constant : 0.0f;
+  raster.depthBiasSlopeFactor = desc.depth_bias ? desc.depth_bias->slope : 0.0f;
 
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = desc.samples;

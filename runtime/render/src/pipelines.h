@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -51,6 +52,12 @@ class SpecConstants {
 UniquePipeline create_compute_pipeline(const Context& context, VkPipelineLayout layout,
                                        std::span<const std::uint32_t> spirv, SpecConstants spec, std::string_view name);
 
+// Rasteriser depth bias (vkCmdSetDepthBias's factors, fixed in the pipeline).
+struct DepthBias {
+  float constant = 0.0f;  // in units of the depth format's minimum resolvable difference
+  float slope = 0.0f;     // times the polygon's largest depth slope
+};
+
 struct GraphicsPipelineDesc {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass render_pass = VK_NULL_HANDLE;
@@ -64,7 +71,7 @@ struct GraphicsPipelineDesc {
   bool depth_test = false;
   bool depth_write = false;
   VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
-  bool depth_bias = false;  // constant 1.25, slope 1.75: against shadow acne
+  std::optional<DepthBias> depth_bias;  // none: no bias
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   std::string name;
 };

@@ -14,6 +14,13 @@
 namespace tilelight {
 namespace {
 
+// The sun shadow map's depth bias, against shadow acne: the stored occluder depths are pushed
+// away from the sun by a constant and by a multiple of each triangle's depth slope. The slope
+// term matters on curved receivers near the terminator (the street camera's sphere), where
+// the 8 PCF taps reach texels whose own triangles slope steeply away; too little of it there
+// shows as speckled self-shadow and makes sunlit tiles SOFT_SHADOW.
+constexpr DepthBias kShadowMapDepthBias{2.0f, 8.0f};
+
 template <typename T>
 Buffer upload_buffer(const Context& context, std::span<const T> data, VkBufferUsageFlags usage, std::string name) {
   Buffer buffer(context, {std::max<VkDeviceSize>(data.size_bytes(), 4), usage, MemoryUse::HostUpload, std::move(name)});
@@ -92,7 +99,7 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   shadow.color_attachments = 0;
   shadow.depth_test = true;
   shadow.depth_write = true;
-  shadow.depth_bias = true;
+  shadow.depth_bias = kShadowMapDepthBias;
   shadow.name = "sun shadow map";
   shadow_pipeline_ = create_graphics_pipeline(context, shadow);
 }

@@ -102,6 +102,10 @@ std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Regist
   return pruned;
 }
 
+// How long a failing frame waits, at least, for the GPU to finish what it was given before it
+// releases the blocked tile pass (release_blocked_tile_pass()).
+constexpr Seconds kReleaseGrace{10.0};
+
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -383,7 +387,7 @@ struct TileRenderer::Impl {
       try {
         result.stats = build_and_patch(classified_value, patched_value, result.timings.index_build_cpu);
       } catch (...) {
-        release_blocked_tile_pass(patched_value);
+        release_blocked_tile_pass(classified_value, patched_value);
         throw;
       }
     } else {
@@ -396,12 +400,19 @@ struct TileRenderer::Impl {
   }
 
   // The tile pass is waiting for a signal that will not come: empty every draw, signal, and
-  // wait for the GPU, so nothing is left blocked when the error propagates.
-  void release_blocked_tile_pass(std::uint64_t patched_value) noexcept {
+  // wait for the GPU, so nothing is left blocked when the error propagates. A host signal must
+  // be below every pending signal of the semaphore (VUID-VkSemaphoreSignalInfo-value-03259), so
+  // when the failure was the wait for classification itself (a GPU slower than `timeout`),
+  // submit A's signal of `classified_value` may still be pending: wait for it first, for up to
+  // kReleaseGrace more. A GPU that never gets there is hung; the tile pass then stays blocked
+  // and the context's teardown reports it (and leaks the device rather than destroy it in use).
+  void release_blocked_tile_pass(std::uint64_t classified_value, std::uint64_t patched_value) noexcept {
     try {
       clear_draws();
+      timeline.wait(classified_value, "classification, before releasing the tile pass",
+                    std::max(options.timeout, kReleaseGrace));
       if (timeline.value() < patched_value) timeline.signal(patched_value);
-      frame_done.wait("the tile pass after a failed index build", options.timeout);
+      frame_done.wait("the tile pass after a failed index build", std::max(options.timeout, kReleaseGrace));
     } catch (...) {
       // Already failing: the original error is the one worth reporting.
     }
@@ -429,7 +440,9 @@ TileRenderer::TileRenderer(const Context& context, const Scene& scene, const Ren
 TileRenderer::~TileRenderer() {
   if (impl_) {
     try {
-      impl_->context.wait_idle("renderer teardown", impl_->options.timeout);
+      // At least kReleaseGrace: a timeout shorter than the GPU's frame (a fault being tested)
+      // must not leave the queue running while the renderer's objects are destroyed.
+      impl_->context.wait_idle("renderer teardown", std::max(impl_->options.timeout, kReleaseGrace));
     } catch (...) {
       // Destructors must not throw; the context's own teardown waits (bounded) again.
     }

@@ -206,7 +206,8 @@ std::vector<std::string> Scene::camera_names() const {
 void mark_flat_faced_instances(Scene& scene) {
   for (const MeshBatch& batch : scene.batches) {
     const float flat = scene.meshes[batch.mesh].flat_faces ? 1.0f : 0.0f;
-    for (std::uint32_t i = 0; i < batch.instance_count; ++i) scene.instances[batch.first_instance + i].material.w = flat;
+    for (std::uint32_t i = 0; i < batch.instance_count; ++i)
+      scene.instances[batch.first_instance + i].material.w = flat;
   }
 }
 
