@@ -72,8 +72,8 @@ struct EdgeBitCount {
 };
 
 EdgeBitCount count_edge_bits(const GBufferSamples& g) {
-  const auto edge_bit = [](const float* sample) {  // gbuffer.glsl: the depth's lowest bit
-    return (std::bit_cast<std::uint32_t>(sample[12]) & 1u) != 0;
+  const auto edge_bit = [](const float* sample) {  // gbuffer.glsl: the depth's MSAA-edge or face bit
+    return (std::bit_cast<std::uint32_t>(sample[12]) & 5u) != 0;
   };
   EdgeBitCount count;
   for (std::uint32_t y = 0; y < g.height; ++y) {
@@ -151,7 +151,7 @@ DepthBitCount count_depth_bits(const GBufferSamples& g, const glm::vec4& sun) {
         const bool sky_motion = std::nearbyint(v[7] * 255.0f) == 0.0f;
         const float n_dot_l = v[4] * sun.x + v[5] * sun.y + v[6] * sun.z;  // precise_dot()'s order
         const bool bit = (std::bit_cast<std::uint32_t>(v[12]) & 2u) != 0;
-        bool wrong = sky != sky_motion || (sky && (std::bit_cast<std::uint32_t>(v[12]) & 3u) != 0);
+        bool wrong = sky != sky_motion || (sky && (std::bit_cast<std::uint32_t>(v[12]) & 7u) != 0);
         if (!sky) wrong = wrong || (bit != (n_dot_l > 0.0f) && std::fabs(n_dot_l) > 1e-6f);
         count.sky += sky;
         count.facing += !sky && bit;

@@ -57,8 +57,8 @@ std::array<float, 16> far_pixel(const GBufferSamples& g, const LightingParamsBlo
   v[6] = -p.sun_direction.z;
   v[7] = 9.0f / 255.0f;  // a geometry motion ID
   // As a material stores it (gbuffer.glsl): a whole pixel, so the depth's edge bit is clear, and
-  // facing away, so its sun-facing bit is clear too (the upload would clear it anyway).
-  v[12] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(clip.z / clip.w) & ~3u);
+  // facing away, so its sun-facing bit is clear too, and no face bit (the upload would clear them anyway).
+  v[12] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(clip.z / clip.w) & ~7u);
   return v;
 }
 

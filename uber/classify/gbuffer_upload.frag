@@ -61,7 +61,7 @@ void main()
     if (depth != GBUFFER_SKY_DEPTH) {
         bool edge = gbuffer_decode_msaa_edge_bit(depth) || (!pixel_has_edge_bit(pixel) && pixel_samples_differ(pixel));
         rt1.xyz = gbuffer_stored_normal(rt1.xyz);
-        depth = gbuffer_encode_depth(depth, edge, gbuffer_faces_sun(rt1.xyz, push.sun_direction.xyz));
+        depth = gbuffer_encode_depth(depth, edge, gbuffer_faces_sun(rt1.xyz, push.sun_direction.xyz), false);
     }
     out_rt0 = source.texels[at + 0u];
     out_rt1 = rt1;

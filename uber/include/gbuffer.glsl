@@ -80,6 +80,10 @@ const uint GBUFFER_SKY_MOTION_ID  = 0u;
 const uint GBUFFER_DEPTH_EDGE_BIT = 1u;
 // The sun-facing bit: the next mantissa bit.
 const uint GBUFFER_DEPTH_SUN_BIT = 2u;
+// The face bit: the third, set instead of the MSAA-edge bit by a partial fragment that stored
+// its flat face's canonical values (gbuffer.frag).
+const uint GBUFFER_DEPTH_FACE_BIT = 4u;
+const uint GBUFFER_DEPTH_BITS = GBUFFER_DEPTH_EDGE_BIT | GBUFFER_DEPTH_SUN_BIT | GBUFFER_DEPTH_FACE_BIT;
 // The depth of the sky (the far plane), and the largest a material stores.
 const float GBUFFER_SKY_DEPTH = 1.0;
 const float GBUFFER_MAX_GEOMETRY_DEPTH = 0.99999994; // the float below 1.0
@@ -92,6 +96,7 @@ struct GSample {
     vec3  normal;      // as stored (signed, normalised by the material shader)
     uint  motion_id;   // 0..127
     bool  msaa_edge;   // the depth's MSAA-edge bit (classification only)
+    bool  face_edge;   // the depth's face bit (classification only)
     bool  faces_sun;   // the depth's sun-facing bit
     bool  is_sky;      // depth 1.0: colour is prelit, no lighting at all
     vec3  prelit;
@@ -105,6 +110,7 @@ struct GDepthSample {
     bool  is_sky;
     bool  faces_sun;
     bool  msaa_edge;
+    bool  face_edge;
 };
 
 // ---------------------------------------------------------------------------
@@ -119,15 +125,16 @@ float gbuffer_pack_motion_byte(uint motion_id)
 }
 
 // The depth a material fragment stores: `depth` (0..1) kept below the sky's
-// 1.0, with its two lowest mantissa bits replaced by the MSAA-edge and
-// sun-facing bits. Depths below the smallest normal float are raised to it
-// first, so the bits never land in a denormal that a driver running with
+// 1.0, with its three lowest mantissa bits replaced by the MSAA-edge,
+// sun-facing and face bits. Depths below the smallest normal float are raised
+// to it first, so the bits never land in a denormal that a driver running with
 // denormals-are-zero (llvmpipe) would flush.
-float gbuffer_encode_depth(float depth, bool msaa_edge, bool faces_sun)
+float gbuffer_encode_depth(float depth, bool msaa_edge, bool faces_sun, bool face_edge)
 {
     uint bits = floatBitsToUint(clamp(depth, 1.17549435e-38, GBUFFER_MAX_GEOMETRY_DEPTH));
-    bits &= ~(GBUFFER_DEPTH_EDGE_BIT | GBUFFER_DEPTH_SUN_BIT);
-    return uintBitsToFloat(bits | (msaa_edge ? GBUFFER_DEPTH_EDGE_BIT : 0u) | (faces_sun ? GBUFFER_DEPTH_SUN_BIT : 0u));
+    bits &= ~GBUFFER_DEPTH_BITS;
+    return uintBitsToFloat(bits | (msaa_edge ? GBUFFER_DEPTH_EDGE_BIT : 0u) | (faces_sun ? GBUFFER_DEPTH_SUN_BIT : 0u) |
+                           (face_edge ? GBUFFER_DEPTH_FACE_BIT : 0u));
 }
 
 // The normal as RT1 (16F) stores it: rounded to half precision here, so that
@@ -205,6 +212,7 @@ GDepthSample gbuffer_decode_depth(float depth)
     d.is_sky = depth == GBUFFER_SKY_DEPTH;
     d.faces_sun = !d.is_sky && (floatBitsToUint(depth) & GBUFFER_DEPTH_SUN_BIT) != 0u;
     d.msaa_edge = !d.is_sky && gbuffer_decode_msaa_edge_bit(depth);
+    d.face_edge = !d.is_sky && (floatBitsToUint(depth) & GBUFFER_DEPTH_FACE_BIT) != 0u;
     return d;
 }
 
@@ -217,6 +225,7 @@ GSample gbuffer_decode(vec4 rt0, vec4 rt1, vec4 rt2, float depth)
     g.motion_id   = gbuffer_unpack_motion_byte(rt1.a) & GBUFFER_MOTION_ID_MASK;
     GDepthSample d = gbuffer_decode_depth(depth);
     g.msaa_edge   = d.msaa_edge;
+    g.face_edge   = d.face_edge;
     g.faces_sun   = d.faces_sun;
     g.is_sky      = d.is_sky;
     g.prelit      = rt2.rgb;
@@ -251,40 +260,45 @@ GDepthSample gbuffer_load_depth(ivec2 pixel, int sample_index)
     return gbuffer_decode_depth(gbuffer_fetch(gbuffer_depth, pixel, sample_index).r);
 }
 
-// True when sample `s` of `pixel` stores what its sample 0 stores, bit for bit, in the colour
-// targets (the caller compares the depths, which it has read already).
-bool gbuffer_colours_equal_first(ivec2 pixel, int s)
+// True when samples 1 .. samples - 1 of `pixel` store what its sample 0 stores, bit for bit, in
+// every colour target: sample 0's three texels are read once. `samples` is the G-buffer's count
+// (a constant where the caller has one, so that the loop unrolls).
+bool gbuffer_colours_all_equal(ivec2 pixel, int samples)
 {
-    return all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_albedo_spec, pixel, s)),
-                     floatBitsToUint(gbuffer_fetch(gbuffer_albedo_spec, pixel, 0)))) &&
-           all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_normal_motion, pixel, s)),
-                     floatBitsToUint(gbuffer_fetch(gbuffer_normal_motion, pixel, 0)))) &&
-           all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_prelit_power, pixel, s)),
-                     floatBitsToUint(gbuffer_fetch(gbuffer_prelit_power, pixel, 0))));
+    uvec4 rt0 = floatBitsToUint(gbuffer_fetch(gbuffer_albedo_spec, pixel, 0));
+    uvec4 rt1 = floatBitsToUint(gbuffer_fetch(gbuffer_normal_motion, pixel, 0));
+    uvec4 rt2 = floatBitsToUint(gbuffer_fetch(gbuffer_prelit_power, pixel, 0));
+    bool equal_all = true;
+    for (int s = 1; s < samples; ++s) {
+        equal_all = equal_all && all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_albedo_spec, pixel, s)), rt0)) &&
+                    all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_normal_motion, pixel, s)), rt1)) &&
+                    all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_prelit_power, pixel, s)), rt2));
+    }
+    return equal_all;
 }
 
-// True when the samples of `pixel` differ: some sample carries the MSAA-edge bit (a fragment
-// covered part of the pixel) and some sample differs from sample 0 in some target. Partial
-// fragments of one surface that stored equal values (a flat face's inner diagonal,
-// gbuffer.frag) make no edge. False means the samples are bit-identical, so sample 0 alone
-// shades the pixel (see above).
+// True when the samples of `pixel` may differ: some sample carries the MSAA-edge bit, or some
+// carries the face bit and some sample differs from sample 0 in some target (two triangles of
+// one flat face store equal values, gbuffer.frag: their inner diagonal is no edge). False means
+// the samples are bit-identical, so sample 0 alone shades the pixel (see above).
 bool gbuffer_pixel_is_edge(ivec2 pixel)
 {
-    bool partial = false;
+    bool partial = false, face = false;
     for (int s = 0; s < gbuffer_sample_count(); ++s) {
-        partial = partial || gbuffer_load_depth(pixel, s).msaa_edge;
+        GDepthSample d = gbuffer_load_depth(pixel, s);
+        partial = partial || d.msaa_edge;
+        face = face || d.face_edge;
     }
-    if (!partial) {
-        return false;
+    if (partial || !face) {
+        return partial;
     }
     uint first_depth = floatBitsToUint(gbuffer_fetch(gbuffer_depth, pixel, 0).r);
     for (int s = 1; s < gbuffer_sample_count(); ++s) {
-        if (floatBitsToUint(gbuffer_fetch(gbuffer_depth, pixel, s).r) != first_depth ||
-            !gbuffer_colours_equal_first(pixel, s)) {
+        if (floatBitsToUint(gbuffer_fetch(gbuffer_depth, pixel, s).r) != first_depth) {
             return true;
         }
     }
-    return false;
+    return !gbuffer_colours_all_equal(pixel, gbuffer_sample_count());
 }
 
 

@@ -58,6 +58,7 @@ Surface face_plane_surface()
 void main()
 {
     bool partial = gbuffer_fragment_is_partial();
+    bool on_face_plane = false;
     Surface surface = Surface(in_world_pos, normalize(in_normal), gl_FragCoord.z);
     if (partial && in_face_normal.w > 0.5) {
         // The plane's depth at the pixel centre is the rasteriser's, up to rounding; where the
@@ -66,6 +67,7 @@ void main()
         Surface on_plane = face_plane_surface();
         if (abs(on_plane.depth - gl_FragCoord.z) <= FACE_PLANE_DEPTH_TOLERANCE * gl_FragCoord.z) {
             surface = on_plane;
+            on_face_plane = true;
         }
     }
     vec3 normal = surface.normal;
@@ -85,5 +87,9 @@ void main()
     // One depth per pixel: every covered sample stores the pixel-centre depth, so a pixel
     // inside one surface has bit-identical samples; its two lowest bits are the MSAA-edge and
     // sun-facing bits (see gbuffer.glsl).
-    gl_FragDepth = gbuffer_encode_depth(surface.depth, partial, gbuffer_faces_sun(stored_normal, scene.sun_direction.xyz));
+    // A partial fragment marks its samples: with the face bit where it stored its face's
+    // canonical values (the pixel is an edge only if the samples then differ), else with the
+    // MSAA-edge bit (an edge).
+    gl_FragDepth = gbuffer_encode_depth(surface.depth, partial && !on_face_plane,
+                                        gbuffer_faces_sun(stored_normal, scene.sun_direction.xyz), on_face_plane);
 }

@@ -54,6 +54,8 @@ struct Sample {
   bool edge_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 1u) != 0; }
   // gbuffer.glsl: the next mantissa bit, set by the material where the stored normal faces the sun.
   bool sun_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 2u) != 0; }
+  // gbuffer.glsl: the third, set by a partial fragment that stored its flat face's canonical values.
+  bool face_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 4u) != 0; }
 };
 
 glm::vec4 multiply(const glm::mat4& m, const glm::vec4& v) {
@@ -179,18 +181,21 @@ class SampleClassifier {
 };
 
 Flags classify_pixel(const SampleClassifier& classifier, const GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
-  // The MSAA-edge bit of any sample (gbuffer.glsl: materials set it on partial coverage) makes an
-  // edge only where some sample differs from sample 0, bit for bit, in some target
-  // (gbuffer_pixel_is_edge()).
-  bool partial = false;
-  for (std::uint32_t s = 0; s < g.samples; ++s) partial = partial || Sample{g.at(x, y, s)}.edge_bit();
-  bool edge = false;
-  for (std::uint32_t s = 1; partial && s < g.samples; ++s) {
-    edge = edge || std::memcmp(g.at(x, y, s), g.at(x, y, 0), kStoredFloats * sizeof(float)) != 0;
+  // gbuffer_pixel_is_edge(): the MSAA-edge bit of any sample (gbuffer.glsl: materials set it on
+  // partial coverage) makes an edge; the face bit (partial coverage by a flat face's canonical
+  // values) only where some sample differs from sample 0, bit for bit, in some target.
+  bool edge = false, face = false;
+  for (std::uint32_t s = 0; s < g.samples; ++s) {
+    edge = edge || Sample{g.at(x, y, s)}.edge_bit();
+    face = face || Sample{g.at(x, y, s)}.face_bit();
   }
+  for (std::uint32_t s = 1; face && !edge && s < g.samples; ++s) {
+    edge = std::memcmp(g.at(x, y, s), g.at(x, y, 0), kStoredFloats * sizeof(float)) != 0;
+  }
+  const bool partial = edge || face;
   Flags f;
   f.add(kEdge, edge, false);
-  const std::uint32_t classified = edge ? g.samples : 1;
+  const std::uint32_t classified = partial ? g.samples : 1;
   for (std::uint32_t s = 0; s < classified; ++s) f.merge(classifier.classify(x, y, Sample{g.at(x, y, s)}));
   return f;
 }
