@@ -27,8 +27,9 @@ foreach(heading IN ITEMS "### Optimised vs raw permutations (64x36)" "### Tile s
                          "### Coalesced vs uncoalesced tiles (64x36)" "### Point sprites vs triangle pairs (64x36)"
                          "### Resolution scaling, naive vs classified"
                          "### Per-stage cost, naive vs classified (64x36)" "| 96x54 |"
-                         "### Classified vs per-pixel branching (dynamic) vs naive" "| 1x | 96x54 | closeup |"
-                         "| 4x MSAA, 96x54, CPU index build | 6 |")
+                         "### Classified vs per-pixel branching (dynamic) vs naive" "| raster | 1x | 96x54 | closeup |"
+                         "| compute | 1x | 96x54 | closeup |" "| raster, 4x MSAA, 96x54, CPU index build | 6 |"
+                         "| compute, 4x MSAA, 96x54, CPU index build | 6 |")
   string(FIND "${stdout}" "${heading}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "tilelight_sweep --quick printed no '${heading}'\nstdout:\n${stdout}")
