@@ -173,7 +173,7 @@ std::vector<Camera> demo_cameras(const SunAndAtmosphere& sun) {
   cameras.push_back({"low", "a grazing view across the boxes into the sun",
                      {-30.0f, 1.8f, 5.0f}, {10.0f, 3.0f, -60.0f}, {0, 1, 0}, 70.0f, {-5.0f, 0.0f, -35.0f}});
   // The two views below show little or no sky, where every tile needs lighting: the default
-  // camera's 36 % sky flatters tile classification (a sky tile costs almost nothing).
+  // camera's 37 % sky flatters tile classification (a sky tile costs almost nothing).
   // Inside the field, down the gap between two columns of boxes and pillars, pitched down 12 degrees.
   cameras.push_back({"street", "down the street between the boxes and pillars: little sky",
                      {3.5f, 1.7f, -9.0f}, {3.5f, -8.9f, -59.0f}, {0, 1, 0}, 60.0f, {3.5f, 0.0f, -40.0f}});
