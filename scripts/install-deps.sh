@@ -2,17 +2,18 @@
 # Installs the Debian 12 packages the project builds with, if any is missing (needs root).
 #   scripts/install-deps.sh           what the build and the main job need
 #   scripts/install-deps.sh --tests   that, and what only the test suite uses (clang-format for
-#                                     the style test)
+#                                     the style test, assimp-testmodels' real and broken glTF
+#                                     files for the scene tests)
 set -eu
 
 PACKAGES="cmake ninja-build g++ pkg-config
 glslang-dev glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev
 libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
 libglm-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
-libcli11-dev nlohmann-json3-dev libstb-dev
+libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev
 libcurl4-openssl-dev nginx"
 if [ "${1:-}" = "--tests" ]; then
-    PACKAGES="$PACKAGES clang-format"
+    PACKAGES="$PACKAGES clang-format assimp-testmodels"
 fi
 
 missing=""

@@ -134,7 +134,9 @@ void add_spheres(Scene& scene, InstanceMaker& maker, std::mt19937& rng) {
   }
 }
 
-SunAndAtmosphere demo_sun() {
+}  // namespace
+
+SunAndAtmosphere make_demo_sun() {
   SunAndAtmosphere sun{};
   sun.sun_direction = glm::normalize(glm::vec3(-0.55f, 0.62f, 0.35f));
   sun.sun_color = glm::vec3(1.55f, 1.45f, 1.25f);
@@ -153,6 +155,8 @@ SunAndAtmosphere demo_sun() {
   sun.ambient_ground = glm::vec3(0.16f, 0.15f, 0.13f);
   return sun;
 }
+
+namespace {
 
 std::vector<Camera> demo_cameras(const SunAndAtmosphere& sun) {
   std::vector<Camera> cameras;
@@ -196,6 +200,14 @@ const Camera& Scene::camera(std::string_view name) const {
   throw Error("unknown camera '" + std::string(name) + "' (known: " + known + ")");
 }
 
+std::uint64_t Scene::triangle_count() const {
+  std::uint64_t triangles = 0;
+  for (const MeshBatch& batch : batches) {
+    triangles += static_cast<std::uint64_t>(meshes.at(batch.mesh).indices.size() / 3) * batch.instance_count;
+  }
+  return triangles;
+}
+
 std::vector<std::string> Scene::camera_names() const {
   std::vector<std::string> names;
   for (const Camera& c : cameras) names.push_back(c.name);
@@ -213,7 +225,7 @@ void mark_flat_faced_instances(Scene& scene) {
 
 Scene make_demo_scene() {
   Scene scene;
-  scene.sun = demo_sun();
+  scene.sun = make_demo_sun();
   scene.meshes.push_back(make_ground(300.0f));
   scene.meshes.push_back(make_cube());
   scene.meshes.push_back(make_sphere(24, 48));

@@ -81,6 +81,10 @@ struct Scene {
   std::vector<MeshBatch> batches;
   std::vector<Camera> cameras;  // cameras[0] is the default
   SunAndAtmosphere sun;
+  std::string source;  // the file the scene was loaded from (its name only); empty: the procedural scene
+
+  // Triangles drawn per frame: every batch's instances times its mesh's triangles.
+  std::uint64_t triangle_count() const;
 
   // Throws tilelight::Error listing the known names when `name` is not a camera.
   const Camera& camera(std::string_view name) const;
@@ -92,6 +96,10 @@ struct Scene {
 // area, and sky. Cameras: "default" (all seven tile properties in frame), "sky" (only sky),
 // "shadow" (only ground in solid shadow), "low" (grazing view across the boxes).
 Scene make_demo_scene();
+
+// The demo scene's sun, sky, fog and shadow settings (the shadow map covers the demo's field); a
+// loaded scene starts from them and fits the shadow map and distances to its own bounds.
+SunAndAtmosphere make_demo_sun();
 
 // Camera matrices for a framebuffer of the given aspect ratio (Vulkan clip space: y down,
 // depth 0..1).

@@ -1,0 +1,18 @@
+#pragma once
+// The JSON types of the glTF properties, checked before tinygltf reads them: tinygltf skips an
+// optional property of the wrong type without a word ("scene": "hello" would silently mean
+// scene 0), and this library treats every wrong type as an error.
+
+#include <string_view>
+
+namespace tilelight::gltf_detail {
+
+// Parses `json_text` and checks the type of every glTF 2.0 core property it has (integers
+// non-negative, fixed-length number arrays of their length, required properties present),
+// "name" being a string and "extensions" an object of objects everywhere, that every embedded
+// (base64 data URI) buffer holds exactly its "byteLength" bytes, and that the file requires no
+// extension this loader cannot honour. Throws tilelight::Error naming the property
+// ("meshes[0].primitives: expected an array, got an object"), without the file's name.
+void check_json_schema(std::string_view json_text);
+
+}  // namespace tilelight::gltf_detail

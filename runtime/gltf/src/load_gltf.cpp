@@ -1,0 +1,250 @@
+// glTF 2.0 -> Scene: the container and JSON types checked here, the file parsed by tinygltf,
+// then every reference and length checked again while the scene is built from it.
+#include "tilelight/gltf/load_gltf.h"
+
+#include "glb_container.h"
+#include "json_schema.h"
+#include "node_graph.h"
+#include "primitive_mesh.h"
+#include "scene_framing.h"
+#include "tilelight/base/error.h"
+#include "tinygltf.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <map>
+
+namespace tilelight {
+namespace {
+
+using namespace gltf_detail;
+
+constexpr std::uint64_t kMaxFileBytes = std::uint64_t{1} << 31;  // 2 GiB: a file, or one external buffer
+constexpr std::size_t kMaxInstances = std::size_t{1} << 20;
+constexpr std::uint64_t kMaxSceneTriangles = std::uint64_t{1} << 26;  // drawn per frame, instances counted
+
+// Reads a whole file; `what` names it in errors.
+std::vector<std::uint8_t> read_file(const std::filesystem::path& path, const std::string& what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw Error(what + ": is a folder, not a file");
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw Error(what + ": cannot open: " + std::strerror(errno));
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw Error(what + ": cannot read its size");
+  if (static_cast<std::uint64_t>(size) > kMaxFileBytes) {
+    throw Error(fmt::format("{}: {} bytes, more than this loader reads ({})", what, size, kMaxFileBytes));
+  }
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  in.seekg(0);
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), size))
+    throw Error(what + ": read failed: " + std::strerror(errno));
+  return bytes;
+}
+
+// tinygltf's file callbacks: external buffers are read with read_file(), or, for a load from
+// memory without a folder, refused. Paths are used as written (no wordexp() expansion).
+struct FileAccess {
+  bool allowed = false;
+};
+
+bool file_exists(const std::string& path, void* user) {
+  if (!static_cast<FileAccess*>(user)->allowed) return false;
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+std::string expand_path(const std::string& path, void*) { return path; }
+
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  if (!static_cast<FileAccess*>(user)->allowed) {
+    if (err != nullptr) *err += path + ": external files are not read here\n";
+    return false;
+  }
+  try {
+    *out = read_file(path, path);
+    return true;
+  } catch (const Error& e) {
+    if (err != nullptr) *err += std::string(e.what()) + "\n";
+    return false;
+  }
+}
+
+bool write_whole_file(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
+  if (err != nullptr) *err += path + ": the loader writes no files\n";
+  return false;
+}
+
+// Textures are not sampled (docs/scene-input.md): image bytes are accepted and dropped.
+bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+// tinygltf's multi-line error text as one line, with any data URI it quotes cut short.
+std::string one_line(std::string text) {
+  for (std::size_t at = text.find("data:"); at != std::string::npos; at = text.find("data:", at + 1)) {
+    const std::size_t end = std::min(text.find(' ', at), text.size());
+    if (end - at > 48) text.replace(at + 40, end - at - 40, "...");
+  }
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  std::replace(text.begin(), text.end(), '\n', ';');
+  return text.empty() ? "tinygltf rejected the file without saying why" : text;
+}
+
+tinygltf::Model parse(std::span<const std::uint8_t> bytes, const std::filesystem::path& base_dir) {
+  FileAccess access{!base_dir.empty()};
+  tinygltf::TinyGLTF parser;
+  parser.SetFsCallbacks({&file_exists, &expand_path, &read_whole_file, &write_whole_file, &access});
+  parser.SetImageLoader(&ignore_image, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  bool ok = false;
+  if (is_glb(bytes)) {
+    check_json_schema(split_glb(bytes).json);
+    ok = parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
+                                     base_dir.string());
+  } else {
+    if (bytes.empty()) throw Error("the file is empty");
+    check_json_schema(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    ok = parser.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                    static_cast<unsigned int>(bytes.size()), base_dir.string());
+  }
+  if (!ok) throw Error(one_line(err));
+  return model;
+}
+
+std::size_t chosen_scene(const tinygltf::Model& model, const GltfLoadOptions& options) {
+  if (model.scenes.empty()) throw Error("the file has no scene (\"scenes\" is empty or missing): nothing to draw");
+  if (options.scene_index) {
+    if (*options.scene_index >= model.scenes.size()) {
+      throw Error(fmt::format("scene {} does not exist (the file has {} scene(s), 0 to {})", *options.scene_index,
+                              model.scenes.size(), model.scenes.size() - 1));
+    }
+    return *options.scene_index;
+  }
+  if (model.defaultScene < 0) return 0;
+  if (static_cast<std::size_t>(model.defaultScene) >= model.scenes.size()) {
+    throw Error(
+        fmt::format("scene: scene {} does not exist (the file has {})", model.defaultScene, model.scenes.size()));
+  }
+  return static_cast<std::size_t>(model.defaultScene);
+}
+
+// The material's base colour factor (linear RGB) and a Blinn-Phong stand-in for its metallic
+// and roughness factors: rougher is dimmer and broader.
+Instance instance_of(const tinygltf::Model& model, int material, const glm::mat4& world, std::uint32_t motion_id,
+                     const std::string& user) {
+  glm::vec4 colour(1.0f);
+  double metallic = 1.0, roughness = 1.0;
+  if (material >= 0) {
+    if (static_cast<std::size_t>(material) >= model.materials.size()) {
+      throw Error(fmt::format("{}.material: material {} does not exist (the file has {})", user, material,
+                              model.materials.size()));
+    }
+    const tinygltf::PbrMetallicRoughness& pbr =
+        model.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() != 4) {
+      throw Error(fmt::format("materials[{}].pbrMetallicRoughness.baseColorFactor: expected 4 numbers", material));
+    }
+    for (int c = 0; c < 4; ++c) {
+      const double v = pbr.baseColorFactor[static_cast<std::size_t>(c)];
+      if (!std::isfinite(v)) throw Error(fmt::format("materials[{}]: base colour factor is not finite", material));
+      colour[c] = static_cast<float>(std::clamp(v, 0.0, 1.0));
+    }
+    metallic = std::isfinite(pbr.metallicFactor) ? std::clamp(pbr.metallicFactor, 0.0, 1.0) : 1.0;
+    roughness = std::isfinite(pbr.roughnessFactor) ? std::clamp(pbr.roughnessFactor, 0.0, 1.0) : 1.0;
+  }
+  const auto smooth = static_cast<float>(1.0 - roughness);
+  const float spec_amount = 0.05f + smooth * (0.25f + 0.5f * static_cast<float>(metallic));
+  const float spec_power = 4.0f + 124.0f * smooth * smooth;
+  return Instance{world, glm::vec4(glm::vec3(colour), spec_amount),
+                  glm::vec4(spec_power, static_cast<float>(motion_id), 0.0f, 0.0f)};
+}
+
+// A transform that collapses a dimension draws nothing and has no normal matrix.
+bool invertible(const glm::mat4& m) { return std::fabs(glm::determinant(glm::mat3(m))) >= 1e-18f; }
+
+Scene build_scene(const tinygltf::Model& model, const GltfLoadOptions& options) {
+  const std::size_t scene_index = chosen_scene(model, options);
+  const std::vector<PlacedMesh> placed = place_meshes(model, scene_index);
+
+  Scene scene;
+  std::map<std::pair<int, int>, std::optional<std::uint32_t>> mesh_of;  // (mesh, primitive) -> scene mesh
+  std::vector<std::vector<Instance>> instances_of_mesh;
+  std::uint64_t triangles = 0;
+  std::size_t instance_count = 0;
+  std::uint32_t next_motion_id = 1;
+  for (const PlacedMesh& p : placed) {
+    const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(p.mesh)];
+    for (std::size_t k = 0; k < mesh.primitives.size(); ++k) {
+      const auto key = std::pair(p.mesh, static_cast<int>(k));
+      auto found = mesh_of.find(key);
+      if (found == mesh_of.end()) {
+        std::optional<Mesh> built = primitive_mesh(model, p.mesh, static_cast<int>(k));
+        std::optional<std::uint32_t> index;
+        if (built) {
+          index = static_cast<std::uint32_t>(scene.meshes.size());
+          scene.meshes.push_back(std::move(*built));
+          instances_of_mesh.emplace_back();
+        }
+        found = mesh_of.emplace(key, index).first;
+      }
+      if (!found->second || !invertible(p.world)) continue;
+      const std::string user = fmt::format("meshes[{}].primitives[{}]", p.mesh, k);
+      instances_of_mesh[*found->second].push_back(
+          instance_of(model, mesh.primitives[k].material, p.world, next_motion_id, user));
+      next_motion_id = next_motion_id % 127u + 1u;  // 1..127; 0 is the sky
+      triangles += scene.meshes[*found->second].indices.size() / 3;
+      if (++instance_count > kMaxInstances || triangles > kMaxSceneTriangles) {
+        throw Error(fmt::format("scenes[{}] is too large: more than {} mesh instances or {} triangles", scene_index,
+                                kMaxInstances, kMaxSceneTriangles));
+      }
+    }
+  }
+  if (triangles == 0) {
+    throw Error(
+        fmt::format("scenes[{}] has no triangles to draw ({} node(s) with a mesh)", scene_index, placed.size()));
+  }
+  for (std::uint32_t m = 0; m < instances_of_mesh.size(); ++m) {
+    if (instances_of_mesh[m].empty()) continue;
+    const auto first = static_cast<std::uint32_t>(scene.instances.size());
+    scene.instances.insert(scene.instances.end(), instances_of_mesh[m].begin(), instances_of_mesh[m].end());
+    scene.batches.push_back({m, first, static_cast<std::uint32_t>(instances_of_mesh[m].size())});
+  }
+  fit_scene(scene, scene_bounds(scene));
+  return scene;
+}
+
+Scene load(std::span<const std::uint8_t> bytes, const std::string& name, const std::string& source,
+           const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
+  try {
+    Scene scene = build_scene(parse(bytes, base_dir), options);
+    scene.source = source;
+    return scene;
+  } catch (const Error& e) {
+    throw Error(name + ": " + e.what());
+  } catch (const std::bad_alloc&) {
+    throw Error(name + ": out of memory while loading it");
+  } catch (const std::length_error& e) {
+    throw Error(name + ": too large to load (" + e.what() + ")");
+  }
+}
+
+}  // namespace
+
+Scene load_gltf_scene(const std::filesystem::path& file, const GltfLoadOptions& options) {
+  const std::vector<std::uint8_t> bytes = read_file(file, file.string());
+  std::filesystem::path folder = file.parent_path();
+  if (folder.empty()) folder = ".";
+  return load(bytes, file.string(), file.filename().string(), folder, options);
+}
+
+Scene load_gltf_scene_from_memory(std::span<const std::uint8_t> bytes, const std::string& name,
+                                  const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
+  return load(bytes, name, std::filesystem::path(name).filename().string(), base_dir, options);
+}
+
+}  // namespace tilelight

@@ -1,0 +1,111 @@
+#include "primitive_mesh.h"
+
+#include "accessor_reader.h"
+#include "tilelight/base/error.h"
+
+#include <fmt/format.h>
+
+#include <numeric>
+
+namespace tilelight::gltf_detail {
+namespace {
+
+// A strip or fan as a triangle list; both keep the winding of the first triangle.
+std::vector<std::uint32_t> to_triangle_list(const std::vector<std::uint32_t>& indices, int mode) {
+  std::vector<std::uint32_t> list;
+  if (indices.size() < 3) return list;
+  list.reserve((indices.size() - 2) * 3);
+  for (std::size_t i = 2; i < indices.size(); ++i) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      list.insert(list.end(), {indices[0], indices[i - 1], indices[i]});
+    } else if (i % 2 == 0) {
+      list.insert(list.end(), {indices[i - 2], indices[i - 1], indices[i]});
+    } else {
+      list.insert(list.end(), {indices[i - 1], indices[i - 2], indices[i]});
+    }
+  }
+  return list;
+}
+
+glm::vec3 face_normal(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+  const glm::vec3 n = glm::cross(b - a, c - a);
+  const float length = glm::length(n);
+  // A degenerate triangle covers no pixel; any unit normal will do.
+  return length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+bool usable_normals(const std::vector<glm::vec3>& normals) {
+  for (const glm::vec3& n : normals) {
+    const float length = glm::length(n);
+    if (!(length > 1e-20f) || !std::isfinite(length)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<Mesh> primitive_mesh(const tinygltf::Model& model, int mesh_index, int primitive_index) {
+  const tinygltf::Primitive& primitive =
+      model.meshes[static_cast<std::size_t>(mesh_index)].primitives[static_cast<std::size_t>(primitive_index)];
+  const std::string name = fmt::format("meshes[{}].primitives[{}]", mesh_index, primitive_index);
+  const int mode = primitive.mode;
+  if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN) {
+    throw Error(fmt::format("{}.mode: {} is not a glTF primitive mode (0 to 6)", name, mode));
+  }
+  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+    return std::nullopt;  // points and lines
+  }
+  const auto position = primitive.attributes.find("POSITION");
+  if (position == primitive.attributes.end()) throw Error(name + ": no POSITION attribute");
+  const std::vector<glm::vec3> positions = read_vec3(model, position->second, name + ".attributes.POSITION");
+
+  std::vector<std::uint32_t> indices;
+  if (primitive.indices >= 0) {
+    indices = read_indices(model, primitive.indices, name + ".indices", positions.size());
+  } else {
+    indices.resize(positions.size());
+    std::iota(indices.begin(), indices.end(), 0u);
+  }
+  if (mode != TINYGLTF_MODE_TRIANGLES) indices = to_triangle_list(indices, mode);
+  if (indices.size() > kMaxPrimitiveIndices) {
+    throw Error(fmt::format("{}: {} triangles, more than this loader draws in one primitive ({})", name,
+                            indices.size() / 3, kMaxPrimitiveIndices / 3));
+  }
+  if (indices.size() % 3 != 0) {
+    throw Error(fmt::format("{}: {} {}, not a multiple of 3 (triangles)", name, indices.size(),
+                            primitive.indices >= 0 ? "indices" : "vertices"));
+  }
+  if (indices.empty()) return std::nullopt;
+
+  std::vector<glm::vec3> normals;
+  if (const auto normal = primitive.attributes.find("NORMAL"); normal != primitive.attributes.end()) {
+    normals = read_vec3(model, normal->second, name + ".attributes.NORMAL");
+    if (normals.size() != positions.size()) {
+      throw Error(
+          fmt::format("{}.attributes: NORMAL has {} elements, POSITION {}", name, normals.size(), positions.size()));
+    }
+  }
+
+  Mesh mesh{name, {}, {}};
+  if (!normals.empty() && usable_normals(normals)) {
+    mesh.vertices.reserve(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      mesh.vertices.push_back({positions[i], glm::normalize(normals[i])});
+    mesh.indices = std::move(indices);
+    return mesh;
+  }
+  // Flat shading: three vertices of its own per triangle.
+  mesh.vertices.reserve(indices.size());
+  mesh.indices.resize(indices.size());
+  for (std::size_t t = 0; t < indices.size(); t += 3) {
+    const glm::vec3 a = positions[indices[t]], b = positions[indices[t + 1]], c = positions[indices[t + 2]];
+    const glm::vec3 n = face_normal(a, b, c);
+    for (std::size_t k = 0; k < 3; ++k) {
+      mesh.indices[t + k] = static_cast<std::uint32_t>(t + k);
+      mesh.vertices.push_back({positions[indices[t + k]], n});
+    }
+  }
+  return mesh;
+}
+
+}  // namespace tilelight::gltf_detail
