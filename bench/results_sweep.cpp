@@ -17,6 +17,7 @@
 #include "tilelight/app/output_files.h"
 #include "tilelight/base/atomic_write.h"
 #include "tilelight/base/error.h"
+#include "tilelight/gltf/load_gltf.h"
 #include "tilelight/picture/png.h"
 #include "tilelight/scene/scene.h"
 #include "tilelight/vulkan/context.h"
@@ -88,9 +89,8 @@ std::map<std::string, std::string> report_comparisons(const SweepPlan& plan,
 // Round-robin within each frame size (the sizes in the order they first appear): every renderer
 // of a group is alive at once, and a group of 1440p or 4K renderers at every MSAA mode and camera
 // is as much memory as should be held together.
-std::vector<Measurement> measure_by_size(const Context& context, const std::vector<RendererOptions>& configurations,
-                                         std::uint32_t frames) {
-  const Scene scene = make_demo_scene();
+std::vector<Measurement> measure_by_size(const Context& context, const Scene& scene,
+                                         const std::vector<RendererOptions>& configurations, std::uint32_t frames) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> sizes;
   for (const RendererOptions& o : configurations) {
     if (std::find(sizes.begin(), sizes.end(), std::pair(o.width, o.height)) == sizes.end()) {
@@ -111,7 +111,18 @@ std::vector<Measurement> measure_by_size(const Context& context, const std::vect
   return measurements;
 }
 
+// The procedural scene, or the --scene file (a bad one is an error naming the flag and file).
+Scene sweep_scene(const SweepOptions& options) {
+  if (options.scene.empty()) return make_demo_scene();
+  try {
+    return load_gltf_scene(options.scene, GltfLoadOptions{options.scene_index});
+  } catch (const Error& e) {
+    throw Error(std::string("--scene ") + e.what());
+  }
+}
+
 int run_sweep(const SweepOptions& options) {
+  const Scene scene = sweep_scene(options);  // a bad file fails before any Vulkan work
   ContextOptions context_options;
   context_options.device = options.device;
   const Context context(context_options);
@@ -121,16 +132,19 @@ int run_sweep(const SweepOptions& options) {
   if (!options.update_doc.empty()) {
     (void)replace_marked_sections(read_document(options.update_doc), empty_sections(plan), options.update_doc);
   }
-  const std::vector<Measurement> measurements = measure_by_size(context, plan.configurations, options.frames);
+  const std::vector<Measurement> measurements = measure_by_size(context, scene, plan.configurations, options.frames);
 
   const char* threads = std::getenv("LP_NUM_THREADS");
   const std::string run_line = fmt::format(
       "Device: {}, {}x MSAA where no row says otherwise, median of {} frame(s) after 1 warm-up frame "
-      "(configurations of one frame size measured round-robin), LP_NUM_THREADS={}\n",
+      "(configurations of one frame size measured round-robin), LP_NUM_THREADS={}, scene {} ({} triangles)\n",
       context.device_name(), measurements.front().msaa_samples, options.frames,
-      threads != nullptr ? threads : "(default)");
+      threads != nullptr ? threads : "(default)", scene.source.empty() ? "procedural" : scene.source,
+      scene.triangle_count());
   const std::map<std::string, std::string> sections = report_comparisons(plan, measurements, run_line, files);
-  const SweepRun run{context.device_name(), threads != nullptr ? threads : "", &options, &plan, &measurements};
+  SweepRun run{context.device_name(), threads != nullptr ? threads : "", &options, &plan, &measurements};
+  run.scene = scene.source;
+  run.scene_triangles = scene.triangle_count();
   files.stage_text("results.json", results_json(run));
   files.commit();
   std::cerr << "wrote " << (files.folder() / "results.json").string() << " and one PNG per comparison\n";

@@ -62,6 +62,8 @@ std::string results_json(const SweepRun& run) {
   j["warmup_frames"] = 1;
   j["schedule"] = "round-robin";  // timed frame f of every configuration before frame f + 1 of any
   j["camera"] = run.plan->configurations.front().camera;
+  j["scene"] = run.scene.empty() ? Json(nullptr) : Json(run.scene);
+  j["scene_triangles"] = run.scene_triangles;
   Json sizes = Json::array();
   for (const FrameSize& s : run.options->sizes) sizes.push_back(s.name);
   j["sizes"] = sizes;

@@ -16,9 +16,12 @@ struct SweepRun {
   const SweepOptions* options = nullptr;
   const SweepPlan* plan = nullptr;
   const std::vector<Measurement>* measurements = nullptr;  // in plan->configurations order
+  std::string scene;                                       // the --scene file's name; "" = the procedural scene
+  std::uint64_t scene_triangles = 0;
 };
 
-// {"device", "frames", "warmup_frames", "schedule", "camera", "sizes", "lavapipe_threads",
+// {"device", "frames", "warmup_frames", "schedule", "camera", "scene" (null: procedural),
+//  "scene_triangles", "sizes", "lavapipe_threads",
 //  "configurations": [{key, width, height, msaa_samples, tile_size, path, permutations,
 //                      coalesce, pipelines, tiles, rectangles {uncoalesced, coalesced},
 //                      timings_ms {...}, classified_light_ms, speedup, equivalence {...}}],

@@ -46,9 +46,13 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
       ->capture_default_str();
   std::vector<std::string> msaa{"auto", "1"};
   options.cameras = {"default", "low", "street", "closeup", "shadow", "sky"};
-  cli.add_option("--cameras", options.cameras, "cameras of the baseline comparison (tilelight --list-cameras)")
-      ->delimiter(',')
-      ->capture_default_str();
+  CLI::Option* cameras =
+      cli.add_option("--cameras", options.cameras, "cameras of the baseline comparison (tilelight --list-cameras)")
+          ->delimiter(',')
+          ->capture_default_str();
+  CLI::Option* scene = cli.add_option("--scene", options.scene,
+                                      "a glTF 2.0 file (.gltf, .glb) to measure instead of the procedural scene");
+  cli.add_option("--scene-index", options.scene_index, "which scene of the --scene file")->needs(scene);
   cli.add_option("--msaa", msaa, "G-buffer sample counts of the baseline comparison: auto, 1, 2, 4, 8, 16")
       ->delimiter(',')
       ->check(CLI::IsMember({"auto", "1", "2", "4", "8", "16"}))
@@ -81,6 +85,7 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
     exit_code = cli.exit(e, out, err) == 0 ? 0 : 2;
     return false;
   }
+  if (!options.scene.empty() && cameras->count() == 0) options.cameras = {"default"};
   if (options.quick) {
     sizes = {"64x36", "96x54"};
     options.frames = 1;

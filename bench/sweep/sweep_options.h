@@ -2,6 +2,7 @@
 // The command line of tilelight_sweep: how many frames, which sizes, which device, where to.
 
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -30,6 +31,10 @@ struct SweepOptions {
   std::vector<std::string> only;
   std::string device;  // as tilelight --device: "" = lavapipe, an index or a name substring
   bool quick = false;
+  // A glTF file to measure instead of the procedural scene ("" = the procedural scene), and
+  // which of its scenes; with a file, the cameras default to its one camera, "default".
+  std::string scene;
+  std::optional<std::uint32_t> scene_index;
   // A markdown file whose marked sections (see doc_update.h) get the new tables; "" = none.
   std::string update_doc;
 };

@@ -4,6 +4,7 @@
 #include "tilelight/app/output_files.h"
 #include "tilelight/app/process_stats.h"
 #include "tilelight/app/report.h"
+#include "tilelight/gltf/load_gltf.h"
 #include "tilelight/picture/png.h"
 #include "tilelight/picture/tile_class_image.h"
 #include "tilelight/render/tile_renderer.h"
@@ -38,6 +39,8 @@ struct Arguments {
   std::string light_pass = "raster";
   std::string device = "auto";
   std::string out = "tilelight-out";
+  std::string scene;  // a glTF file; empty: the procedural scene
+  std::optional<std::uint32_t> scene_index;
   bool validation = false;
   bool no_coalesce = false;
   bool list_devices = false;
@@ -93,6 +96,11 @@ void add_options(CLI::App& cli, Arguments& a) {
       ->capture_default_str();
   cli.add_option("--camera", a.camera, "camera: default, sky, shadow, low, street, closeup (--list-cameras)")
       ->capture_default_str();
+  CLI::Option* scene =
+      cli.add_option("--scene", a.scene,
+                     "a glTF 2.0 file (.gltf or .glb) to render instead of the procedural scene (camera: default)");
+  cli.add_option("--scene-index", a.scene_index, "which scene of the --scene file (default: the file's own choice)")
+      ->needs(scene);
   cli.add_option("--frames", a.frames, "timed frames (after one warm-up frame); timings are medians over them")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -126,10 +134,19 @@ void add_options(CLI::App& cli, Arguments& a) {
   cli.add_flag("--list-cameras", a.list_cameras, "list the cameras and exit");
 }
 
+// A bad file is an error about the flag's value: "--scene FILE: what is wrong".
+Scene load_scene(const Arguments& a) {
+  try {
+    return load_gltf_scene(a.scene, GltfLoadOptions{a.scene_index});
+  } catch (const Error& e) {
+    throw Error(std::string("--scene ") + e.what());
+  }
+}
+
 // `stage` always says what the run is doing, for the message if it fails.
 int render(const Arguments& a, std::ostream& out, std::string& stage) {
   stage = "building the scene";
-  const Scene scene = make_demo_scene();
+  const Scene scene = a.scene.empty() ? make_demo_scene() : load_scene(a);
   if (a.list_cameras) {
     for (const Camera& c : scene.cameras) out << c.name << ": " << c.description << '\n';
     return 0;
@@ -221,6 +238,8 @@ int render(const Arguments& a, std::ostream& out, std::string& stage) {
                                                          : std::string(to_string(renderer.tile_primitive())),
                 a.baseline,
                 a.light_pass};
+  report.run.scene = scene.source;
+  report.run.scene_triangles = scene.triangle_count();
   count_tiles(report, raw_ids);
   report.primitives_uncoalesced = last.stats.primitives_uncoalesced;
   report.primitives_coalesced = last.stats.primitives_coalesced;

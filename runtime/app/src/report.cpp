@@ -105,6 +105,9 @@ std::string report_json(const FrameReport& r) {
   j["path"] = r.run.path;
   j["permutations"] = r.run.permutations;
   j["camera"] = r.run.camera;
+  // The --scene file's name, or null for the procedural scene; the triangles of either.
+  j["scene"] = r.run.scene.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.run.scene);
+  j["scene_triangles"] = r.run.scene_triangles;
   j["coalesce"] = r.run.coalesce;
   j["primitive"] = r.run.primitive;
   j["baselines"] = r.run.baselines;
@@ -151,6 +154,8 @@ std::string timing_table(const FrameReport& r) {
   out += fmt::format("{}x{}, {}x MSAA, {}, {} light pass, path {}, {} permutations, camera {}, median of {} frame(s)\n",
                      r.run.width, r.run.height, r.run.msaa_samples, r.run.device, r.run.light_pass, r.run.path,
                      r.run.permutations, r.run.camera, r.run.frames);
+  out +=
+      fmt::format("scene {} ({} triangles)\n", r.run.scene.empty() ? "procedural" : r.run.scene, r.run.scene_triangles);
   out += fmt::format("{:<28}{:>12}{:>12}{:>14}\n", "stage (ms)", "naive", "dynamic", "classified");
   auto row = [&](const char* name, bool in_baselines, double naive_ms, double dynamic_ms, double classified_ms) {
     out += fmt::format("{:<28}{:>12}{:>12}{:>14.3f}\n", name, cell(naive && in_baselines, naive_ms),

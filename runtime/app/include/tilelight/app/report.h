@@ -21,6 +21,9 @@ struct RunDescription {
   std::string primitive;         // "points" | "triangles": what the tile pass drew; "workgroups" (compute)
   std::string baselines;         // "naive" | "dynamic" | "both": the full-screen passes that ran
   std::string light_pass;        // "raster" | "compute": how every light pass ran
+  // The scene: the --scene file's name (empty: the procedural scene), its triangles per G-buffer pass.
+  std::string scene;
+  std::uint64_t scene_triangles = 0;
 };
 
 // Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).

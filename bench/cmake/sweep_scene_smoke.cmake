@@ -1,0 +1,29 @@
+# Smoke run of tilelight_sweep --scene: the baseline comparison on a glTF file (--quick), whose
+# results.json must name the file and its triangles; then a broken file, which must exit 1
+# naming it, before any output is written.
+# Arguments: -DSWEEP=<tilelight_sweep> -DOUT=<scratch folder> -DSCENE=<a valid .glb> -DBAD=<a broken glTF>.
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${SWEEP}" --quick --only baselines --scene "${SCENE}" --out "${OUT}/good"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "tilelight_sweep --scene exited with ${rc}\nstdout:\n${stdout}\nstderr:\n${stderr}")
+endif()
+get_filename_component(scene_name "${SCENE}" NAME)
+file(READ "${OUT}/good/results.json" results)
+string(JSON scene GET "${results}" scene)
+string(JSON triangles GET "${results}" scene_triangles)
+string(JSON camera GET "${results}" configurations 0 camera)
+if(NOT scene STREQUAL scene_name OR NOT triangles GREATER 0 OR NOT camera STREQUAL "default")
+  message(FATAL_ERROR "results.json: scene '${scene}', ${triangles} triangles, camera '${camera}'")
+endif()
+string(FIND "${stdout}" "scene ${scene_name} (${triangles} triangles)" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "the run line does not name the scene:\n${stdout}")
+endif()
+
+execute_process(COMMAND "${SWEEP}" --quick --only baselines --scene "${BAD}" --out "${OUT}/bad"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
+string(FIND "${stderr}" "error: --scene ${BAD}: " at)
+if(NOT rc EQUAL 1 OR at EQUAL -1 OR EXISTS "${OUT}/bad")
+  message(FATAL_ERROR "a broken --scene: exit ${rc}, stderr:\n${stderr}")
+endif()
