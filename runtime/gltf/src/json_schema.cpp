@@ -256,8 +256,9 @@ void check_json_schema(std::string_view json_text) {
   Json root;
   try {
     root = Json::parse(json_text.begin(), json_text.end());
-  } catch (const Json::parse_error& e) {
-    // e.what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
+  } catch (const Json::exception& e) {
+    // A syntax error (parse_error) or a number too large for a double (out_of_range 406); e.what()
+    // is "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
     std::string what = e.what();
     if (const std::size_t bracket = what.find("] "); bracket != std::string::npos) what.erase(0, bracket + 2);
     throw Error("not valid JSON: " + what);
