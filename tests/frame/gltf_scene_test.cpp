@@ -1,6 +1,7 @@
 // Real glTF 2.0 models (Debian's assimp-testmodels) through the whole frame: classified ==
 // naive and dynamic == naive per pixel under the validation layer, on both index paths, with
-// and without MSAA, as points and as triangle pairs, every tile drawn once.
+// and without MSAA, as points and as triangle pairs, optimised and raw permutations, tile sizes
+// 4 and 8, coalesced and not, every tile drawn once.
 #include "frame_support.h"
 #include "tilelight/gltf/load_gltf.h"
 #include "tilelight_testing/test_support.h"
@@ -22,6 +23,9 @@ struct GltfCase {
   IndexPath path;
   std::uint32_t msaa;  // 0: auto (4x on lavapipe)
   std::optional<TilePrimitive> primitive = std::nullopt;
+  bool raw = false;  // the 96 raw permutations instead of the 32 optimised ones
+  std::uint32_t tile_size = 4;
+  bool coalesce = true;
 };
 
 void PrintTo(const GltfCase& c, std::ostream* os) { *os << c.name; }
@@ -41,6 +45,9 @@ TEST_P(GltfFrames, ClassifiedEqualsNaivePerPixel) {
   options.path = c.path;
   options.msaa = c.msaa;
   options.primitive = c.primitive;
+  options.raw_permutations = c.raw;
+  options.tile_size = c.tile_size;
+  options.coalesce = c.coalesce;
   TileRenderer renderer(context(), scene, options);
   const FrameResult frame = renderer.render_frame();
 
@@ -77,6 +84,8 @@ INSTANTIATE_TEST_SUITE_P(
         GltfCase{"engine_glb_gpu_no_msaa", "2CylinderEngine-glTF-Binary/2CylinderEngine.glb", IndexPath::gpu, 1},
         // 27 meshes of spheres and boxes.
         GltfCase{"clearcoat_gpu", "ClearCoat-glTF/ClearCoatTest.gltf", IndexPath::gpu, 0},
+        GltfCase{"engine_glb_raw_tile8_uncoalesced", "2CylinderEngine-glTF-Binary/2CylinderEngine.glb", IndexPath::cpu,
+                 0, std::nullopt, true, 8, false},
         GltfCase{"box_textured_embedded_cpu_triangles", "BoxTextured-glTF-Embedded/BoxTextured.gltf", IndexPath::cpu, 0,
                  TilePrimitive::triangles}),
     case_name);
