@@ -14,9 +14,13 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace tilelight {
 namespace {
@@ -221,6 +225,10 @@ Scene build_scene(const tinygltf::Model& model, const GltfLoadOptions& options) 
 Scene load(std::span<const std::uint8_t> bytes, const std::string& name, const std::string& source,
            const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
   try {
+    // tinygltf takes sizes as unsigned int.
+    if (bytes.size() > kMaxFileBytes) {
+      throw Error(fmt::format("{} bytes, more than this loader reads ({})", bytes.size(), kMaxFileBytes));
+    }
     Scene scene = build_scene(parse(bytes, base_dir), options);
     scene.source = source;
     return scene;

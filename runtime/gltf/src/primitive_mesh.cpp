@@ -5,7 +5,10 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <numeric>
+#include <string>
+#include <vector>
 
 namespace tilelight::gltf_detail {
 namespace {
