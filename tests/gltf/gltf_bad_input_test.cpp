@@ -66,6 +66,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFile{"bad_truncated.glb", "truncated GLB"},
                       BadFile{"bad_truncated_header.glb", "truncated GLB"},
                       BadFile{"bad_not_json.gltf", "not valid JSON"}, BadFile{"bad_empty.gltf", "the file is empty"},
+                      BadFile{"bad_nul_in_json.gltf", "not valid JSON: a NUL byte at offset"},
                       BadFile{"no_such_file.glb", "cannot open: No such file or directory"},
                       BadFile{".", "is a folder"}),
     name_of);

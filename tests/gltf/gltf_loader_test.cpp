@@ -96,7 +96,7 @@ TEST(GltfLoader, TheSceneIsScaledToTenMetresAndFramedByTheDefaultCamera) {
 
 TEST(GltfLoader, EveryContainerAndIndexWidthGivesTheSameScene) {
   const Scene reference = load("box.gltf");
-  for (const char* name : {"box.glb", "box_external.gltf", "box_u8.gltf", "box_u32.gltf"}) {
+  for (const char* name : {"box.glb", "box_nul_padded.glb", "box_external.gltf", "box_u8.gltf", "box_u32.gltf"}) {
     SCOPED_TRACE(name);
     const Scene scene = load(name);
     EXPECT_EQ(scene.source, name);

@@ -253,6 +253,10 @@ void check_data_uris(const Json& root) {
 }  // namespace
 
 void check_json_schema(std::string_view json_text) {
+  // nlohmann::json (and so tinygltf) stops reading at a NUL byte and would ignore the rest.
+  if (const std::size_t nul = json_text.find('\0'); nul != std::string_view::npos) {
+    throw Error(fmt::format("not valid JSON: a NUL byte at offset {} (everything after it would be ignored)", nul));
+  }
   Json root;
   try {
     root = Json::parse(json_text.begin(), json_text.end());

@@ -7,7 +7,7 @@
 
 namespace tilelight::gltf_detail {
 
-// Parses `json_text` and checks the type of every glTF 2.0 core property it has (integers
+// Parses `json_text` (no NUL byte in it) and checks the type of every glTF 2.0 core property it has (integers
 // non-negative, fixed-length number arrays of their length, required properties present),
 // "name" being a string and "extensions" an object of objects everywhere, that every embedded
 // (base64 data URI) buffer holds exactly its "byteLength" bytes, and that the file requires no

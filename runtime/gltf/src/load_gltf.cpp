@@ -107,7 +107,10 @@ tinygltf::Model parse(std::span<const std::uint8_t> bytes, const std::filesystem
   std::string err, warn;
   bool ok = false;
   if (is_glb(bytes)) {
-    check_json_schema(split_glb(bytes).json);
+    // A GLB's JSON chunk is padded to 4 bytes with spaces; NULs there are tolerated as padding.
+    std::string_view json = split_glb(bytes).json;
+    while (!json.empty() && json.back() == '\0') json.remove_suffix(1);
+    check_json_schema(json);
     ok = parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
                                      base_dir.string());
   } else {
