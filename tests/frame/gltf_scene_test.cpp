@@ -1,7 +1,7 @@
 // Real glTF 2.0 models (Debian's assimp-testmodels) through the whole frame: classified ==
 // naive and dynamic == naive per pixel under the validation layer, on both index paths, with
 // and without MSAA, as points and as triangle pairs, optimised and raw permutations, tile sizes
-// 4 and 8, coalesced and not, every tile drawn once.
+// 4 and 8, coalesced and not, raster and compute light passes, every tile drawn once.
 #include "frame_support.h"
 #include "tilelight/gltf/load_gltf.h"
 #include "tilelight_testing/test_support.h"
@@ -26,6 +26,7 @@ struct GltfCase {
   bool raw = false;  // the 96 raw permutations instead of the 32 optimised ones
   std::uint32_t tile_size = 4;
   bool coalesce = true;
+  LightPass light_pass = LightPass::raster;
 };
 
 void PrintTo(const GltfCase& c, std::ostream* os) { *os << c.name; }
@@ -48,6 +49,7 @@ TEST_P(GltfFrames, ClassifiedEqualsNaivePerPixel) {
   options.raw_permutations = c.raw;
   options.tile_size = c.tile_size;
   options.coalesce = c.coalesce;
+  options.light_pass = c.light_pass;
   TileRenderer renderer(context(), scene, options);
   const FrameResult frame = renderer.render_frame();
 
@@ -86,6 +88,8 @@ INSTANTIATE_TEST_SUITE_P(
         GltfCase{"clearcoat_gpu", "ClearCoat-glTF/ClearCoatTest.gltf", IndexPath::gpu, 0},
         GltfCase{"engine_glb_raw_tile8_uncoalesced", "2CylinderEngine-glTF-Binary/2CylinderEngine.glb", IndexPath::cpu,
                  0, std::nullopt, true, 8, false},
+        GltfCase{"engine_glb_compute_light_pass", "2CylinderEngine-glTF-Binary/2CylinderEngine.glb", IndexPath::gpu, 0,
+                 std::nullopt, false, 4, true, LightPass::compute},
         GltfCase{"box_textured_embedded_cpu_triangles", "BoxTextured-glTF-Embedded/BoxTextured.gltf", IndexPath::cpu, 0,
                  TilePrimitive::triangles}),
     case_name);
