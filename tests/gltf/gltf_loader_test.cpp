@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace tilelight {
@@ -152,6 +154,29 @@ TEST(GltfLoader, SceneIndexChoosesAScene) {
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()),
               (kFixtures / "box.gltf").string() + ": scene 1 does not exist (the file has 1 scene(s), 0 to 0)");
+  }
+}
+
+// box.gltf with "extras" of `arrays` nested arrays in its asset object: 2 + arrays levels deep.
+std::string box_with_nested_extras(std::size_t arrays) {
+  std::ifstream file(kFixtures / "box.gltf");
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string key = "\"asset\": {";
+  text.insert(text.find(key) + key.size(), "\"extras\": " + std::string(arrays, '[') + std::string(arrays, ']') + ", ");
+  return text;
+}
+
+TEST(GltfLoader, JsonNestedToTheLimitLoadsAndOneLevelMoreIsAnError) {
+  const std::string at_limit = box_with_nested_extras(62);
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(at_limit.data());
+  EXPECT_EQ(load_gltf_scene_from_memory({bytes, at_limit.size()}, "nested.gltf", {}).triangle_count(), 24u);
+  const std::string over = box_with_nested_extras(63);
+  try {
+    (void)load_gltf_scene_from_memory({reinterpret_cast<const std::uint8_t*>(over.data()), over.size()}, "nested.gltf",
+                                      {});
+    FAIL() << "65 levels loaded";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "nested.gltf: JSON nested 65 levels deep, more than this loader reads (64)");
   }
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -250,12 +251,41 @@ void check_data_uris(const Json& root) {
   }
 }
 
+// The deepest nesting of arrays and objects, counted on the text without parsing it: tinygltf
+// turns "extras" and extension values into its own Value type recursively, so a deeply nested
+// one would overflow the stack before any check could see it.
+std::size_t nesting_depth(std::string_view text) {
+  std::size_t depth = 0, deepest = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
 }  // namespace
 
 void check_json_schema(std::string_view json_text) {
   // nlohmann::json (and so tinygltf) stops reading at a NUL byte and would ignore the rest.
   if (const std::size_t nul = json_text.find('\0'); nul != std::string_view::npos) {
     throw Error(fmt::format("not valid JSON: a NUL byte at offset {} (everything after it would be ignored)", nul));
+  }
+  if (const std::size_t depth = nesting_depth(json_text); depth > kMaxJsonDepth) {
+    throw Error(fmt::format("JSON nested {} levels deep, more than this loader reads ({})", depth, kMaxJsonDepth));
   }
   Json root;
   try {

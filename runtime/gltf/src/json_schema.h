@@ -3,11 +3,16 @@
 // optional property of the wrong type without a word ("scene": "hello" would silently mean
 // scene 0), and this library treats every wrong type as an error.
 
+#include <cstddef>
 #include <string_view>
 
 namespace tilelight::gltf_detail {
 
-// Parses `json_text` (no NUL byte in it) and checks the type of every glTF 2.0 core property it has (integers
+// The deepest nesting of JSON arrays and objects a file may have (glTF's own structure needs
+// fewer than 10 levels; the rest is room for "extras" and extensions).
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+// Parses `json_text` (no NUL byte in it, at most kMaxJsonDepth levels deep) and checks the type of every glTF 2.0 core property it has (integers
 // non-negative, fixed-length number arrays of their length, required properties present),
 // "name" being a string and "extensions" an object of objects everywhere, that every embedded
 // (base64 data URI) buffer holds exactly its "byteLength" bytes, and that the file requires no
