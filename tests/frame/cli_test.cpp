@@ -46,8 +46,8 @@ nlohmann::json read_report(const fs::path& out) {
 
 TEST(TilelightCli, WritesTheFiveFilesAndTheReportFields) {
   const fs::path out = scratch_dir() / "out";
-  const CliResult r =
-      run_cli({"--width", "200", "--height", "120", "--frames", "2", "--validation", "--out", out.string()});
+  const CliResult r = run_cli({"--width", "200", "--height", "120", "--frames", "2", "--light-pass", "raster",
+                               "--validation", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* name : kOutputs) EXPECT_TRUE(fs::exists(out / name)) << name;
   EXPECT_NE(r.out.find("global light"), std::string::npos) << r.out;
@@ -166,7 +166,8 @@ TEST(TilelightCli, BaselineChoosesThePassesTimed) {
 // primitive count is its rectangle count.
 TEST(TilelightCli, TrianglesReportOnePrimitivePerRectangle) {
   const fs::path out = scratch_dir() / "out";
-  const CliResult r = run_cli({"--width", "200", "--height", "120", "--primitive", "triangles", "--out", out.string()});
+  const CliResult r = run_cli({"--width", "200", "--height", "120", "--light-pass", "raster", "--primitive",
+                               "triangles", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::ifstream file(out / "report.json");
   const nlohmann::json report = nlohmann::json::parse(file);
@@ -183,12 +184,13 @@ TEST(TilelightCli, TrianglesReportOnePrimitivePerRectangle) {
 
 // The README's contract: 2 on any usage error, whatever kind of parse error CLI11 raised; --help
 // is not an error.
-// --light-pass compute: the tile pass dispatches each class over its tile list, the baselines
-// are full-frame dispatches; the report and the console say so, and the frames still agree.
+// --light-pass compute (the default): the tile pass dispatches each class over its tile list,
+// the baselines are full-frame dispatches; the report and the console say so, and the frames
+// still agree.
 TEST(TilelightCli, ComputeLightPassReportsItsKindAndAgrees) {
   const fs::path out = scratch_dir() / "out";
-  const CliResult r = run_cli({"--width", "200", "--height", "120", "--light-pass", "compute", "--path", "gpu",
-                               "--validation", "--out", out.string()});
+  const CliResult r =
+      run_cli({"--width", "200", "--height", "120", "--path", "gpu", "--validation", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json report = read_report(out);
   EXPECT_EQ(report["light_pass"], "compute");
@@ -202,8 +204,8 @@ TEST(TilelightCli, ComputeLightPassReportsItsKindAndAgrees) {
       r.out.find(fmt::format("tiles 1500, dispatched in {} workgroups", report["primitives"]["coalesced"].get<int>())),
       std::string::npos)
       << r.out;
-  ASSERT_EQ(run_cli({"--width", "64", "--height", "48", "--out", out.string()}).exit_code, 0);
-  EXPECT_EQ(read_report(out)["light_pass"], "raster") << "the default";
+  ASSERT_EQ(run_cli({"--width", "64", "--height", "48", "--light-pass", "raster", "--out", out.string()}).exit_code, 0);
+  EXPECT_EQ(read_report(out)["light_pass"], "raster");
 }
 
 TEST(TilelightCli, UsageErrorsExitTwoAndHelpExitsZero) {

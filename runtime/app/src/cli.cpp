@@ -36,7 +36,7 @@ struct Arguments {
   std::string camera = "default";
   std::string primitive = "auto";
   std::string baseline = "both";
-  std::string light_pass = "raster";
+  std::string light_pass = "compute";  // measured faster on lavapipe (docs/results.md g4), the pass for GPUs
   std::string device = "auto";
   std::string out = "tilelight-out";
   std::string scene;  // a glTF file; empty: the procedural scene
