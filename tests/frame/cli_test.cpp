@@ -1,5 +1,6 @@
 // The tilelight command line, run in-process: its files, its report and its errors.
 #include "tilelight/app/cli.h"
+#include "frame_support.h"
 #include "tilelight_testing/test_support.h"
 
 #include <fmt/format.h>
@@ -17,24 +18,6 @@ namespace tilelight::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliResult {
-  int exit_code;
-  std::string out, err;
-};
-
-// Tests run on lavapipe by name, whatever GPU the machine has (tilelight's default is auto).
-CliResult run_cli(std::vector<std::string> args) {
-  if (std::find(args.begin(), args.end(), "--device") == args.end()) {
-    args.insert(args.begin(), {"--device", "llvmpipe"});
-  }
-  args.insert(args.begin(), "tilelight");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = app::run(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
 
 const char* const kOutputs[] = {"frame_classified.png", "frame_naive.png", "frame_dynamic.png", "tile_classes.png",
                                 "report.json"};

@@ -1,10 +1,14 @@
 #include "frame_support.h"
 
+#include "tilelight/app/cli.h"
+
 #include <split_second_shaders.h>
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace tilelight::test {
 
@@ -38,6 +42,19 @@ std::set<std::uint32_t> optimised_ids_of(const std::vector<std::uint8_t>& raw_id
   std::set<std::uint32_t> ids;
   for (std::uint8_t raw : raw_ids) ids.insert(split_second::kRawToOptimised[raw]);
   return ids;
+}
+
+CliResult run_cli(std::vector<std::string> args) {
+  if (std::find(args.begin(), args.end(), "--device") == args.end()) {
+    args.insert(args.begin(), {"--device", "llvmpipe"});
+  }
+  args.insert(args.begin(), "tilelight");
+  std::vector<const char*> argv;
+  argv.reserve(args.size());
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  const int code = app::run(static_cast<int>(argv.size()), argv.data(), out, err);
+  return {code, out.str(), err.str()};
 }
 
 Camera telephoto_camera() {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace tilelight::test {
 
@@ -49,6 +50,15 @@ ReferenceComparison compare_with_reference(const std::vector<std::uint8_t>& gpu_
 // classifier's per-tile bounds are as thin as its rounding margins. Tests add it to the demo
 // scene's cameras.
 Camera telephoto_camera();
+
+// tilelight's command line run in-process (app::run), with its exit code and output. The run is
+// on lavapipe (`--device llvmpipe` is added unless `args` names a device): tilelight's default
+// is auto, which would take a GPU where the machine has one.
+struct CliResult {
+  int exit_code;
+  std::string out, err;
+};
+CliResult run_cli(std::vector<std::string> args);
 
 // Optimised IDs present in a frame's raw tile IDs (row-major).
 std::set<std::uint32_t> optimised_ids_of(const std::vector<std::uint8_t>& raw_ids);

@@ -1,5 +1,6 @@
 // tilelight --scene: a glTF file rendered end to end, and bad files and flags answered with an
 // exit status and a message naming the file, writing nothing.
+#include "frame_support.h"
 #include "tilelight/app/cli.h"
 #include "tilelight/gltf/load_gltf.h"
 #include "tilelight_testing/test_support.h"
@@ -21,20 +22,6 @@ namespace fs = std::filesystem;
 
 const fs::path kModels = TILELIGHT_ASSIMP_GLTF2_MODELS;
 const fs::path kFixtures = TILELIGHT_GLTF_FIXTURES;
-
-struct CliResult {
-  int exit_code;
-  std::string out, err;
-};
-
-CliResult run_cli(std::vector<std::string> args) {
-  args.insert(args.begin(), "tilelight");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = app::run(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
 
 TEST(TilelightScene, RendersAGlbUnderValidationAndReportsIt) {
   const fs::path model = kModels / "2CylinderEngine-glTF-Binary/2CylinderEngine.glb";

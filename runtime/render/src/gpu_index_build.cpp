@@ -1,9 +1,9 @@
 #include "gpu_index_build.h"
 
+#include "compute_build_passes.h"
 #include "descriptors.h"
 #include "pipelines.h"
 #include "shader_registry.h"
-#include "tilelight/vulkan/barriers.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
 
@@ -78,33 +78,22 @@ GpuIndexBuild::GpuIndexBuild(const Context& context, const shadergen::Registry& 
 }
 
 void GpuIndexBuild::record(VkCommandBuffer cmd) const {
-  const Scope compute_rw{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
-  vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
-  buffer_barrier(cmd, counters_.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT}, compute_rw);
-
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &set_, 0, nullptr);
   const std::array<std::uint32_t, 8> push{
       grid_.tiles_x, grid_.tiles_y, grid_.blocks_x, grid_.blocks_y, class_count_, 0, 0, 0};
-  vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), push.data());
-  const std::uint32_t groups = (grid_.block_count() + kBlocksPerGroup - 1) / kBlocksPerGroup;
-
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, count_.get());
-  vkCmdDispatch(cmd, groups, 1, 1);
-  memory_barrier(cmd, compute_rw, compute_rw);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, prefix_.get());
-  vkCmdDispatch(cmd, 1, 1, 1);
-  memory_barrier(cmd, compute_rw, compute_rw);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, fill_.get());
-  vkCmdDispatch(cmd, groups, 1, 1);
-
-  memory_barrier(
-      cmd, compute_rw,
-      {VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-       VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT});
-  const VkBufferCopy copy{0, 0, kCountersBytes};
-  vkCmdCopyBuffer(cmd, counters_.handle(), host_counters_.handle(), 1, &copy);
-  buffer_barrier(cmd, host_counters_.handle(), {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
-                 {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
+  ComputeBuildPasses build;
+  build.layout = layout_.get();
+  build.set = set_;
+  build.push = push;
+  build.count = count_.get();
+  build.prefix = prefix_.get();
+  build.fill = fill_.get();
+  build.groups = (grid_.block_count() + kBlocksPerGroup - 1) / kBlocksPerGroup;
+  build.counters = counters_.handle();
+  build.host_counters = host_counters_.handle();
+  build.counter_bytes = kCountersBytes;
+  build.consumer_stages = VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT;
+  build.consumer_access = VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT;
+  record_compute_build(cmd, build);
 }
 
 GpuIndexBuild::Counts GpuIndexBuild::read_counts() const {
