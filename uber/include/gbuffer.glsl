@@ -18,9 +18,11 @@
 //
 // The depth alone classifies a sample: whether it is sky, faces the sun or
 // marks an MSAA edge, and where it lies. The classifier reads nothing else
-// (gbuffer_load_depth()): an RGBA16F RT1 texel is the costliest fetch on a CPU
-// driver (lavapipe), and the classifier read one for every pixel for these two
-// decisions, a third of its time (docs/results.md h).
+// (gbuffer_load_depth()), except the colour targets of the pixels whose samples
+// carry the face bit and agree in depth (see "MSAA-edge bit" below): an RGBA16F
+// RT1 texel is the costliest fetch on a CPU driver (lavapipe), and the
+// classifier read one for every pixel for these two decisions, a third of its
+// time (docs/results.md h).
 //
 // Sky: the sky pass draws at the far plane, depth 1.0 (and motion ID 0), where
 // the depth was cleared; gbuffer_encode_depth() keeps every material depth
