@@ -2,7 +2,30 @@
 
 #include "tilelight/vulkan/barriers.h"
 
+#include <array>
+
 namespace tilelight {
+
+ComputeBuildBuffers create_compute_build_buffers(const Context& context, std::span<const std::uint8_t> class_for_raw,
+                                                 std::span<const bool> pruned, VkDeviceSize counter_bytes,
+                                                 const std::string& name) {
+  constexpr std::uint32_t kNoClass = 0xFF;  // the shaders' NO_CLASS
+  std::array<std::uint32_t, 256> lut{};
+  lut.fill(kNoClass);
+  for (std::size_t raw = 0; raw < class_for_raw.size(); ++raw) {
+    if (!pruned[raw]) lut[raw] = class_for_raw[raw];
+  }
+  ComputeBuildBuffers b;
+  b.lut = Buffer(context, {sizeof(lut), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, name + " LUT"});
+  b.lut.write_values(std::span<const std::uint32_t>(lut));
+  b.counters = Buffer(context, {counter_bytes,
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                MemoryUse::DeviceLocal, name + " counters"});
+  b.host_counters = Buffer(context, {counter_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback,
+                                     name + " counters (host copy)"});
+  return b;
+}
 
 void record_compute_build(VkCommandBuffer cmd, const ComputeBuildPasses& b) {
   const Scope compute_rw{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};

@@ -4,12 +4,31 @@
 // counters, count, prefix-sum, fill, make the results visible to the tile pass, and copy the
 // counters to the host for the frame's statistics.
 
+#include "tilelight/vulkan/buffer.h"
+
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
 #include <span>
+#include <string>
 
 namespace tilelight {
+
+class Context;
+
+// What both builds read and count with besides their outputs.
+struct ComputeBuildBuffers {
+  Buffer lut;            // 256 uint32: raw ID byte -> draw class, 0xFF where impossible or out of range
+  Buffer counters;       // counter_bytes, device-local; zeroed by record_compute_build()
+  Buffer host_counters;  // the counters' host copy, read after the frame
+};
+
+// class_for_raw: raw ID -> draw class; pruned raw IDs (same size) map to 0xFF, as does every
+// byte beyond them (the padding byte 0xFF of partial blocks included). `name` prefixes the
+// buffers' debug names.
+ComputeBuildBuffers create_compute_build_buffers(const Context& context, std::span<const std::uint8_t> class_for_raw,
+                                                 std::span<const bool> pruned, VkDeviceSize counter_bytes,
+                                                 const std::string& name);
 
 struct ComputeBuildPasses {
   VkPipelineLayout layout = VK_NULL_HANDLE;

@@ -16,7 +16,6 @@ namespace {
 
 // Mirrors tile_rects.glsl.
 constexpr std::uint32_t kMaxDrawClasses = 128;
-constexpr std::uint32_t kNoClass = 0xFF;
 // primitives, rectangles, tiles, cursor (kMaxDrawClasses each), invalid_tiles.
 constexpr VkDeviceSize kCountersBytes = (4 * kMaxDrawClasses + 1) * sizeof(std::uint32_t);
 constexpr VkDeviceSize kDrawRecordBytes = sizeof(VkDrawIndexedIndirectCommand);
@@ -30,20 +29,7 @@ GpuIndexBuild::GpuIndexBuild(const Context& context, const shadergen::Registry& 
                              VkDescriptorPool pool)
     : grid_(grid), class_count_(class_count) {
   if (class_count > kMaxDrawClasses) throw Error("the GPU index build supports at most 128 draw classes");
-  // Byte -> class; 0xFF for impossible or out-of-range raw IDs (and the padding byte 0xFF).
-  std::array<std::uint32_t, 256> lut{};
-  lut.fill(kNoClass);
-  for (std::size_t raw = 0; raw < class_for_raw.size(); ++raw) {
-    if (!pruned[raw]) lut[raw] = class_for_raw[raw];
-  }
-  lut_ = Buffer(context, {sizeof(lut), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, "GPU build LUT"});
-  lut_.write_values(std::span<const std::uint32_t>(lut));
-  counters_ = Buffer(context, {kCountersBytes,
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                               MemoryUse::DeviceLocal, "GPU build counters"});
-  host_counters_ = Buffer(context, {kCountersBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback,
-                                    "GPU build counters (host copy)"});
+  buffers_ = create_compute_build_buffers(context, class_for_raw, pruned, kCountersBytes, "GPU build");
   indices_ = Buffer(context, {std::max<VkDeviceSize>(grid.max_index_count(), 6) * sizeof(std::uint32_t),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                               MemoryUse::DeviceLocal, "tile indices (GPU-built)"});
@@ -60,8 +46,8 @@ GpuIndexBuild::GpuIndexBuild(const Context& context, const shadergen::Registry& 
   const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, 32};
   layout_ = create_pipeline_layout(context, set_layouts, std::span(&push, 1), "GPU index build layout");
   set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "GPU index build set");
-  const std::array<VkBuffer, 5> buffers{tile_ids.handle(), lut_.handle(), counters_.handle(), indices_.handle(),
-                                        draws_.handle()};
+  const std::array<VkBuffer, 5> buffers{tile_ids.handle(), buffers_.lut.handle(), buffers_.counters.handle(),
+                                        indices_.handle(), draws_.handle()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i) {
     write_buffer_descriptor(context, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   }
@@ -88,8 +74,8 @@ void GpuIndexBuild::record(VkCommandBuffer cmd) const {
   build.prefix = prefix_.get();
   build.fill = fill_.get();
   build.groups = (grid_.block_count() + kBlocksPerGroup - 1) / kBlocksPerGroup;
-  build.counters = counters_.handle();
-  build.host_counters = host_counters_.handle();
+  build.counters = buffers_.counters.handle();
+  build.host_counters = buffers_.host_counters.handle();
   build.counter_bytes = kCountersBytes;
   build.consumer_stages = VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT;
   build.consumer_access = VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT;
@@ -97,7 +83,7 @@ void GpuIndexBuild::record(VkCommandBuffer cmd) const {
 }
 
 GpuIndexBuild::Counts GpuIndexBuild::read_counts() const {
-  const std::span<const std::uint32_t> values = host_counters_.as<const std::uint32_t>();
+  const std::span<const std::uint32_t> values = buffers_.host_counters.as<const std::uint32_t>();
   Counts counts;
   const auto per_class = [&](std::uint32_t array) {
     const auto first = values.begin() + std::ptrdiff_t{array} * kMaxDrawClasses;

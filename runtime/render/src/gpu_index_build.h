@@ -4,6 +4,7 @@
 // tile_prefix.comp), with the same coalescing rule as the CPU builder. No CPU round trip: the
 // pre-recorded tile pass reads the buffers this fills.
 
+#include "compute_build_passes.h"
 #include "tilelight/tiles/tile_grid.h"
 #include "tilelight/tiles/tile_primitive.h"
 #include "tilelight/vulkan/buffer.h"
@@ -44,7 +45,8 @@ class GpuIndexBuild {
  private:
   TileGrid grid_;
   std::uint32_t class_count_;
-  Buffer lut_, counters_, indices_, draws_, host_counters_;
+  ComputeBuildBuffers buffers_;
+  Buffer indices_, draws_;
   UniqueDescriptorSetLayout set_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

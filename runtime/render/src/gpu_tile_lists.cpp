@@ -14,7 +14,6 @@ namespace tilelight {
 namespace {
 
 // Mirrors tile_lists.comp.
-constexpr std::uint32_t kNoClass = 0xFF;
 constexpr std::uint32_t kPassCount = 0, kPassPrefix = 1, kPassFill = 2;  // constant_id 0: PASS
 constexpr std::uint32_t kRowsPerGroup = 128;                             // local_size_x
 // tiles, cursor (kTileListMaxClasses each), invalid_tiles.
@@ -30,19 +29,8 @@ GpuTileLists::GpuTileLists(const Context& context, const shadergen::Registry& sh
                            VkDescriptorPool pool)
     : grid_(grid), class_count_(class_count), tiles_per_group_(tiles_per_group) {
   if (class_count > kTileListMaxClasses) throw Error("the GPU tile-list build supports at most 128 draw classes");
-  std::array<std::uint32_t, 256> lut{};
-  lut.fill(kNoClass);
-  for (std::size_t raw = 0; raw < class_for_raw.size(); ++raw) {
-    if (!pruned[raw]) lut[raw] = class_for_raw[raw];
-  }
-  lut_ = Buffer(context, {sizeof(lut), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, "tile-list LUT"});
-  lut_.write_values(std::span<const std::uint32_t>(lut));
-  counters_ = Buffer(context, {kCountersBytes,
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                               MemoryUse::DeviceLocal, "tile-list counters"});
-  host_counters_ = Buffer(context, {kCountersBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback,
-                                    "tile-list counters (host copy)"});
+  check_tile_list_grid(grid);
+  buffers_ = create_compute_build_buffers(context, class_for_raw, pruned, kCountersBytes, "tile-list");
   lists_ = Buffer(context, {(kTileListHeaderWords + std::size_t{grid.tile_count()}) * sizeof(std::uint32_t),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal, "tile lists (GPU-built)"});
   dispatches_ = Buffer(context, {kTileListMaxClasses * kDispatchRecordBytes,
@@ -58,8 +46,8 @@ GpuTileLists::GpuTileLists(const Context& context, const shadergen::Registry& sh
   const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, 8 * sizeof(std::uint32_t)};
   layout_ = create_pipeline_layout(context, set_layouts, std::span(&push, 1), "GPU tile-list build layout");
   set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "GPU tile-list build set");
-  const std::array<VkBuffer, kBindings> buffers{tile_ids.handle(), lut_.handle(), counters_.handle(), lists_.handle(),
-                                                dispatches_.handle()};
+  const std::array<VkBuffer, kBindings> buffers{tile_ids.handle(), buffers_.lut.handle(), buffers_.counters.handle(),
+                                                lists_.handle(), dispatches_.handle()};
   for (std::uint32_t i = 0; i < kBindings; ++i) {
     write_buffer_descriptor(context, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   }
@@ -83,8 +71,8 @@ void GpuTileLists::record(VkCommandBuffer cmd) const {
   build.prefix = prefix_.get();
   build.fill = fill_.get();
   build.groups = (grid_.block_count() * kBlockTiles + kRowsPerGroup - 1) / kRowsPerGroup;
-  build.counters = counters_.handle();
-  build.host_counters = host_counters_.handle();
+  build.counters = buffers_.counters.handle();
+  build.host_counters = buffers_.host_counters.handle();
   build.counter_bytes = kCountersBytes;
   build.consumer_stages = VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
   build.consumer_access = VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
@@ -92,7 +80,7 @@ void GpuTileLists::record(VkCommandBuffer cmd) const {
 }
 
 GpuTileLists::Counts GpuTileLists::read_counts() const {
-  const std::span<const std::uint32_t> values = host_counters_.as<const std::uint32_t>();
+  const std::span<const std::uint32_t> values = buffers_.host_counters.as<const std::uint32_t>();
   Counts counts;
   counts.tiles.assign(values.begin(), values.begin() + class_count_);
   counts.invalid_tiles = values[std::size_t{2} * kTileListMaxClasses];

@@ -5,6 +5,7 @@
 // GpuIndexBuild is of TileIndexBuilder. No CPU round trip: the pre-recorded tile pass reads the
 // buffers this fills.
 
+#include "compute_build_passes.h"
 #include "tilelight/tiles/tile_grid.h"
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
@@ -47,7 +48,8 @@ class GpuTileLists {
   TileGrid grid_;
   std::uint32_t class_count_;
   std::uint32_t tiles_per_group_;
-  Buffer lut_, counters_, lists_, dispatches_, host_counters_;
+  ComputeBuildBuffers buffers_;
+  Buffer lists_, dispatches_;
   UniqueDescriptorSetLayout set_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

@@ -15,6 +15,13 @@ constexpr std::uint32_t kMaxTileCoordinate = 0xFFFF;  // 16 bits each in pack_ti
 
 }  // namespace
 
+void check_tile_list_grid(const TileGrid& grid) {
+  if (grid.tiles_x > kMaxTileCoordinate + 1 || grid.tiles_y > kMaxTileCoordinate + 1) {
+    throw Error(fmt::format("tile lists: a grid of {}x{} tiles: a tile list stores coordinates up to {}", grid.tiles_x,
+                            grid.tiles_y, kMaxTileCoordinate));
+  }
+}
+
 TileListBuilder::TileListBuilder(const TileGrid& grid, std::span<const std::uint8_t> lut, std::span<const bool> pruned,
                                  std::uint32_t class_count, std::uint32_t tiles_per_group)
     : grid_(grid), class_count_(class_count), tiles_per_group_(tiles_per_group) {
@@ -22,10 +29,7 @@ TileListBuilder::TileListBuilder(const TileGrid& grid, std::span<const std::uint
     throw Error(
         fmt::format("TileListBuilder: the class count must be 1..{} (got {})", kTileListMaxClasses, class_count));
   }
-  if (grid.tiles_x > kMaxTileCoordinate + 1 || grid.tiles_y > kMaxTileCoordinate + 1) {
-    throw Error(fmt::format("TileListBuilder: a grid of {}x{} tiles: a tile list stores coordinates up to {}",
-                            grid.tiles_x, grid.tiles_y, kMaxTileCoordinate));
-  }
+  check_tile_list_grid(grid);
   if (tiles_per_group == 0) throw Error("TileListBuilder: tiles per workgroup must be >= 1 (got 0)");
   if (lut.size() != kRawClassCount) {
     throw Error(fmt::format("TileListBuilder: the LUT must have {} entries (got {})", kRawClassCount, lut.size()));

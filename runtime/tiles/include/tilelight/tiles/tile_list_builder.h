@@ -22,6 +22,10 @@ inline constexpr std::uint32_t kTileListHeaderWords = 2 * kTileListMaxClasses;
 // A tile's coordinates as the lists store them: x | y << 16 (TileListBuilder checks both < 2^16).
 constexpr std::uint32_t pack_tile(std::uint32_t x, std::uint32_t y) { return x | (y << 16); }
 
+// Throws tilelight::Error when a tile coordinate of `grid` would not fit pack_tile()'s 16 bits
+// (more than 65536 tiles across or down). Both list builds, CPU and GPU, check it.
+void check_tile_list_grid(const TileGrid& grid);
+
 struct TileListStats {
   std::array<std::uint32_t, kTileListMaxClasses> class_tiles{};  // per draw class
   std::uint32_t tiles = 0;
