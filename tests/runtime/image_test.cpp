@@ -97,8 +97,8 @@ TEST_F(VulkanTest, MoveAssignReleasesTheOldImage) {
 
 TEST_F(VulkanTest, ShadowComparisonSampler) {
   SamplerDesc desc;
-  desc.filter = VK_FILTER_LINEAR;
-  desc.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+  desc.mag_filter = desc.min_filter = VK_FILTER_LINEAR;
+  desc.address_u = desc.address_v = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
   desc.compare = true;
   desc.name = "shadow map sampler";
   Sampler sampler(context(), desc);

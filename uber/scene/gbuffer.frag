@@ -12,6 +12,11 @@ layout(location = 2) flat in vec4 in_albedo_spec;
 layout(location = 3) flat in vec4 in_material;
 layout(location = 4) flat in vec4 in_face_normal; // w: 1 on a flat-faced mesh (scene.vert)
 layout(location = 5) flat in vec3 in_face_point;
+layout(location = 6) in vec2 in_uv;
+
+// The mesh's base colour texture (sRGB, so read in linear light), or 1x1 white for meshes
+// without one: the albedo is then multiplied by exactly 1.
+layout(set = 1, binding = 0) uniform sampler2D base_colour_texture;
 
 layout(location = 0) out vec4 out_rt0;
 layout(location = 1) out vec4 out_rt1;
@@ -74,7 +79,7 @@ void main()
     if (!gl_FrontFacing) {
         normal = -normal; // thin geometry seen from behind
     }
-    vec3 albedo = in_albedo_spec.rgb * checker(surface.world_pos, in_material.z);
+    vec3 albedo = in_albedo_spec.rgb * texture(base_colour_texture, in_uv).rgb * checker(surface.world_pos, in_material.z);
     float hemisphere = normal.y * 0.5 + 0.5;
     vec3 ambient = mix(scene.ambient_ground.rgb, scene.ambient_sky.rgb, hemisphere);
     uint motion_id = uint(in_material.y);

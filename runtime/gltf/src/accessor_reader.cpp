@@ -109,6 +109,43 @@ std::vector<glm::vec3> read_vec3(const tinygltf::Model& model, int index, const 
   return values;
 }
 
+std::vector<glm::vec2> read_texcoords(const tinygltf::Model& model, int index, const std::string& user) {
+  const tinygltf::Accessor& accessor = find_accessor(model, index, user);
+  const std::string name = accessor_name(index);
+  const int component = accessor.componentType;
+  const bool normalised_integer = accessor.normalized && (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                                          component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+  if (accessor.type != TINYGLTF_TYPE_VEC2 || (component != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalised_integer)) {
+    throw Error(
+        fmt::format("{} (used as {}): expected VEC2 of 32-bit floats or of normalized unsigned 8 or 16-bit integers, "
+                    "got {} of component type {}{}",
+                    name, user, type_name(accessor.type), component, accessor.normalized ? " (normalized)" : ""));
+  }
+  const std::size_t component_bytes = component == TINYGLTF_COMPONENT_TYPE_FLOAT            ? 4
+                                      : component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                                                                                            : 1;
+  const ElementRange range = locate(model, index, component_bytes * 2);
+  std::vector<glm::vec2> values(range.count);
+  for (std::size_t i = 0; i < range.count; ++i) {
+    const std::uint8_t* p = range.data + i * range.stride;
+    if (component_bytes == 4) {
+      float uv[2];
+      std::memcpy(uv, p, sizeof uv);
+      if (!std::isfinite(uv[0]) || !std::isfinite(uv[1])) {
+        throw Error(fmt::format("{} (used as {}): element {} is not finite ({}, {})", name, user, i, uv[0], uv[1]));
+      }
+      values[i] = glm::vec2(uv[0], uv[1]);
+    } else if (component_bytes == 2) {
+      std::uint16_t uv[2];
+      std::memcpy(uv, p, sizeof uv);
+      values[i] = glm::vec2(uv[0], uv[1]) / 65535.0f;
+    } else {
+      values[i] = glm::vec2(p[0], p[1]) / 255.0f;
+    }
+  }
+  return values;
+}
+
 std::vector<std::uint32_t> read_indices(const tinygltf::Model& model, int index, const std::string& user,
                                         std::size_t vertex_count) {
   const tinygltf::Accessor& accessor = find_accessor(model, index, user);

@@ -18,6 +18,10 @@ namespace tilelight::gltf_detail {
 // Must be VEC3 of 32-bit floats, every component finite.
 std::vector<glm::vec3> read_vec3(const tinygltf::Model& model, int index, const std::string& user);
 
+// Texture coordinates (TEXCOORD_n): VEC2 of 32-bit floats, every component finite, or of
+// normalised unsigned 8 or 16-bit integers (read as value / 255 or / 65535).
+std::vector<glm::vec2> read_texcoords(const tinygltf::Model& model, int index, const std::string& user);
+
 // Triangle-list indices: SCALAR of unsigned 8, 16 or 32 bits, each below `vertex_count`.
 std::vector<std::uint32_t> read_indices(const tinygltf::Model& model, int index, const std::string& user,
                                         std::size_t vertex_count);

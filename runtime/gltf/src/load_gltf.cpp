@@ -2,10 +2,12 @@
 // then every reference and length checked again while the scene is built from it.
 #include "tilelight/gltf/load_gltf.h"
 
+#include "base_colour_textures.h"
 #include "glb_container.h"
 #include "json_schema.h"
 #include "node_graph.h"
 #include "primitive_mesh.h"
+#include "read_file.h"
 #include "scene_framing.h"
 #include "tilelight/base/error.h"
 #include "tinygltf.h"
@@ -27,27 +29,8 @@ namespace {
 
 using namespace gltf_detail;
 
-constexpr std::uint64_t kMaxFileBytes = std::uint64_t{1} << 31;  // 2 GiB: a file, or one external buffer
 constexpr std::size_t kMaxInstances = std::size_t{1} << 20;
 constexpr std::uint64_t kMaxSceneTriangles = std::uint64_t{1} << 26;  // drawn per frame, instances counted
-
-// Reads a whole file; `what` names it in errors.
-std::vector<std::uint8_t> read_file(const std::filesystem::path& path, const std::string& what) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(what + ": is a folder, not a file");
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error(what + ": cannot open: " + std::strerror(errno));
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw Error(what + ": cannot read its size");
-  if (static_cast<std::uint64_t>(size) > kMaxFileBytes) {
-    throw Error(fmt::format("{}: {} bytes, more than this loader reads ({})", what, size, kMaxFileBytes));
-  }
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), size))
-    throw Error(what + ": read failed: " + std::strerror(errno));
-  return bytes;
-}
 
 // tinygltf's file callbacks: external buffers are read with read_file(), or, for a load from
 // memory without a folder, refused. Paths are used as written (no wordexp() expansion).
@@ -82,11 +65,6 @@ bool write_whole_file(std::string* err, const std::string& path, const std::vect
   return false;
 }
 
-// Textures are not sampled (docs/scene-input.md): image bytes are accepted and dropped.
-bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-  return true;
-}
-
 // tinygltf's multi-line error text as one line, with any data URI it quotes cut short.
 std::string one_line(std::string text) {
   for (std::size_t at = text.find("data:"); at != std::string::npos; at = text.find("data:", at + 1)) {
@@ -102,7 +80,7 @@ tinygltf::Model parse(std::span<const std::uint8_t> bytes, const std::filesystem
   FileAccess access{!base_dir.empty()};
   tinygltf::TinyGLTF parser;
   parser.SetFsCallbacks({&file_exists, &expand_path, &read_whole_file, &write_whole_file, &access});
-  parser.SetImageLoader(&ignore_image, nullptr);
+  parser.SetImageLoader(&keep_encoded_image, nullptr);
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;
@@ -174,11 +152,12 @@ Instance instance_of(const tinygltf::Model& model, int material, const glm::mat4
 // A transform that collapses a dimension draws nothing and has no normal matrix.
 bool invertible(const glm::mat4& m) { return std::fabs(glm::determinant(glm::mat3(m))) >= 1e-18f; }
 
-Scene build_scene(const tinygltf::Model& model, const GltfLoadOptions& options) {
+Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
   const std::size_t scene_index = chosen_scene(model, options);
   const std::vector<PlacedMesh> placed = place_meshes(model, scene_index);
 
   Scene scene;
+  BaseColourTextures textures(model, base_dir);
   std::map<std::pair<int, int>, std::optional<std::uint32_t>> mesh_of;  // (mesh, primitive) -> scene mesh
   std::vector<std::vector<Instance>> instances_of_mesh;
   std::uint64_t triangles = 0;
@@ -190,7 +169,10 @@ Scene build_scene(const tinygltf::Model& model, const GltfLoadOptions& options) 
       const auto key = std::pair(p.mesh, static_cast<int>(k));
       auto found = mesh_of.find(key);
       if (found == mesh_of.end()) {
-        std::optional<Mesh> built = primitive_mesh(model, p.mesh, static_cast<int>(k));
+        const std::optional<BaseColourTexture> texture = textures.of_material(mesh.primitives[k].material);
+        std::optional<Mesh> built = primitive_mesh(model, p.mesh, static_cast<int>(k),
+                                                   texture ? std::optional(texture->texcoord_set) : std::nullopt);
+        if (built && texture) built->base_colour_texture = texture->texture;
         std::optional<std::uint32_t> index;
         if (built) {
           index = static_cast<std::uint32_t>(scene.meshes.size());
@@ -221,6 +203,7 @@ Scene build_scene(const tinygltf::Model& model, const GltfLoadOptions& options) 
     scene.instances.insert(scene.instances.end(), instances_of_mesh[m].begin(), instances_of_mesh[m].end());
     scene.batches.push_back({m, first, static_cast<std::uint32_t>(instances_of_mesh[m].size())});
   }
+  scene.textures = textures.take_textures();
   fit_scene(scene, scene_bounds(scene));
   return scene;
 }
@@ -232,7 +215,7 @@ Scene load(std::span<const std::uint8_t> bytes, const std::string& name, const s
     if (bytes.size() > kMaxFileBytes) {
       throw Error(fmt::format("{} bytes, more than this loader reads ({})", bytes.size(), kMaxFileBytes));
     }
-    Scene scene = build_scene(parse(bytes, base_dir), options);
+    Scene scene = build_scene(parse(bytes, base_dir), base_dir, options);
     scene.source = source;
     return scene;
   } catch (const Error& e) {

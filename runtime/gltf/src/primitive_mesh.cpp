@@ -45,9 +45,26 @@ bool usable_normals(const std::vector<glm::vec3>& normals) {
   return true;
 }
 
+// The attribute `name` of `primitive` (VEC3 or texture coordinates), with POSITION's count.
+template <typename Reader>
+auto read_attribute(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                    const std::string& primitive_name, const std::string& attribute, std::size_t vertex_count,
+                    Reader read) {
+  const auto found = primitive.attributes.find(attribute);
+  decltype(read(model, 0, std::string())) values;
+  if (found == primitive.attributes.end()) return values;
+  values = read(model, found->second, primitive_name + ".attributes." + attribute);
+  if (values.size() != vertex_count) {
+    throw Error(fmt::format("{}.attributes: {} has {} elements, POSITION {}", primitive_name, attribute, values.size(),
+                            vertex_count));
+  }
+  return values;
+}
+
 }  // namespace
 
-std::optional<Mesh> primitive_mesh(const tinygltf::Model& model, int mesh_index, int primitive_index) {
+std::optional<Mesh> primitive_mesh(const tinygltf::Model& model, int mesh_index, int primitive_index,
+                                   std::optional<int> texcoord_set) {
   const tinygltf::Primitive& primitive =
       model.meshes[static_cast<std::size_t>(mesh_index)].primitives[static_cast<std::size_t>(primitive_index)];
   const std::string name = fmt::format("meshes[{}].primitives[{}]", mesh_index, primitive_index);
@@ -80,20 +97,23 @@ std::optional<Mesh> primitive_mesh(const tinygltf::Model& model, int mesh_index,
   }
   if (indices.empty()) return std::nullopt;
 
-  std::vector<glm::vec3> normals;
-  if (const auto normal = primitive.attributes.find("NORMAL"); normal != primitive.attributes.end()) {
-    normals = read_vec3(model, normal->second, name + ".attributes.NORMAL");
-    if (normals.size() != positions.size()) {
-      throw Error(
-          fmt::format("{}.attributes: NORMAL has {} elements, POSITION {}", name, normals.size(), positions.size()));
+  const std::vector<glm::vec3> normals = read_attribute(model, primitive, name, "NORMAL", positions.size(), &read_vec3);
+  std::vector<glm::vec2> uvs;
+  if (texcoord_set) {
+    const std::string attribute = fmt::format("TEXCOORD_{}", *texcoord_set);
+    uvs = read_attribute(model, primitive, name, attribute, positions.size(), &read_texcoords);
+    if (uvs.empty()) {
+      throw Error(fmt::format("{}: its material's base colour texture reads {}, which the primitive does not have",
+                              name, attribute));
     }
   }
+  const auto uv = [&](std::size_t vertex) { return uvs.empty() ? glm::vec2(0.0f) : uvs[vertex]; };
 
   Mesh mesh{name, {}, {}};
   if (!normals.empty() && usable_normals(normals)) {
     mesh.vertices.reserve(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i)
-      mesh.vertices.push_back({positions[i], glm::normalize(normals[i])});
+      mesh.vertices.push_back({positions[i], glm::normalize(normals[i]), uv(i)});
     mesh.indices = std::move(indices);
     return mesh;
   }
@@ -105,7 +125,7 @@ std::optional<Mesh> primitive_mesh(const tinygltf::Model& model, int mesh_index,
     const glm::vec3 n = face_normal(a, b, c);
     for (std::size_t k = 0; k < 3; ++k) {
       mesh.indices[t + k] = static_cast<std::uint32_t>(t + k);
-      mesh.vertices.push_back({positions[indices[t + k]], n});
+      mesh.vertices.push_back({positions[indices[t + k]], n, uv(indices[t + k])});
     }
   }
   return mesh;

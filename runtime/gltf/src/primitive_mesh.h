@@ -18,6 +18,9 @@ inline constexpr std::size_t kMaxPrimitiveIndices = std::size_t{3} << 24;
 // every triangle gets its flat face normal. Errors (tilelight::Error, naming the primitive):
 // no POSITION, accessors as accessor_reader.h checks them, a NORMAL count that differs from
 // POSITION's, an index count not a multiple of 3, an unknown mode.
-std::optional<Mesh> primitive_mesh(const tinygltf::Model& model, int mesh_index, int primitive_index);
+// `texcoord_set` n: the vertices' uv come from TEXCOORD_n (the material's base colour texture
+// reads it), which must then exist with POSITION's count; none: every uv is 0.
+std::optional<Mesh> primitive_mesh(const tinygltf::Model& model, int mesh_index, int primitive_index,
+                                   std::optional<int> texcoord_set);
 
 }  // namespace tilelight::gltf_detail

@@ -34,7 +34,8 @@ std::vector<VkVertexInputBindingDescription> scene_bindings() {
 
 std::vector<VkVertexInputAttributeDescription> scene_attributes() {
   std::vector<VkVertexInputAttributeDescription> a{{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
-                                                   {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)}};
+                                                   {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)},
+                                                   {8, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv)}};
   for (std::uint32_t column = 0; column < 4; ++column) {
     a.push_back({2 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                  static_cast<std::uint32_t>(offsetof(Instance, model) + column * sizeof(glm::vec4))});
@@ -47,8 +48,8 @@ std::vector<VkVertexInputAttributeDescription> scene_attributes() {
 }  // namespace
 
 ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
-                         VkDescriptorPool pool)
-    : batches_(scene.batches) {
+                         VkDescriptorPool pool, const CommandPool& upload_pool)
+    : textures_(context, upload_pool, scene.textures), batches_(scene.batches) {
   for (const Mesh& mesh : scene.meshes) {
     MeshBuffers buffers;
     buffers.vertices = upload_buffer<MeshVertex>(context, mesh.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
@@ -56,6 +57,7 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
     buffers.indices = upload_buffer<std::uint32_t>(context, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                                                    "mesh " + mesh.name + " indices");
     buffers.index_count = static_cast<std::uint32_t>(mesh.indices.size());
+    buffers.base_colour = textures_.set_of(mesh.base_colour_texture);
     meshes_.push_back(std::move(buffers));
   }
   instances_ = upload_buffer<Instance>(context, scene.instances, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene instances");
@@ -66,7 +68,7 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
                                              VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
   set_layout_ = create_descriptor_set_layout(context, std::span(&binding, 1), "scene set layout");
-  const VkDescriptorSetLayout set_layouts[] = {set_layout_.get()};
+  const VkDescriptorSetLayout set_layouts[] = {set_layout_.get(), textures_.set_layout()};
   layout_ = create_pipeline_layout(context, set_layouts, {}, "scene pipeline layout");
   set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "scene descriptor set");
   write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
@@ -104,9 +106,12 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   shadow_pipeline_ = create_graphics_pipeline(context, shadow);
 }
 
-void ScenePasses::draw_batches(VkCommandBuffer cmd) const {
+void ScenePasses::draw_batches(VkCommandBuffer cmd, bool textured) const {
   for (const MeshBatch& batch : batches_) {
     const MeshBuffers& mesh = meshes_[batch.mesh];
+    if (textured) {
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 1, 1, &mesh.base_colour, 0, nullptr);
+    }
     const std::array<VkBuffer, 2> buffers{mesh.vertices.handle(), instances_.handle()};
     const std::array<VkDeviceSize, 2> offsets{0, 0};
     vkCmdBindVertexBuffers(cmd, 0, 2, buffers.data(), offsets.data());
@@ -128,7 +133,7 @@ void ScenePasses::record_shadow_map(VkCommandBuffer cmd, const RenderTargets& ta
   set_viewport_and_scissor(cmd, targets.shadow_extent());
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadow_pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
-  draw_batches(cmd);
+  draw_batches(cmd, false);
   vkCmdEndRenderPass(cmd);
 }
 
@@ -136,7 +141,7 @@ void ScenePasses::record_gbuffer(VkCommandBuffer cmd, const RenderTargets& targe
   targets.begin_gbuffer_pass(cmd);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, gbuffer_pipeline_.get());
-  draw_batches(cmd);
+  draw_batches(cmd, true);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_pipeline_.get());
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);

@@ -1,8 +1,9 @@
 #pragma once
 // The scene passes: the sun shadow map (depth only) and the G-buffer (materials, then sky).
-// Meshes and instances are uploaded once; the camera is fixed per renderer.
+// Meshes, instances and base colour textures are uploaded once; the camera is fixed per renderer.
 
 #include "render_targets.h"
+#include "scene_textures.h"
 #include "tilelight/scene/scene.h"
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
@@ -11,12 +12,14 @@
 
 namespace tilelight {
 
+class CommandPool;
 class Context;
 
 class ScenePasses {
  public:
+  // `upload_pool` records the texture uploads (waited for before this returns).
   ScenePasses(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
-              VkDescriptorPool pool);
+              VkDescriptorPool pool, const CommandPool& upload_pool);
 
   // Shadow map pass, then the G-buffer pass (geometry, then sky at the far plane).
   void record_shadow_map(VkCommandBuffer cmd, const RenderTargets& targets) const;
@@ -27,9 +30,12 @@ class ScenePasses {
     Buffer vertices;
     Buffer indices;
     std::uint32_t index_count = 0;
+    VkDescriptorSet base_colour = VK_NULL_HANDLE;  // set 1 of the G-buffer pass
   };
-  void draw_batches(VkCommandBuffer cmd) const;
+  // With `textured`, each batch binds its mesh's base colour texture first (the G-buffer pass).
+  void draw_batches(VkCommandBuffer cmd, bool textured) const;
 
+  SceneTextures textures_;
   std::vector<MeshBuffers> meshes_;
   std::vector<MeshBatch> batches_;
   Buffer instances_;

@@ -159,7 +159,7 @@ struct TileRenderer::Impl {
     descriptor_pool = create_descriptor_pool(ctx, 16, "tilelight descriptors");
     targets = std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples,
                                               scene.sun.shadow_map_size, opts.light_pass == LightPass::compute);
-    scene_passes = std::make_unique<ScenePasses>(ctx, scene, camera, *targets, descriptor_pool.get());
+    scene_passes = std::make_unique<ScenePasses>(ctx, scene, camera, *targets, descriptor_pool.get(), pool);
     lighting = std::make_unique<LightingInterface>(ctx, make_lighting_params(scene, camera, opts.width, opts.height),
                                                    *targets, descriptor_pool.get());
     classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());

@@ -32,6 +32,10 @@ void check_support(const Context& context, const ImageDesc& desc) {
                     desc.name, format_name(desc.format), desc.usage, static_cast<unsigned>(desc.samples),
                     sample_counts_text(props.sampleCounts)));
   }
+  if (desc.mip_levels == 0 || desc.mip_levels > props.maxMipLevels) {
+    throw Error(fmt::format("image {}: {} mip levels; {} supports 1 to {}", desc.name, desc.mip_levels,
+                            format_name(desc.format), props.maxMipLevels));
+  }
   if (desc.extent.width > props.maxExtent.width || desc.extent.height > props.maxExtent.height) {
     throw Error(fmt::format("image {}: {}x{} exceeds the maximum {}x{} for {}", desc.name, desc.extent.width,
                             desc.extent.height, props.maxExtent.width, props.maxExtent.height,
@@ -49,7 +53,7 @@ Image::Image(const Context& context, ImageDesc desc) : desc_(std::move(desc)) {
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = desc_.format;
   info.extent = {desc_.extent.width, desc_.extent.height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = desc_.mip_levels;
   info.arrayLayers = 1;
   info.samples = desc_.samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -103,16 +107,16 @@ VkImageSubresourceRange Image::subresource_range() const {
   VkImageSubresourceRange range{};
   range.aspectMask = desc_.aspect;
   range.baseMipLevel = 0;
-  range.levelCount = 1;
+  range.levelCount = desc_.mip_levels;
   range.baseArrayLayer = 0;
   range.layerCount = 1;
   return range;
 }
 
-VkImageSubresourceLayers Image::subresource_layers() const {
+VkImageSubresourceLayers Image::subresource_layers(std::uint32_t mip_level) const {
   VkImageSubresourceLayers layers{};
   layers.aspectMask = desc_.aspect;
-  layers.mipLevel = 0;
+  layers.mipLevel = mip_level;
   layers.baseArrayLayer = 0;
   layers.layerCount = 1;
   return layers;

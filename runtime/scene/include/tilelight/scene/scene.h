@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +19,30 @@ namespace tilelight {
 struct MeshVertex {
   glm::vec3 position;
   glm::vec3 normal;
+  glm::vec2 uv{};  // base colour texture coordinate (0 where the mesh has no texture)
+};
+
+// How a texture is read between and outside its texels (glTF's sampler).
+enum class TextureWrap { repeat, mirrored_repeat, clamp_to_edge };
+enum class TextureFilter { nearest, linear };
+
+struct TextureSampling {
+  TextureFilter magnify = TextureFilter::linear;
+  TextureFilter minify = TextureFilter::linear;
+  TextureFilter between_mips = TextureFilter::linear;
+  bool mipmapped = true;  // false: minification reads mip 0 only
+  TextureWrap wrap_u = TextureWrap::repeat;
+  TextureWrap wrap_v = TextureWrap::repeat;
+};
+
+// An RGBA8 image whose colour channels are sRGB-encoded (a glTF base colour texture): uploaded
+// as an _SRGB format, so shaders read linear values.
+struct Texture {
+  std::string name;
+  std::uint32_t width = 0;         // > 0
+  std::uint32_t height = 0;        // > 0
+  std::vector<std::uint8_t> rgba;  // width * height * 4 bytes, rows from the top (texture v = 0)
+  TextureSampling sampling;
 };
 
 struct Mesh {
@@ -29,6 +54,9 @@ struct Mesh {
   // the G-buffer pass then stores the same values for both triangles of a face where they share
   // a pixel (uber/scene/gbuffer.frag), so a face's inner diagonal is no MSAA edge.
   bool flat_faces = false;
+  // Index into Scene::textures: the base colour texture, multiplied into every instance's
+  // albedo at the vertices' uv. None: the albedo alone.
+  std::optional<std::uint32_t> base_colour_texture;
 };
 
 // Per-instance vertex data (binding 1 of the scene pipelines; see uber/scene/scene.vert).
@@ -79,6 +107,7 @@ struct Scene {
   std::vector<Mesh> meshes;
   std::vector<Instance> instances;
   std::vector<MeshBatch> batches;
+  std::vector<Texture> textures;
   std::vector<Camera> cameras;  // cameras[0] is the default
   SunAndAtmosphere sun;
   std::string source;  // the file the scene was loaded from (its name only); empty: the procedural scene

@@ -7,6 +7,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
 #include <string>
 
 namespace tilelight {
@@ -22,13 +23,14 @@ struct ImageDesc {
   // (a depth view that will be sampled must not include STENCIL).
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
   std::string name;
+  std::uint32_t mip_levels = 1;  // >= 1; more only for single-sampled images (a sampled texture)
 };
 
 class Image {
  public:
   Image() = default;  // empty
-  // Checks that the device supports format + usage + samples + extent (and says which part it
-  // lacks), then creates the image (optimal tiling, one mip, one layer, initial layout
+  // Checks that the device supports format + usage + samples + extent + mip levels (and says
+  // which part it lacks), then creates the image (optimal tiling, desc.mip_levels, one layer, initial layout
   // UNDEFINED), its device-local memory and, when `usage` allows views at all (sampled,
   // storage, or any attachment use), its view. Throws tilelight::Error.
   Image(const Context& context, ImageDesc desc);
@@ -45,13 +47,15 @@ class Image {
   VkFormat format() const { return desc_.format; }
   VkExtent2D extent() const { return desc_.extent; }
   VkSampleCountFlagBits samples() const { return desc_.samples; }
+  std::uint32_t mip_levels() const { return desc_.mip_levels; }
   VkImageUsageFlags usage() const { return desc_.usage; }
   VkImageAspectFlags aspect() const { return desc_.aspect; }
   const std::string& name() const { return desc_.name; }
 
-  // The whole image (its one mip level and layer) in this image's aspect.
+  // The whole image (every mip level, its one layer) in this image's aspect.
   VkImageSubresourceRange subresource_range() const;
-  VkImageSubresourceLayers subresource_layers() const;
+  // One mip level (the first by default) of its one layer, for copies.
+  VkImageSubresourceLayers subresource_layers(std::uint32_t mip_level = 0) const;
 
  private:
   ImageDesc desc_;

@@ -1,6 +1,6 @@
 #pragma once
 // Samplers. The lighting pass reads the G-buffer with texelFetch (no sampler state needed), so
-// samplers here serve the shadow map (depth compare) and any filtered lookups.
+// samplers here serve the shadow map (depth compare) and the scene's base colour textures.
 
 #include "tilelight/vulkan/vk_handles.h"
 
@@ -13,8 +13,14 @@ namespace tilelight {
 class Context;
 
 struct SamplerDesc {
-  VkFilter filter = VK_FILTER_NEAREST;                                   // both min and mag
-  VkSamplerAddressMode address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;  // u, v and w
+  VkFilter mag_filter = VK_FILTER_NEAREST;
+  VkFilter min_filter = VK_FILTER_NEAREST;
+  VkSamplerMipmapMode mipmap_mode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  // The last mip level read: 0 reads the first level only (the render targets have one);
+  // VK_LOD_CLAMP_NONE every level the image has.
+  float max_lod = 0.0f;
+  VkSamplerAddressMode address_u = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  VkSamplerAddressMode address_v = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;  // w: as u
   // Depth comparison (sampler2DShadow): the result is the fraction of taps that pass.
   bool compare = false;
   VkCompareOp compare_op = VK_COMPARE_OP_LESS_OR_EQUAL;
