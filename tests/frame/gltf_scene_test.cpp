@@ -4,11 +4,14 @@
 // 4 and 8, coalesced and not, raster and compute light passes, every tile drawn once.
 #include "frame_support.h"
 #include "tilelight/gltf/load_gltf.h"
+#include "tilelight_testing/renderer_test_seam.h"
 #include "tilelight_testing/test_support.h"
 
 #include <split_second_shaders.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <numeric>
 #include <optional>
 
@@ -16,6 +19,7 @@ namespace tilelight::test {
 namespace {
 
 const std::filesystem::path kModels = TILELIGHT_ASSIMP_GLTF2_MODELS;
+const std::filesystem::path kFixtures = TILELIGHT_GLTF_FIXTURES;
 
 struct GltfCase {
   const char* name;
@@ -93,6 +97,59 @@ INSTANTIATE_TEST_SUITE_P(
         GltfCase{"box_textured_embedded_cpu_triangles", "BoxTextured-glTF-Embedded/BoxTextured.gltf", IndexPath::cpu, 0,
                  TilePrimitive::triangles}),
     case_name);
+
+// The textured quad of tests/fixtures/gltf: a 2x2 texture (red, green / blue, white) read
+// with nearest filtering. Every G-buffer sample the quad covers stores one of the four texel
+// colours as its albedo (sRGB 255 decoded to exactly 1.0; the factor is white), all four
+// appear, and the image's top-left texel (uv 0,0) lands at the quad's top left on screen.
+class GltfTexturedFrame : public VulkanTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(GltfTexturedFrame, EveryCoveredSampleStoresATexelOfTheBaseColourTexture) {
+  const Scene scene = load_gltf_scene(kFixtures / GetParam());
+  RendererOptions options;
+  options.width = 256;
+  options.height = 192;
+  options.msaa = 4;
+  TileRenderer renderer(context(), scene, options);
+  (void)renderer.render_frame();
+  const FrameComparison classified = compare(renderer.read_classified(), renderer.read_naive(), kEquivalenceTolerance);
+  EXPECT_EQ(classified.pixels_over_tolerance, 0u) << classified.first_difference;
+
+  const GBufferSamples g = TileRendererTestSeam::read_gbuffer(renderer);
+  const std::array<glm::vec3, 4> texels{glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1), glm::vec3(1)};
+  std::array<std::size_t, 4> count{};
+  std::array<glm::dvec2, 4> centroid{};
+  std::size_t other = 0;
+  for (std::uint32_t y = 0; y < g.height; ++y) {
+    for (std::uint32_t x = 0; x < g.width; ++x) {
+      for (std::uint32_t s = 0; s < g.samples; ++s) {
+        const float* sample = g.at(x, y, s);
+        const auto motion_byte = static_cast<unsigned>(std::lround(sample[7] * 255.0f));
+        if ((motion_byte & 0x7Fu) == 0) continue;  // sky
+        const glm::vec3 albedo(sample[0], sample[1], sample[2]);
+        const auto texel = std::find(texels.begin(), texels.end(), albedo);
+        if (texel == texels.end()) {
+          ++other;
+          continue;
+        }
+        const auto k = static_cast<std::size_t>(texel - texels.begin());
+        ++count[k];
+        centroid[k] += glm::dvec2(x, y);
+      }
+    }
+  }
+  EXPECT_EQ(other, 0u) << "samples whose albedo is no texel of the texture";
+  for (std::size_t k = 0; k < 4; ++k) {
+    ASSERT_GT(count[k], 100u) << "texel " << k << " is (almost) nowhere in the frame";
+    centroid[k] /= static_cast<double>(count[k]);
+  }
+  // Red (top left of the image) above blue (bottom left), left of green (top right).
+  EXPECT_LT(centroid[0].y, centroid[2].y);
+  EXPECT_LT(centroid[0].x, centroid[1].x);
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, GltfTexturedFrame,
+                         ::testing::Values("textured_quad.glb", "textured_quad_texcoord1.gltf"));
 
 }  // namespace
 }  // namespace tilelight::test

@@ -68,7 +68,21 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"bad_not_json.gltf", "not valid JSON"}, BadFile{"bad_empty.gltf", "the file is empty"},
         BadFile{"bad_nul_in_json.gltf", "not valid JSON: a NUL byte at offset"},
         BadFile{"bad_deep_extras.gltf", "JSON nested 100002 levels deep, more than this loader reads (64)"},
-        BadFile{"no_such_file.glb", "cannot open: No such file or directory"}, BadFile{".", "is a folder"}),
+        BadFile{"no_such_file.glb", "cannot open: No such file or directory"}, BadFile{".", "is a folder"},
+        // Base colour textures.
+        BadFile{"bad_image_missing.gltf", "no_such_image.png: cannot open: No such file or directory"},
+        BadFile{"bad_image_not_png.gltf", "images[0] (used by textures[0]): not a PNG or JPEG image"},
+        BadFile{"bad_image_truncated.gltf", "images[0] (used by textures[0]): the image is corrupt or truncated"},
+        BadFile{"bad_image_too_large.gltf", "9000x9000 pixels; at most 8192 a side are loaded"},
+        BadFile{"bad_texture_missing.gltf",
+                "materials[0].pbrMetallicRoughness.baseColorTexture.index: texture 5 does not exist (the file has 1)"},
+        BadFile{"bad_texcoord_missing.gltf",
+                "meshes[0].primitives[0]: its material's base colour texture reads TEXCOORD_3, which the primitive "
+                "does not have"},
+        BadFile{"bad_sampler_filter.gltf", "samplers[0].magFilter: 1234 is not a glTF magnification filter"},
+        BadFile{
+            "bad_image_view_range.gltf",
+            "bufferViews[5] (holding images[0]): bytes 148..287 are past the end of buffers[0], which has 223 bytes"}),
     name_of);
 
 }  // namespace

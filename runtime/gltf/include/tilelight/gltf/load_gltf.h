@@ -1,7 +1,7 @@
 #pragma once
 // A glTF 2.0 file (.gltf with external or embedded buffers, or .glb) as the Scene the renderer
 // draws: every triangle primitive of one scene of the file, placed by its node transforms,
-// coloured by its material's base colour factor, with the demo's sky and sun, a default camera
+// coloured by its material's base colour factor and texture, with the demo's sky and sun, a default camera
 // framing the scene's bounds from a raised three-quarter view and a shadow map fitted to them.
 //
 // The file is input like any other: anything wrong with it (not JSON or GLB, a value of the
