@@ -35,8 +35,14 @@ TEST(FailureMessage, HostAllocationFailureNamesTheStage) {
 }
 
 TEST(FailureMessage, AMessageAboutAFlagPassesThroughUnchanged) {
-  EXPECT_EQ(failure_message("creating the renderer (0x16)", std::make_exception_ptr(Error("--width 0: too small"))),
+  EXPECT_EQ(failure_message("creating the renderer (0x16)",
+                            std::make_exception_ptr(OptionError("--width", "--width 0: too small"))),
             "--width 0: too small");
+}
+
+TEST(FailureMessage, TheErrorsTypeNotItsWordingDecidesWhetherTheStageIsSaid) {
+  EXPECT_EQ(failure_message("frame 1 of 1", std::make_exception_ptr(Error("--looks like a flag"))),
+            "frame 1 of 1: --looks like a flag");
 }
 
 TEST(FailureMessage, OurOtherErrorsGetTheStage) {

@@ -25,11 +25,11 @@ std::string failure_message(std::string_view stage, const std::exception_ptr& er
     std::rethrow_exception(error);
   } catch (const VulkanError& e) {
     return fmt::format("{}: {}{}", stage, e.what(), hint(e.result()));
-  } catch (const Error& e) {
+  } catch (const OptionError& e) {
     // A message about a flag ("--width 0: ...") says all a user needs; any other gets the stage.
-    const std::string_view what = e.what();
-    if (what.rfind("--", 0) == 0) return std::string(what);
-    return fmt::format("{}: {}", stage, what);
+    return e.what();
+  } catch (const Error& e) {
+    return fmt::format("{}: {}", stage, e.what());
   } catch (const std::bad_alloc&) {
     return fmt::format("{}: out of host memory (std::bad_alloc); try a smaller --width/--height", stage);
   } catch (const std::exception& e) {

@@ -11,11 +11,12 @@ namespace fs = std::filesystem;
 OutputFiles::OutputFiles(fs::path folder) : folder_(std::move(folder)) {
   std::error_code ec;
   fs::create_directories(folder_, ec);
-  if (ec) throw Error("--out " + folder_.string() + ": cannot create the folder: " + ec.message());
-  if (!fs::is_directory(folder_)) throw Error("--out " + folder_.string() + ": not a folder");
+  if (ec) throw OptionError("--out", "--out " + folder_.string() + ": cannot create the folder: " + ec.message());
+  if (!fs::is_directory(folder_)) throw OptionError("--out", "--out " + folder_.string() + ": not a folder");
   atomic_file::StagedFile probe(folder_ / "write-test", {});  // removed again by its destructor
   if (probe.failure()) {
-    throw Error("--out " + folder_.string() + ": cannot write there: " + atomic_file::describe(*probe.failure()));
+    throw OptionError("--out",
+                      "--out " + folder_.string() + ": cannot write there: " + atomic_file::describe(*probe.failure()));
   }
 }
 

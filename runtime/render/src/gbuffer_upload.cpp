@@ -20,7 +20,7 @@ GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& target
   }
   if (samples.width != targets.extent().width || samples.height != targets.extent().height ||
       samples.samples != static_cast<std::uint32_t>(targets.samples()) ||
-      samples.values.size() != static_cast<std::size_t>(samples.width) * samples.height * samples.samples * 16) {
+      samples.values.size() != samples.value_count()) {
     throw Error("the synthetic G-buffer does not match the frame's size and sample count");
   }
   samples_ = Buffer(context, {samples.values.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,

@@ -3,6 +3,7 @@
 #include "descriptors.h"
 #include "pipelines.h"
 #include "shader_registry.h"
+#include "tilelight/render/tile_renderer.h"
 #include "tilelight/vulkan/barriers.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
@@ -75,7 +76,8 @@ std::span<const std::uint8_t> TileClassification::host_ids() const {
 void TileClassification::enable_gbuffer_dump(const Context& context, VkDescriptorPool pool, std::uint32_t samples) {
   if (dump_pipeline_) return;
   // Large (64 bytes per sample): created only for the tests and tools that ask for it.
-  const VkDeviceSize values = static_cast<VkDeviceSize>(grid_.width) * grid_.height * samples * 16;
+  const VkDeviceSize values =
+      static_cast<VkDeviceSize>(grid_.width) * grid_.height * samples * GBufferSamples::kFloatsPerSample;
   dump_ = Buffer(
       context, {values * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostReadback, "G-buffer dump"});
   dump_set_ = allocate_descriptor_set(context, pool, lighting_->storage_set_layout(), "G-buffer dump set");

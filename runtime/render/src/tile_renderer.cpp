@@ -49,10 +49,10 @@ namespace {
 void check_size(const Context& context, const RendererOptions& options) {
   const DeviceLimits& limits = context.limits();
   auto check_one = [&](const char* what, std::uint32_t value, std::uint32_t limit) {
-    if (value == 0) throw Error(std::string(what) + " 0: the frame must be at least 1 pixel");
+    if (value == 0) throw OptionError(what, std::string(what) + " 0: the frame must be at least 1 pixel");
     if (value > limit) {
-      throw Error(std::string(what) + " " + std::to_string(value) + ": exceeds the maximum of " +
-                  std::to_string(limit) + " on " + context.device_name());
+      throw OptionError(what, std::string(what) + " " + std::to_string(value) + ": exceeds the maximum of " +
+                                  std::to_string(limit) + " on " + context.device_name());
     }
   };
   check_one("width", options.width, std::min(limits.max_framebuffer_width, limits.max_image_dimension_2d));
@@ -84,7 +84,7 @@ TilePrimitive choose_primitive(const Context& context, const TileGrid& grid, std
   const std::optional<std::string> why_not = points_unsupported(context, grid);
   if (!asked) return why_not ? TilePrimitive::triangles : TilePrimitive::points;
   if (*asked == TilePrimitive::points && why_not) {
-    throw Error("primitive points: not available on " + context.device_name() + ": " + *why_not);
+    throw OptionError("primitive", "primitive points: not available on " + context.device_name() + ": " + *why_not);
   }
   return *asked;
 }
@@ -101,6 +101,12 @@ std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Regist
   for (const shadergen::Permutation& p : registry.raw) pruned[p.id] = p.pruned;
   return pruned;
 }
+
+// Descriptor sets one renderer allocates from its pool, at most 10: the scene's, lighting set 0,
+// the tile-ID output, the G-buffer dump and upload (tests), the GPU index build, the GPU
+// tile-list build, and the compute light pass's three targets (classified, naive, dynamic).
+// The base colour textures have a pool of their own (scene_textures.cpp).
+constexpr std::uint32_t kMaxDescriptorSets = 16;
 
 // How long a failing frame waits, at least, for the GPU to finish what it was given before it
 // releases the blocked tile pass (release_blocked_tile_pass()).
@@ -156,7 +162,7 @@ struct TileRenderer::Impl {
         samples(ctx.choose_msaa(opts.msaa)),
         pool(ctx, "tilelight frame") {
     const Camera& camera = scene.camera(opts.camera);
-    descriptor_pool = create_descriptor_pool(ctx, 16, "tilelight descriptors");
+    descriptor_pool = create_descriptor_pool(ctx, kMaxDescriptorSets, "tilelight descriptors");
     targets = std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples,
                                               scene.sun.shadow_map_size, opts.light_pass == LightPass::compute);
     scene_passes = std::make_unique<ScenePasses>(ctx, scene, camera, *targets, descriptor_pool.get(), pool);
@@ -493,8 +499,7 @@ GBufferSamples TileRenderer::read_gbuffer() {
   out.height = impl.grid.height;
   out.samples = msaa_samples();
   const std::span<const float> values = impl.classification->host_gbuffer_dump();
-  out.values.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(out.width) *
-                                                                                 out.height * out.samples * 16));
+  out.values.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(out.value_count()));
   return out;
 }
 

@@ -4,6 +4,8 @@
 // failure the same way: the stage it was in, then what() of the error.
 
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace tilelight {
 
@@ -12,6 +14,19 @@ namespace tilelight {
 class Error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// An error about the value of one option. option() names it as the thrower knows it: a
+// RendererOptions member ("width") in the libraries, a command-line flag ("--width") in the
+// tools, which rethrow the first as the second; what() starts with the option and its value
+// ("width 0: ..."), so it needs no further context.
+class OptionError : public Error {
+ public:
+  OptionError(std::string option, const std::string& what) : Error(what), option_(std::move(option)) {}
+  const std::string& option() const noexcept { return option_; }
+
+ private:
+  std::string option_;
 };
 
 }  // namespace tilelight

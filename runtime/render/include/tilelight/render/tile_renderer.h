@@ -94,11 +94,17 @@ struct FrameResult {
 
 // Every G-buffer sample as stored (see uber/include/gbuffer.glsl).
 struct GBufferSamples {
+  // Per sample: rt0.rgba, rt1.rgba, rt2.rgba, depth, 0, 0, 0 (uber/classify/gbuffer_dump.comp
+  // writes them as four vec4s).
+  static constexpr std::size_t kFloatsPerSample = 16;
+
   std::uint32_t width = 0, height = 0, samples = 0;
-  std::vector<float> values;  // per pixel (row-major), per sample: rt0.rgba, rt1.rgba, rt2.rgba, depth, 0, 0, 0
-  // Precondition: x < width, y < height, s < samples. Points at 16 floats.
+  std::vector<float> values;  // per pixel (row-major), per sample: kFloatsPerSample floats
+  // width * height * samples * kFloatsPerSample: the size `values` must have.
+  std::size_t value_count() const { return std::size_t{width} * height * samples * kFloatsPerSample; }
+  // Precondition: x < width, y < height, s < samples. Points at kFloatsPerSample floats.
   const float* at(std::uint32_t x, std::uint32_t y, std::uint32_t s) const {
-    return values.data() + ((static_cast<std::size_t>(y) * width + x) * samples + s) * 16;
+    return values.data() + ((static_cast<std::size_t>(y) * width + x) * samples + s) * kFloatsPerSample;
   }
 };
 

@@ -38,23 +38,10 @@ struct CommandBufferDeleter {
   void operator()(VkCommandBuffer buffer) const noexcept { vkFreeCommandBuffers(device, pool, 1, &buffer); }
 };
 
-// Descriptor sets return to their pool, which must have been created with
-// VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT (sets from other pools are freed by
-// destroying or resetting the pool instead, and are not wrapped).
-struct DescriptorSetDeleter {
-  VkDevice device = VK_NULL_HANDLE;
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  void operator()(VkDescriptorSet set) const noexcept {
-    // vkFreeDescriptorSets can only return VK_SUCCESS; nothing to check in a destructor.
-    (void)vkFreeDescriptorSets(device, pool, 1, &set);
-  }
-};
-
 using UniqueInstance = Handle<VkInstance, InstanceDeleter>;
 using UniqueDevice = Handle<VkDevice, DeviceDeleter>;
 using UniqueDebugMessenger = Handle<VkDebugUtilsMessengerEXT, DebugMessengerDeleter>;
 using UniqueCommandBuffer = Handle<VkCommandBuffer, CommandBufferDeleter>;
-using UniqueDescriptorSet = Handle<VkDescriptorSet, DescriptorSetDeleter>;
 
 using UniqueBuffer = Handle<VkBuffer, DeviceChildDeleter<VkBuffer, &vkDestroyBuffer>>;
 using UniqueImage = Handle<VkImage, DeviceChildDeleter<VkImage, &vkDestroyImage>>;

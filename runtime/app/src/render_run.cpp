@@ -1,0 +1,236 @@
+#include "render_run.h"
+
+#include "tilelight/app/output_files.h"
+#include "tilelight/app/process_stats.h"
+#include "tilelight/app/report.h"
+#include "tilelight/gltf/load_gltf.h"
+#include "tilelight/picture/png.h"
+#include "tilelight/picture/tile_class_image.h"
+#include "tilelight/render/tile_renderer.h"
+#include "tilelight/scene/scene.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
+
+#include <split_second_shaders.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace tilelight::app {
+namespace {
+
+std::uint32_t parse_msaa(const std::string& text) {
+  if (text == "auto") return 0;
+  for (const char* valid : {"1", "2", "4", "8", "16"}) {
+    if (text == valid) return static_cast<std::uint32_t>(std::stoul(text));
+  }
+  throw OptionError("--msaa", "--msaa " + text + ": expected auto, 1, 2, 4, 8 or 16");
+}
+
+Baselines parse_baselines(const std::string& text) {
+  if (text == "naive") return Baselines::naive;
+  if (text == "dynamic") return Baselines::dynamic;
+  return Baselines::both;
+}
+
+// The light targets hold linear radiance; the PNGs get the usual display encoding (gamma 2.2
+// after clamping to 0..1), so they look as a renderer's output would.
+RgbaImage display_encoded(const RgbaImage& linear) {
+  RgbaImage out = linear;
+  for (std::size_t i = 0; i < out.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const float v = std::isnan(out.pixels[i]) ? 0.0f : std::clamp(out.pixels[i], 0.0f, 1.0f);
+    out.pixels[i] = std::pow(v, 1.0f / 2.2f);
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> optimised_ids(const std::vector<std::uint8_t>& raw_ids) {
+  std::vector<std::uint8_t> out(raw_ids.size());
+  for (std::size_t i = 0; i < raw_ids.size(); ++i) {
+    out[i] = raw_ids[i] < split_second::kRawCount ? split_second::kRawToOptimised[raw_ids[i]] : std::uint8_t{0};
+  }
+  return out;
+}
+
+// A bad file is an error about the flag's value: "--scene FILE: what is wrong".
+Scene load_scene(const Arguments& a) {
+  try {
+    return load_gltf_scene(a.scene, GltfLoadOptions{a.scene_index});
+  } catch (const Error& e) {
+    throw OptionError("--scene", std::string("--scene ") + e.what());
+  }
+}
+
+RendererOptions renderer_options(const Arguments& a) {
+  RendererOptions options;
+  options.width = a.width;
+  options.height = a.height;
+  options.msaa = parse_msaa(a.msaa);
+  options.tile_size = a.tile_size;
+  options.path = a.path == "gpu" ? IndexPath::gpu : IndexPath::cpu;
+  options.light_pass = a.light_pass == "compute" ? LightPass::compute : LightPass::raster;
+  options.raw_permutations = a.permutations == "raw";
+  options.coalesce = !a.no_coalesce;
+  if (a.primitive != "auto") options.primitive = parse_tile_primitive(a.primitive);
+  options.camera = a.camera;
+  options.baselines = parse_baselines(a.baseline);
+  options.timeout = Seconds(a.timeout_s);
+  return options;
+}
+
+// Errors about a value name the flag that set it.
+std::unique_ptr<TileRenderer> make_renderer(const Context& context, const Scene& scene, const RendererOptions& options,
+                                            const Arguments& a) {
+  try {
+    (void)context.choose_msaa(options.msaa);
+  } catch (const Error& e) {
+    throw OptionError("--msaa", "--msaa " + a.msaa + ": " + e.what());
+  }
+  try {
+    return std::make_unique<TileRenderer>(context, scene, options);
+  } catch (const OptionError& e) {
+    // The renderer's options are the flags of the same names.
+    throw OptionError("--" + e.option(), "--" + std::string(e.what()));
+  }
+}
+
+struct TimedFrames {
+  std::vector<FrameTimings> timings;
+  FrameResult last;
+  double rss_after_frames_mib = 0;
+};
+
+TimedFrames render_frames(TileRenderer& renderer, std::uint32_t frames, std::string& stage) {
+  // One untimed warm-up frame first: drivers (lavapipe included) compile pipelines lazily at
+  // first use, which would otherwise land in the first frame's light-pass timings.
+  stage = "the warm-up frame";
+  renderer.render_frame();
+  TimedFrames timed;
+  for (std::uint32_t f = 0; f < frames; ++f) {
+    stage = fmt::format("frame {} of {}", f + 1, frames);
+    timed.last = renderer.render_frame();
+    timed.timings.push_back(timed.last.timings);
+  }
+  timed.rss_after_frames_mib = current_rss_mib();
+  return timed;
+}
+
+struct ReadBack {
+  RgbaImage classified;
+  std::optional<RgbaImage> naive, dynamic;  // the baselines that ran
+  std::vector<std::uint8_t> raw_ids;
+};
+
+ReadBack read_back(const TileRenderer& renderer, Baselines baselines) {
+  ReadBack frames;
+  frames.classified = renderer.read_classified();
+  if (baselines != Baselines::dynamic) frames.naive = renderer.read_naive();
+  if (baselines != Baselines::naive) frames.dynamic = renderer.read_dynamic();
+  frames.raw_ids = renderer.raw_tile_ids();
+  return frames;
+}
+
+FrameReport make_report(const Arguments& a, const Context& context, const Scene& scene, const TileRenderer& renderer,
+                        const TimedFrames& timed, const ReadBack& frames) {
+  FrameReport report;
+  const char* threads = std::getenv("LP_NUM_THREADS");
+  report.run = {context.device_name(),
+                a.width,
+                a.height,
+                renderer.msaa_samples(),
+                a.tile_size,
+                a.frames,
+                a.path,
+                a.permutations,
+                a.camera,
+                !a.no_coalesce,
+                threads != nullptr ? threads : "",
+                renderer.light_pass() == LightPass::compute ? std::string("workgroups")
+                                                            : std::string(to_string(renderer.tile_primitive())),
+                a.baseline,
+                a.light_pass};
+  report.run.scene = scene.source;
+  report.run.scene_triangles = scene.triangle_count();
+  count_tiles(report, frames.raw_ids);
+  report.primitives_uncoalesced = timed.last.stats.primitives_uncoalesced;
+  report.primitives_coalesced = timed.last.stats.primitives_coalesced;
+  report.rectangles = timed.last.stats.rectangles;
+  report.timings = median_timings(timed.timings);
+  report.frame_timings = timed.timings;
+  report.equivalence = compare_with_baselines(frames.classified, frames.naive, frames.dynamic);
+  report.process.rss_after_frames_mib = timed.rss_after_frames_mib;
+  return report;
+}
+
+// Stages the pictures and report.json and commits them together.
+void write_outputs(OutputFiles& files, FrameReport& report, const ReadBack& frames, std::uint32_t tile_size) {
+  const RgbaImage shown = display_encoded(frames.classified);
+  files.stage("frame_classified.png", encode_png(shown));
+  for (const auto& [name, frame] :
+       {std::pair{"frame_naive.png", &frames.naive}, std::pair{"frame_dynamic.png", &frames.dynamic}}) {
+    if (*frame) {
+      files.stage(name, encode_png(display_encoded(**frame)));
+    } else {
+      files.retire(name);
+    }
+  }
+  const Rgba8Canvas canvas = compose_tile_class_image(shown, tile_size, optimised_ids(frames.raw_ids));
+  files.stage("tile_classes.png", encode_png(canvas.width, canvas.height, canvas.pixels));
+  // Measured last, so the figure covers every frame, the read-back and the PNG encoding.
+  report.process.peak_rss_mib = peak_rss_mib();
+  files.stage_text("report.json", report_json(report));
+  files.commit();
+}
+
+}  // namespace
+
+int render_run(const Arguments& a, std::ostream& out, std::string& stage) {
+  stage = "building the scene";
+  const Scene scene = a.scene.empty() ? make_demo_scene() : load_scene(a);
+  if (a.list_cameras) {
+    for (const Camera& c : scene.cameras) out << c.name << ": " << c.description << '\n';
+    return 0;
+  }
+  const RendererOptions options = renderer_options(a);
+  stage = "choosing the camera";
+  (void)scene.camera(a.camera);  // an unknown camera fails before any Vulkan work
+
+  stage = "creating the Vulkan context";
+  ContextOptions context_options;
+  context_options.device = a.device;
+  context_options.validation = a.validation;
+  const Context context(context_options);
+  if (a.list_devices) {
+    for (std::size_t i = 0; i < context.available_devices().size(); ++i) {
+      out << i << ": " << context.available_devices()[i].name << '\n';
+    }
+    return 0;
+  }
+  stage = "preparing the output folder " + a.out;
+  OutputFiles files(a.out);  // proves --out writable before the long part
+  stage = fmt::format("creating the renderer ({}x{})", a.width, a.height);
+  const std::unique_ptr<TileRenderer> renderer = make_renderer(context, scene, options, a);
+
+  const TimedFrames timed = render_frames(*renderer, a.frames, stage);
+  stage = "reading back the frames";
+  const ReadBack frames = read_back(*renderer, options.baselines);
+  if (a.validation) context.require_no_validation_messages("tilelight");
+
+  stage = "comparing the frames and writing the results to " + a.out;
+  FrameReport report = make_report(a, context, scene, *renderer, timed, frames);
+  write_outputs(files, report, frames, a.tile_size);
+
+  out << timing_table(report);
+  out << "wrote " << (files.folder() / "frame_classified.png").string() << (frames.naive ? ", frame_naive.png" : "")
+      << (frames.dynamic ? ", frame_dynamic.png" : "") << ", tile_classes.png, report.json\n";
+  return 0;
+}
+
+}  // namespace tilelight::app
