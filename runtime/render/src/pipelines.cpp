@@ -120,44 +120,52 @@ UniquePipeline create_compute_pipeline(const Context& context, VkPipelineLayout 
   return owned;
 }
 
-UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPipelineDesc& desc) {
-  const UniqueShaderModule vertex = create_shader_module(context, desc.vertex_spirv, desc.name + " (vertex)");
-  UniqueShaderModule fragment;
-  SpecConstants fragment_constants = desc.fragment_constants;  // info() points into it
-  std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-               nullptr,
-               0,
-               VK_SHADER_STAGE_VERTEX_BIT,
-               vertex.get(),
-               "main",
-               nullptr};
-  std::uint32_t stage_count = 1;
-  if (!desc.fragment_spirv.empty()) {
-    fragment = create_shader_module(context, desc.fragment_spirv, desc.name + " (fragment)");
-    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-                 nullptr,
-                 0,
-                 VK_SHADER_STAGE_FRAGMENT_BIT,
-                 fragment.get(),
-                 "main",
-                 fragment_constants.info()};
-    stage_count = 2;
+namespace {
+
+VkPipelineShaderStageCreateInfo stage_info(VkShaderStageFlagBits stage, VkShaderModule module,
+                                           const VkSpecializationInfo* constants) {
+  return {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, stage, module, "main", constants};
+}
+
+// The vertex and (optional) fragment stage of a graphics pipeline, with the modules and the
+// specialization data their create infos point into: neither copied nor moved.
+class GraphicsStages {
+ public:
+  GraphicsStages(const Context& context, const GraphicsPipelineDesc& desc)
+      : vertex_(create_shader_module(context, desc.vertex_spirv, desc.name + " (vertex)")),
+        fragment_constants_(desc.fragment_constants) {
+    stages_[0] = stage_info(VK_SHADER_STAGE_VERTEX_BIT, vertex_.get(), nullptr);
+    if (!desc.fragment_spirv.empty()) {
+      fragment_ = create_shader_module(context, desc.fragment_spirv, desc.name + " (fragment)");
+      stages_[1] = stage_info(VK_SHADER_STAGE_FRAGMENT_BIT, fragment_.get(), fragment_constants_.info());
+      count_ = 2;
+    }
   }
+  GraphicsStages(const GraphicsStages&) = delete;
+  GraphicsStages& operator=(const GraphicsStages&) = delete;
 
-  VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vertex_input.vertexBindingDescriptionCount = static_cast<std::uint32_t>(desc.vertex_bindings.size());
-  vertex_input.pVertexBindingDescriptions = desc.vertex_bindings.data();
-  vertex_input.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(desc.vertex_attributes.size());
-  vertex_input.pVertexAttributeDescriptions = desc.vertex_attributes.data();
+  std::uint32_t count() const { return count_; }
+  const VkPipelineShaderStageCreateInfo* data() const { return stages_.data(); }
 
-  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = desc.topology;
+ private:
+  UniqueShaderModule vertex_, fragment_;
+  SpecConstants fragment_constants_;
+  std::array<VkPipelineShaderStageCreateInfo, 2> stages_{};
+  std::uint32_t count_ = 1;
+};
 
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
+// Points into desc's binding and attribute vectors.
+VkPipelineVertexInputStateCreateInfo vertex_input_state(const GraphicsPipelineDesc& desc) {
+  VkPipelineVertexInputStateCreateInfo input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  input.vertexBindingDescriptionCount = static_cast<std::uint32_t>(desc.vertex_bindings.size());
+  input.pVertexBindingDescriptions = desc.vertex_bindings.data();
+  input.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(desc.vertex_attributes.size());
+  input.pVertexAttributeDescriptions = desc.vertex_attributes.data();
+  return input;
+}
 
+// Filled triangles, no culling (thin geometry is seen from both sides), desc's depth bias.
+VkPipelineRasterizationStateCreateInfo rasterization_state(const GraphicsPipelineDesc& desc) {
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.cullMode = VK_CULL_MODE_NONE;
@@ -166,31 +174,53 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
   raster.depthBiasEnable = desc.depth_bias ? VK_TRUE : VK_FALSE;
   raster.depthBiasConstantFactor = desc.depth_bias ? desc.depth_bias->constant : 0.0f;
   raster.depthBiasSlopeFactor = desc.depth_bias ? desc.depth_bias->slope : 0.0f;
+  return raster;
+}
 
-  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = desc.samples;
-
+VkPipelineDepthStencilStateCreateInfo depth_state(const GraphicsPipelineDesc& desc) {
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = desc.depth_test ? VK_TRUE : VK_FALSE;
   depth.depthWriteEnable = desc.depth_write ? VK_TRUE : VK_FALSE;
   depth.depthCompareOp = desc.depth_compare;
+  return depth;
+}
 
-  std::vector<VkPipelineColorBlendAttachmentState> blend(desc.color_attachments);
+// Every colour attachment written whole, without blending.
+std::vector<VkPipelineColorBlendAttachmentState> opaque_attachments(std::uint32_t count) {
+  std::vector<VkPipelineColorBlendAttachmentState> blend(count);
   for (VkPipelineColorBlendAttachmentState& b : blend) {
     b.colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   }
-  VkPipelineColorBlendStateCreateInfo color_blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  color_blend.attachmentCount = desc.color_attachments;
-  color_blend.pAttachments = blend.data();
+  return blend;
+}
 
+}  // namespace
+
+UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPipelineDesc& desc) {
+  const GraphicsStages stages(context, desc);
+  const VkPipelineVertexInputStateCreateInfo vertex_input = vertex_input_state(desc);
+  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology = desc.topology;
+  // Viewport and scissor are dynamic (set_viewport_and_scissor()): one pipeline serves any size.
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
   const std::array<VkDynamicState, 2> dynamic_states{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
   VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
   dynamic.dynamicStateCount = static_cast<std::uint32_t>(dynamic_states.size());
   dynamic.pDynamicStates = dynamic_states.data();
+  const VkPipelineRasterizationStateCreateInfo raster = rasterization_state(desc);
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = desc.samples;
+  const VkPipelineDepthStencilStateCreateInfo depth = depth_state(desc);
+  const std::vector<VkPipelineColorBlendAttachmentState> blend = opaque_attachments(desc.color_attachments);
+  VkPipelineColorBlendStateCreateInfo color_blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  color_blend.attachmentCount = desc.color_attachments;
+  color_blend.pAttachments = blend.data();
 
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.stageCount = stage_count;
+  info.stageCount = stages.count();
   info.pStages = stages.data();
   info.pVertexInputState = &vertex_input;
   info.pInputAssemblyState = &assembly;

@@ -65,39 +65,55 @@ Context::~Context() {
   }
 }
 
-void Context::create_instance(const ContextOptions& options) {
-  if (options.synchronization_validation && !options.validation) {
-    throw Error("synchronization validation needs validation enabled as well");
-  }
+namespace {
+
+void require_vulkan_1_2_loader() {
   std::uint32_t loader_version = VK_API_VERSION_1_0;
   check(vkEnumerateInstanceVersion(&loader_version), "vkEnumerateInstanceVersion");
   if (loader_version < VK_API_VERSION_1_2) {
     throw Error(fmt::format("the Vulkan loader supports only Vulkan {}; the runtime needs 1.2",
                             api_version_text(loader_version)));
   }
+}
 
+struct InstanceLayers {
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
-  validation_ = options.validation;
-  if (validation_) {
-    if (!layer_available(kValidationLayer)) {
-      throw Error(
-          fmt::format("validation was requested but the Khronos validation layer ({}) is not installed "
-                      "(Debian: vulkan-validationlayers)",
-                      kValidationLayer));
-    }
-    layers.push_back(kValidationLayer);
-    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-    if (options.synchronization_validation) {
-      if (!instance_extension_available(kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME)) {
-        throw Error(
-            fmt::format("the installed validation layer does not offer {}, needed for synchronization "
-                        "validation",
-                        VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME));
-      }
-      extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
-    }
+};
+
+// The validation layer and what it needs, when asked for; an error naming what is missing.
+InstanceLayers instance_layers(const ContextOptions& options) {
+  InstanceLayers wanted;
+  if (!options.validation) return wanted;
+  if (!layer_available(kValidationLayer)) {
+    throw Error(
+        fmt::format("validation was requested but the Khronos validation layer ({}) is not installed "
+                    "(Debian: vulkan-validationlayers)",
+                    kValidationLayer));
   }
+  wanted.layers.push_back(kValidationLayer);
+  wanted.extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (options.synchronization_validation) {
+    if (!instance_extension_available(kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME)) {
+      throw Error(
+          fmt::format("the installed validation layer does not offer {}, needed for synchronization "
+                      "validation",
+                      VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME));
+    }
+    wanted.extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+  }
+  return wanted;
+}
+
+}  // namespace
+
+void Context::create_instance(const ContextOptions& options) {
+  if (options.synchronization_validation && !options.validation) {
+    throw Error("synchronization validation needs validation enabled as well");
+  }
+  require_vulkan_1_2_loader();
+  const InstanceLayers wanted = instance_layers(options);
+  validation_ = options.validation;
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = options.application_name.c_str();
@@ -120,32 +136,34 @@ void Context::create_instance(const ContextOptions& options) {
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   info.pNext = validation_ ? &messenger_info : nullptr;
   info.pApplicationInfo = &app;
-  info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
-  info.ppEnabledLayerNames = layers.data();
-  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
-  info.ppEnabledExtensionNames = extensions.data();
+  info.enabledLayerCount = static_cast<std::uint32_t>(wanted.layers.size());
+  info.ppEnabledLayerNames = wanted.layers.data();
+  info.enabledExtensionCount = static_cast<std::uint32_t>(wanted.extensions.size());
+  info.ppEnabledExtensionNames = wanted.extensions.data();
 
   VkInstance instance = VK_NULL_HANDLE;
   check(vkCreateInstance(&info, nullptr, &instance), "vkCreateInstance", "the Vulkan instance");
   instance_ = UniqueInstance(instance, InstanceDeleter{});
+  if (validation_) create_validation_messenger();
+}
 
-  if (validation_) {
-    // Extension entry points are not exported by the loader; fetch them from the instance.
-    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
-    set_object_name_fn_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-        vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
-    if (create == nullptr || destroy == nullptr) {
-      throw Error("VK_EXT_debug_utils is enabled but its entry points are missing");
-    }
-    VkDebugUtilsMessengerCreateInfoEXT standalone = make_messenger_info(*log_);
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-    check(create(instance, &standalone, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT",
-          "the validation messenger");
-    messenger_ = UniqueDebugMessenger(messenger, DebugMessengerDeleter{instance, destroy});
+void Context::create_validation_messenger() {
+  const VkInstance instance = instance_.get();
+  // Extension entry points are not exported by the loader; fetch them from the instance.
+  auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+      vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+  auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+      vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+  set_object_name_fn_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+      vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
+  if (create == nullptr || destroy == nullptr) {
+    throw Error("VK_EXT_debug_utils is enabled but its entry points are missing");
   }
+  VkDebugUtilsMessengerCreateInfoEXT standalone = make_messenger_info(*log_);
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  check(create(instance, &standalone, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT",
+        "the validation messenger");
+  messenger_ = UniqueDebugMessenger(messenger, DebugMessengerDeleter{instance, destroy});
 }
 
 void Context::pick_device(const ContextOptions& options) {

@@ -116,6 +116,7 @@ class Context {
 
  private:
   void create_instance(const ContextOptions& options);
+  void create_validation_messenger();
   void pick_device(const ContextOptions& options);
   void create_device();
 
