@@ -36,11 +36,7 @@ void append_bytes(void* context, void* data, int size) noexcept {
 
 std::vector<std::uint8_t> to_rgba8(const RgbaImage& image) {
   std::vector<std::uint8_t> out(image.pixels.size());
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-    const float v = image.pixels[i];
-    const float clamped = std::isnan(v) ? 0.0f : std::fmin(std::fmax(v, 0.0f), 1.0f);
-    out[i] = static_cast<std::uint8_t>(std::lround(clamped * 255.0f));
-  }
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) out[i] = to_unorm8(image.pixels[i]);
   return out;
 }
 

@@ -86,15 +86,6 @@ void check_tiles(std::uint32_t frame_width, std::uint32_t frame_height, std::uin
   }
 }
 
-// to_rgba8() for one channel: clamp to [0, 1], scale (in float, as to_rgba8 does), round to
-// nearest with halves away from zero, NaN -> 0. Adding 0.5 in double is exact for a float in
-// [0, 255], so truncating gives exactly std::lround, without its library call per channel.
-std::uint8_t to_unorm8(float v) {
-  const float clamped = std::isnan(v) ? 0.0f : std::fmin(std::fmax(v, 0.0f), 1.0f);
-  const float scaled = clamped * 255.0f;
-  return static_cast<std::uint8_t>(std::lround(scaled));
-}
-
 std::uint32_t to_u32(int v) { return static_cast<std::uint32_t>(v); }
 
 }  // namespace

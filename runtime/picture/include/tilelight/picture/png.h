@@ -11,8 +11,8 @@
 
 namespace tilelight {
 
-// Float RGBA -> 8-bit RGBA: clamp to [0, 1], scale by 255, round to nearest; NaN -> 0. No
-// gamma is applied (the values are written as they are).
+// Float RGBA -> 8-bit RGBA, every channel through to_unorm8() (rgba_image.h). No gamma is
+// applied (the values are written as they are).
 std::vector<std::uint8_t> to_rgba8(const RgbaImage& image);
 
 // The PNG file bytes of 8-bit RGBA pixels (rows top to bottom, width * height * 4 bytes).

@@ -4,6 +4,7 @@
 // tile-class picture and the benchmarks' charts need no GPU library.
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -18,5 +19,12 @@ struct RgbaImage {
   // Precondition: x < width, y < height.
   std::array<float, 4> at(std::uint32_t x, std::uint32_t y) const;
 };
+
+// One channel as 8 bits, the one conversion every picture uses: clamp to [0, 1], scale by 255
+// (in float), round to nearest with halves away from zero; NaN -> 0. No gamma.
+inline std::uint8_t to_unorm8(float v) {
+  const float clamped = std::isnan(v) ? 0.0f : std::fmin(std::fmax(v, 0.0f), 1.0f);
+  return static_cast<std::uint8_t>(std::lround(clamped * 255.0f));
+}
 
 }  // namespace tilelight
