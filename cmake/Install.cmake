@@ -1,4 +1,5 @@
-# `cmake --install`: the CLI, the registry header, the CMake function and the package config,
+# `cmake --install`: the CLI, the registry header (and shadergen/vulkan.h, for consumers that
+# want Vulkan create-infos), the CMake function and the package config,
 # so another project's find_package(shadergen CONFIG REQUIRED) gets all three.
 include(CMakePackageConfigHelpers)
 
@@ -6,6 +7,7 @@ set(SHADERGEN_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/shadergen)
 install(TARGETS shadergen shadergen_registry EXPORT shadergenTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/shadergen/include/shadergen/registry.h
+  ${PROJECT_SOURCE_DIR}/shadergen/include/shadergen/vulkan.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadergen)
 install(EXPORT shadergenTargets NAMESPACE shadergen:: DESTINATION ${SHADERGEN_CMAKE_DIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/shadergenConfig.cmake.in

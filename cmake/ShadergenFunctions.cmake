@@ -1,6 +1,6 @@
 # shadergen_add_permutations(<target> DOMAIN <spec> [NAMESPACE <ns>] [CACHE_DIR <dir>] [JOBS <n>]
 #                            [TARGET_ENV <vulkan1.0|vulkan1.1|vulkan1.2|vulkan1.3>]
-#                            [DEFINES <NAME=VALUE|NAME>...]
+#                            [DEFINES <NAME=VALUE|NAME>...] [STRIP_DEBUG]
 #                            [REMOTE_CACHE <url> [REMOTE_CACHE_READONLY]])
 #
 # Creates a static library <target> holding every permutation of the domain <spec> as SPIR-V,
@@ -9,7 +9,8 @@
 # into the build tree; its depfile lists the spec and every GLSL file it read, so editing any
 # of them reruns it and nothing else does. DEFINES are passed as `--define` arguments: fixed
 # defines for every shader of the domain, on top of the spec's own "defines". TARGET_ENV is
-# passed as `--target-env` (default: the spec's "target_env", else vulkan1.2). Files whose bytes did not change keep their
+# passed as `--target-env` (default: the spec's "target_env", else vulkan1.2). STRIP_DEBUG
+# passes `--strip-debug`: blobs without names, sources or lines (the registry keeps the names). Files whose bytes did not change keep their
 # timestamps, so nothing downstream recompiles after an edit that changes no SPIR-V.
 #
 # REMOTE_CACHE passes --remote-cache (without it, shadergen still reads SHADERGEN_REMOTE_CACHE
@@ -18,7 +19,7 @@
 # Needs SHADERGEN_EXECUTABLE to name the shadergen executable target (the project sets it; the
 # package config sets it to the imported shadergen::shadergen).
 function(shadergen_add_permutations target)
-  cmake_parse_arguments(PARSE_ARGV 1 SG "REMOTE_CACHE_READONLY" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS;TARGET_ENV;REMOTE_CACHE"
+  cmake_parse_arguments(PARSE_ARGV 1 SG "REMOTE_CACHE_READONLY;STRIP_DEBUG" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS;TARGET_ENV;REMOTE_CACHE"
                         "DEFINES")
   if(SG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "shadergen_add_permutations(${target}): unknown arguments: ${SG_UNPARSED_ARGUMENTS}")
@@ -53,6 +54,9 @@ function(shadergen_add_permutations target)
   endif()
   if(SG_TARGET_ENV)
     list(APPEND extra --target-env "${SG_TARGET_ENV}")
+  endif()
+  if(SG_STRIP_DEBUG)
+    list(APPEND extra --strip-debug)
   endif()
   foreach(define IN LISTS SG_DEFINES)
     list(APPEND extra --define "${define}")

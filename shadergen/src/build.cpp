@@ -121,6 +121,20 @@ std::unique_ptr<RemoteCache> remote_cache_for(const BuildOptions& options) {
                                        make_curl_http_client(), options.log);
 }
 
+// Optimised IDs that no raw ID maps to cost a compile each and are never drawn: name them.
+void warn_unreachable(const BuildOptions& options, const PermutationPlan& plan) {
+  std::string ids;
+  std::size_t count = 0;
+  for (const OptimisedPermutation& o : plan.optimised)
+    if (o.raw_mapped == 0) ids += (count++ ? ", " : "") + std::to_string(o.id);
+  if (count == 0 || !options.log) return;
+  options.log("warning: " + options.spec_path.string() + ": optimised ID" + (count > 1 ? "s " : " ") + ids +
+              (count > 1 ? " are" : " is") +
+              " reached by no raw ID; compiled all the same (`shadergen lut` shows the table; to avoid them, "
+              "change the optimised bits' \"when\" rules so that no combination of bits is impossible, or use "
+              "fewer bits)");
+}
+
 }  // namespace
 
 Result<BuildSummary> build(const BuildOptions& given) {
@@ -136,8 +150,10 @@ Result<BuildSummary> build(const BuildOptions& given) {
   if (Status ok = check_names(options, cpp_name, ns); !ok) return std::move(ok).take_errors();
   if (Status ok = apply_command_line_defines(*spec, options.defines); !ok) return std::move(ok).take_errors();
   if (Status ok = apply_target_env(*spec, options.target_env); !ok) return std::move(ok).take_errors();
+  spec->strip_debug = spec->strip_debug || options.strip_debug;
   auto plan = expand(*spec);
   if (!plan) return std::move(plan).take_errors();
+  warn_unreachable(options, *plan);
   clock.lap("parse spec");
 
   ContentCache cache;

@@ -12,6 +12,8 @@
 #include "shadergen/build.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
+#include "suggest.h"
+#include "version.h"
 
 namespace shadergen {
 namespace {
@@ -99,7 +101,7 @@ struct BuildArgs {
   std::string spec, out, cache_dir, depfile, cpp_name, ns, target_env;
   std::vector<std::string> defines;
   unsigned jobs = 0;
-  bool no_cache = false, stats = false, verbose = false;
+  bool no_cache = false, stats = false, verbose = false, strip_debug = false;
   std::string remote_cache;
   bool remote_cache_readonly = false;
 };
@@ -124,6 +126,7 @@ int run_build(const BuildArgs& a, std::ostream& out, std::ostream& err) {
   options.defines = a.defines;
   options.target_env = a.target_env;
   options.write_stats = a.stats;
+  options.strip_debug = a.strip_debug;
   options.verbose = a.verbose;
   options.remote_cache_url = a.remote_cache;
   options.remote_cache_read_only = a.remote_cache_readonly;
@@ -158,13 +161,46 @@ int run_view(const std::string& spec_path, std::ostream& out, std::ostream& err,
   return format(*spec, *plan, out, err);
 }
 
+// A misspelt subcommand or long option, said with the name meant when one is close
+// ("unknown subcommand 'biuld'; did you mean 'build'?"); nullopt when every name is known.
+// CLI11's own message for these ("The following arguments were not expected") names no cure.
+std::optional<std::string> misspelt_name(CLI::App& app, const std::vector<std::string>& args) {
+  if (args.empty() || args[0].empty() || args[0][0] == '-') return std::nullopt;
+  std::vector<std::string> subcommands;
+  CLI::App* chosen = nullptr;
+  for (CLI::App* sub : app.get_subcommands({})) {
+    subcommands.push_back(sub->get_name());
+    if (sub->get_name() == args[0]) chosen = sub;
+  }
+  if (!chosen) {
+    auto meant = closest_name(args[0], subcommands);
+    std::string known;
+    for (const std::string& name : subcommands) known += (known.empty() ? "" : ", ") + name;
+    return "unknown subcommand '" + args[0] + "'" +
+           (meant ? "; did you mean '" + *meant + "'?" : " (subcommands: " + known + ")");
+  }
+  std::vector<std::string> options{"--help"};
+  for (const CLI::Option* option : chosen->get_options({}))
+    for (const std::string& name : option->get_lnames()) options.push_back("--" + name);
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--") break;  // everything after is positional
+    if (args[i].rfind("--", 0) != 0) continue;
+    std::string name = args[i].substr(0, args[i].find('='));
+    if (std::find(options.begin(), options.end(), name) != options.end()) continue;
+    auto meant = closest_name(name, options);
+    return "unknown option '" + name + "' for '" + args[0] + "'" +
+           (meant ? "; did you mean '" + *meant + "'?" : std::string());
+  }
+  return std::nullopt;
+}
+
 int run_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"shadergen " SHADERGEN_VERSION
                " - compiles an uber-shader and a permutation-domain spec into every permutation as validated "
                "SPIR-V, a manifest and generated C++ (lookup table + registry).",
                "shadergen"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "shadergen " SHADERGEN_VERSION);
+  app.set_version_flag("--version", version_text());
 
   BuildArgs b;
   CLI::App* build_cmd = app.add_subcommand("build", "Compile every permutation of a domain into an output folder");
@@ -188,6 +224,9 @@ int run_command(const std::vector<std::string>& args, std::ostream& out, std::os
   build_cmd->add_option("--target-env", b.target_env,
                         "vulkan1.0, vulkan1.1, vulkan1.2 or vulkan1.3: the Vulkan (and so SPIR-V) version to compile "
                         "and validate for (default: the spec's \"target_env\", else vulkan1.2)");
+  build_cmd->add_flag("--strip-debug", b.strip_debug,
+                      "Write blobs without debug instructions (names, sources, lines), as the spec's "
+                      "\"strip_debug\": true; the manifest and registry keep the names");
   build_cmd->add_flag("--stats", b.stats, "Also write stats.json: per-stage counts and per-permutation timings");
   build_cmd->add_flag("-v,--verbose", b.verbose, "One progress line per compiled source");
   build_cmd
@@ -208,6 +247,10 @@ int run_command(const std::vector<std::string>& args, std::ostream& out, std::os
   explain_cmd->add_option("spec", spec_path, "Domain spec (JSON)")->required();
   explain_cmd->add_option("raw-id", raw_text, "A raw ID: 83, 0x53, or names such as SKY|SUN_LIGHT")->required();
 
+  if (auto problem = misspelt_name(app, args)) {
+    err << "shadergen: error: " << *problem << '\n';
+    return kExitUsage;
+  }
   try {
     std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them backwards
     app.parse(reversed);

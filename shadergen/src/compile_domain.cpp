@@ -101,6 +101,7 @@ class DomainCompiler {
   }
 
   Status run() {
+    if (Status s = check_shader_files(); !s) return s;
     d_.jobs = make_jobs(d_.spec, d_.plan);
     index_jobs();
     PhaseClock clock(d_.phases);
@@ -114,6 +115,10 @@ class DomainCompiler {
     clock.lap("compile or load");
     if (Status s = reflect_blobs(); !s) return s;
     clock.lap("reflect");
+    if (d_.spec.strip_debug) {
+      if (Status s = strip_blobs(); !s) return s;
+      clock.lap("strip debug");
+    }
     if (Status s = merge(); !s) return s;
     if (Status s = check_program(); !s) return s;
     clock.lap("layout");
@@ -136,6 +141,24 @@ class DomainCompiler {
                                                      : d_.companion_jobs;
       index[job.id] = static_cast<int>(i);
     }
+  }
+
+  // A shader file that is not there is the spec's mistake: said once, at the spec's key and
+  // line, rather than once per permutation as a compile error.
+  Status check_shader_files() const {
+    std::vector<const ShaderFile*> files{&d_.spec.uber};
+    if (d_.spec.program_vertex) files.push_back(&*d_.spec.program_vertex);
+    for (const CompanionSpec& c : d_.spec.companions) files.push_back(&c.file);
+    Diagnostics errors;
+    for (const ShaderFile* file : files) {
+      std::error_code ec;
+      if (std::filesystem::exists(file->path, ec) || ec) continue;  // unreadable: the compile says why
+      errors.push_back(Diagnostic{Severity::error, d_.spec.spec_path.string(), file->line, file->column,
+                                  (file->spec_key.empty() ? std::string("shader") : file->spec_key) + ": shader file " +
+                                      file->path.string() + " does not exist"});
+    }
+    if (!errors.empty()) return errors;
+    return Ok{};
   }
 
   bool cancelled() const { return options_.cancelled && options_.cancelled(); }
@@ -204,7 +227,7 @@ class DomainCompiler {
       reads.push_back(std::move(results[i]->reads));
     }
     d_.dependencies.assign(dependencies.begin(), dependencies.end());
-    if (!failures.empty()) return group_failures(d_.jobs, failures);
+    if (!failures.empty()) return group_failures(d_.jobs, failures, options_.verbose);
     reads_ = merge_reads(reads);
     return Ok{};
   }
@@ -277,7 +300,7 @@ class DomainCompiler {
       const auto& result = results[static_cast<std::size_t>(d_.jobs[j].source)];
       if (!result) failures.push_back({j, result.errors(), {}});
     }
-    if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)));
+    if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)), options_.verbose);
     store_blobs(results);
     return Ok{};
   }
@@ -334,6 +357,35 @@ class DomainCompiler {
     return Ok{};
   }
 
+  // After reflection, which reads the names: the blobs lose their debug instructions. Blobs
+  // that differed only in those become one; every job and source follows its blob.
+  Status strip_blobs() {
+    std::vector<Blob> stripped;
+    std::vector<int> moved(d_.blobs.size(), -1);
+    std::map<std::string, int> by_hash;
+    Diagnostics errors;
+    for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
+      auto words = strip_debug_info(d_.blobs[b].words, d_.spec.target_env);
+      if (!words) {
+        for (Diagnostic error : words.errors()) errors.push_back(std::move(error));
+        continue;
+      }
+      std::string hash = sha256_hex(*words);
+      auto [it, fresh] = by_hash.try_emplace(hash, static_cast<int>(stripped.size()));
+      if (fresh) {
+        stripped.push_back(std::move(d_.blobs[b]));
+        stripped.back().words = std::move(words).value();
+        stripped.back().hash = hash;
+      }
+      moved[b] = it->second;
+    }
+    if (!errors.empty()) return errors;
+    d_.blobs = std::move(stripped);
+    for (CompileJob& job : d_.jobs) job.blob = moved[static_cast<std::size_t>(job.blob)];
+    for (SourceRecord& source : d_.sources) source.blob = moved[static_cast<std::size_t>(source.blob)];
+    return Ok{};
+  }
+
   Status merge() {
     // Each permutation keeps its own reflection; there is nothing to merge or check.
     if (d_.spec.layout == LayoutMode::per_permutation) return Ok{};
@@ -351,8 +403,8 @@ class DomainCompiler {
         }
         label += ")";
       }
-      labelled.push_back({label, job.stage, job.kind != JobKind::companion && !job.vertex_half,
-                          &d_.blobs[static_cast<std::size_t>(job.blob)].reflection});
+      labelled.push_back(
+          {label, job.stage, job.kind != JobKind::companion, &d_.blobs[static_cast<std::size_t>(job.blob)].reflection});
     }
     auto layout = merge_layouts(labelled);
     if (!layout) {
@@ -364,30 +416,33 @@ class DomainCompiler {
     return Ok{};
   }
 
-  // The "program" form: every permutation's fragment inputs are among its vertex outputs.
+  // The "program" form: every permutation's fragment inputs are among its vertex outputs. A
+  // problem is said once with the permutations that have it, as GLSL errors are.
   Status check_program() {
     if (!d_.spec.program_vertex) return Ok{};
-    Diagnostics errors;
+    std::map<std::string, std::set<std::size_t>> problems;  // -> fragment jobs
+    std::vector<std::string> order;
     for (const CompileJob& job : d_.jobs) {
       if (!job.vertex_half) continue;
       const auto& index = job.kind == JobKind::raw ? d_.raw_jobs : d_.optimised_jobs;
-      const CompileJob& fragment = d_.jobs[static_cast<std::size_t>(index[job.id])];
-      std::string label = fragment.label() + (job.defines.empty() ? "" : " (" + join_defines(job.defines) + ")");
-      for (Diagnostic& e : check_interface(label, d_.blobs[static_cast<std::size_t>(job.blob)].reflection.outputs,
-                                           d_.blobs[static_cast<std::size_t>(fragment.blob)].reflection.inputs)) {
-        e.file = d_.spec.spec_path.string();
-        errors.push_back(std::move(e));
+      std::size_t fragment = static_cast<std::size_t>(index[job.id]);
+      for (std::string& problem :
+           interface_problems(d_.blobs[static_cast<std::size_t>(job.blob)].reflection.outputs,
+                              d_.blobs[static_cast<std::size_t>(d_.jobs[fragment].blob)].reflection.inputs)) {
+        auto [it, fresh] = problems.try_emplace(problem);
+        if (fresh) order.push_back(std::move(problem));
+        it->second.insert(fragment);
       }
-      if (errors.size() >= 8) break;  // the first few say enough
+    }
+    Diagnostics errors;
+    for (const std::string& problem : order) {
+      Diagnostic error =
+          make_error(problem + " (" + where_it_occurs(d_.jobs, problems[problem], options_.verbose) + ")");
+      error.file = d_.spec.spec_path.string();
+      errors.push_back(std::move(error));
     }
     if (!errors.empty()) return errors;
     return Ok{};
-  }
-
-  static std::string join_defines(const std::vector<std::string>& defines) {
-    std::string text;
-    for (const std::string& d : defines) text += (text.empty() ? "" : " ") + d;
-    return text;
   }
 
   CompiledDomain& d_;

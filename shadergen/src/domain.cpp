@@ -170,12 +170,14 @@ class DomainBuilder {
     }
     reader_.only_keys(root, "spec",
                       {"format", "name", "description", "uber_shader", "program", "include_dirs", "target_env",
-                       "layout", "defines", "companions", "raw", "optimised"});
+                       "layout", "strip_debug", "defines", "companions", "raw", "optimised"});
     read_header(root);
     read_permuted_shaders(root);
     read_include_dirs(root);
     read_target_env(root);
     read_layout(root);
+    if (const Value* strip = reader_.member(root, "spec", "strip_debug", Type::boolean, false))
+      spec_.strip_debug = strip->boolean;
     if (const Value* defines = reader_.member(root, "spec", "defines", Type::object, false))
       spec_.defines = read_define_map(*defines, "defines");
     read_companions(root);
@@ -200,9 +202,11 @@ class DomainBuilder {
     spec_.description = reader_.string_member(root, "spec", "description", false);
   }
 
-  ShaderFile read_shader_file(const Value& object, const std::string& where) {
+  // `key` names the file in later messages (a companion by its name); default: where.path.
+  ShaderFile read_shader_file(const Value& object, const std::string& where, const std::string& key = {}) {
     ShaderFile file;
     std::string path = reader_.string_member(object, where, "path");
+    if (const Value* value = object.find("path")) located(file, key.empty() ? where + ".path" : key, *value);
     if (!path.empty())
       file.path = (base_ / path).lexically_normal();
     else if (object.find("path") && object.find("path")->type == Type::string)
@@ -228,8 +232,16 @@ class DomainBuilder {
     std::string vertex = reader_.string_member(*program, "program", "vertex");
     std::string fragment = reader_.string_member(*program, "program", "fragment");
     if (vertex.empty() || fragment.empty()) return;
-    spec_.program_vertex = ShaderFile{(base_ / vertex).lexically_normal(), Stage::vertex};
-    spec_.uber = ShaderFile{(base_ / fragment).lexically_normal(), Stage::fragment};
+    spec_.program_vertex = ShaderFile{(base_ / vertex).lexically_normal(), Stage::vertex, {}, 0, 0};
+    spec_.uber = ShaderFile{(base_ / fragment).lexically_normal(), Stage::fragment, {}, 0, 0};
+    located(*spec_.program_vertex, "program.vertex", *program->find("vertex"));
+    located(spec_.uber, "program.fragment", *program->find("fragment"));
+  }
+
+  static void located(ShaderFile& file, std::string key, const Value& value) {
+    file.spec_key = std::move(key);
+    file.line = value.line;
+    file.column = value.column;
   }
 
   // "stage", or when it is absent the stage the path's extension names.
@@ -304,7 +316,8 @@ class DomainBuilder {
         reader_.error(*item.find("name"), where + ".name", "\"" + companion.name + "\" is not an identifier");
       else if (!companion.name.empty() && !names.insert(companion.name).second)
         reader_.error(*item.find("name"), where + ".name", "companion \"" + companion.name + "\" is declared twice");
-      companion.file = read_shader_file(item, where);
+      companion.file = read_shader_file(
+          item, where, companion.name.empty() ? std::string() : "companion \"" + companion.name + "\"");
       if (const Value* defines = item.find("defines")) companion.defines = read_companion_defines(*defines, where);
       if (const Value* shared = reader_.member(item, where, "shared_layout", Type::boolean, false))
         companion.shared_layout = shared->boolean;
@@ -471,6 +484,7 @@ class DomainBuilder {
       feature.description = reader_.string_member(item, where, "description", false);
       feature.values = std::move(values[i]);
       feature.width = feature.valued() ? width_for(feature.values.size()) : 1;
+      feature.spec_order = i;
       auto bit = reader_.bit_member(item, where, total);
       if (item.find("name") && !is_identifier(feature.name)) {
         reader_.error(*item.find("name"), where + ".name", "\"" + feature.name + "\" is not an identifier");

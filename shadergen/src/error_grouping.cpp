@@ -30,10 +30,12 @@ bool has_all(const CompileJob& job, const std::set<std::string>& defines) {
   });
 }
 
-// "those with SOFT_SHADOW" when the failing raw permutations are exactly the ones with a set
-// of defines; otherwise nothing (the example permutation still names one).
+// "those with SOFT_SHADOW" when the failing raw IDs are exactly the ones with a set of
+// defines; otherwise nothing (the example permutation still names one).
 std::string pattern(const std::vector<CompileJob>& jobs, const std::set<std::size_t>& failing_raw) {
   if (failing_raw.empty()) return {};
+  std::set<std::uint32_t> ids;
+  for (std::size_t index : failing_raw) ids.insert(jobs[index].id);
   std::set<std::string> common(jobs[*failing_raw.begin()].defines.begin(), jobs[*failing_raw.begin()].defines.end());
   for (std::size_t index : failing_raw) {
     std::set<std::string> mine(jobs[index].defines.begin(), jobs[index].defines.end());
@@ -41,46 +43,68 @@ std::string pattern(const std::vector<CompileJob>& jobs, const std::set<std::siz
     std::set_intersection(common.begin(), common.end(), mine.begin(), mine.end(), std::inserter(kept, kept.end()));
     common = std::move(kept);
   }
-  bool half = jobs[*failing_raw.begin()].vertex_half;  // a program's vertex or fragment shaders
-  for (std::size_t i = 0; i < jobs.size(); ++i)
-    if (jobs[i].kind == JobKind::raw && jobs[i].vertex_half == half && has_all(jobs[i], common) &&
-        !failing_raw.count(i))
-      return {};
+  for (const CompileJob& job : jobs)
+    if (job.kind == JobKind::raw && has_all(job, common) && !ids.count(job.id)) return {};
   if (common.empty()) return "all of them";
   return "those with " + join(std::vector<std::string>(common.begin(), common.end()), " and ");
 }
 
-std::string where_it_occurs(const std::vector<CompileJob>& jobs, const std::set<std::size_t>& failing) {
-  // A "program" has two shaders per permutation; count those of the failing half.
-  bool half = jobs[*failing.begin()].vertex_half;
-  std::size_t raw_total = 0, optimised_total = 0;
-  for (const CompileJob& job : jobs) {
-    raw_total += job.kind == JobKind::raw && job.vertex_half == half;
-    optimised_total += job.kind == JobKind::optimised && job.vertex_half == half;
-  }
-  std::set<std::size_t> raw, optimised;
-  std::vector<std::string> companions;
+// In a "program" each permutation has two shaders: " (vertex shader)", " (fragment shader)" or
+// " (both shaders)" for the failing jobs; nothing otherwise.
+std::string halves(const std::vector<CompileJob>& jobs, const std::set<std::size_t>& failing) {
+  bool program = std::any_of(jobs.begin(), jobs.end(), [](const CompileJob& j) { return j.vertex_half; });
+  if (!program) return {};
+  bool vertex = false, fragment = false;
   for (std::size_t index : failing) {
-    if (jobs[index].kind == JobKind::raw) raw.insert(index);
-    if (jobs[index].kind == JobKind::optimised) optimised.insert(index);
-    if (jobs[index].kind == JobKind::companion) companions.push_back(jobs[index].label());
+    if (jobs[index].kind == JobKind::companion) continue;
+    (jobs[index].vertex_half ? vertex : fragment) = true;
   }
-  std::vector<std::string> parts;
-  if (!raw.empty()) {
-    std::string text = std::to_string(raw.size()) + " of " + std::to_string(raw_total) + " raw permutations";
-    if (std::string p = pattern(jobs, raw); !p.empty()) text += ": " + p;
-    parts.push_back(text);
-  }
-  if (!optimised.empty())
-    parts.push_back(std::to_string(optimised.size()) + " of " + std::to_string(optimised_total) +
-                    " optimised permutations");
-  for (const std::string& c : companions) parts.push_back(c);
-  const CompileJob& example = jobs[*failing.begin()];
-  return "in " + join(parts, "; ") +
-         (failing.size() > 1 || example.kind != JobKind::companion ? "; e.g. " + describe_job(example) : "");
+  if (!vertex && !fragment) return {};
+  return vertex && fragment ? " (both shaders)" : vertex ? " (vertex shader)" : " (fragment shader)";
 }
 
 }  // namespace
+
+std::string where_it_occurs(const std::vector<CompileJob>& jobs, const std::set<std::size_t>& failing,
+                            bool every_example) {
+  // Permutations are counted by ID: a program's two shaders of one raw ID are one permutation.
+  std::set<std::uint32_t> raw_total, optimised_total, raw_ids, optimised_ids;
+  for (const CompileJob& job : jobs) {
+    if (job.kind == JobKind::raw) raw_total.insert(job.id);
+    if (job.kind == JobKind::optimised) optimised_total.insert(job.id);
+  }
+  std::set<std::size_t> raw;
+  std::vector<std::string> companions;
+  for (std::size_t index : failing) {
+    const CompileJob& job = jobs[index];
+    if (job.kind == JobKind::raw) raw.insert(index), raw_ids.insert(job.id);
+    if (job.kind == JobKind::optimised) optimised_ids.insert(job.id);
+    if (job.kind == JobKind::companion) companions.push_back(job.label());
+  }
+  std::vector<std::string> parts;
+  std::string half = halves(jobs, failing);
+  if (!raw.empty()) {
+    std::string text =
+        std::to_string(raw_ids.size()) + " of " + std::to_string(raw_total.size()) + " raw permutations" + half;
+    std::string p = pattern(jobs, raw);
+    if (!p.empty()) text += ": " + p;
+    parts.push_back(text);
+  }
+  if (!optimised_ids.empty())
+    parts.push_back(std::to_string(optimised_ids.size()) + " of " + std::to_string(optimised_total.size()) +
+                    " optimised permutations" + (raw.empty() ? half : ""));
+  for (const std::string& c : companions) parts.push_back(c);
+  const CompileJob& example = jobs[*failing.begin()];
+  std::string text = "in " + join(parts, "; ");
+  // With no shared define set, -v lists every permutation; otherwise one example says enough.
+  bool listed = every_example && failing.size() > 1 && pattern(jobs, raw).empty();
+  if (listed) {
+    std::vector<std::string> all;
+    for (std::size_t index : failing) all.push_back(describe_job(jobs[index]));
+    return text + "; namely " + join(all, ", ");
+  }
+  return text + (failing.size() > 1 || example.kind != JobKind::companion ? "; e.g. " + describe_job(example) : "");
+}
 
 LiveLines live_lines(std::string_view text, const std::string& main_file) {
   // glslang's output opens with the preamble's one kept line, the include extension that
@@ -129,7 +153,8 @@ std::vector<const Diagnostic*> kept_messages(const JobFailure& failure) {
 
 }  // namespace
 
-Diagnostics group_failures(const std::vector<CompileJob>& jobs, const std::vector<JobFailure>& failures) {
+Diagnostics group_failures(const std::vector<CompileJob>& jobs, const std::vector<JobFailure>& failures,
+                           bool every_example) {
   // Key on the whole located message so the same error at the same line groups together.
   std::map<std::string, Group> groups;
   std::vector<std::string> order;
@@ -166,7 +191,7 @@ Diagnostics group_failures(const std::vector<CompileJob>& jobs, const std::vecto
     const Diagnostic& error = groups.at(key).error;
     const std::set<std::size_t>& failing = groups.at(key).failing;
     Diagnostic grouped = error;
-    grouped.message += " (" + where_it_occurs(jobs, failing) + ")";
+    grouped.message += " (" + where_it_occurs(jobs, failing, every_example) + ")";
     out.push_back(std::move(grouped));
   }
   return out;

@@ -138,6 +138,18 @@ class Parser {
     return true;
   }
 
+  // Steps over a ',' between members or items. A ',' right before the closing `close` is the
+  // commonest JSON slip (JavaScript and JSON5 allow it): it is called what it is, at the comma.
+  bool skip_comma(char close) {
+    int comma_line = line_, comma_column = column();
+    ++pos_;
+    skip_space();
+    if (peek() != close) return true;
+    error_ = Diagnostic{Severity::error, file_, comma_line, comma_column,
+                        std::string("trailing comma before '") + close + "' (JSON allows none: remove it)"};
+    return false;
+  }
+
   bool parse_object(Value& out, int depth) {
     out.type = Type::object;
     ++pos_;  // '{'
@@ -165,7 +177,7 @@ class Parser {
       out.object.push_back(Member{std::move(key), std::move(member)});
       skip_space();
       if (peek() == ',') {
-        ++pos_;
+        if (!skip_comma('}')) return false;
         continue;
       }
       if (peek() == '}') return ++pos_, true;
@@ -186,7 +198,7 @@ class Parser {
       out.array.push_back(std::move(item));
       skip_space();
       if (peek() == ',') {
-        ++pos_;
+        if (!skip_comma(']')) return false;
         continue;
       }
       if (peek() == ']') return ++pos_, true;

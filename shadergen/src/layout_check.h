@@ -13,7 +13,9 @@ namespace shadergen {
 struct LabelledReflection {
   std::string label;  // "raw 37 (SKY SUN_LIGHT)", "companion tile"
   Stage stage = Stage::fragment;
-  bool permuted = false;  // a permutation of the uber-shader (outputs must agree)
+  // A permutation (of the uber-shader or of a program's vertex half): per stage, permutations
+  // agree on their push-constant size, and fragment permutations on their outputs.
+  bool permuted = false;
   const ReflectionInfo* info = nullptr;
 };
 
@@ -28,8 +30,9 @@ struct MergedLayout {
 };
 
 // Fails, naming both blobs, when two blobs give one (set, binding) a different kind or count,
-// when permutations of the uber-shader disagree on their push-constant size, or when they
-// disagree on their outputs.
+// when permutations of one stage disagree on their push-constant size, or when fragment
+// permutations disagree on their outputs (the attachments; other stages' outputs are no part
+// of the layout).
 Result<MergedLayout> merge_layouts(std::span<const LabelledReflection> blobs);
 
 std::string_view descriptor_kind_name(DescriptorKind kind);

@@ -209,6 +209,8 @@ std::string write_manifest(const CompiledDomain& d) {
   m["target_env"] = target_env_name(d.spec.target_env);
   m["collapsed"] = d.spec.collapsed;
   m["layout"] = d.spec.layout == LayoutMode::shared ? "shared" : "per_permutation";
+  // The fixed defines every shader was compiled with (spec, --define, CMake DEFINES), in order.
+  m["defines"] = d.spec.defines;
   add_features(m, d.spec);
   m["raw"] = raw_json(d);
   m["optimised"] = optimised_json(d);

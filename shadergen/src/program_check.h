@@ -10,10 +10,10 @@
 
 namespace shadergen {
 
-// One error per fragment input that no vertex output at its location feeds with at least as
-// many components (Vulkan lets an output carry more than the input reads), each naming
-// `label` (the permutation), the location, the variable and both widths.
-Diagnostics check_interface(const std::string& label, const std::vector<VariableInfo>& vertex_outputs,
-                            const std::vector<VariableInfo>& fragment_inputs);
+// One problem per fragment input that no vertex output at its location feeds with at least as
+// many components (Vulkan lets an output carry more than the input reads), each naming the
+// location, the variable and both widths; the caller says which permutations have it.
+std::vector<std::string> interface_problems(const std::vector<VariableInfo>& vertex_outputs,
+                                            const std::vector<VariableInfo>& fragment_inputs);
 
 }  // namespace shadergen

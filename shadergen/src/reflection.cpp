@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "layout_check.h"
 #include "stages.h"
 
 namespace shadergen {
@@ -27,7 +28,11 @@ void add_bindings(const spirv_cross::Compiler& compiler, const spirv_cross::Smal
                   DescriptorKind kind, DescriptorKind texel_kind, Stage stage, std::vector<BindingInfo>& out) {
   for (const spirv_cross::Resource& resource : list) {
     const spirv_cross::SPIRType& type = compiler.get_type(resource.type_id);
-    bool texel_buffer = type.basetype == spirv_cross::SPIRType::Image && type.image.dim == spv::DimBuffer;
+    // `samplerBuffer` is a SampledImage type, `textureBuffer` and `imageBuffer` Image types:
+    // with Dim Buffer each is a texel buffer, whatever list SPIRV-Cross files it under.
+    bool image_type =
+        type.basetype == spirv_cross::SPIRType::Image || type.basetype == spirv_cross::SPIRType::SampledImage;
+    bool texel_buffer = image_type && type.image.dim == spv::DimBuffer;
     BindingInfo binding;
     binding.set = compiler.get_decoration(resource.id, spv::DecorationDescriptorSet);
     binding.binding = compiler.get_decoration(resource.id, spv::DecorationBinding);
@@ -42,15 +47,63 @@ void add_bindings(const spirv_cross::Compiler& compiler, const spirv_cross::Smal
   }
 }
 
+// Locations one value of `type` takes: a column per location, times every array dimension
+// (`outer_arrays` of them are the per-vertex array of an arrayed interface and take none).
+std::uint32_t locations_of(const spirv_cross::SPIRType& type, std::size_t outer_arrays) {
+  std::uint32_t count = std::max(type.columns, 1u);
+  for (std::size_t i = 0; i + outer_arrays < type.array.size(); ++i) count *= std::max(type.array[i], 1u);
+  return count;
+}
+
+// A stage whose inputs (or outputs) carry one element per vertex: their outermost array
+// dimension is the vertex, not locations.
+bool arrayed_interface(Stage stage, bool input) {
+  switch (stage) {
+    case Stage::tess_control: return true;
+    case Stage::tess_evaluation:
+    case Stage::geometry: return input;
+    case Stage::mesh: return !input;
+    default: return false;
+  }
+}
+
+// An interface block's members, each at the locations it really takes: its own Location, or
+// the one after the previous member's.
+void block_members(const spirv_cross::Compiler& compiler, const spirv_cross::Resource& resource, std::uint32_t location,
+                   std::vector<VariableInfo>& out) {
+  const spirv_cross::SPIRType& block = compiler.get_type(resource.base_type_id);
+  for (std::uint32_t m = 0; m < block.member_types.size(); ++m) {
+    const spirv_cross::SPIRType& member = compiler.get_type(block.member_types[m]);
+    if (compiler.has_member_decoration(block.self, m, spv::DecorationLocation))
+      location = compiler.get_member_decoration(block.self, m, spv::DecorationLocation);
+    std::string name = resource.name + "." + compiler.get_member_name(block.self, m);
+    for (std::uint32_t i = 0; i < locations_of(member, 0); ++i) out.push_back({location++, member.vecsize, name});
+  }
+}
+
+// Only variables with a Location take part: built-ins are listed apart by SPIRV-Cross, and an
+// NV task block (`taskNV out Task {...}`) has none, being no attachment or varying.
 std::vector<VariableInfo> interface_variables(const spirv_cross::Compiler& compiler,
-                                              const spirv_cross::SmallVector<spirv_cross::Resource>& list) {
+                                              const spirv_cross::SmallVector<spirv_cross::Resource>& list, Stage stage,
+                                              bool input) {
   std::vector<VariableInfo> out;
   for (const spirv_cross::Resource& resource : list) {
     const spirv_cross::SPIRType& type = compiler.get_type(resource.type_id);
-    out.push_back({compiler.get_decoration(resource.id, spv::DecorationLocation), type.vecsize, resource.name});
+    bool has_location = compiler.has_decoration(resource.id, spv::DecorationLocation);
+    std::uint32_t location = compiler.get_decoration(resource.id, spv::DecorationLocation);
+    if (type.basetype == spirv_cross::SPIRType::Struct) {
+      const spirv_cross::SPIRType& block = compiler.get_type(resource.base_type_id);
+      bool members_placed =
+          !block.member_types.empty() && compiler.has_member_decoration(block.self, 0, spv::DecorationLocation);
+      if (has_location || members_placed) block_members(compiler, resource, location, out);
+      continue;
+    }
+    if (!has_location) continue;
+    std::uint32_t taken = locations_of(type, arrayed_interface(stage, input) && !type.array.empty() ? 1 : 0);
+    for (std::uint32_t i = 0; i < taken; ++i) out.push_back({location + i, type.vecsize, resource.name});
   }
-  std::sort(out.begin(), out.end(),
-            [](const VariableInfo& a, const VariableInfo& b) { return a.location < b.location; });
+  std::stable_sort(out.begin(), out.end(),
+                   [](const VariableInfo& a, const VariableInfo& b) { return a.location < b.location; });
   return out;
 }
 
@@ -118,16 +171,40 @@ ReflectionInfo reflect_unchecked(std::span<const std::uint32_t> words, Stage sta
   add_bindings(compiler, resources.subpass_inputs, K::input_attachment, K::input_attachment, stage, info.bindings);
   add_bindings(compiler, resources.acceleration_structures, K::acceleration_structure, K::acceleration_structure, stage,
                info.bindings);
-  std::sort(info.bindings.begin(), info.bindings.end(), [](const BindingInfo& a, const BindingInfo& b) {
+  std::stable_sort(info.bindings.begin(), info.bindings.end(), [](const BindingInfo& a, const BindingInfo& b) {
     return std::tie(a.set, a.binding) < std::tie(b.set, b.binding);
   });
   for (const spirv_cross::Resource& block : resources.push_constant_buffers)
     info.push_constant_size =
         static_cast<std::uint32_t>(compiler.get_declared_struct_size(compiler.get_type(block.base_type_id)));
-  info.inputs = interface_variables(compiler, resources.stage_inputs);
-  info.outputs = interface_variables(compiler, resources.stage_outputs);
+  info.inputs = interface_variables(compiler, resources.stage_inputs, stage, true);
+  info.outputs = interface_variables(compiler, resources.stage_outputs, stage, false);
   info.specialization_constants = specialization_constants(compiler);
   if (has_workgroup(stage)) workgroup(compiler, info);
+  return info;
+}
+
+std::string describe(const BindingInfo& b) {
+  return std::string(descriptor_kind_name(b.kind)) + (b.count != 1 ? "[" + std::to_string(b.count) + "]" : "") + " \"" +
+         b.name + "\"";
+}
+
+// Declarations aliased at one (set, binding) are one descriptor: a set layout lists it once,
+// under the first declaration's name. Aliases of another kind or count cannot share it.
+Result<ReflectionInfo> merge_aliases(ReflectionInfo info) {
+  std::vector<BindingInfo> merged;
+  Diagnostics errors;
+  for (BindingInfo& binding : info.bindings) {
+    if (merged.empty() || merged.back().set != binding.set || merged.back().binding != binding.binding) {
+      merged.push_back(std::move(binding));
+    } else if (merged.back().kind != binding.kind || merged.back().count != binding.count) {
+      errors.push_back(make_error("set " + std::to_string(binding.set) + " binding " + std::to_string(binding.binding) +
+                                  " is declared as " + describe(merged.back()) + " and as " + describe(binding) +
+                                  "; aliased declarations must have one descriptor kind and count"));
+    }
+  }
+  if (!errors.empty()) return errors;
+  info.bindings = std::move(merged);
   return info;
 }
 
@@ -135,7 +212,7 @@ ReflectionInfo reflect_unchecked(std::span<const std::uint32_t> words, Stage sta
 
 Result<ReflectionInfo> reflect(std::span<const std::uint32_t> words, Stage stage) {
   try {
-    return reflect_unchecked(words, stage);
+    return merge_aliases(reflect_unchecked(words, stage));
   } catch (const std::exception& error) {
     // SPIRV-Cross reports unsupported constructs by throwing.
     return make_error(std::string("SPIRV-Cross reflection failed: ") + error.what());

@@ -73,4 +73,17 @@ Result<OptimisedBlob> optimise_and_validate(std::vector<std::uint32_t> words, Ta
   return out;
 }
 
+Result<std::vector<std::uint32_t>> strip_debug_info(std::span<const std::uint32_t> words, TargetEnv env) {
+  spvtools::Optimizer optimizer(environment(env));
+  MessageLog log;
+  log.attach(optimizer);
+  optimizer.RegisterPass(spvtools::CreateStripDebugInfoPass());
+  std::vector<std::uint32_t> stripped;
+  spvtools::OptimizerOptions options;
+  options.set_run_validator(false);  // removing debug instructions cannot make a valid blob invalid
+  if (!optimizer.Run(words.data(), words.size(), &stripped, options))
+    return make_error("stripping debug information failed: " + log.text);
+  return stripped;
+}
+
 }  // namespace shadergen

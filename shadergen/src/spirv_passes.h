@@ -27,6 +27,11 @@ struct OptimisedBlob {
 // Both the passes and the validator work in the environment of `env`.
 Result<OptimisedBlob> optimise_and_validate(std::vector<std::uint32_t> words, TargetEnv env);
 
+// `words` without debug instructions: OpName, OpMemberName, OpSource, OpSourceContinued,
+// OpSourceExtension, OpString, OpLine, OpNoLine and OpModuleProcessed (SPIRV-Tools'
+// strip-debug pass). Reflection reads names, so it runs on the unstripped blob first.
+Result<std::vector<std::uint32_t>> strip_debug_info(std::span<const std::uint32_t> words, TargetEnv env);
+
 // The optimisation recipe, part of every cache key (beside the target, which picks the
 // passes' environment).
 inline constexpr const char* kOptimiserRecipe = "spirv-tools-performance-passes/vulkan1.2";

@@ -56,6 +56,8 @@ std::optional<Stage> parse_stage(std::string_view name) {
 
 std::optional<Stage> stage_for_extension(const std::filesystem::path& file) {
   std::string extension = file.extension().string();
+  // glslangValidator's other convention: `name.<stage>.glsl` (shade.frag.glsl).
+  if (extension == ".glsl") extension = file.stem().extension().string();
   if (extension.size() < 2) return std::nullopt;
   for (const StageInfo& info : kStages)
     if (info.extension == std::string_view(extension).substr(1)) return info.stage;

@@ -13,8 +13,9 @@ namespace shadergen {
 // A stage by its name ("fragment") or short name ("frag"); nullopt for anything else.
 std::optional<Stage> parse_stage(std::string_view name);
 
-// The stage a file's extension names (".frag" -> fragment, ".rchit" -> closest_hit); nullopt
-// when it names none (".glsl").
+// The stage a file's extension names (".frag" -> fragment, ".rchit" -> closest_hit, and
+// "shade.frag.glsl" -> fragment as glslangValidator reads it); nullopt when it names none
+// ("shade.glsl").
 std::optional<Stage> stage_for_extension(const std::filesystem::path& file);
 
 // "vertex, tess_control, ..." and ".vert .tesc ...", for messages.

@@ -1,17 +1,41 @@
-// Checks that the generated registry links and holds what the manifest promises.
+// Checks that the generated registry links and holds what the manifest promises, and that the
+// generated API's contract compiles outside the project: Features with designated
+// initializers, raw_id(), kFeatures, kDefines, find_raw_id() and shadergen/vulkan.h.
 #include <consumer_shaders.h>
+#include <shadergen/vulkan.h>
 
 #include <cstdio>
+#include <string>
+
+namespace shaders = game::shaders;
+
+// The toy domain lists SOFT (bit 2) before LIT (bit 0): designated initializers follow the spec.
+static_assert(shaders::raw_id({.SOFT = true, .DISTORT = true}) == 0b1100u);
+static_assert(shaders::find_raw_id("SOFT|DISTORT") == 0b1100u);
+static_assert(shaders::find_raw_id("") == 0u);
+static_assert(!shaders::find_raw_id("SOFT|NOT_A_FEATURE"));
+static_assert(shaders::kFeatures[0].name == "SOFT" && shaders::kFeatures[0].bit == 2);
 
 int main() {
-  const shadergen::Registry& registry = game::shaders::registry();
-  if (registry.raw.size() != game::shaders::kRawCount) return 1;
-  if (registry.optimised.size() != game::shaders::kOptimisedCount) return 2;
+  const shadergen::Registry& registry = shaders::registry();
+  if (registry.raw.size() != shaders::kRawCount) return 1;
+  if (registry.optimised.size() != shaders::kOptimisedCount) return 2;
   for (const shadergen::Permutation& p : registry.raw) {
-    if (p.pruned != game::shaders::kRawPruned[p.id]) return 3;
+    if (p.pruned != shaders::kRawPruned[p.id]) return 3;
     if (!p.pruned && (p.spirv.empty() || p.spirv[0] != 0x07230203u)) return 4;
-    if (registry.raw_to_optimised[p.id] != game::shaders::kRawToOptimised[p.id]) return 5;
+    if (registry.raw_to_optimised[p.id] != shaders::kRawToOptimised[p.id]) return 5;
+    // Every raw ID by its feature names, through find_raw_id().
+    std::string names;
+    for (const shadergen::Feature& f : shaders::kFeatures)
+      if (p.id & (1u << f.bit)) names += (names.empty() ? "" : "|") + std::string(f.name);
+    if (shaders::find_raw_id(names) != p.id) return 6;
+    if (!p.pruned && shadergen::vk::shader_module_create_info(p).codeSize != p.spirv.size() * 4) return 7;
   }
+  if (!shaders::kDefines.empty()) return 8;
+  std::size_t bindings = 0;
+  for (std::uint32_t set = 0; set < shadergen::vk::descriptor_set_count(registry.pipeline_layout); ++set)
+    bindings += shadergen::vk::descriptor_set_layout_bindings(registry.pipeline_layout, set).size();
+  if (bindings != registry.pipeline_layout.size()) return 9;
   std::printf("consumer: %s: %zu raw, %zu optimised permutations\n", registry.name.data(), registry.raw.size(),
               registry.optimised.size());
   return 0;

@@ -26,7 +26,9 @@ TEST(CliProcess, HelpExitsZeroAndNamesEverySubcommand) {
 TEST(CliProcess, VersionPrintsNameAndVersion) {
   ProcessResult r = shadergen_run({"--version"});
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_EQ(r.out, "shadergen 0.1.0\n");
+  EXPECT_EQ(r.out.rfind("shadergen 0.1.0 (glslang ", 0), 0u) << r.out;
+  EXPECT_TRUE(sgtest::contains(r.out, ", SPIRV-Tools ")) << r.out;
+  EXPECT_TRUE(sgtest::contains(r.out, ", SPIRV-Cross C API ")) << r.out;
 }
 
 TEST(CliProcess, UsageErrorsExitTwo) {

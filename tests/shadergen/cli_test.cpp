@@ -2,6 +2,10 @@
 // build that leaves the previous output exactly as it was.
 #include <gtest/gtest.h>
 
+#include <glslang/build_info.h>
+#include <spirv-tools/libspirv.h>
+#include <spirv_cross/spirv_cross_c.h>
+
 #include <sstream>
 
 #include "shadergen/cli.h"
@@ -38,10 +42,39 @@ TEST(Cli, BuildHelpDocumentsItsOptions) {
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
+// The compiler libraries make the blobs, so the version names them too.
 TEST(Cli, Version) {
   CliRun r = cli({"--version"});
   EXPECT_EQ(r.code, 0);
-  EXPECT_EQ(r.out, "shadergen " SHADERGEN_VERSION_STRING "\n");
+  std::string glslang = std::to_string(GLSLANG_VERSION_MAJOR) + "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
+                        std::to_string(GLSLANG_VERSION_PATCH) + GLSLANG_VERSION_FLAVOR;
+  std::string cross = std::to_string(SPVC_C_API_VERSION_MAJOR) + "." + std::to_string(SPVC_C_API_VERSION_MINOR) + "." +
+                      std::to_string(SPVC_C_API_VERSION_PATCH);
+  EXPECT_EQ(r.out, "shadergen " SHADERGEN_VERSION_STRING " (glslang " + glslang + ", SPIRV-Tools " +
+                       spvSoftwareVersionString() + ", SPIRV-Cross C API " + cross + ")\n");
+}
+
+// A misspelt subcommand or option is named with the one meant, on stderr, exit 2.
+TEST(Cli, MisspeltNamesSuggestTheMeantOne) {
+  const std::string spec = sgtest::toy_spec().string();
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"biuld", spec}, "shadergen: error: unknown subcommand 'biuld'; did you mean 'build'?\n"},
+      {{"explian", spec, "1"}, "shadergen: error: unknown subcommand 'explian'; did you mean 'explain'?\n"},
+      {{"frobnicate"}, "shadergen: error: unknown subcommand 'frobnicate' (subcommands: build, lut, list, explain)\n"},
+      {{"build", spec, "--output", "x"},
+       "shadergen: error: unknown option '--output' for 'build'; did you mean '--out'?\n"},
+      {{"build", spec, "--out=x", "--no-cahce"},
+       "shadergen: error: unknown option '--no-cahce' for 'build'; did you mean '--no-cache'?\n"},
+      {{"build", spec, "--out", "x", "--strip"},
+       "shadergen: error: unknown option '--strip' for 'build'; did you mean '--strip-debug'?\n"},
+      {{"lut", spec, "--frobnicate"}, "shadergen: error: unknown option '--frobnicate' for 'lut'\n"},
+  };
+  for (const auto& [args, message] : cases) {
+    CliRun r = cli(args);
+    EXPECT_EQ(r.code, 2) << args[0];
+    EXPECT_EQ(r.err, message);
+    EXPECT_EQ(r.out, "");
+  }
 }
 
 TEST(Cli, UsageErrorsExitTwo) {

@@ -107,13 +107,17 @@ TEST(PerPermutationLayout, ASharedLayoutNamesTheConflictAndTheWayOut) {
   EXPECT_TRUE(sgtest::contains(all, spec.string() +
                                         ": error: permutations disagree on set 0 binding 1: raw 0 has "
                                         "combined_image_sampler \"gbuffer_albedo\", raw 1 (READ_SUBPASS) "
-                                        "has input_attachment \"gbuffer_albedo\"" +
+                                        "has input_attachment \"gbuffer_albedo\", as do 3 more (raw 3 (READ_SUBPASS "
+                                        "SPLIT_SPECULAR), raw 5 (READ_SUBPASS BINDLESS_COOKIES), raw 7 (READ_SUBPASS "
+                                        "SPLIT_SPECULAR BINDLESS_COOKIES))" +
                                         hint + "\n"))
       << all;
   EXPECT_TRUE(sgtest::contains(all, spec.string() +
                                         ": error: permutations disagree on their outputs: raw 0 writes "
                                         "location 0 vec4, raw 2 (SPLIT_SPECULAR) writes location 0 vec4, "
-                                        "location 1 vec4" +
+                                        "location 1 vec4, as do 3 more (raw 3 (READ_SUBPASS SPLIT_SPECULAR), raw 6 "
+                                        "(SPLIT_SPECULAR BINDLESS_COOKIES), raw 7 (READ_SUBPASS SPLIT_SPECULAR "
+                                        "BINDLESS_COOKIES))" +
                                         hint + "\n"))
       << all;
   EXPECT_FALSE(sgtest::fs::exists(dir / "out"));

@@ -27,6 +27,10 @@ struct BuildOptions {
   std::vector<std::string> defines;
   // `--target-env`: "vulkan1.0" ... "vulkan1.3"; empty: the spec's "target_env" (default vulkan1.2).
   std::string target_env;
+  // `--strip-debug`: as the spec's "strip_debug": true (either one strips). The blobs lose
+  // OpName, OpMemberName, OpSource, OpString, OpLine and OpModuleProcessed; the manifest and
+  // the registry keep the names (reflection runs first). The cache keeps unstripped blobs.
+  bool strip_debug = false;
   bool write_stats = false;  // also write <out>/stats.json (timings: not deterministic)
   bool verbose = false;      // one progress line per compiled source
   // A content cache shared over HTTP: GET/PUT <url>/<key[0:2]>/<key>, asked after a local miss,

@@ -52,6 +52,7 @@ struct RawFeature {
   // of one, compiled as `#define NAME <value>`; indices past the end are pruned.
   std::vector<std::string> values;
   std::uint32_t width = 1;
+  std::size_t spec_order = 0;  // its index in the spec's "raw.features" (the generated API's order)
 
   bool valued() const { return !values.empty(); }
   std::uint32_t mask() const { return ((1u << width) - 1u) << bit; }
@@ -102,6 +103,11 @@ enum class LayoutMode { shared, per_permutation };
 struct ShaderFile {
   std::filesystem::path path;  // resolved against the spec's folder
   Stage stage = Stage::fragment;
+  // Where the spec names it, for messages about the file: "program.fragment",
+  // "uber_shader.path" or "companion \"tile\"", and the path value's line and column.
+  std::string spec_key;
+  int line = 0;
+  int column = 0;
 };
 
 struct CompanionSpec {
@@ -127,6 +133,9 @@ struct DomainSpec {
   std::vector<std::filesystem::path> include_dirs;
   TargetEnv target_env = TargetEnv::vulkan1_2;  // "target_env", or build --target-env
   LayoutMode layout = LayoutMode::shared;
+  // "strip_debug" (or build --strip-debug): the written blobs lose their debug instructions
+  // (names, sources, lines); reflection, the manifest and the registry still have the names.
+  bool strip_debug = false;
   // Fixed defines, "NAME=VALUE", in spec order: every shader of the domain (uber-shader and
   // companions) is compiled with them. None names a raw feature's define.
   std::vector<std::string> defines;

@@ -10,13 +10,25 @@
 //   inline constexpr std::array<bool, kRawCount> kRawPruned;               // impossible raw IDs
 //   namespace raw_bit       { inline constexpr std::uint32_t <FEATURE> = 1u << n; ... }
 //   namespace optimised_bit { inline constexpr std::uint32_t <BIT> = 1u << n; ... }
+//   enum class <FEATURE>_value : std::uint32_t { <value>, ... };  // per valued feature: its values,
+//                                                        // an integer 2 spelt _2 (-1: _m1)
+//   struct Features { bool <FEATURE> = false; <FEATURE>_value <FEATURE> = ...; ... };
+//                                                        // one member per raw feature, in spec order
+//   constexpr std::uint32_t raw_id(const Features&);     // the raw ID those features make
+//   inline constexpr std::array<shadergen::Feature, n> kFeatures;           // in spec order
+//   inline constexpr std::array<shadergen::FixedDefine, n> kDefines;        // the fixed defines
+//   constexpr std::optional<std::uint32_t> find_raw_id(std::string_view);   // "A|B=2" -> raw ID
 //   const shadergen::Registry& registry();
+//
+// shadergen/vulkan.h turns a registry's permutations into Vulkan create-infos; only a consumer
+// that includes it needs the Vulkan headers.
 //
 // This header has no dependencies beyond the standard library so that runtimes can include it
 // without linking shadergen itself.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -103,6 +115,31 @@ struct Reflection {
   std::uint32_t local_size_ids[3] = {kNoConstant, kNoConstant, kNoConstant};
 };
 
+// A raw feature as the generated kFeatures lists it: `width` bits from `bit` of the raw ID.
+// A boolean feature has no values (width 1, set: `#define <define> 1`); a valued feature's
+// field holds the index of one of `values` (compiled as `#define <define> <value>`).
+struct Feature {
+  std::string_view name;
+  std::string_view define;
+  std::uint32_t bit;
+  std::uint32_t width;
+  std::span<const std::string_view> values;
+};
+
+// A define every shader of a domain is compiled with (spec "defines", --define, CMake DEFINES).
+struct FixedDefine {
+  std::string_view name;
+  std::string_view value;
+};
+
+// The raw ID that `text` names, in the syntax of `shadergen explain`: a number (12, 0x0c,
+// 0b1100) below 1 << `raw_bits`, or features by name or define joined by '|', '+' or ','
+// (spaces ignored), a valued one as NAME=VALUE; "" is 0. Returns nullopt for an unknown name
+// or value, a value given to a boolean feature, or a number out of range. Linear in the text
+// and the features; usable at compile time.
+constexpr std::optional<std::uint32_t> find_raw_id(std::span<const Feature> features, std::uint32_t raw_bits,
+                                                   std::string_view text);
+
 // One compiled permutation (or one non-permuted companion shader).
 struct Permutation {
   std::uint32_t id;                           // raw or optimised ID; index for companions
@@ -127,9 +164,11 @@ struct CompanionShader {
 
 // Everything one domain spec produced.
 struct Registry {
-  std::string_view name;                                  // domain name from the spec
-  Stage uber_stage;                                       // stage of the permuted uber-shader
-  std::span<const std::string_view> raw_feature_names;    // indexed by raw bit
+  std::string_view name;  // domain name from the spec
+  Stage uber_stage;       // stage of the permuted uber-shader
+  // One name per raw feature, in the order of their bits (a valued feature takes several bits
+  // but one name): entry i is the feature whose field is i-th from bit 0, not the name of bit i.
+  std::span<const std::string_view> raw_feature_names;
   std::span<const std::string_view> optimised_bit_names;  // indexed by optimised bit
   std::span<const std::uint8_t> raw_to_optimised;         // the LUT, one entry per raw ID;
                                                           // empty when the domain is not collapsed
@@ -154,5 +193,78 @@ struct Registry {
     return nullptr;
   }
 };
+
+namespace detail {
+
+constexpr bool is_digit_in(char c, std::uint32_t base) {
+  std::uint32_t digit = c >= '0' && c <= '9'   ? static_cast<std::uint32_t>(c - '0')
+                        : c >= 'a' && c <= 'f' ? static_cast<std::uint32_t>(c - 'a' + 10)
+                        : c >= 'A' && c <= 'F' ? static_cast<std::uint32_t>(c - 'A' + 10)
+                                               : 99u;
+  return digit < base;
+}
+
+// A number in `shadergen explain`'s forms, or nullopt when `text` is not all digits of its base.
+constexpr std::optional<std::uint64_t> parse_number(std::string_view text) {
+  std::uint32_t base = 10;
+  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X' || text[1] == 'b')) {
+    base = text[1] == 'b' ? 2 : 16;
+    text.remove_prefix(2);
+  }
+  std::uint64_t value = 0;
+  for (char c : text) {
+    if (!is_digit_in(c, base)) return std::nullopt;
+    std::uint32_t digit =
+        c <= '9' ? static_cast<std::uint32_t>(c - '0') : static_cast<std::uint32_t>((c | 0x20) - 'a' + 10);
+    value = value * base + digit;
+    if (value > 0xffffffffu) return std::nullopt;
+  }
+  return value;
+}
+
+constexpr std::string_view trim(std::string_view text) {
+  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+  return text;
+}
+
+// The bits one term ("NAME" or "NAME=VALUE") sets, or nullopt.
+constexpr std::optional<std::uint32_t> term_bits(std::span<const Feature> features, std::string_view term) {
+  std::size_t equals = term.find('=');
+  std::string_view name = trim(term.substr(0, equals));
+  for (const Feature& f : features) {
+    if (f.name != name && f.define != name) continue;
+    if (equals == std::string_view::npos)
+      return f.values.empty() ? std::optional<std::uint32_t>(1u << f.bit) : std::nullopt;
+    std::string_view value = trim(term.substr(equals + 1));
+    for (std::uint32_t i = 0; i < f.values.size(); ++i)
+      if (f.values[i] == value) return i << f.bit;
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+}  // namespace detail
+
+constexpr std::optional<std::uint32_t> find_raw_id(std::span<const Feature> features, std::uint32_t raw_bits,
+                                                   std::string_view text) {
+  if (std::string_view number_text = detail::trim(text);
+      !number_text.empty() && number_text.front() >= '0' && number_text.front() <= '9') {
+    auto number = detail::parse_number(number_text);
+    if (!number || *number >= (std::uint64_t{1} << raw_bits)) return std::nullopt;
+    return static_cast<std::uint32_t>(*number);
+  }
+  std::uint32_t id = 0;
+  while (!text.empty()) {
+    std::size_t end = text.find_first_of("|+,");
+    std::string_view term = detail::trim(text.substr(0, end));
+    text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+    if (term.empty()) continue;
+    auto bits = detail::term_bits(features, term);
+    if (!bits) return std::nullopt;
+    id |= *bits;
+  }
+  return id;
+}
 
 }  // namespace shadergen

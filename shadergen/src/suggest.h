@@ -1,0 +1,16 @@
+// suggest.h - "did you mean ...?" for a misspelt subcommand or option.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shadergen {
+
+// The entry of `known` closest to `given`: within two edits (insertions, deletions,
+// substitutions, or two neighbours swapped), or one being the other with letters added at the
+// end ("--output" for "--out"). nullopt when none is that close or two are equally close.
+std::optional<std::string> closest_name(std::string_view given, const std::vector<std::string>& known);
+
+}  // namespace shadergen
