@@ -3,7 +3,8 @@
 #   scripts/install-deps.sh           what the build and the main job need
 #   scripts/install-deps.sh --tests   that, and what only the test suite uses (clang-format for
 #                                     the style test, assimp-testmodels' real and broken glTF
-#                                     files for the scene tests)
+#                                     files for the scene tests, Apache mod_dav for the remote-cache
+#                                     tests)
 set -eu
 
 PACKAGES="cmake ninja-build g++ pkg-config
@@ -13,7 +14,7 @@ libglm-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
 libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev
 libcurl4-openssl-dev nginx"
 if [ "${1:-}" = "--tests" ]; then
-    PACKAGES="$PACKAGES clang-format assimp-testmodels"
+    PACKAGES="$PACKAGES clang-format assimp-testmodels apache2"
 fi
 
 missing=""

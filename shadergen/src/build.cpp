@@ -15,6 +15,7 @@
 #include "remote_cache.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
+#include "untrusted_text.h"
 
 namespace shadergen {
 namespace {
@@ -26,9 +27,10 @@ Status check_names(const BuildOptions& options, const std::string& cpp_name, con
       cpp_name.front() == '.')
     return make_error("--cpp-name: \"" + cpp_name + "\" is not a plain file name");
   if (options.out_dir.empty()) return make_error("--out: no output folder given");
-  if (!options.remote_cache_url.empty() && !is_remote_cache_url(options.remote_cache_url))
-    return make_error("--remote-cache: \"" + options.remote_cache_url +
-                      "\" is not an http:// or https:// URL (set by the option or SHADERGEN_REMOTE_CACHE)");
+  if (!options.remote_cache_url.empty())
+    if (std::string problem = remote_cache_url_problem(options.remote_cache_url); !problem.empty())
+      return make_error("--remote-cache: \"" + printable(redacted_url(options.remote_cache_url)) + "\" " + problem +
+                        " (set by the option or SHADERGEN_REMOTE_CACHE)");
   return Ok{};
 }
 
@@ -117,8 +119,9 @@ BuildOptions normalised(BuildOptions options) {
 
 std::unique_ptr<RemoteCache> remote_cache_for(const BuildOptions& options) {
   if (!options.use_cache || options.remote_cache_url.empty()) return nullptr;
-  return std::make_unique<RemoteCache>(options.remote_cache_url, options.remote_cache_read_only,
-                                       make_curl_http_client(), options.log);
+  RemoteCacheSettings settings{options.remote_cache_url, options.remote_cache_read_only, options.remote_cache_secret,
+                               options.remote_cache_budget, options.remote_cache_request_limit};
+  return std::make_unique<RemoteCache>(std::move(settings), make_curl_http_client(), options.log);
 }
 
 // Optimised IDs that no raw ID maps to cost a compile each and are never drawn: name them.
@@ -179,7 +182,9 @@ Result<BuildSummary> build(const BuildOptions& given) {
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const Blob& blob : domain->blobs)
     if (blob.fell_back && options.log)
-      options.log("warning: optimiser fallback for blob " + blob.hash.substr(0, 16) + ": " + blob.fallback_reason);
+      // The reason may come from a remote cache's entry: printed escaped and bounded.
+      options.log("warning: optimiser fallback for blob " + blob.hash.substr(0, 16) + ": " +
+                  printable(blob.fallback_reason));
   if (options.cancelled && options.cancelled()) return make_error("build interrupted");
   StagedOutput staged = outputs_for(options, *domain, cpp_name, ns, seconds);
   clock.lap("manifest and codegen");

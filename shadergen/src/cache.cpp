@@ -129,6 +129,29 @@ std::optional<CachedBlob> ContentCache::load(std::string_view key) const {
   return decode_cache_entry(key, bytes.value());
 }
 
+namespace {
+
+std::filesystem::path marker_path(const std::filesystem::path& directory, std::string_view server,
+                                  std::string_view key) {
+  return directory / "remote" / sha256_hex(server).substr(0, 16) / std::string(key.substr(0, 2)) / std::string(key);
+}
+
+}  // namespace
+
+bool ContentCache::server_has(std::string_view server, std::string_view key) const {
+  std::error_code ec;
+  return enabled() && key.size() == kKeyLength && std::filesystem::exists(marker_path(directory_, server, key), ec);
+}
+
+// Best effort: a marker that cannot be written only costs one existence check later.
+void ContentCache::note_server_has(std::string_view server, std::string_view key) const {
+  if (!enabled() || key.size() != kKeyLength || server_has(server, key)) return;
+  std::filesystem::path path = marker_path(directory_, server, key);
+  std::error_code ec;
+  std::filesystem::create_directories(path.parent_path(), ec);
+  if (!ec) (void)write_file_atomic(path, "");
+}
+
 Status ContentCache::store(std::string_view key, const CachedBlob& blob) const {
   if (!enabled()) return Ok{};
   std::filesystem::path path = entry_path(key);

@@ -38,6 +38,13 @@ class ContentCache {
 
   std::filesystem::path entry_path(std::string_view key) const;
 
+  // What this machine knows a remote cache holds (it sent or received the entry): an empty
+  // marker file per server and key, so that a warm build offers the server only what it may
+  // lack, and a build whose every entry the server has sends no request at all. `server` is any
+  // stable name of the server (its URL without credentials).
+  bool server_has(std::string_view server, std::string_view key) const;
+  void note_server_has(std::string_view server, std::string_view key) const;
+
  private:
   std::filesystem::path directory_;
 };

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <csignal>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <new>
 #include <optional>
@@ -104,7 +107,29 @@ struct BuildArgs {
   bool no_cache = false, stats = false, verbose = false, strip_debug = false;
   std::string remote_cache;
   bool remote_cache_readonly = false;
+  std::string remote_cache_secret_file;
+  double remote_cache_budget = 10.0;  // seconds
 };
+
+// The signing secret: the file's bytes (without trailing line breaks), else
+// $SHADERGEN_REMOTE_CACHE_SECRET, else none. Never an argument: command lines reach logs and
+// `ps`. Messages name the file, never its contents.
+std::optional<std::string> remote_cache_secret(const BuildArgs& a, std::ostream& err) {
+  if (a.remote_cache_secret_file.empty()) {
+    const char* secret = std::getenv("SHADERGEN_REMOTE_CACHE_SECRET");
+    return std::string(secret ? secret : "");
+  }
+  std::ifstream file(a.remote_cache_secret_file, std::ios::binary);
+  std::string secret((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  while (!secret.empty() && (secret.back() == '\n' || secret.back() == '\r')) secret.pop_back();
+  if (!file.good() && !file.eof()) secret.clear();
+  if (secret.empty()) {
+    err << "shadergen: error: --remote-cache-secret-file " << a.remote_cache_secret_file
+        << ": cannot read a secret from it (missing, unreadable or empty)\n";
+    return std::nullopt;
+  }
+  return secret;
+}
 
 // "; remote: 13 fetched, 0 uploaded, 0 failed" inside the summary's parentheses, with a remote cache.
 std::string remote_counts(const BuildSummary& s) {
@@ -130,6 +155,10 @@ int run_build(const BuildArgs& a, std::ostream& out, std::ostream& err) {
   options.verbose = a.verbose;
   options.remote_cache_url = a.remote_cache;
   options.remote_cache_read_only = a.remote_cache_readonly;
+  options.remote_cache_budget = std::chrono::milliseconds(static_cast<long long>(a.remote_cache_budget * 1000.0));
+  auto secret = remote_cache_secret(a, err);
+  if (!secret) return kExitError;
+  options.remote_cache_secret = std::move(*secret);
   options.log = [&err](const std::string& line) { err << "shadergen: " << line << std::endl; };
   options.cancelled = [] { return g_interrupted.load(); };
   auto summary = build(options);
@@ -235,6 +264,14 @@ int run_command(const std::vector<std::string>& args, std::ostream& out, std::os
       ->envname("SHADERGEN_REMOTE_CACHE");
   build_cmd->add_flag("--remote-cache-readonly", b.remote_cache_readonly,
                       "Only read the remote cache, never upload to it (developer machines)");
+  build_cmd->add_option("--remote-cache-secret-file", b.remote_cache_secret_file,
+                        "Sign uploads and accept only signed entries, with the secret in this file (default: "
+                        "$SHADERGEN_REMOTE_CACHE_SECRET; none: entries are neither signed nor checked)");
+  build_cmd
+      ->add_option("--remote-cache-budget", b.remote_cache_budget,
+                   "Seconds the remote cache's requests may keep a build waiting in all before it is turned off "
+                   "for the rest of the build (default 10; each request waits at most 5)")
+      ->check(CLI::Range(0.0, 3600.0));
 
   std::string spec_path;
   CLI::App* lut_cmd = app.add_subcommand("lut", "Print the raw -> optimised lookup table");

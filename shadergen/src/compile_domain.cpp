@@ -14,6 +14,7 @@
 #include "input_cache.h"
 #include "phase_clock.h"
 #include "program_check.h"
+#include "reflection.h"
 #include "remote_cache.h"
 #include "sha256.h"
 #include "source_key.h"
@@ -113,15 +114,15 @@ class DomainCompiler {
     }
     if (Status s = compile_sources(); !s) return s;
     clock.lap("compile or load");
-    if (Status s = reflect_blobs(); !s) return s;
-    clock.lap("reflect");
+    Status checked = check_blobs(clock);
+    if (!checked && remote_hits() > 0) checked = recompile_remote_hits(std::move(checked), clock);
+    if (!checked) return checked;
+    keep_remote_hits();
     if (d_.spec.strip_debug) {
+      // Only now: the caches, the server's entries included, keep the blobs with their names.
       if (Status s = strip_blobs(); !s) return s;
       clock.lap("strip debug");
     }
-    if (Status s = merge(); !s) return s;
-    if (Status s = check_program(); !s) return s;
-    clock.lap("layout");
     remember_inputs();
     return Ok{};
   }
@@ -162,6 +163,52 @@ class DomainCompiler {
   }
 
   bool cancelled() const { return options_.cancelled && options_.cancelled(); }
+
+  Status check_blobs(PhaseClock& clock) {
+    if (Status s = reflect_blobs(); !s) return s;
+    clock.lap("reflect");
+    if (Status s = merge(); !s) return s;
+    if (Status s = check_program(); !s) return s;
+    clock.lap("layout");
+    return Ok{};
+  }
+
+  std::size_t remote_hits() const {
+    return static_cast<std::size_t>(
+        std::count_if(d_.sources.begin(), d_.sources.end(), [](const SourceRecord& r) { return r.remote_hit; }));
+  }
+
+  // Entries that are each valid SPIR-V can still fail together (a foreign shader with another
+  // layout). The server is then not trusted for this build: its entries are compiled here and
+  // checked again, so the outcome is what a build without it would give. Only when that passes
+  // was the server to blame, and warned about; otherwise the domain's own error stands.
+  Status recompile_remote_hits(Status failed, PhaseClock& clock) {
+    remote_distrusted_ = true;
+    for (SourceRecord& record : d_.sources)
+      if (record.remote_hit) record.remote_hit = record.cache_hit = false, record.blob = -1;
+    d_.blobs.clear();
+    d_.layout = {};
+    if (Status s = compile_sources(); !s) return s;
+    clock.lap("compile again");
+    Status checked = check_blobs(clock);
+    if (checked) options_.remote->distrust(failed.errors().front().message);
+    return checked;
+  }
+
+  // A remote entry reaches the local cache only once the whole build has used it: the local
+  // cache never holds what the checks would reject.
+  void keep_remote_hits() {
+    for (std::size_t s = 0; s < d_.sources.size(); ++s) {
+      const SourceRecord& record = d_.sources[s];
+      if (!record.remote_hit) continue;
+      const Blob& blob = d_.blobs[static_cast<std::size_t>(record.blob)];
+      store_local(record.key, CachedBlob{blob.words, blob.fell_back, blob.fallback_reason});
+      if (options_.cache) options_.cache->note_server_has(server(), record.key);
+    }
+  }
+
+  // The remote cache's name in the local cache's notes of what it holds.
+  const std::string& server() const { return options_.remote->shown_url(); }
 
   Status cancelled_error() const { return make_error("build interrupted"); }
 
@@ -232,16 +279,28 @@ class DomainCompiler {
     return Ok{};
   }
 
-  // Locally, then remotely; a remote entry is kept locally so the next build needs no network.
+  // Locally, then remotely (a local hit is offered to the server, which may lack it). A remote
+  // entry is used only if its SPIR-V validates for this build's target and reflects as its
+  // stage; it is kept locally once the build has checked it (keep_remote_hits).
   std::optional<CachedBlob> load_cached(SourceRecord& record) {
     std::optional<CachedBlob> hit;
     if (options_.cache) hit = options_.cache->load(record.key);
-    if (!hit && options_.remote && (hit = options_.remote->load(record.key))) {
+    if (hit && options_.remote && !options_.remote->read_only() && !options_.cache->server_has(server(), record.key) &&
+        options_.remote->offer(record.key, *hit))
+      options_.cache->note_server_has(server(), record.key);
+    if (!hit && options_.remote && !remote_distrusted_ &&
+        (hit = options_.remote->load(record.key, fit_check(d_.jobs[record.first_job].stage))))
       record.remote_hit = true;
-      store_local(record.key, *hit);
-    }
     record.cache_hit = hit.has_value();
     return hit;
+  }
+
+  RemoteCache::Check fit_check(Stage stage) const {
+    return [env = d_.spec.target_env, stage](const CachedBlob& blob) -> std::string {
+      if (Status valid = validate_spirv(blob.words, env); !valid) return valid.errors().front().message;
+      if (auto info = reflect(blob.words, stage); !info) return info.errors().front().message;
+      return {};
+    };
   }
 
   void store_local(const std::string& key, const CachedBlob& blob) {
@@ -276,7 +335,8 @@ class DomainCompiler {
     record.compile_ms = milliseconds_since(start);
     CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
     store_local(record.key, blob);
-    if (options_.remote) options_.remote->store(record.key, blob);
+    if (options_.remote && !remote_distrusted_ && options_.remote->store(record.key, blob) && options_.cache)
+      options_.cache->note_server_has(server(), record.key);
     return blob;
   }
 
@@ -449,6 +509,7 @@ class DomainCompiler {
   const CompileOptions& options_;
   CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
   std::optional<std::vector<InputRead>> reads_;          // what preprocessing read; nullopt: inconsistent
+  bool remote_distrusted_ = false;                       // its entries failed the checks together
 };
 
 }  // namespace

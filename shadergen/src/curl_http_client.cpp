@@ -2,6 +2,8 @@
 // handles reused so that a build's hundreds of small requests share a few connections.
 #include <curl/curl.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <mutex>
 #include <vector>
 
@@ -30,6 +32,17 @@ std::size_t read_body(char* buffer, std::size_t size, std::size_t count, void* u
   return bytes;
 }
 
+// libcurl itself reads no environment for TLS trust; these are the variables the curl tool and
+// OpenSSL honour, so a private CA is configured for shadergen as for curl.
+void set_ca_bundle(CURL* handle) {
+  for (const char* variable : {"CURL_CA_BUNDLE", "SSL_CERT_FILE"})
+    if (const char* file = std::getenv(variable); file && *file) {
+      curl_easy_setopt(handle, CURLOPT_CAINFO, file);
+      break;
+    }
+  if (const char* dir = std::getenv("SSL_CERT_DIR"); dir && *dir) curl_easy_setopt(handle, CURLOPT_CAPATH, dir);
+}
+
 class CurlHttpClient final : public HttpClient {
  public:
   explicit CurlHttpClient(HttpTimeouts timeouts) : timeouts_(timeouts) {
@@ -41,34 +54,40 @@ class CurlHttpClient final : public HttpClient {
     for (CURL* handle : idle_) curl_easy_cleanup(handle);
   }
 
-  Result<HttpResponse> get(const std::string& url) override {
-    return perform(url, [](CURL*) {});
-  }
-
-  Result<HttpResponse> put(const std::string& url, std::string_view body) override {
-    std::string_view rest = body;
-    return perform(url, [&](CURL* handle) {
-      curl_easy_setopt(handle, CURLOPT_UPLOAD, 1L);
-      curl_easy_setopt(handle, CURLOPT_READFUNCTION, read_body);
-      curl_easy_setopt(handle, CURLOPT_READDATA, &rest);
-      curl_easy_setopt(handle, CURLOPT_INFILESIZE_LARGE, static_cast<curl_off_t>(body.size()));
+  Result<HttpResponse> send(const HttpRequest& request) override {
+    std::string_view rest = request.body;
+    return perform(request, [&](CURL* handle) {
+      if (request.method == "HEAD") {
+        curl_easy_setopt(handle, CURLOPT_NOBODY, 1L);
+      } else if (request.method == "PUT") {
+        curl_easy_setopt(handle, CURLOPT_UPLOAD, 1L);
+        curl_easy_setopt(handle, CURLOPT_READFUNCTION, read_body);
+        curl_easy_setopt(handle, CURLOPT_READDATA, &rest);
+        curl_easy_setopt(handle, CURLOPT_INFILESIZE_LARGE, static_cast<curl_off_t>(request.body.size()));
+      } else if (request.method != "GET") {
+        curl_easy_setopt(handle, CURLOPT_CUSTOMREQUEST, std::string(request.method).c_str());
+      }
     });
   }
 
  private:
   template <class Configure>
-  Result<HttpResponse> perform(const std::string& url, Configure configure) {
+  Result<HttpResponse> perform(const HttpRequest& request, Configure configure) {
     CURL* handle = acquire();
     if (!handle) return make_error("cannot create an HTTP request (curl_easy_init failed)");
     HttpResponse response;
     char error[CURL_ERROR_SIZE] = {};
     // No "Expect: 100-continue" round trip before each upload: entries are small.
     curl_slist* headers = curl_slist_append(nullptr, "Expect:");
-    curl_easy_setopt(handle, CURLOPT_URL, url.c_str());
+    curl_easy_setopt(handle, CURLOPT_URL, request.url.c_str());
     curl_easy_setopt(handle, CURLOPT_HTTPHEADER, headers);
     curl_easy_setopt(handle, CURLOPT_NOSIGNAL, 1L);  // timeouts without SIGALRM: we are threaded
-    curl_easy_setopt(handle, CURLOPT_CONNECTTIMEOUT_MS, static_cast<long>(timeouts_.connect.count()));
-    curl_easy_setopt(handle, CURLOPT_TIMEOUT_MS, static_cast<long>(timeouts_.total.count()));
+    curl_easy_setopt(handle, CURLOPT_CONNECTTIMEOUT_MS,
+                     static_cast<long>(std::min(timeouts_.connect, request.timeout).count()));
+    curl_easy_setopt(handle, CURLOPT_TIMEOUT_MS, static_cast<long>(std::min(timeouts_.total, request.timeout).count()));
+    // Credentials need not be in the URL (where they would reach logs): ~/.netrc has them.
+    curl_easy_setopt(handle, CURLOPT_NETRC, static_cast<long>(CURL_NETRC_OPTIONAL));
+    set_ca_bundle(handle);
     curl_easy_setopt(handle, CURLOPT_WRITEFUNCTION, append_body);
     curl_easy_setopt(handle, CURLOPT_WRITEDATA, &response.body);
     curl_easy_setopt(handle, CURLOPT_ERRORBUFFER, error);

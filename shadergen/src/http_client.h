@@ -1,5 +1,5 @@
-// http_client.h - the two HTTP requests the remote cache makes, behind an interface so that
-// its verification and degradation rules can be tested without a server.
+// http_client.h - the HTTP requests the remote cache makes (GET, HEAD, PUT, MKCOL), behind an
+// interface so that its verification and degradation rules can be tested without a server.
 #pragma once
 
 #include <chrono>
@@ -17,13 +17,21 @@ struct HttpResponse {
   std::string body;
 };
 
+struct HttpRequest {
+  std::string_view method;  // "GET", "HEAD", "PUT" or "MKCOL"
+  const std::string& url;
+  std::string_view body;  // PUT only
+  // The whole exchange, connection included, may take at most this long (the client's own
+  // limits still apply): the remote cache shortens it as its time budget runs out.
+  std::chrono::milliseconds timeout{10000};
+};
+
 // Thread-safe: the remote cache calls it from every compile thread at once. A request that got
 // no response (refused, reset, timed out, bad URL) is an error whose message says why.
 class HttpClient {
  public:
   virtual ~HttpClient() = default;
-  virtual Result<HttpResponse> get(const std::string& url) = 0;
-  virtual Result<HttpResponse> put(const std::string& url, std::string_view body) = 0;
+  virtual Result<HttpResponse> send(const HttpRequest& request) = 0;
 };
 
 // Every request is bounded: a server that accepts the connection and then stalls costs at most
@@ -33,7 +41,9 @@ struct HttpTimeouts {
   std::chrono::milliseconds total{10000};
 };
 
-// libcurl, with connections kept alive between requests.
+// libcurl, with connections kept alive between requests. Credentials come from the URL or,
+// when it has none, from ~/.netrc (libcurl's netrc lookup, $NETRC naming another file); TLS
+// trusts the system CAs, or the bundle named by $CURL_CA_BUNDLE or $SSL_CERT_FILE.
 std::unique_ptr<HttpClient> make_curl_http_client(HttpTimeouts timeouts = {});
 
 }  // namespace shadergen

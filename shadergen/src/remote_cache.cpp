@@ -1,7 +1,15 @@
 #include "remote_cache.h"
 
+#include <algorithm>
+#include <cstdio>
+
+#include "signed_entry.h"
+#include "untrusted_text.h"
+
 namespace shadergen {
 namespace {
+
+using Clock = std::chrono::steady_clock;
 
 std::string without_trailing_slashes(std::string url) {
   while (!url.empty() && url.back() == '/') url.pop_back();
@@ -10,29 +18,42 @@ std::string without_trailing_slashes(std::string url) {
 
 std::string relative_entry(std::string_view key) { return std::string(key.substr(0, 2)) + "/" + std::string(key); }
 
-}  // namespace
-
-bool is_remote_cache_url(std::string_view url) {
-  for (std::string_view scheme : {"http://", "https://"})
-    if (url.size() > scheme.size() && url.substr(0, scheme.size()) == scheme) return true;
-  return false;
+std::string seconds_text(std::chrono::milliseconds ms) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", static_cast<double>(ms.count()) / 1000.0);
+  return text;
 }
 
-RemoteCache::RemoteCache(std::string url, bool read_only, std::unique_ptr<HttpClient> http, Warn warn)
-    : url_(without_trailing_slashes(std::move(url))),
-      read_only_(read_only),
+}  // namespace
+
+bool is_remote_cache_url(std::string_view url) { return remote_cache_url_problem(url).empty(); }
+
+std::string remote_cache_url_problem(std::string_view url) {
+  bool http = false;
+  for (std::string_view scheme : {"http://", "https://"})
+    if (url.size() > scheme.size() && url.substr(0, scheme.size()) == scheme) http = true;
+  if (!http) return "is not an http:// or https:// URL";
+  if (url.find_first_of("?#") != std::string_view::npos)
+    return "has a query or fragment ('?' or '#'), which the entry URLs <url>/<key-prefix>/<key> cannot carry; "
+           "give the URL of the collection alone";
+  return {};
+}
+
+RemoteCache::RemoteCache(RemoteCacheSettings settings, std::unique_ptr<HttpClient> http, Warn warn)
+    : settings_(std::move(settings)),
+      url_(without_trailing_slashes(settings_.url)),
+      shown_url_(redacted_url(url_)),
       http_(std::move(http)),
       warn_(std::move(warn)) {}
 
+RemoteCache::RemoteCache(std::string url, bool read_only, std::unique_ptr<HttpClient> http, Warn warn)
+    : RemoteCache(RemoteCacheSettings{std::move(url), read_only, {}}, std::move(http), std::move(warn)) {}
+
 std::string RemoteCache::entry_url(std::string_view key) const { return url_ + "/" + relative_entry(key); }
 
-std::optional<CachedBlob> RemoteCache::load(std::string_view key) {
-  if (off_.load()) return std::nullopt;
-  auto response = http_->get(entry_url(key));
-  if (!response) {
-    turn_off("GET", key, response.errors().front().message);
-    return std::nullopt;
-  }
+std::optional<CachedBlob> RemoteCache::load(std::string_view key, const Check& check) {
+  auto response = send("GET", key, entry_url(key));
+  if (!response) return std::nullopt;
   if (response->status == 404) {
     ++missed_;
     return std::nullopt;
@@ -41,42 +62,159 @@ std::optional<CachedBlob> RemoteCache::load(std::string_view key) {
     turn_off("GET", key, "HTTP " + std::to_string(response->status));
     return std::nullopt;
   }
+  auto entry = body_entry(response->body);
+  if (!entry) {
+    reject(key,
+           "is not signed with this build's secret (SHADERGEN_REMOTE_CACHE_SECRET or "
+           "--remote-cache-secret-file)");
+    return std::nullopt;
+  }
   // The one verification local entries get too: magic, key, sizes and checksum.
-  auto blob = decode_cache_entry(key, response->body);
+  auto blob = decode_cache_entry(key, *entry);
   if (!blob) {
-    reject(key);
+    reject(key, "is not a valid entry (truncated, corrupted, foreign or from another version)");
+    return std::nullopt;
+  }
+  if (std::string unfit = check ? check(*blob) : std::string(); !unfit.empty()) {
+    reject(key, "holds SPIR-V unfit for this build (" + printable(unfit) + ")");
     return std::nullopt;
   }
   ++fetched_;
   return blob;
 }
 
-void RemoteCache::store(std::string_view key, const CachedBlob& blob) {
-  if (read_only_ || off_.load()) return;
-  auto response = http_->put(entry_url(key), encode_cache_entry(key, blob));
-  if (!response) return turn_off("PUT", key, response.errors().front().message);
-  if (response->status < 200 || response->status > 299)
-    return turn_off("PUT", key, "HTTP " + std::to_string(response->status));
+// The entry inside a response body: it must carry a valid signature when there is a secret.
+std::optional<std::string> RemoteCache::body_entry(std::string_view body) const {
+  if (!signs()) return std::string(unsigned_entry(body));
+  auto entry = verified_entry(body, settings_.secret);
+  if (!entry) return std::nullopt;
+  return std::string(*entry);
+}
+
+bool RemoteCache::store(std::string_view key, const CachedBlob& blob) {
+  if (settings_.read_only || off_.load() || !put_entry(key, blob)) return false;
   ++uploaded_;
+  return true;
+}
+
+bool RemoteCache::offer(std::string_view key, const CachedBlob& blob) {
+  if (settings_.read_only || off_.load()) return false;
+  auto response = send("HEAD", key, entry_url(key));
+  if (!response) return false;
+  if (response->status == 404) return store(key, blob);
+  if (response->status >= 200 && response->status <= 299) return true;
+  turn_off("HEAD", key, "HTTP " + std::to_string(response->status));
+  return false;
+}
+
+bool RemoteCache::put_entry(std::string_view key, const CachedBlob& blob) {
+  std::string entry = encode_cache_entry(key, blob);
+  std::string body = signs() ? signed_entry(entry, settings_.secret) : std::move(entry);
+  auto response = send("PUT", key, entry_url(key), body);
+  if (!response) return false;
+  // 409: the collection <key[0:2]> (or the cache's own) does not exist yet.
+  if (response->status == 409 && create_collections(key)) response = send("PUT", key, entry_url(key), body);
+  if (!response) return false;
+  if (response->status < 200 || response->status > 299) {
+    turn_off("PUT", key, "HTTP " + std::to_string(response->status));
+    return false;
+  }
+  return true;
+}
+
+// MKCOL <url>/<key[0:2]>/, creating <url>/ first when that is missing too (409 again). 405
+// means it exists already (another thread made it): fine.
+bool RemoteCache::create_collections(std::string_view key) {
+  const std::string prefix = url_ + "/" + std::string(key.substr(0, 2)) + "/";
+  auto made = send("MKCOL", key, prefix);
+  if (made && made->status == 409) {
+    auto root = send("MKCOL", key, url_ + "/");
+    if (!root) return false;
+    made = send("MKCOL", key, prefix);
+  }
+  if (!made) return false;
+  if ((made->status < 200 || made->status > 299) && made->status != 405) {
+    turn_off("MKCOL", key, "HTTP " + std::to_string(made->status));
+    return false;
+  }
+  return true;
+}
+
+// One request within the budget; nullopt when it got no answer (then the cache is off).
+std::optional<HttpResponse> RemoteCache::send(std::string_view method, std::string_view key, const std::string& url,
+                                              std::string_view body) {
+  if (off_.load()) return std::nullopt;
+  std::chrono::milliseconds limit = begin_request();
+  if (limit.count() <= 0) {
+    end_request();
+    budget_spent();
+    return std::nullopt;
+  }
+  auto response = http_->send(HttpRequest{method, url, body, limit});
+  end_request();
+  if (response) return std::move(response).value();
+  if (waited() >= settings_.budget)
+    budget_spent();
+  else
+    turn_off(method, key, without_credentials(response.errors().front().message, url_));
+  return std::nullopt;
+}
+
+// What a new request may take: the per-request limit, or less when the budget is nearly spent.
+std::chrono::milliseconds RemoteCache::begin_request() {
+  std::lock_guard lock(clock_mutex_);
+  auto now = Clock::now();
+  auto spent = waited_ + (in_flight_ > 0 ? now - busy_since_ : Clock::duration{});
+  if (in_flight_++ == 0) busy_since_ = now;
+  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(settings_.budget - spent);
+  return std::min(left, settings_.request_limit);
+}
+
+void RemoteCache::end_request() {
+  std::lock_guard lock(clock_mutex_);
+  if (--in_flight_ == 0) waited_ += Clock::now() - busy_since_;
+}
+
+Clock::duration RemoteCache::waited() {
+  std::lock_guard lock(clock_mutex_);
+  return waited_ + (in_flight_ > 0 ? Clock::now() - busy_since_ : Clock::duration{});
 }
 
 RemoteCacheStats RemoteCache::stats() const {
   return RemoteCacheStats{fetched_.load(), missed_.load(), uploaded_.load(), failed_.load()};
 }
 
+void RemoteCache::warn(const std::string& line) const {
+  if (warn_) warn_(line);
+}
+
 // Requests already in flight on other threads may fail too: they are counted, not warned.
 void RemoteCache::turn_off(std::string_view method, std::string_view key, const std::string& failure) {
   ++failed_;
-  if (off_.exchange(true) || !warn_) return;
-  warn_("warning: remote cache " + url_ + ": " + std::string(method) + " " + relative_entry(key) + ": " + failure +
-        "; the rest of this build does not use it");
+  if (off_.exchange(true)) return;
+  warn("warning: remote cache " + shown_url_ + ": " + std::string(method) + " " + relative_entry(key) + ": " +
+       printable(failure) + "; the rest of this build does not use it");
 }
 
-void RemoteCache::reject(std::string_view key) {
+void RemoteCache::budget_spent() {
   ++failed_;
-  if (rejected_once_.exchange(true) || !warn_) return;
-  warn_("warning: remote cache " + url_ + ": " + relative_entry(key) +
-        " is not a valid entry (truncated, corrupted, foreign or from another version); compiled here instead");
+  if (off_.exchange(true)) return;
+  warn("warning: remote cache " + shown_url_ + ": its requests have kept this build waiting " +
+       seconds_text(settings_.budget) +
+       ", the whole budget (--remote-cache-budget); the rest of this build does not use it");
+}
+
+void RemoteCache::distrust(const std::string& why) {
+  ++failed_;
+  if (off_.exchange(true)) return;
+  warn("warning: remote cache " + shown_url_ + ": its entries fail this build's checks (" + printable(why) +
+       "); compiled here instead, and the rest of this build does not use it");
+}
+
+void RemoteCache::reject(std::string_view key, const std::string& why) {
+  ++failed_;
+  if (rejected_once_.exchange(true)) return;
+  warn("warning: remote cache " + shown_url_ + ": " + relative_entry(key) + " " + why + "; compiled here instead");
 }
 
 }  // namespace shadergen

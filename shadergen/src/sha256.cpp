@@ -1,5 +1,6 @@
 #include "sha256.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace shadergen {
@@ -129,6 +130,24 @@ std::string sha256_hex(std::span<const std::uint32_t> words) {
     hasher.update(std::span<const std::uint8_t>(bytes, 4));
   }
   return hasher.finish_hex();
+}
+
+std::array<std::uint8_t, 32> hmac_sha256(std::string_view key, std::string_view message) {
+  constexpr std::size_t kBlock = 64;
+  std::array<std::uint8_t, kBlock> block{};
+  if (key.size() > kBlock) {
+    auto digest = Sha256().update(key).finish();
+    std::copy(digest.begin(), digest.end(), block.begin());
+  } else {
+    std::copy(key.begin(), key.end(), block.begin());
+  }
+  std::array<std::uint8_t, kBlock> inner_pad{}, outer_pad{};
+  for (std::size_t i = 0; i < kBlock; ++i) {
+    inner_pad[i] = static_cast<std::uint8_t>(block[i] ^ 0x36u);
+    outer_pad[i] = static_cast<std::uint8_t>(block[i] ^ 0x5cu);
+  }
+  auto inner = Sha256().update(inner_pad).update(message).finish();
+  return Sha256().update(outer_pad).update(inner).finish();
 }
 
 }  // namespace shadergen

@@ -35,4 +35,7 @@ std::string sha256_hex(std::string_view text);
 std::string sha256_hex(std::span<const std::uint32_t> words);
 std::string to_hex(std::span<const std::uint8_t> bytes);
 
+// HMAC-SHA256 (RFC 2104): the signature of remote-cache entries, keyed by a team's secret.
+std::array<std::uint8_t, 32> hmac_sha256(std::string_view key, std::string_view message);
+
 }  // namespace shadergen

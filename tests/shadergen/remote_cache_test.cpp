@@ -4,6 +4,7 @@
 
 #include <map>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include "remote_cache.h"
@@ -20,23 +21,29 @@ CachedBlob sample_blob() { return CachedBlob{{0x07230203u, 1u, 2u, 3u}, false, {
 // Answers from a map of URL -> response; `failure`, when set, is every request's transport error.
 class FakeHttp final : public HttpClient {
  public:
-  Result<HttpResponse> get(const std::string& url) override {
+  Result<HttpResponse> send(const HttpRequest& request) override {
     std::lock_guard lock(mutex_);
-    requests.push_back("GET " + url);
+    requests.push_back(std::string(request.method) + " " + request.url);
     if (!failure.empty()) return make_error(failure);
-    auto found = objects.find(url);
+    if (request.method == "MKCOL") {
+      collections.insert(request.url);
+      return HttpResponse{201, {}};
+    }
+    if (request.method == "PUT") {
+      if (needs_collections && !collections.count(request.url.substr(0, request.url.rfind('/') + 1)))
+        return HttpResponse{409, "Conflict"};
+      if (put_status != 201) return HttpResponse{put_status, {}};
+      objects[request.url] = HttpResponse{200, std::string(request.body)};
+      return HttpResponse{201, {}};
+    }
+    auto found = objects.find(request.url);
     if (found == objects.end()) return HttpResponse{404, "not found"};
+    if (request.method == "HEAD") return HttpResponse{found->second.status, {}};
     return found->second;
   }
-  Result<HttpResponse> put(const std::string& url, std::string_view body) override {
-    std::lock_guard lock(mutex_);
-    requests.push_back("PUT " + url);
-    if (!failure.empty()) return make_error(failure);
-    if (put_status != 201) return HttpResponse{put_status, {}};
-    objects[url] = HttpResponse{200, std::string(body)};
-    return HttpResponse{201, {}};
-  }
 
+  std::set<std::string> collections;
+  bool needs_collections = false;  // Apache mod_dav: PUT into a missing collection is 409
   std::map<std::string, HttpResponse> objects;
   std::vector<std::string> requests;
   std::string failure;

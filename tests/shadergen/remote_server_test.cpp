@@ -238,7 +238,8 @@ TEST(RemoteCacheServer, StalledServerTimesOut) {
   ASSERT_EQ(::getsockname(listener, reinterpret_cast<sockaddr*>(&address), &size), 0);
   auto client = make_curl_http_client(HttpTimeouts{std::chrono::milliseconds(500), std::chrono::milliseconds(700)});
   auto start = std::chrono::steady_clock::now();
-  auto response = client->get("http://127.0.0.1:" + std::to_string(ntohs(address.sin_port)) + "/cache/ab/ab");
+  const std::string url = "http://127.0.0.1:" + std::to_string(ntohs(address.sin_port)) + "/cache/ab/ab";
+  auto response = client->send(HttpRequest{"GET", url, {}, std::chrono::seconds(10)});
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ::close(listener);
   ASSERT_FALSE(response.ok());

@@ -2,6 +2,7 @@
 // generated C++, written atomically into an output folder.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -36,8 +37,16 @@ struct BuildOptions {
   // A content cache shared over HTTP: GET/PUT <url>/<key[0:2]>/<key>, asked after a local miss,
   // given every entry compiled here unless read-only. Empty: none; unused without use_cache.
   // Precondition: empty or an http:// or https:// URL (else build() fails naming it).
+  // Credentials in it ("user:password@") are never printed; ~/.netrc can hold them instead.
   std::string remote_cache_url;
   bool remote_cache_read_only = false;
+  // Not empty: every upload is signed with HMAC-SHA256 under this secret, and only entries so
+  // signed are used (docs/cli.md, "trust model"). Never printed.
+  std::string remote_cache_secret;
+  // The waiting time the remote cache's requests may cost this build together; once spent, the
+  // rest of the build does not use it. Each request also waits at most remote_cache_request_limit.
+  std::chrono::milliseconds remote_cache_budget{10000};
+  std::chrono::milliseconds remote_cache_request_limit{5000};
   // Receives progress lines (the CLI prints them on stderr). May be empty.
   std::function<void(const std::string&)> log;
   // Polled between jobs; when it returns true the build stops and fails, output untouched.
