@@ -9,12 +9,12 @@
 #include "cache.h"
 #include "compiled_domain.h"
 #include "defines.h"
+#include "entry_check.h"
 #include "error_grouping.h"
 #include "glsl_compiler.h"
 #include "input_cache.h"
 #include "phase_clock.h"
 #include "program_check.h"
-#include "reflection.h"
 #include "remote_cache.h"
 #include "sha256.h"
 #include "source_key.h"
@@ -184,11 +184,18 @@ class DomainCompiler {
   // was the server to blame, and warned about; otherwise the domain's own error stands.
   Status recompile_remote_hits(Status failed, PhaseClock& clock) {
     remote_distrusted_ = true;
-    for (SourceRecord& record : d_.sources)
+    std::vector<bool> compiled(d_.sources.size());
+    for (std::size_t i = 0; i < d_.sources.size(); ++i) {
+      SourceRecord& record = d_.sources[i];
       if (record.remote_hit) record.remote_hit = record.cache_hit = false, record.blob = -1;
+      compiled[i] = !record.cache_hit;
+    }
     d_.blobs.clear();
     d_.layout = {};
     if (Status s = compile_sources(); !s) return s;
+    // What the first pass compiled now loads from the local cache; the summary counts it compiled.
+    for (std::size_t i = 0; i < d_.sources.size(); ++i)
+      if (compiled[i]) d_.sources[i].cache_hit = false;
     clock.lap("compile again");
     Status checked = check_blobs(clock);
     if (checked) options_.remote->distrust(failed.errors().front().message);
@@ -296,11 +303,7 @@ class DomainCompiler {
   }
 
   RemoteCache::Check fit_check(Stage stage) const {
-    return [env = d_.spec.target_env, stage](const CachedBlob& blob) -> std::string {
-      if (Status valid = validate_spirv(blob.words, env); !valid) return valid.errors().front().message;
-      if (auto info = reflect(blob.words, stage); !info) return info.errors().front().message;
-      return {};
-    };
+    return [env = d_.spec.target_env, stage](const CachedBlob& blob) { return unfit_reason(blob.words, stage, env); };
   }
 
   void store_local(const std::string& key, const CachedBlob& blob) {

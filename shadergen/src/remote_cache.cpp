@@ -206,7 +206,8 @@ void RemoteCache::budget_spent() {
 
 void RemoteCache::distrust(const std::string& why) {
   ++failed_;
-  if (off_.exchange(true)) return;
+  // One warning about bad entries per build: an earlier rejected entry already named the server.
+  if (off_.exchange(true) || rejected_once_.exchange(true)) return;
   warn("warning: remote cache " + shown_url_ + ": its entries fail this build's checks (" + printable(why) +
        "); compiled here instead, and the rest of this build does not use it");
 }

@@ -8,6 +8,8 @@
 #include <thread>
 
 #include "remote_cache.h"
+#include "signed_entry.h"
+#include "untrusted_text.h"
 
 namespace shadergen {
 namespace {
@@ -195,6 +197,101 @@ TEST(RemoteCache, AcceptsOnlyHttpUrls) {
     EXPECT_TRUE(is_remote_cache_url(url)) << url;
   for (const char* url : {"", "host:8080", "ftp://host", "http://", "file:///tmp/cache", "HTTP//host"})
     EXPECT_FALSE(is_remote_cache_url(url)) << url;
+}
+
+// Apache's mod_dav: a PUT into a missing collection is 409; the cache creates it and retries.
+TEST(RemoteCache, CreatesMissingCollectionsOn409) {
+  Fixture f;
+  f.http->needs_collections = true;
+  EXPECT_TRUE(f.cache->store(kKey, sample_blob()));
+  EXPECT_EQ(f.http->requests, (std::vector<std::string>{"PUT " + f.entry_url(kKey), "MKCOL " + kUrl + "/ab/",
+                                                        "PUT " + f.entry_url(kKey)}));
+  EXPECT_TRUE(f.cache->load(kKey));
+  EXPECT_TRUE(f.warnings.empty());
+}
+
+// With a secret: uploads carry the HMAC trailer; unsigned, wrongly signed and re-keyed entries
+// (the key field rewritten and the checksum recomputed, the old trailer kept) are refused.
+TEST(RemoteCache, SignedEntriesRefuseEverythingElse) {
+  auto signed_cache = [](FakeHttp*& http, std::vector<std::string>& warnings, std::string secret) {
+    auto client = std::make_unique<FakeHttp>();
+    http = client.get();
+    RemoteCacheSettings settings{kUrl, false, std::move(secret)};
+    return std::make_unique<RemoteCache>(std::move(settings), std::move(client),
+                                         [&warnings](const std::string& line) { warnings.push_back(line); });
+  };
+  FakeHttp* http = nullptr;
+  std::vector<std::string> warnings;
+  auto cache = signed_cache(http, warnings, "k");
+  const std::string url = kUrl + "/ab/" + kKey, other_url = kUrl + "/cd/" + kOtherKey;
+  cache->store(kKey, sample_blob());
+  EXPECT_EQ(http->objects.at(url).body, signed_entry(encode_cache_entry(kKey, sample_blob()), "k"));
+  EXPECT_TRUE(cache->load(kKey));
+
+  const std::string signed_body = http->objects.at(url).body;
+  const std::string rekeyed =
+      encode_cache_entry(kOtherKey, sample_blob()) + signed_body.substr(signed_body.size() - 39);
+  const std::map<std::string, std::string> refused{
+      {"unsigned", encode_cache_entry(kOtherKey, sample_blob())},
+      {"signed with another secret", signed_entry(encode_cache_entry(kOtherKey, sample_blob()), "guess")},
+      {"re-keyed", rekeyed},
+  };
+  for (const auto& [what, body] : refused) {
+    http->objects[other_url] = HttpResponse{200, body};
+    EXPECT_FALSE(cache->load(kOtherKey)) << what;
+  }
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("is not signed with this build's secret"), std::string::npos) << warnings[0];
+}
+
+// A server that answers slowly turns the cache off once the budget is spent, and each request is
+// given at most what is left of the budget.
+TEST(RemoteCache, BudgetLimitsEveryRequest) {
+  class SlowHttp final : public HttpClient {
+   public:
+    Result<HttpResponse> send(const HttpRequest& request) override {
+      timeouts.push_back(request.timeout);
+      std::this_thread::sleep_for(std::chrono::milliseconds(60));
+      return HttpResponse{404, {}};
+    }
+    std::vector<std::chrono::milliseconds> timeouts;
+  };
+  auto client = std::make_unique<SlowHttp>();
+  SlowHttp* http = client.get();
+  std::vector<std::string> warnings;
+  RemoteCache cache(RemoteCacheSettings{kUrl, true, {}, std::chrono::milliseconds(200), std::chrono::milliseconds(150)},
+                    std::move(client), [&](const std::string& line) { warnings.push_back(line); });
+  for (int i = 0; i < 20; ++i) cache.load(kKey);
+  ASSERT_GE(http->timeouts.size(), 2u);
+  EXPECT_LE(http->timeouts.size(), 5u) << "about 200 ms / 60 ms requests";
+  EXPECT_EQ(http->timeouts[0], std::chrono::milliseconds(150)) << "the per-request limit";
+  EXPECT_LT(http->timeouts.back(), std::chrono::milliseconds(150)) << "what is left of the budget";
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "warning: remote cache " + kUrl +
+                             ": its requests have kept this build waiting 0.2 s, the whole budget "
+                             "(--remote-cache-budget); the rest of this build does not use it");
+}
+
+TEST(RemoteCache, CredentialsAreRedacted) {
+  EXPECT_EQ(redacted_url("https://alice:pw@host:8080/cache"), "https://***@host:8080/cache");
+  EXPECT_EQ(redacted_url("http://token@host/c"), "http://***@host/c");
+  EXPECT_EQ(redacted_url("http://host/a@b"), "http://host/a@b") << "an @ in the path is not userinfo";
+  EXPECT_EQ(without_credentials("Failed for alice:pw and pw", "http://alice:pw@host"), "Failed for *** and ***");
+  Fixture f;
+  RemoteCache cache("http://alice:pw@host/cache", false, std::make_unique<FakeHttp>(), {});
+  EXPECT_EQ(cache.shown_url(), "http://***@host/cache");
+}
+
+TEST(RemoteCache, ServerTextIsPrintable) {
+  EXPECT_EQ(printable("ok\x1b[31mred\n\tend\\"), "ok\\x1b[31mred\\n\\tend\\\\");
+  EXPECT_EQ(printable("caf\xc3\xa9"), "caf\\xc3\\xa9");
+  EXPECT_EQ(printable(std::string(10, 'a'), 4), "aaaa ... (6 more bytes)");
+}
+
+TEST(RemoteCache, UrlsWithQueryOrFragmentAreRefused) {
+  EXPECT_FALSE(is_remote_cache_url("http://host/cache?x=1"));
+  EXPECT_FALSE(is_remote_cache_url("http://host/cache#frag"));
+  EXPECT_NE(remote_cache_url_problem("http://host/cache?x=1").find("query or fragment"), std::string::npos);
 }
 
 }  // namespace

@@ -13,9 +13,11 @@
 #include <optional>
 #include <sstream>
 
+#include "apache_server.h"
 #include "cache.h"
 #include "http_client.h"
 #include "nginx_server.h"
+#include "remote_builds.h"
 #include "shadergen/build.h"
 #include "shadergen/cli.h"
 #include "test_helpers.h"
@@ -29,61 +31,12 @@ using testsupport::NginxServer;
 
 const std::string kTail = "; the rest of this build does not use it";
 
-struct RemoteBuild {
-  std::optional<BuildSummary> summary;  // nullopt: the build failed (see `errors`)
-  std::string errors;
-  std::vector<std::string> warnings;
-  std::map<std::string, std::string> output;
-};
+using sgtest::build_toy;
+using sgtest::build_toy_with;
+using sgtest::reference_output;
+using sgtest::RemoteBuild;
 
-using ProgressHook = std::function<void(const std::string&)>;
-
-// One build of the toy domain into <dir>/<name>.out with the local cache <dir>/<name>.cache, one
-// job at a time. `on_progress` sees every progress line (-v), on the compiling thread.
-RemoteBuild build_toy(const fs::path& dir, const std::string& name, const std::string& url, bool read_only = false,
-                      const ProgressHook& on_progress = {}) {
-  BuildOptions options;
-  options.spec_path = sgtest::toy_spec();
-  options.out_dir = dir / (name + ".out");
-  options.cache_dir = dir / (name + ".cache");
-  options.jobs = 1;
-  options.verbose = true;
-  options.remote_cache_url = url;
-  options.remote_cache_read_only = read_only;
-  RemoteBuild result;
-  options.log = [&](const std::string& line) {
-    if (line.rfind("warning: ", 0) == 0)
-      result.warnings.push_back(line);
-    else if (on_progress)
-      on_progress(line);
-  };
-  auto summary = build(options);
-  if (summary)
-    result.summary = *summary;
-  else
-    result.errors = summary.errors().front().to_string();
-  result.output = sgtest::snapshot(options.out_dir);
-  return result;
-}
-
-// What every build must produce: the toy domain built here, without any cache.
-std::map<std::string, std::string> reference_output(const fs::path& dir) {
-  BuildOptions options;
-  options.spec_path = sgtest::toy_spec();
-  options.out_dir = dir / "reference.out";
-  options.use_cache = false;
-  options.jobs = 1;
-  EXPECT_TRUE(build(options).ok());
-  return sgtest::snapshot(options.out_dir);
-}
-
-std::vector<fs::path> stored_objects(const NginxServer& server) {
-  std::vector<fs::path> objects;
-  for (const auto& entry : fs::recursive_directory_iterator(server.data_dir()))
-    if (entry.is_regular_file()) objects.push_back(entry.path());
-  std::sort(objects.begin(), objects.end());
-  return objects;
-}
+std::vector<fs::path> stored_objects(const NginxServer& server) { return sgtest::files_under(server.data_dir()); }
 
 #define START_SERVER(server, ...)  \
   NginxServer server(__VA_ARGS__); \
@@ -276,6 +229,99 @@ TEST(RemoteCacheServer, CliReadsTheEnvironmentAndReportsCounts) {
   EXPECT_EQ(err.str(),
             "shadergen: error: --remote-cache: \"ftp://host/cache\" is not an http:// or https:// URL "
             "(set by the option or SHADERGEN_REMOTE_CACHE)\n");
+}
+
+// Apache's mod_dav refuses a PUT into a collection that does not exist (409): the client creates
+// <url>/<prefix>/ with MKCOL and sends the PUT again, so its cache fills like nginx's.
+TEST(RemoteCacheServer, ApacheModDavFillsAndServes) {
+  sgtest::TempDir run_dir("run");
+  const fs::path& dir = run_dir.path();
+  testsupport::ApacheServer server(dir / "apache");
+  ASSERT_TRUE(server.running()) << server.error();
+  RemoteBuild first = build_toy(dir, "first", server.url());
+  ASSERT_TRUE(first.summary) << first.errors;
+  EXPECT_TRUE(first.warnings.empty()) << first.warnings.front();
+  EXPECT_EQ(first.summary->remote_uploaded, 13u);
+  EXPECT_EQ(sgtest::files_under(server.data_dir()).size(), 13u);
+  EXPECT_GE(sgtest::count_of(sgtest::read_file(server.access_log()), "MKCOL "), 1u);
+
+  RemoteBuild second = build_toy(dir, "second", server.url());
+  ASSERT_TRUE(second.summary) << second.errors;
+  EXPECT_EQ(second.summary->compiled, 0u);
+  EXPECT_EQ(second.summary->remote_fetched, 13u);
+  EXPECT_TRUE(second.warnings.empty());
+  EXPECT_EQ(second.output, reference_output(dir));
+}
+
+// With a secret, CI's uploads are signed and a reader with the same secret takes them; entries
+// written without it, or signed with another, are compiled here (one warning), cold-build bytes.
+TEST(RemoteCacheServer, SignedEntriesNeedTheSecret) {
+  sgtest::TempDir run_dir("run");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  auto with_secret = [](std::string secret) {
+    return [secret](BuildOptions& options) { options.remote_cache_secret = secret; };
+  };
+  ASSERT_TRUE(build_toy_with(dir, "ci", server.url(), with_secret("team secret")).summary);
+  const auto expected = reference_output(dir);
+
+  RemoteBuild developer = build_toy_with(dir, "developer", server.url(), with_secret("team secret"));
+  ASSERT_TRUE(developer.summary) << developer.errors;
+  EXPECT_EQ(developer.summary->remote_fetched, 13u);
+  EXPECT_TRUE(developer.warnings.empty());
+  EXPECT_EQ(developer.output, expected);
+
+  RemoteBuild outsider = build_toy_with(dir, "outsider", server.url(), [](BuildOptions& options) {
+    options.remote_cache_secret = "a guess";
+    options.remote_cache_read_only = true;
+  });
+  ASSERT_TRUE(outsider.summary) << outsider.errors;
+  EXPECT_EQ(outsider.summary->remote_fetched, 0u);
+  EXPECT_EQ(outsider.summary->compiled, 13u);
+  ASSERT_EQ(outsider.warnings.size(), 1u);
+  EXPECT_NE(outsider.warnings[0].find("is not signed with this build's secret"), std::string::npos)
+      << outsider.warnings[0];
+  EXPECT_EQ(outsider.output, expected);
+
+  // A reader without the secret takes the signed entries unchecked (its own trust decision).
+  RemoteBuild unchecked = build_toy(dir, "unchecked", server.url(), true);
+  ASSERT_TRUE(unchecked.summary) << unchecked.errors;
+  EXPECT_EQ(unchecked.summary->remote_fetched, 13u);
+  EXPECT_EQ(unchecked.output, expected);
+
+  // Entries written without the secret (someone who can write the server) are refused.
+  for (const fs::path& object : stored_objects(server)) fs::remove(object);
+  ASSERT_TRUE(build_toy(dir, "unsigned writer", server.url()).summary);
+  RemoteBuild refused = build_toy_with(dir, "refused", server.url(), with_secret("team secret"));
+  ASSERT_TRUE(refused.summary) << refused.errors;
+  EXPECT_EQ(refused.summary->remote_fetched, 0u);
+  EXPECT_EQ(refused.warnings.size(), 1u);
+  EXPECT_EQ(refused.output, expected);
+}
+
+// A machine whose local cache is warm fills an empty server (one HEAD per entry it does not
+// know the server has); once it knows, a warm build sends nothing.
+TEST(RemoteCacheServer, WarmAgentFillsAnEmptyServer) {
+  sgtest::TempDir run_dir("run");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  ASSERT_TRUE(build_toy(dir, "agent", "").summary) << "warm the local cache without any server";
+  RemoteBuild filling = build_toy(dir, "agent", server.url());
+  ASSERT_TRUE(filling.summary) << filling.errors;
+  EXPECT_EQ(filling.summary->compiled, 0u);
+  EXPECT_EQ(filling.summary->remote_uploaded, 13u);
+  EXPECT_EQ(stored_objects(server).size(), 13u);
+  EXPECT_TRUE(filling.warnings.empty());
+
+  const std::string log_before = sgtest::read_file(server.access_log());
+  RemoteBuild again = build_toy(dir, "agent", server.url());
+  ASSERT_TRUE(again.summary) << again.errors;
+  EXPECT_EQ(sgtest::read_file(server.access_log()), log_before) << "no request: the server has every entry";
+
+  RemoteBuild other = build_toy(dir, "other machine", server.url(), true);
+  ASSERT_TRUE(other.summary) << other.errors;
+  EXPECT_EQ(other.summary->remote_fetched, 13u);
+  EXPECT_EQ(other.output, reference_output(dir));
 }
 
 }  // namespace

@@ -86,4 +86,13 @@ TEST(Sha256Hex, LowercaseTwoDigitsPerByte) {
   EXPECT_EQ(shadergen::to_hex(bytes), "000fa0ff");
 }
 
+// RFC 4231 test cases 2 (a short key) and 6 (a key longer than the block, hashed first).
+TEST(HmacSha256, MatchesRfc4231) {
+  EXPECT_EQ(shadergen::to_hex(shadergen::hmac_sha256("Jefe", "what do ya want for nothing?")),
+            "5bdcc146bf60754e6a042426089575c75a003f089d2739839dec58b964ec3843");
+  EXPECT_EQ(shadergen::to_hex(shadergen::hmac_sha256(std::string(131, '\xaa'),
+                                                     "Test Using Larger Than Block-Size Key - Hash Key First")),
+            "60e431591ee0b67f0d8a26aacbf5b77f8e0bc6213728c5140546040f0ee37f54");
+}
+
 }  // namespace

@@ -1,0 +1,21 @@
+// entry_check.h - whether a blob from a remote cache is fit for a build: it validates for the
+// build's target environment, its entry point is of the expected stage, and it reflects.
+//
+// This catches random words behind a recomputed checksum and shaders of another stage; a valid
+// shader of the right stage from elsewhere can only be caught when the build's checks of the
+// whole domain fail (compile_domain then compiles the server's entries here), or by signed
+// entries (signed_entry.h), which keep out anyone without the team's secret.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "shadergen/domain.h"
+
+namespace shadergen {
+
+// Empty when fit, else why not (the validator's or reflection's message, or the stage found).
+std::string unfit_reason(std::span<const std::uint32_t> words, Stage stage, TargetEnv env);
+
+}  // namespace shadergen
