@@ -4,14 +4,15 @@
 // It starts its own nginx (WebDAV PUT, 127.0.0.1, a free port, files under the work folder; the
 // same server the tests use) and runs, each repetition, with an empty local cache every time:
 //   a) `shadergen build -j 2` without a remote cache (cold: everything compiled);
-//   b) the same with `--remote-cache URL` against an empty server (cold, and every entry uploaded:
-//      what the first CI build pays);
+//   b) the same with `--remote-cache URL --remote-cache-secret-file F` against an empty server
+//      (cold, and every entry and the input set uploaded, signed: what the first CI build pays);
 //   c) the same again, other local cache, same server (served: every entry fetched, 0 compiled).
 // Every step is a separate process, timed from start to exit. Prints the medians and the ratio.
 // Exits 1 if a step fails, (b) did not upload every source, (c) compiled anything or fetched
 // fewer, or an output differs from (a)'s, so a one-repetition run is a smoke test.
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <regex>
@@ -125,7 +126,12 @@ class RemoteBench {
                                   "2",
                                   "--cache-dir",
                                   (o_.work / (name + ".cache")).string()};
-    if (remote) args.insert(args.end(), {"--remote-cache", url_});
+    // Signed, as CI and developers sharing a secret run it: the served build then also takes the
+    // input set (the content keys of this spec's inputs) from the server and skips preprocessing.
+    if (remote) {
+      std::ofstream(o_.work / "secret") << "shadergen_remote_bench secret\n";
+      args.insert(args.end(), {"--remote-cache", url_, "--remote-cache-secret-file", (o_.work / "secret").string()});
+    }
     return args;
   }
 

@@ -3,6 +3,7 @@
 #include <glslang/build_info.h>
 #include <spirv-tools/libspirv.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -131,25 +132,39 @@ std::optional<CachedBlob> ContentCache::load(std::string_view key) const {
 
 namespace {
 
-std::filesystem::path marker_path(const std::filesystem::path& directory, std::string_view server,
-                                  std::string_view key) {
-  return directory / "remote" / sha256_hex(server).substr(0, 16) / std::string(key.substr(0, 2)) / std::string(key);
+std::filesystem::path server_keys_path(const std::filesystem::path& directory, std::string_view server) {
+  return directory / "remote" / (sha256_hex(server).substr(0, 16) + ".keys");
+}
+
+bool is_key(std::string_view text) {
+  return text.size() == kKeyLength && text.find_first_not_of("0123456789abcdef") == std::string_view::npos;
 }
 
 }  // namespace
 
-bool ContentCache::server_has(std::string_view server, std::string_view key) const {
-  std::error_code ec;
-  return enabled() && key.size() == kKeyLength && std::filesystem::exists(marker_path(directory_, server, key), ec);
+std::set<std::string> ContentCache::keys_on_server(std::string_view server) const {
+  std::set<std::string> keys;
+  if (!enabled()) return keys;
+  auto text = read_file(server_keys_path(directory_, server));
+  if (!text) return keys;
+  std::string_view rest = text.value();
+  while (!rest.empty()) {
+    std::size_t end = std::min(rest.find('\n'), rest.size());
+    if (is_key(rest.substr(0, end))) keys.emplace(rest.substr(0, end));
+    rest.remove_prefix(std::min(end + 1, rest.size()));
+  }
+  return keys;
 }
 
-// Best effort: a marker that cannot be written only costs one existence check later.
-void ContentCache::note_server_has(std::string_view server, std::string_view key) const {
-  if (!enabled() || key.size() != kKeyLength || server_has(server, key)) return;
-  std::filesystem::path path = marker_path(directory_, server, key);
+void ContentCache::remember_keys_on_server(std::string_view server, const std::set<std::string>& keys) const {
+  if (!enabled()) return;
+  std::filesystem::path path = server_keys_path(directory_, server);
+  std::string text;
+  text.reserve(keys.size() * (kKeyLength + 1));
+  for (const std::string& key : keys) text += key + "\n";
   std::error_code ec;
   std::filesystem::create_directories(path.parent_path(), ec);
-  if (!ec) (void)write_file_atomic(path, "");
+  if (!ec) (void)write_file_atomic(path, text, /*durable=*/false);
 }
 
 Status ContentCache::store(std::string_view key, const CachedBlob& blob) const {
@@ -158,7 +173,9 @@ Status ContentCache::store(std::string_view key, const CachedBlob& blob) const {
   std::error_code ec;
   std::filesystem::create_directories(path.parent_path(), ec);
   if (ec) return make_error(path.parent_path().string(), 0, "cannot create cache folder: " + ec.message());
-  return write_file_atomic(path, encode_cache_entry(key, blob));
+  // Not synced: an entry checks itself on read, so one torn by a crash is only a miss, and a
+  // build served by the remote cache writes hundreds of them.
+  return write_file_atomic(path, encode_cache_entry(key, blob), /*durable=*/false);
 }
 
 }  // namespace shadergen

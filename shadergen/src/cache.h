@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,12 +39,13 @@ class ContentCache {
 
   std::filesystem::path entry_path(std::string_view key) const;
 
-  // What this machine knows a remote cache holds (it sent or received the entry): an empty
-  // marker file per server and key, so that a warm build offers the server only what it may
-  // lack, and a build whose every entry the server has sends no request at all. `server` is any
-  // stable name of the server (its URL without credentials).
-  bool server_has(std::string_view server, std::string_view key) const;
-  void note_server_has(std::string_view server, std::string_view key) const;
+  // What this machine knows a remote cache holds (it sent or received those entries): one
+  // file of keys per server, read once and written once per build, so that a warm build offers
+  // the server only what it may lack, and sends nothing once the server has everything.
+  // `server` is any stable name of the server (its URL without credentials). Best effort: a
+  // list that cannot be read or written only costs existence checks later.
+  std::set<std::string> keys_on_server(std::string_view server) const;
+  void remember_keys_on_server(std::string_view server, const std::set<std::string>& keys) const;
 
  private:
   std::filesystem::path directory_;

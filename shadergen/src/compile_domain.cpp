@@ -124,6 +124,7 @@ class DomainCompiler {
       clock.lap("strip debug");
     }
     remember_inputs();
+    clock.lap("remember");
     return Ok{};
   }
 
@@ -205,17 +206,32 @@ class DomainCompiler {
   // A remote entry reaches the local cache only once the whole build has used it: the local
   // cache never holds what the checks would reject.
   void keep_remote_hits() {
-    for (std::size_t s = 0; s < d_.sources.size(); ++s) {
+    parallel_for(d_.sources.size(), options_.jobs, [&](std::size_t s) {
       const SourceRecord& record = d_.sources[s];
-      if (!record.remote_hit) continue;
+      if (!record.remote_hit) return;
       const Blob& blob = d_.blobs[static_cast<std::size_t>(record.blob)];
       store_local(record.key, CachedBlob{blob.words, blob.fell_back, blob.fallback_reason});
-      if (options_.cache) options_.cache->note_server_has(server(), record.key);
-    }
+      note_server_has(record.key);
+    });
+    if (options_.cache && options_.remote && server_keys_changed_)
+      options_.cache->remember_keys_on_server(options_.remote->shown_url(), server_keys_);
   }
 
-  // The remote cache's name in the local cache's notes of what it holds.
-  const std::string& server() const { return options_.remote->shown_url(); }
+  // What the local cache knows the server holds, read on first use.
+  bool server_has(const std::string& key) {
+    std::lock_guard lock(server_keys_mutex_);
+    if (!server_keys_loaded_ && options_.cache)
+      server_keys_ = options_.cache->keys_on_server(options_.remote->shown_url());
+    server_keys_loaded_ = true;
+    return server_keys_.count(key) > 0;
+  }
+
+  void note_server_has(const std::string& key) {
+    if (!server_has(key)) {
+      std::lock_guard lock(server_keys_mutex_);
+      server_keys_changed_ = server_keys_.insert(key).second || server_keys_changed_;
+    }
+  }
 
   Status cancelled_error() const { return make_error("build interrupted"); }
 
@@ -235,6 +251,7 @@ class DomainCompiler {
   bool reuse_inputs() {
     if (!options_.inputs || options_.input_key.empty()) return false;
     auto set = options_.inputs->load(options_.input_key);
+    if (!set) set = remote_input_set();
     if (!set || set->source_keys.size() != d_.jobs.size() || !inputs_unchanged(set->files)) return false;
     std::map<std::string, int> by_key;
     for (std::size_t i = 0; i < d_.jobs.size(); ++i) assign_source(i, set->source_keys[i], by_key);
@@ -245,14 +262,34 @@ class DomainCompiler {
     return true;
   }
 
+  // The signed input set another machine of the team remembered (RemoteCache::load_input_set):
+  // a served build then skips preprocessing too. Checked like a local one before use.
+  std::optional<InputSet> remote_input_set() {
+    if (!options_.remote || options_.input_key.empty()) return std::nullopt;
+    auto bytes = options_.remote->load_input_set(options_.input_key);
+    if (!bytes) return std::nullopt;
+    auto set = decode_input_set(options_.input_key, *bytes);
+    if (set) remote_input_set_ = *bytes;
+    return set;
+  }
+
   void remember_inputs() {
-    if (d_.inputs_reused || !reads_ || !options_.inputs || options_.input_key.empty()) return;
+    if (!options_.inputs || options_.input_key.empty()) return;
+    // An input set from the server is kept here once the build has used it successfully.
+    if (d_.inputs_reused && remote_input_set_) {
+      if (auto set = decode_input_set(options_.input_key, *remote_input_set_))
+        (void)options_.inputs->store(options_.input_key, *set);
+      return;
+    }
+    if (d_.inputs_reused || !reads_) return;
     InputSet set{std::move(*reads_), {}};
     for (const CompileJob& job : d_.jobs)
       set.source_keys.push_back(d_.sources[static_cast<std::size_t>(job.source)].key);
     // Like the content cache: failing to remember only costs time later.
     if (Status stored = options_.inputs->store(options_.input_key, set); !stored)
       log("warning: " + stored.errors().front().to_string());
+    if (options_.remote && !remote_distrusted_)
+      options_.remote->store_input_set(options_.input_key, encode_input_set(options_.input_key, set));
   }
 
   Status preprocess_all() {
@@ -287,14 +324,15 @@ class DomainCompiler {
   }
 
   // Locally, then remotely (a local hit is offered to the server, which may lack it). A remote
-  // entry is used only if its SPIR-V validates for this build's target and reflects as its
-  // stage; it is kept locally once the build has checked it (keep_remote_hits).
+  // entry is used only if its SPIR-V validates for this build's target and has an entry point of
+  // its stage (entry_check.h); the build then reflects it and checks the layout with the rest,
+  // and keeps it locally only once all of that passed (keep_remote_hits).
   std::optional<CachedBlob> load_cached(SourceRecord& record) {
     std::optional<CachedBlob> hit;
     if (options_.cache) hit = options_.cache->load(record.key);
-    if (hit && options_.remote && !options_.remote->read_only() && !options_.cache->server_has(server(), record.key) &&
+    if (hit && options_.remote && !options_.remote->read_only() && !server_has(record.key) &&
         options_.remote->offer(record.key, *hit))
-      options_.cache->note_server_has(server(), record.key);
+      note_server_has(record.key);
     if (!hit && options_.remote && !remote_distrusted_ &&
         (hit = options_.remote->load(record.key, fit_check(d_.jobs[record.first_job].stage))))
       record.remote_hit = true;
@@ -302,8 +340,19 @@ class DomainCompiler {
     return hit;
   }
 
-  RemoteCache::Check fit_check(Stage stage) const {
-    return [env = d_.spec.target_env, stage](const CachedBlob& blob) { return unfit_reason(blob.words, stage, env); };
+  // Remote entries are validated once per distinct blob and stage: many sources share a blob.
+  RemoteCache::Check fit_check(Stage stage) {
+    return [this, stage](const CachedBlob& blob) {
+      std::string id = sha256_hex(blob.words) + std::string(stage_name(stage));
+      {
+        std::lock_guard lock(checked_mutex_);
+        if (auto found = checked_.find(id); found != checked_.end()) return found->second;
+      }
+      std::string reason = unfit_reason(blob.words, stage, d_.spec.target_env);
+      std::lock_guard lock(checked_mutex_);
+      checked_.emplace(std::move(id), reason);
+      return reason;
+    };
   }
 
   void store_local(const std::string& key, const CachedBlob& blob) {
@@ -338,8 +387,7 @@ class DomainCompiler {
     record.compile_ms = milliseconds_since(start);
     CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
     store_local(record.key, blob);
-    if (options_.remote && !remote_distrusted_ && options_.remote->store(record.key, blob) && options_.cache)
-      options_.cache->note_server_has(server(), record.key);
+    if (options_.remote && !remote_distrusted_ && options_.remote->store(record.key, blob)) note_server_has(record.key);
     return blob;
   }
 
@@ -513,6 +561,12 @@ class DomainCompiler {
   CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
   std::optional<std::vector<InputRead>> reads_;          // what preprocessing read; nullopt: inconsistent
   bool remote_distrusted_ = false;                       // its entries failed the checks together
+  std::optional<std::string> remote_input_set_;          // the bytes of the input set the server gave
+  std::mutex checked_mutex_;                             // guards checked_
+  std::map<std::string, std::string> checked_;           // blob hash + stage -> unfit_reason()
+  std::mutex server_keys_mutex_;                         // guards the three below
+  std::set<std::string> server_keys_;                    // keys the remote cache is known to hold
+  bool server_keys_loaded_ = false, server_keys_changed_ = false;
 };
 
 }  // namespace

@@ -1,5 +1,6 @@
 // entry_check.h - whether a blob from a remote cache is fit for a build: it validates for the
-// build's target environment, its entry point is of the expected stage, and it reflects.
+// build's target environment and its entry point is of the expected stage. (Reflection follows
+// in the build itself, before any remote blob is used or kept locally: compile_domain.cpp.)
 //
 // This catches random words behind a recomputed checksum and shaders of another stage; a valid
 // shader of the right stage from elsewhere can only be caught when the build's checks of the
@@ -15,7 +16,7 @@
 
 namespace shadergen {
 
-// Empty when fit, else why not (the validator's or reflection's message, or the stage found).
+// Empty when fit, else why not (the validator's message, or the missing stage).
 std::string unfit_reason(std::span<const std::uint32_t> words, Stage stage, TargetEnv env);
 
 }  // namespace shadergen

@@ -40,8 +40,8 @@ Result<std::string> read_file(const std::filesystem::path& path) {
   return bytes;
 }
 
-Status write_file_atomic(const std::filesystem::path& path, std::string_view bytes) {
-  std::optional<atomic_file::Failure> failure = atomic_file::write(path, bytes);
+Status write_file_atomic(const std::filesystem::path& path, std::string_view bytes, bool durable) {
+  std::optional<atomic_file::Failure> failure = atomic_file::write(path, bytes, durable);
   if (!failure) return Ok{};
   // Named after the output the user asked for, never the temporary that no longer exists.
   const char* what = failure->step == atomic_file::Failure::Step::create  ? "cannot write: "

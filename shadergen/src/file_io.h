@@ -16,7 +16,8 @@ Result<std::string> read_file(const std::filesystem::path& path);
 // renamed over it) in shadergen's error model: readers see the old file or the new one, never a
 // part. Errors name `path`: "cannot write: <reason>", "write failed: <reason>" (a short write,
 // such as a full disk) or "cannot replace: <reason>".
-Status write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
+// `durable` = false skips the sync to disk: for files that verify themselves on read.
+Status write_file_atomic(const std::filesystem::path& path, std::string_view bytes, bool durable = true);
 
 // True when `path` exists and holds exactly `bytes`.
 bool file_has_bytes(const std::filesystem::path& path, std::string_view bytes);

@@ -157,7 +157,8 @@ Status InputCache::store(std::string_view key, const InputSet& set) const {
   std::error_code ec;
   std::filesystem::create_directories(directory_, ec);
   if (ec) return make_error(directory_.string(), 0, "cannot create cache folder: " + ec.message());
-  return write_file_atomic(entry_path(key), encode_input_set(key, set));
+  // Not synced, like content entries: it checks itself on read.
+  return write_file_atomic(entry_path(key), encode_input_set(key, set), /*durable=*/false);
 }
 
 }  // namespace shadergen

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "file_io.h"
+#include "thread_pool.h"
 
 #include <atomic_file/atomic_file.h>
 
@@ -87,7 +88,9 @@ bool StagedOutput::unchanged() const {
 
 Status StagedOutput::stage(const fs::path& staging) const {
   std::error_code ec;
-  for (const auto& [relative, bytes] : files_) {
+  std::vector<const std::pair<const std::string, std::string>*> to_write;
+  for (const auto& file : files_) {
+    const auto& [relative, bytes] = file;
     fs::path target = staging / relative;
     fs::create_directories(target.parent_path(), ec);
     if (ec) return make_error((out_dir_ / relative).parent_path().string(), 0, "cannot create folder: " + ec.message());
@@ -97,9 +100,18 @@ Status StagedOutput::stage(const fs::path& staging) const {
       if (!ec) continue;  // otherwise fall through and write a copy
       ec.clear();
     }
-    if (Status written = write_file_atomic(target, bytes); !written)
-      return renamed(std::move(written), out_dir_ / relative);
+    to_write.push_back(&file);
   }
+  // Each write waits for its sync to the disk, not for a processor: several in flight finish
+  // far sooner than one after another (a build served by the remote cache spends most of its
+  // time here otherwise).
+  constexpr unsigned kWriters = 8;
+  std::vector<Status> written(to_write.size(), Status(Ok{}));
+  parallel_for(to_write.size(), kWriters, [&](std::size_t i) {
+    written[i] = write_file_atomic(staging / to_write[i]->first, to_write[i]->second);
+  });
+  for (std::size_t i = 0; i < written.size(); ++i)
+    if (!written[i]) return renamed(std::move(written[i]), out_dir_ / to_write[i]->first);
   return Ok{};
 }
 

@@ -52,19 +52,12 @@ RemoteCache::RemoteCache(std::string url, bool read_only, std::unique_ptr<HttpCl
 std::string RemoteCache::entry_url(std::string_view key) const { return url_ + "/" + relative_entry(key); }
 
 std::optional<CachedBlob> RemoteCache::load(std::string_view key, const Check& check) {
-  auto response = send("GET", key, entry_url(key));
-  if (!response) return std::nullopt;
-  if (response->status == 404) {
-    ++missed_;
-    return std::nullopt;
-  }
-  if (response->status != 200) {
-    turn_off("GET", key, "HTTP " + std::to_string(response->status));
-    return std::nullopt;
-  }
-  auto entry = body_entry(response->body);
+  const std::string relative = relative_entry(key);
+  auto body = fetch(relative);
+  if (!body) return std::nullopt;
+  auto entry = body_entry(*body);
   if (!entry) {
-    reject(key,
+    reject(relative,
            "is not signed with this build's secret (SHADERGEN_REMOTE_CACHE_SECRET or "
            "--remote-cache-secret-file)");
     return std::nullopt;
@@ -72,15 +65,44 @@ std::optional<CachedBlob> RemoteCache::load(std::string_view key, const Check& c
   // The one verification local entries get too: magic, key, sizes and checksum.
   auto blob = decode_cache_entry(key, *entry);
   if (!blob) {
-    reject(key, "is not a valid entry (truncated, corrupted, foreign or from another version)");
+    reject(relative, "is not a valid entry (truncated, corrupted, foreign or from another version)");
     return std::nullopt;
   }
   if (std::string unfit = check ? check(*blob) : std::string(); !unfit.empty()) {
-    reject(key, "holds SPIR-V unfit for this build (" + printable(unfit) + ")");
+    reject(relative, "holds SPIR-V unfit for this build (" + printable(unfit) + ")");
     return std::nullopt;
   }
   ++fetched_;
   return blob;
+}
+
+// The body of a 200, or nullopt: a 404 (counted as a miss) or a failure (the cache turns off).
+std::optional<std::string> RemoteCache::fetch(const std::string& relative) {
+  auto response = send("GET", relative);
+  if (!response) return std::nullopt;
+  if (response->status == 404) {
+    ++missed_;
+    return std::nullopt;
+  }
+  if (response->status != 200) {
+    turn_off("GET", relative, "HTTP " + std::to_string(response->status));
+    return std::nullopt;
+  }
+  return std::move(response->body);
+}
+
+std::optional<std::string> RemoteCache::load_input_set(std::string_view key) {
+  if (!signs()) return std::nullopt;
+  auto body = fetch("inputs/" + std::string(key));
+  if (!body) return std::nullopt;
+  auto entry = verified_entry(*body, settings_.secret);
+  if (!entry) return std::nullopt;  // unsigned: preprocess as without it
+  return std::string(*entry);
+}
+
+void RemoteCache::store_input_set(std::string_view key, std::string_view bytes) {
+  if (!signs() || settings_.read_only || off_.load()) return;
+  (void)put("inputs/" + std::string(key), signed_entry(bytes, settings_.secret));
 }
 
 // The entry inside a response body: it must carry a valid signature when there is a secret.
@@ -92,56 +114,57 @@ std::optional<std::string> RemoteCache::body_entry(std::string_view body) const 
 }
 
 bool RemoteCache::store(std::string_view key, const CachedBlob& blob) {
-  if (settings_.read_only || off_.load() || !put_entry(key, blob)) return false;
+  if (settings_.read_only || off_.load()) return false;
+  std::string entry = encode_cache_entry(key, blob);
+  if (!put(relative_entry(key), signs() ? signed_entry(entry, settings_.secret) : std::move(entry))) return false;
   ++uploaded_;
   return true;
 }
 
 bool RemoteCache::offer(std::string_view key, const CachedBlob& blob) {
   if (settings_.read_only || off_.load()) return false;
-  auto response = send("HEAD", key, entry_url(key));
+  const std::string relative = relative_entry(key);
+  auto response = send("HEAD", relative);
   if (!response) return false;
   if (response->status == 404) return store(key, blob);
   if (response->status >= 200 && response->status <= 299) return true;
-  turn_off("HEAD", key, "HTTP " + std::to_string(response->status));
+  turn_off("HEAD", relative, "HTTP " + std::to_string(response->status));
   return false;
 }
 
-bool RemoteCache::put_entry(std::string_view key, const CachedBlob& blob) {
-  std::string entry = encode_cache_entry(key, blob);
-  std::string body = signs() ? signed_entry(entry, settings_.secret) : std::move(entry);
-  auto response = send("PUT", key, entry_url(key), body);
+bool RemoteCache::put(const std::string& relative, std::string_view body) {
+  auto response = send("PUT", relative, body);
   if (!response) return false;
   // 409: the collection <key[0:2]> (or the cache's own) does not exist yet.
-  if (response->status == 409 && create_collections(key)) response = send("PUT", key, entry_url(key), body);
+  if (response->status == 409 && create_collections(relative)) response = send("PUT", relative, body);
   if (!response) return false;
   if (response->status < 200 || response->status > 299) {
-    turn_off("PUT", key, "HTTP " + std::to_string(response->status));
+    turn_off("PUT", relative, "HTTP " + std::to_string(response->status));
     return false;
   }
   return true;
 }
 
-// MKCOL <url>/<key[0:2]>/, creating <url>/ first when that is missing too (409 again). 405
-// means it exists already (another thread made it): fine.
-bool RemoteCache::create_collections(std::string_view key) {
-  const std::string prefix = url_ + "/" + std::string(key.substr(0, 2)) + "/";
-  auto made = send("MKCOL", key, prefix);
+// MKCOL the collection holding `relative` (<url>/<key[0:2]>/), creating <url>/ first when that
+// is missing too (409 again). 405 means it exists already (another thread made it): fine.
+bool RemoteCache::create_collections(const std::string& relative) {
+  const std::string collection = relative.substr(0, relative.rfind('/') + 1);
+  auto made = send("MKCOL", collection);
   if (made && made->status == 409) {
-    auto root = send("MKCOL", key, url_ + "/");
-    if (!root) return false;
-    made = send("MKCOL", key, prefix);
+    if (!send("MKCOL", "")) return false;
+    made = send("MKCOL", collection);
   }
   if (!made) return false;
   if ((made->status < 200 || made->status > 299) && made->status != 405) {
-    turn_off("MKCOL", key, "HTTP " + std::to_string(made->status));
+    turn_off("MKCOL", collection, "HTTP " + std::to_string(made->status));
     return false;
   }
   return true;
 }
 
-// One request within the budget; nullopt when it got no answer (then the cache is off).
-std::optional<HttpResponse> RemoteCache::send(std::string_view method, std::string_view key, const std::string& url,
+// One request for <url>/<relative> within the budget; nullopt when it got no answer (then the
+// cache is off).
+std::optional<HttpResponse> RemoteCache::send(std::string_view method, const std::string& relative,
                                               std::string_view body) {
   if (off_.load()) return std::nullopt;
   std::chrono::milliseconds limit = begin_request();
@@ -150,13 +173,15 @@ std::optional<HttpResponse> RemoteCache::send(std::string_view method, std::stri
     budget_spent();
     return std::nullopt;
   }
+  const std::string url = url_ + "/" + relative;
   auto response = http_->send(HttpRequest{method, url, body, limit});
   end_request();
   if (response) return std::move(response).value();
-  if (waited() >= settings_.budget)
+  // A request cut short to fit the budget failed because the budget ran out, whatever curl says.
+  if (limit < settings_.request_limit || waited() >= settings_.budget)
     budget_spent();
   else
-    turn_off(method, key, without_credentials(response.errors().front().message, url_));
+    turn_off(method, relative, without_credentials(response.errors().front().message, url_));
   return std::nullopt;
 }
 
@@ -189,10 +214,10 @@ void RemoteCache::warn(const std::string& line) const {
 }
 
 // Requests already in flight on other threads may fail too: they are counted, not warned.
-void RemoteCache::turn_off(std::string_view method, std::string_view key, const std::string& failure) {
+void RemoteCache::turn_off(std::string_view method, std::string_view relative, const std::string& failure) {
   ++failed_;
   if (off_.exchange(true)) return;
-  warn("warning: remote cache " + shown_url_ + ": " + std::string(method) + " " + relative_entry(key) + ": " +
+  warn("warning: remote cache " + shown_url_ + ": " + std::string(method) + " " + std::string(relative) + ": " +
        printable(failure) + "; the rest of this build does not use it");
 }
 
@@ -212,10 +237,10 @@ void RemoteCache::distrust(const std::string& why) {
        "); compiled here instead, and the rest of this build does not use it");
 }
 
-void RemoteCache::reject(std::string_view key, const std::string& why) {
+void RemoteCache::reject(std::string_view relative, const std::string& why) {
   ++failed_;
   if (rejected_once_.exchange(true)) return;
-  warn("warning: remote cache " + shown_url_ + ": " + relative_entry(key) + " " + why + "; compiled here instead");
+  warn("warning: remote cache " + shown_url_ + ": " + std::string(relative) + " " + why + "; compiled here instead");
 }
 
 }  // namespace shadergen

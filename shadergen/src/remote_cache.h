@@ -9,9 +9,10 @@
 //
 // What the server says is not trusted. An entry is used only when it decodes like a local
 // entry (magic, key, sizes, checksum), carries a valid signature when a secret is set, and
-// passes the caller's check (the build validates and reflects its SPIR-V). A rejected entry
-// prints one warning (the first only) naming the server and is compiled here; it keeps the
-// remote cache on: one bad object says nothing about the others.
+// passes the caller's check (the build validates its SPIR-V for the target and the stage, and
+// reflects it before use). A rejected entry prints one warning (the first only) naming the
+// server and is compiled here; it keeps the remote cache on: one bad object says nothing about
+// the others.
 //
 // The network never fails a build, and never costs it more than the time budget. The first
 // request that gets no answer, or an answer other than the entry or 404 (GET/HEAD) or 2xx (PUT),
@@ -78,6 +79,13 @@ class RemoteCache {
   // Uploads the entry if the server lacks it (a HEAD answered 404): how a machine whose local
   // cache is warm fills an empty server. True when the server holds the entry now.
   bool offer(std::string_view key, const CachedBlob& blob);
+  // The input-set entry of `key` (input_cache.h) at <url>/inputs/<key>, signed like entries;
+  // only with a secret (nullopt without one, and for unsigned or wrongly signed bodies). An
+  // input set maps the bytes of every file a build reads to the content keys, so a server
+  // writer could redirect a build to other (valid) entries with it: unsigned ones are not used.
+  std::optional<std::string> load_input_set(std::string_view key);
+  // Uploads an input-set entry's bytes, signed; only with a secret and unless read-only or off.
+  void store_input_set(std::string_view key, std::string_view bytes);
   // Turns the remote cache off with one warning: the build found its entries unusable as a
   // whole (`why`, untrusted text allowed) and compiles them here.
   void distrust(const std::string& why);
@@ -91,14 +99,14 @@ class RemoteCache {
   RemoteCacheStats stats() const;
 
  private:
-  std::optional<HttpResponse> send(std::string_view method, std::string_view key, const std::string& url,
-                                   std::string_view body = {});
+  std::optional<HttpResponse> send(std::string_view method, const std::string& relative, std::string_view body = {});
+  std::optional<std::string> fetch(const std::string& relative);
   std::optional<std::string> body_entry(std::string_view body) const;
-  bool put_entry(std::string_view key, const CachedBlob& blob);
-  bool create_collections(std::string_view key);
-  void turn_off(std::string_view method, std::string_view key, const std::string& failure);
+  bool put(const std::string& relative, std::string_view body);
+  bool create_collections(const std::string& relative);
+  void turn_off(std::string_view method, std::string_view relative, const std::string& failure);
   void budget_spent();
-  void reject(std::string_view key, const std::string& why);
+  void reject(std::string_view relative, const std::string& why);
   void warn(const std::string& line) const;
 
   // The wall-clock time during which at least one request was in flight, so far.

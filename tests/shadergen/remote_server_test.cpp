@@ -12,6 +12,7 @@
 #include <chrono>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include "apache_server.h"
 #include "cache.h"
@@ -313,15 +314,44 @@ TEST(RemoteCacheServer, WarmAgentFillsAnEmptyServer) {
   EXPECT_EQ(stored_objects(server).size(), 13u);
   EXPECT_TRUE(filling.warnings.empty());
 
-  const std::string log_before = sgtest::read_file(server.access_log());
+  // nginx logs a request after answering it: wait for the 13 HEADs and 13 PUTs to be written.
+  auto log_lines = [&] { return sgtest::count_of(sgtest::read_file(server.access_log()), "\n"); };
+  for (int i = 0; i < 500 && log_lines() < 26; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_EQ(log_lines(), 26u);
   RemoteBuild again = build_toy(dir, "agent", server.url());
   ASSERT_TRUE(again.summary) << again.errors;
-  EXPECT_EQ(sgtest::read_file(server.access_log()), log_before) << "no request: the server has every entry";
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(log_lines(), 26u) << "no request: the server has every entry";
 
   RemoteBuild other = build_toy(dir, "other machine", server.url(), true);
   ASSERT_TRUE(other.summary) << other.errors;
   EXPECT_EQ(other.summary->remote_fetched, 13u);
   EXPECT_EQ(other.output, reference_output(dir));
+}
+
+// With a secret, the input set (the content keys of this spec's inputs) is shared too: a machine
+// with an empty local cache skips preprocessing. Without the secret it is neither sent nor used.
+TEST(RemoteCacheServer, SignedServerSharesTheInputSet) {
+  sgtest::TempDir run_dir("run");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  auto secret = [](BuildOptions& options) { options.remote_cache_secret = "team secret"; };
+  ASSERT_TRUE(build_toy(dir, "unsigned", server.url()).summary);
+  EXPECT_FALSE(fs::exists(server.data_dir() / "inputs")) << "an unsigned input set is never uploaded";
+  ASSERT_TRUE(build_toy_with(dir, "ci", server.url(), secret).summary);
+  EXPECT_EQ(sgtest::files_under(server.data_dir() / "inputs").size(), 1u);
+
+  RemoteBuild served = build_toy_with(dir, "developer", server.url(), secret);
+  ASSERT_TRUE(served.summary) << served.errors;
+  EXPECT_TRUE(served.summary->inputs_reused) << "no preprocessing";
+  EXPECT_EQ(served.summary->compiled, 0u);
+  EXPECT_TRUE(served.warnings.empty());
+  EXPECT_EQ(served.output, reference_output(dir));
+
+  RemoteBuild unsigned_reader = build_toy(dir, "no secret", server.url(), true);
+  ASSERT_TRUE(unsigned_reader.summary) << unsigned_reader.errors;
+  EXPECT_FALSE(unsigned_reader.summary->inputs_reused) << "without the secret the input set is not trusted";
+  EXPECT_EQ(unsigned_reader.summary->remote_fetched, 13u);
 }
 
 }  // namespace

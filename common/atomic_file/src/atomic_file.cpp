@@ -14,8 +14,8 @@ namespace {
 // errno after a failed call; EIO when the call failed without setting it (a short fwrite may).
 int last_error() { return errno != 0 ? errno : EIO; }
 
-// Writes, flushes and syncs `bytes` into a new file at `path`, and closes it.
-std::optional<Failure> write_whole_file(const fs::path& path, std::string_view bytes) {
+// Writes, flushes and (when `durable`) syncs `bytes` into a new file at `path`, and closes it.
+std::optional<Failure> write_whole_file(const fs::path& path, std::string_view bytes, bool durable) {
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (file == nullptr)
     return Failure{Failure::Step::create, path, std::error_code(last_error(), std::generic_category())};
@@ -26,7 +26,7 @@ std::optional<Failure> write_whole_file(const fs::path& path, std::string_view b
   // A full disk may only show up at the flush; fsync makes the rename publish written bytes
   // (EINVAL: a file system that cannot sync, such as some FUSE mounts, is not an error).
   if (reason == 0 && std::fflush(file) != 0) reason = last_error();
-  if (reason == 0 && ::fsync(::fileno(file)) != 0 && errno != EINVAL) reason = last_error();
+  if (reason == 0 && durable && ::fsync(::fileno(file)) != 0 && errno != EINVAL) reason = last_error();
   if (std::fclose(file) != 0 && reason == 0) reason = last_error();
   if (reason != 0) return Failure{Failure::Step::write, path, std::error_code(reason, std::generic_category())};
   return std::nullopt;
@@ -51,9 +51,9 @@ std::string temporary_name(std::string_view stem) {
   return "." + std::string(stem) + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
 }
 
-StagedFile::StagedFile(fs::path final_path, std::string_view bytes)
+StagedFile::StagedFile(fs::path final_path, std::string_view bytes, bool durable)
     : final_(std::move(final_path)), temporary_(final_.parent_path() / temporary_name(final_.filename().string())) {
-  failure_ = write_whole_file(temporary_, bytes);
+  failure_ = write_whole_file(temporary_, bytes, durable);
   if (failure_) {
     remove_quietly(temporary_);
     temporary_.clear();
@@ -80,8 +80,8 @@ std::optional<Failure> StagedFile::commit() {
   return std::nullopt;
 }
 
-std::optional<Failure> write(const fs::path& path, std::string_view bytes) {
-  StagedFile staged(path, bytes);
+std::optional<Failure> write(const fs::path& path, std::string_view bytes, bool durable) {
+  StagedFile staged(path, bytes, durable);
   if (staged.failure()) return staged.failure();
   return staged.commit();
 }

@@ -45,8 +45,10 @@ class StagedFile {
  public:
   // Writes `bytes` to the temporary file. Precondition: the final path's folder exists (a
   // missing one is reported as a `create` failure). On failure no temporary is left behind and
-  // failure() says why.
-  StagedFile(std::filesystem::path final_path, std::string_view bytes);
+  // failure() says why. `durable`: the bytes are synced to the disk before the rename, so that
+  // a crash never publishes an empty file; false only for files that check themselves on read
+  // (shadergen's cache entries), where a torn file is harmless and the sync only costs time.
+  StagedFile(std::filesystem::path final_path, std::string_view bytes, bool durable = true);
   ~StagedFile();  // removes the temporary file unless commit() moved it
   StagedFile(StagedFile&& other) noexcept;
   StagedFile& operator=(StagedFile&&) = delete;
@@ -71,6 +73,6 @@ class StagedFile {
 
 // StagedFile(path, bytes) then commit(): afterwards `path` holds either its old content or
 // exactly `bytes`. Returns the failure, or nothing when the file was written.
-std::optional<Failure> write(const std::filesystem::path& path, std::string_view bytes);
+std::optional<Failure> write(const std::filesystem::path& path, std::string_view bytes, bool durable = true);
 
 }  // namespace atomic_file
