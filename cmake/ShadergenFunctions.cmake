@@ -1,7 +1,8 @@
 # shadergen_add_permutations(<target> DOMAIN <spec> [NAMESPACE <ns>] [CACHE_DIR <dir>] [JOBS <n>]
 #                            [TARGET_ENV <vulkan1.0|vulkan1.1|vulkan1.2|vulkan1.3>]
 #                            [DEFINES <NAME=VALUE|NAME>...] [STRIP_DEBUG]
-#                            [REMOTE_CACHE <url> [REMOTE_CACHE_READONLY]])
+#                            [REMOTE_CACHE <url> [REMOTE_CACHE_READONLY]]
+#                            [REMOTE_CACHE_SECRET_FILE <file>])
 #
 # Creates a static library <target> holding every permutation of the domain <spec> as SPIR-V,
 # the raw -> optimised lookup table and a registry, with the header <target>.h on its include
@@ -14,12 +15,15 @@
 # timestamps, so nothing downstream recompiles after an edit that changes no SPIR-V.
 #
 # REMOTE_CACHE passes --remote-cache (without it, shadergen still reads SHADERGEN_REMOTE_CACHE
-# from the build's environment); REMOTE_CACHE_READONLY passes --remote-cache-readonly.
+# from the build's environment); REMOTE_CACHE_READONLY passes --remote-cache-readonly;
+# REMOTE_CACHE_SECRET_FILE passes --remote-cache-secret-file (without it, shadergen reads
+# SHADERGEN_REMOTE_CACHE_SECRET from the build's environment; the secret itself never appears in
+# the build files).
 #
 # Needs SHADERGEN_EXECUTABLE to name the shadergen executable target (the project sets it; the
 # package config sets it to the imported shadergen::shadergen).
 function(shadergen_add_permutations target)
-  cmake_parse_arguments(PARSE_ARGV 1 SG "REMOTE_CACHE_READONLY;STRIP_DEBUG" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS;TARGET_ENV;REMOTE_CACHE"
+  cmake_parse_arguments(PARSE_ARGV 1 SG "REMOTE_CACHE_READONLY;STRIP_DEBUG" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS;TARGET_ENV;REMOTE_CACHE;REMOTE_CACHE_SECRET_FILE"
                         "DEFINES")
   if(SG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "shadergen_add_permutations(${target}): unknown arguments: ${SG_UNPARSED_ARGUMENTS}")
@@ -66,6 +70,9 @@ function(shadergen_add_permutations target)
   endif()
   if(SG_REMOTE_CACHE_READONLY)
     list(APPEND extra --remote-cache-readonly)
+  endif()
+  if(SG_REMOTE_CACHE_SECRET_FILE)
+    list(APPEND extra --remote-cache-secret-file "${SG_REMOTE_CACHE_SECRET_FILE}")
   endif()
   add_custom_command(
     OUTPUT "${out}/${target}.h" "${out}/${target}.cpp" "${out}/manifest.json"

@@ -174,11 +174,14 @@ std::optional<HttpResponse> RemoteCache::send(std::string_view method, const std
     return std::nullopt;
   }
   const std::string url = url_ + "/" + relative;
+  auto start = Clock::now();
   auto response = http_->send(HttpRequest{method, url, body, limit});
   end_request();
   if (response) return std::move(response).value();
-  // A request cut short to fit the budget failed because the budget ran out, whatever curl says.
-  if (limit < settings_.request_limit || waited() >= settings_.budget)
+  // A request shortened to fit the budget that ran its whole time failed because the budget
+  // ran out, whatever the HTTP library says.
+  bool ran_out = limit < settings_.request_limit && Clock::now() - start + std::chrono::milliseconds(50) >= limit;
+  if (ran_out || waited() >= settings_.budget)
     budget_spent();
   else
     turn_off(method, relative, without_credentials(response.errors().front().message, url_));
