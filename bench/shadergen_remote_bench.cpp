@@ -8,8 +8,11 @@
 //      (cold, and every entry and the input set uploaded, signed: what the first CI build pays);
 //   c) the same again, other local cache, same server (served: every entry fetched, 0 compiled).
 // Every step is a separate process, timed from start to exit. Prints the medians and the ratio.
+// With --slow S, then once: (d) a build against a server answering every request after S seconds
+// (tests/support/fake_http_server.h), to show the time budget's bound.
 // Exits 1 if a step fails, (b) did not upload every source, (c) compiled anything or fetched
 // fewer, or an output differs from (a)'s, so a one-repetition run is a smoke test.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +24,7 @@
 
 #include <unistd.h>
 
+#include "fake_http_server.h"
 #include "nginx_server.h"
 #include "timed_process.h"
 
@@ -33,6 +37,7 @@ struct Options {
   fs::path shadergen = SHADERGEN_EXE;
   fs::path work;  // empty: a fresh folder under the system temporary folder, removed at the end
   int repetitions = 5;
+  double slow = 0.0;  // > 0: also one build against a server answering every request after this many seconds
 };
 
 std::optional<Options> parse_args(int argc, char** argv) {
@@ -47,6 +52,8 @@ std::optional<Options> parse_args(int argc, char** argv) {
       o.work = value;
     else if (arg == "--reps")
       o.repetitions = std::atoi(value.c_str());
+    else if (arg == "--slow")
+      o.slow = std::atof(value.c_str());
     else
       return std::nullopt;
   }
@@ -115,6 +122,26 @@ class RemoteBench {
                 bench::seconds_list(upload_s_).c_str(), bench::seconds_list(served_s_).c_str());
   }
 
+  // (d) One build with an empty local cache against a server that answers every request (404 to
+  // GET and HEAD, 201 to PUT) after `slow` seconds: the remote cache's time budget must bound
+  // what it costs (issue 26: 3 s per request, split_second, at most 40 s), outputs as (a)'s.
+  bool slow_server() {
+    auto delay = std::chrono::milliseconds(static_cast<long long>(o_.slow * 1000.0));
+    testsupport::FakeHttpServer server([delay](const testsupport::FakeRequest& request) {
+      return testsupport::FakeReply{request.method == "PUT" ? 201 : 404, {}, delay};
+    });
+    fs::remove_all(o_.work / "slow"), fs::remove_all(o_.work / "slow.cache");
+    std::vector<std::string> args = build("slow", false);
+    args.insert(args.end(), {"--remote-cache", server.url()});
+    bench::Run d = step("build against a slow server", args);
+    if (!d.ok) return false;
+    if (bench::output_files(o_.work / "slow") != bench::output_files(o_.work / "cold"))
+      return fail("(d)'s output differs from the cold build's");
+    std::printf("  (d) ... --remote-cache URL, every answer after %.1f s          %8.3f s  (one run; warning: %s)\n",
+                o_.slow, d.seconds, d.out.find("whole budget") != std::string::npos ? "budget spent" : "other");
+    return true;  // the server's destructor waits for the requests still sleeping
+  }
+
  private:
   std::vector<std::string> build(const std::string& name, bool remote) const {
     std::vector<std::string> args{o_.shadergen.string(),
@@ -158,7 +185,7 @@ class RemoteBench {
 int main(int argc, char** argv) {
   auto options = parse_args(argc, argv);
   if (!options) {
-    std::cerr << "usage: shadergen_remote_bench [--spec SPEC] [--reps N] [--shadergen EXE] [--work DIR]\n";
+    std::cerr << "usage: shadergen_remote_bench [--spec SPEC] [--reps N] [--shadergen EXE] [--work DIR] [--slow S]\n";
     return 2;
   }
   bool temporary = options->work.empty();
@@ -177,6 +204,7 @@ int main(int argc, char** argv) {
     ok = true;
     for (int rep = 0; rep < options->repetitions && ok; ++rep) ok = bench.repetition();
     if (ok) bench.report();
+    if (ok && options->slow > 0) ok = bench.slow_server();
   }
   if (temporary) fs::remove_all(options->work);
   return ok ? 0 : 1;
