@@ -1,5 +1,5 @@
 // The Split/Second lookup table: the spec's rules must reproduce Listing 4.8 (with the
-// book's misplaced brace corrected as DESIGN.md §1.3 states) for all 128 raw IDs.
+// book's misplaced brace corrected as docs/lut.md explains) for all 128 raw IDs.
 #include <gtest/gtest.h>
 
 #include <array>
