@@ -80,9 +80,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "meshes[0].primitives[0]: its material's base colour texture reads TEXCOORD_3, which the primitive "
                 "does not have"},
         BadFile{"bad_sampler_filter.gltf", "samplers[0].magFilter: 1234 is not a glTF magnification filter"},
-        BadFile{
-            "bad_image_view_range.gltf",
-            "bufferViews[5] (holding images[0]): bytes 148..287 are past the end of buffers[0], which has 223 bytes"}),
+        BadFile{"bad_image_view_range.gltf",
+                "bufferViews[5]: bytes 148..287 are past the end of buffers[0], which has 223 bytes"}),
     name_of);
 
 }  // namespace

@@ -34,30 +34,15 @@ ElementRange locate(const tinygltf::Model& model, int index, std::size_t element
   const std::string name = accessor_name(index);
   if (accessor.sparse.isSparse) throw Error(name + ": sparse accessors are not supported");
   if (accessor.bufferView < 0) throw Error(name + ": no bufferView (an all-zero accessor has nothing to draw)");
-  if (static_cast<std::size_t>(accessor.bufferView) >= model.bufferViews.size()) {
-    throw Error(fmt::format("{}: bufferView {} does not exist (the file has {})", name, accessor.bufferView,
-                            model.bufferViews.size()));
-  }
+  const std::span<const std::uint8_t> bytes = buffer_view_bytes(model, accessor.bufferView, name);
   const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
   const std::string view_name = fmt::format("bufferViews[{}]", accessor.bufferView);
-  if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
-    throw Error(
-        fmt::format("{}: buffer {} does not exist (the file has {})", view_name, view.buffer, model.buffers.size()));
-  }
-  const tinygltf::Buffer& buffer = model.buffers[static_cast<std::size_t>(view.buffer)];
-  // Sizes are at most the file's, so these sums of two cannot overflow 64 bits.
-  const std::uint64_t loaded = buffer.data.size();
-  if (static_cast<std::uint64_t>(view.byteOffset) + view.byteLength > loaded) {
-    throw Error(fmt::format("{}: bytes {}..{} are past the end of buffers[{}], which has {} bytes", view_name,
-                            view.byteOffset, static_cast<std::uint64_t>(view.byteOffset) + view.byteLength, view.buffer,
-                            loaded));
-  }
   const std::size_t stride = view.byteStride != 0 ? view.byteStride : element_bytes;
   if (stride < element_bytes) {
     throw Error(fmt::format("{}: byteStride {} is smaller than an element of {} ({} bytes)", view_name, view.byteStride,
                             name, element_bytes));
   }
-  ElementRange range{buffer.data.data() + view.byteOffset, accessor.count, stride};
+  ElementRange range{bytes.data(), accessor.count, stride};
   if (accessor.count == 0) return range;
   // count - 1 strides plus one element, without overflow: count is checked against the view
   // before it is multiplied.
@@ -87,6 +72,27 @@ const char* type_name(int type) {
 }
 
 }  // namespace
+
+std::span<const std::uint8_t> buffer_view_bytes(const tinygltf::Model& model, int index, const std::string& user) {
+  if (index < 0 || static_cast<std::size_t>(index) >= model.bufferViews.size()) {
+    throw Error(
+        fmt::format("{}: bufferView {} does not exist (the file has {})", user, index, model.bufferViews.size()));
+  }
+  const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(index)];
+  const std::string view_name = fmt::format("bufferViews[{}]", index);
+  if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
+    throw Error(
+        fmt::format("{}: buffer {} does not exist (the file has {})", view_name, view.buffer, model.buffers.size()));
+  }
+  const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(view.buffer)].data;
+  // Sizes are at most the file's, so these sums of two cannot overflow 64 bits.
+  if (static_cast<std::uint64_t>(view.byteOffset) + view.byteLength > buffer.size()) {
+    throw Error(fmt::format("{}: bytes {}..{} are past the end of buffers[{}], which has {} bytes", view_name,
+                            view.byteOffset, static_cast<std::uint64_t>(view.byteOffset) + view.byteLength, view.buffer,
+                            buffer.size()));
+  }
+  return {buffer.data() + view.byteOffset, view.byteLength};
+}
 
 std::vector<glm::vec3> read_vec3(const tinygltf::Model& model, int index, const std::string& user) {
   const tinygltf::Accessor& accessor = find_accessor(model, index, user);

@@ -9,10 +9,15 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace tilelight::gltf_detail {
+
+// The bytes of buffer view `index`, which `user` ("accessors[3]", "images[0]") refers to: the
+// view and its buffer exist and the view lies inside the buffer's bytes as loaded.
+std::span<const std::uint8_t> buffer_view_bytes(const tinygltf::Model& model, int index, const std::string& user);
 
 // The accessor `index`, which `user` ("meshes[0].primitives[1].attributes.POSITION") refers to.
 // Must be VEC3 of 32-bit floats, every component finite.

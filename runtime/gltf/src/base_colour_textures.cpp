@@ -1,5 +1,6 @@
 #include "base_colour_textures.h"
 
+#include "accessor_reader.h"
 #include "image_decoder.h"
 #include "read_file.h"
 #include "tilelight/base/error.h"
@@ -151,24 +152,8 @@ std::vector<std::uint8_t> BaseColourTextures::image_bytes(int image_index) const
   const tinygltf::Image& image = model_.images[static_cast<std::size_t>(image_index)];
   const std::string name = fmt::format("images[{}]", image_index);
   if (image.bufferView >= 0) {
-    if (static_cast<std::size_t>(image.bufferView) >= model_.bufferViews.size()) {
-      throw Error(fmt::format("{}.bufferView: buffer view {} does not exist (the file has {})", name, image.bufferView,
-                              model_.bufferViews.size()));
-    }
-    const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(image.bufferView)];
-    const std::string view_name = fmt::format("bufferViews[{}]", image.bufferView);
-    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size()) {
-      throw Error(
-          fmt::format("{}: buffer {} does not exist (the file has {})", view_name, view.buffer, model_.buffers.size()));
-    }
-    const std::vector<unsigned char>& buffer = model_.buffers[static_cast<std::size_t>(view.buffer)].data;
-    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset) {
-      throw Error(fmt::format(
-          "{} (holding {}): bytes {}..{} are past the end of buffers[{}], which has {} bytes", view_name, name,
-          view.byteOffset, static_cast<std::uint64_t>(view.byteOffset) + view.byteLength, view.buffer, buffer.size()));
-    }
-    const auto* first = buffer.data() + view.byteOffset;
-    return {first, first + view.byteLength};
+    const std::span<const std::uint8_t> bytes = buffer_view_bytes(model_, image.bufferView, name);
+    return {bytes.begin(), bytes.end()};
   }
   if (image.as_is) return image.image;  // a data URI, decoded from base64 by tinygltf
   if (image.uri.empty()) throw Error(name + ": neither a bufferView nor a uri");
