@@ -41,6 +41,25 @@ std::string sibling_prefix(const fs::path& out_dir, std::string_view what) {
 
 bool starts_with(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
 
+// remove_all() that also works on a tree whose folders are read-only (a user's `chmod -R a-w`
+// on the output, or a checkout that keeps build outputs read-only): deleting an entry needs
+// write permission on its folder, so every folder is first made owner-writable. Only trees
+// that this class set aside are removed this way.
+void remove_tree(const fs::path& root, std::error_code& ec) {
+  const auto owner_writable = [](const fs::path& dir) {
+    std::error_code ignored;
+    fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add, ignored);
+  };
+  if (fs::is_directory(fs::symlink_status(root, ec))) {
+    owner_writable(root);
+    for (fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec), end;
+         !ec && it != end; it.increment(ec))
+      if (it->is_directory() && !it->is_symlink()) owner_writable(it->path());
+  }
+  ec.clear();
+  fs::remove_all(root, ec);
+}
+
 // The same failure, reported against `path` (the output file the user knows) instead of the
 // staging copy that no longer exists once the commit has failed.
 Status renamed(Status status, const fs::path& path) {
@@ -132,7 +151,7 @@ Status StagedOutput::swap_in(const fs::path& staging) {
     std::rename(old.c_str(), out_dir_.c_str());  // put the previous output back
     return make_error(out_dir_.string(), 0, std::string("cannot replace output folder: ") + std::strerror(error));
   }
-  fs::remove_all(old, ec);
+  remove_tree(old, ec);
   return Ok{};
 }
 
@@ -152,7 +171,7 @@ void StagedOutput::clear_leftovers() const {
     if (starts_with(path.filename().string(), old_prefix) && !fs::exists(out_dir_, ec) &&
         std::rename(path.c_str(), out_dir_.c_str()) == 0)
       continue;
-    fs::remove_all(path, ec);
+    remove_tree(path, ec);
   }
 }
 

@@ -285,6 +285,52 @@ TEST(FailedWrite, ReadOnlyParentFolderGivesAnErrorNamingTheOutputAndKeepsIt) {
   EXPECT_EQ(names_in(parent), std::vector<std::string>{"toy"});
 }
 
+// Every folder and file under `root` (itself included) loses its write bits, as after a user's
+// `chmod -R a-w`.
+void make_tree_read_only(const fs::path& root) {
+  constexpr fs::perms kWrite = fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+  for (const auto& entry : fs::recursive_directory_iterator(root))
+    fs::permissions(entry.path(), kWrite, fs::perm_options::remove);
+  fs::permissions(root, kWrite, fs::perm_options::remove);
+}
+
+// A read-only output folder (its parent writable) is replaced like any other: the previous
+// output is set aside and removed whole, leaving nothing hidden beside the new one, and a
+// read-only set-aside folder left by an earlier run is removed too. Every build runs as uid
+// 65534 under root, which owns the files it must remove.
+TEST(FailedWrite, ReadOnlyOutputFolderIsReplacedAndNothingIsLeftBesideIt) {
+  sgtest::TempDir dir("readonly-out");
+  const fs::path parent = dir / "gen";
+  const fs::path out = parent / "toy";
+  fs::create_directories(parent);
+  ChildSetup setup;
+  if (::geteuid() == 0) {
+    if (!nobody_can_build())
+      GTEST_SKIP() << "running as root and uid 65534 cannot run " << sgtest::shadergen_exe()
+                   << " or read the fixture, so a read-only folder cannot be tested";
+    setup.drop_to_nobody = true;
+    ASSERT_EQ(::chown(parent.c_str(), 65534, 65534), 0);
+  }
+  ASSERT_EQ(run_shadergen(build_args(sgtest::toy_spec(), out, {}, {"--namespace", "previous"}), setup).exit_code, 0);
+  make_tree_read_only(out);
+  // A leftover of an earlier run that failed to remove what it set aside: a read-only
+  // set-aside folder beside a complete output.
+  const fs::path leftover = parent / ".toy.old.tmp-999999-0";
+  ASSERT_EQ(run_shadergen(build_args(sgtest::toy_spec(), leftover, {}, {"--namespace", "older"}), setup).exit_code, 0);
+  make_tree_read_only(leftover);
+  ASSERT_EQ(names_in(parent), (std::vector<std::string>{".toy.old.tmp-999999-0", "toy"}));
+
+  ChildOutcome r = run_shadergen(build_args(sgtest::toy_spec(), out, {}), setup);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(sgtest::snapshot(out), cold_toy_build(dir / "reference"));
+  EXPECT_EQ(names_in(parent), std::vector<std::string>{"toy"});
+
+  make_tree_read_only(out);  // and again, now that the output is the current one
+  r = run_shadergen(build_args(sgtest::toy_spec(), out, {}, {"--namespace", "next"}), setup);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(names_in(parent), std::vector<std::string>{"toy"});
+}
+
 // Works as root too: no permission bit involved.
 TEST(FailedWrite, OutputUnderARegularFileIsAnErrorNamingBoth) {
   sgtest::TempDir dir("notdir");
