@@ -14,13 +14,13 @@
 #include <string>
 #include <string_view>
 
-#include "cache.h"
+#include "base/untrusted_text.h"
+#include "cache/cache.h"
+#include "cache/http_client.h"
+#include "cache/input_cache.h"
+#include "cache/remote_cache.h"
+#include "cache/signed_entry.h"
 #include "fuzz_check.h"
-#include "http_client.h"
-#include "input_cache.h"
-#include "remote_cache.h"
-#include "signed_entry.h"
-#include "untrusted_text.h"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <cstring>
 #include <set>
 
+#include "compile/spirv_passes.h"
 #include "shadergen/build.h"
-#include "spirv_passes.h"
 #include "test_helpers.h"
 
 namespace shadergen {
@@ -18,10 +18,7 @@ namespace fs = std::filesystem;
 
 Result<BuildSummary> build_into(const fs::path& spec, const fs::path& out, const fs::path& cache, unsigned jobs = 0,
                                 bool use_cache = true) {
-  BuildOptions options;
-  options.spec_path = spec;
-  options.out_dir = out;
-  options.cache_dir = cache;
+  BuildOptions options = sgtest::build_options(spec, out, cache);
   options.use_cache = use_cache;
   options.jobs = jobs;
   return build(options);

@@ -2,7 +2,8 @@
 // recompiled, and a rebuild over a damaged cache is byte-identical to a cold build.
 #include <gtest/gtest.h>
 
-#include "cache.h"
+#include "cache/cache.h"
+#include "compile/toolchain.h"
 #include "shadergen/build.h"
 #include "test_helpers.h"
 
@@ -48,7 +49,6 @@ TEST(CacheKey, EveryPartOfTheToolDescriptionChangesTheKey) {
   EXPECT_FALSE(current.glslang_version.empty());
   EXPECT_FALSE(current.spirv_tools_version.empty());
   const std::string key = cache_key(current, "frag", "void main() {}");
-  EXPECT_EQ(cache_key("frag", "void main() {}"), key) << "the short form uses this tool's parts";
   for (std::string CacheKeyParts::*part :
        {&CacheKeyParts::tool_version, &CacheKeyParts::glslang_version, &CacheKeyParts::spirv_tools_version,
         &CacheKeyParts::target, &CacheKeyParts::optimiser_recipe}) {
@@ -66,6 +66,7 @@ TEST(CacheKey, EveryPartOfTheToolDescriptionChangesTheKey) {
 }
 
 TEST(CacheEntry, DefaultDirectoryFollowsTheEnvironment) {
+  const sgtest::ScopedEnvironment restored({"SHADERGEN_CACHE_DIR", "XDG_CACHE_HOME", "HOME"});
   ::setenv("SHADERGEN_CACHE_DIR", "/tmp/explicit-cache", 1);
   EXPECT_EQ(default_cache_directory(), fs::path("/tmp/explicit-cache"));
   ::unsetenv("SHADERGEN_CACHE_DIR");
@@ -77,10 +78,7 @@ TEST(CacheEntry, DefaultDirectoryFollowsTheEnvironment) {
 }
 
 Result<BuildSummary> build_toy(const fs::path& out, const fs::path& cache, bool use_cache) {
-  BuildOptions options;
-  options.spec_path = sgtest::toy_spec();
-  options.out_dir = out;
-  options.cache_dir = cache;
+  BuildOptions options = sgtest::build_options(sgtest::toy_spec(), out, cache);
   options.use_cache = use_cache;
   return build(options);
 }

@@ -3,7 +3,7 @@
 // or a comment early. Also the enumerator spelling of valued features' values.
 #include <gtest/gtest.h>
 
-#include "cpp_text.h"
+#include "output/cpp_text.h"
 
 namespace {
 

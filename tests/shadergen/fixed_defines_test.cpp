@@ -9,7 +9,7 @@
 
 #include <cstring>
 
-#include "reflection.h"
+#include "compile/reflection.h"
 #include "shadergen/build.h"
 #include "shadergen/cli.h"
 #include "shadergen/domain.h"

@@ -5,7 +5,7 @@
 // glslang stopped at their first error).
 #include <gtest/gtest.h>
 
-#include "error_grouping.h"
+#include "compile/error_grouping.h"
 #include "shadergen/build.h"
 #include "test_helpers.h"
 
@@ -13,11 +13,9 @@ namespace {
 
 TEST(FollowOnErrors, FirstErrorsFirstNoiseFoldedEveryPermutationCounted) {
   sgtest::TempDir dir("follow-on");
-  shadergen::BuildOptions options;
-  options.spec_path = sgtest::fixtures_dir() / "follow_on" / "follow_on.json";
-  options.out_dir = dir / "out";
+  shadergen::BuildOptions options =
+      sgtest::build_options(sgtest::fixtures_dir() / "follow_on" / "follow_on.json", dir / "out", {});
   options.use_cache = false;
-  options.jobs = 2;
   auto result = shadergen::build(options);
   ASSERT_FALSE(result.ok());
   const std::string folder = (sgtest::fixtures_dir() / "follow_on").lexically_normal().string();

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "input_cache.h"
-#include "sha256.h"
+#include "base/sha256.h"
+#include "cache/input_cache.h"
+#include "cache/source_key.h"
 #include "shadergen/build.h"
-#include "source_key.h"
 #include "test_helpers.h"
 
 namespace {

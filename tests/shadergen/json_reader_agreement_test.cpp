@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "json.h"
+#include "spec/json.h"
 #include "test_helpers.h"
 
 namespace shadergen {

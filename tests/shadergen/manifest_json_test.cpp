@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "manifest.h"
+#include "output/manifest.h"
 #include "test_helpers.h"
 
 namespace shadergen {

@@ -6,10 +6,10 @@
 // without depending on the spec's current layout; each case also checks its anchor exists.
 #include <gtest/gtest.h>
 
-#include "json.h"
 #include "shadergen/domain.h"
 #include "shadergen/expression.h"
 #include "shadergen/permutations.h"
+#include "spec/json.h"
 #include "test_helpers.h"
 
 namespace {

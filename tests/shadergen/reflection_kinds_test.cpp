@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <cstring>
 
-#include "glsl_compiler.h"
-#include "reflection.h"
-#include "spirv_passes.h"
+#include "compile/glsl_compiler.h"
+#include "compile/reflection.h"
+#include "compile/spirv_passes.h"
 #include "test_helpers.h"
 
 namespace {

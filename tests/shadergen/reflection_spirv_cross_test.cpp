@@ -12,11 +12,11 @@
 #include <set>
 #include <tuple>
 
-#include "glsl_compiler.h"
-#include "layout_check.h"
-#include "reflection.h"
-#include "spirv_passes.h"
-#include "stages.h"
+#include "compile/glsl_compiler.h"
+#include "compile/layout_check.h"
+#include "compile/reflection.h"
+#include "compile/spirv_passes.h"
+#include "spec/stages.h"
 #include "test_helpers.h"
 
 namespace {

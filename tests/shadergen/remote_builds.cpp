@@ -13,10 +13,7 @@ using shadergen::BuildOptions;
 
 RemoteBuild build_toy_with(const fs::path& dir, const std::string& name, const std::string& url,
                            const OptionsHook& tweak, const ProgressHook& on_progress) {
-  BuildOptions options;
-  options.spec_path = toy_spec();
-  options.out_dir = dir / (name + ".out");
-  options.cache_dir = dir / (name + ".cache");
+  BuildOptions options = build_options(toy_spec(), dir / (name + ".out"), dir / (name + ".cache"));
   options.jobs = 1;
   options.verbose = true;
   options.remote_cache_url = url;
@@ -46,11 +43,8 @@ RemoteBuild build_toy(const fs::path& dir, const std::string& name, const std::s
 }
 
 std::map<std::string, std::string> reference_output(const fs::path& dir) {
-  BuildOptions options;
-  options.spec_path = toy_spec();
-  options.out_dir = dir / "reference.out";
+  BuildOptions options = build_options(toy_spec(), dir / "reference.out", {});
   options.use_cache = false;
-  options.jobs = 1;
   EXPECT_TRUE(shadergen::build(options).ok());
   return snapshot(options.out_dir);
 }

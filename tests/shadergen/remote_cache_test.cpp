@@ -7,9 +7,9 @@
 #include <set>
 #include <thread>
 
-#include "remote_cache.h"
-#include "signed_entry.h"
-#include "untrusted_text.h"
+#include "base/untrusted_text.h"
+#include "cache/remote_cache.h"
+#include "cache/signed_entry.h"
 
 namespace shadergen {
 namespace {

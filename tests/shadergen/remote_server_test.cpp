@@ -15,8 +15,8 @@
 #include <thread>
 
 #include "apache_server.h"
-#include "cache.h"
-#include "http_client.h"
+#include "cache/cache.h"
+#include "cache/http_client.h"
 #include "nginx_server.h"
 #include "remote_builds.h"
 #include "shadergen/build.h"
@@ -180,7 +180,11 @@ TEST(RemoteCacheServer, UnreachableUrlDegradesToLocal) {
   EXPECT_EQ(result.output, reference_output(dir));
 }
 
-// A server that accepts the connection and never answers costs one bounded wait, not a hang.
+// A server that accepts the connection and never answers costs one bounded wait, not a hang:
+// the client gives up by its own timeout. The assertions are about what happened, not how fast
+// (a loaded machine may take longer to notice): the error is a timeout, and it did wait for the
+// configured limit rather than fail at once. A client without the limit would hang here until
+// ctest's timeout fails the test.
 TEST(RemoteCacheServer, StalledServerTimesOut) {
   int listener = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in address{};
@@ -199,7 +203,7 @@ TEST(RemoteCacheServer, StalledServerTimesOut) {
   ASSERT_FALSE(response.ok());
   EXPECT_NE(response.errors().front().message.find("timed out"), std::string::npos)
       << response.errors().front().message;
-  EXPECT_LT(seconds, 5.0);
+  EXPECT_GE(seconds, 0.5) << "gave up before the 500 ms connect and 700 ms transfer limits";
 }
 
 // The CLI takes the URL from SHADERGEN_REMOTE_CACHE and prints the counts in its summary.

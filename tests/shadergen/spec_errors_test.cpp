@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "json.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
+#include "spec/json.h"
 #include "test_helpers.h"
 
 namespace shadergen {

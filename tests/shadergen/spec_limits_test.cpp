@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "json.h"
 #include "shadergen/domain.h"
 #include "shadergen/expression.h"
+#include "spec/json.h"
 #include "test_helpers.h"
 
 namespace shadergen {

@@ -58,6 +58,22 @@ TempDir::~TempDir() {
   fs::remove_all(path_, ec);
 }
 
+ScopedEnvironment::ScopedEnvironment(std::vector<std::string> names) {
+  for (std::string& name : names) {
+    const char* value = std::getenv(name.c_str());
+    saved_.emplace_back(std::move(name), value ? std::optional<std::string>(value) : std::nullopt);
+  }
+}
+
+ScopedEnvironment::~ScopedEnvironment() {
+  for (const auto& [name, value] : saved_) {
+    if (value)
+      ::setenv(name.c_str(), value->c_str(), 1);
+    else
+      ::unsetenv(name.c_str());
+  }
+}
+
 std::map<std::string, std::string> snapshot(const fs::path& dir) {
   std::map<std::string, std::string> files;
   if (!fs::exists(dir)) return files;

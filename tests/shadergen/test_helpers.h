@@ -11,7 +11,9 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "child_process.h"
@@ -55,6 +57,20 @@ class TempDir {
 
  private:
   fs::path path_;
+};
+
+// Environment variables changed for one test: the ones named are saved when the object is made
+// and put back (set to the saved value, or unset) when it dies, so the next test in the same
+// process sees the environment it started with.
+class ScopedEnvironment {
+ public:
+  explicit ScopedEnvironment(std::vector<std::string> names);
+  ~ScopedEnvironment();
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  std::vector<std::pair<std::string, std::optional<std::string>>> saved_;
 };
 
 // Every regular file under `dir`: relative path -> bytes.

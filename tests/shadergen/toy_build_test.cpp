@@ -19,8 +19,8 @@
 #include <set>
 #include <sstream>
 
+#include "compile/spirv_passes.h"
 #include "shadergen/build.h"
-#include "spirv_passes.h"
 #include "test_helpers.h"
 
 namespace {
@@ -360,9 +360,7 @@ TEST_F(ToyBuild, StatsReportCountsEveryStage) {
 TEST_F(ToyBuild, CancelledBuildFailsAndLeavesTheOutputAlone) {
   auto bytes_before = sgtest::snapshot(out());
   auto times_before = sgtest::mtimes(out());
-  shadergen::BuildOptions options;
-  options.spec_path = sgtest::toy_spec();
-  options.out_dir = out();
+  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), out(), {});
   options.use_cache = false;                  // something to compile, so the poll is reached
   options.cpp_namespace = "other_namespace";  // the output would change if it were written
   options.cancelled = [] { return true; };

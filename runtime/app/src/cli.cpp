@@ -4,13 +4,11 @@
 #include "render_run.h"
 #include "tilelight/app/failure.h"
 
+#include <command_line/command_line.h>
 #include <CLI/CLI.hpp>
 
 namespace tilelight::app {
 namespace {
-
-constexpr int kExitError = 1;
-constexpr int kExitUsage = 2;  // README: 2 on a usage error (CLI11's own codes vary by error kind)
 
 void add_options(CLI::App& cli, Arguments& a) {
   cli.add_option("--width", a.width, "frame width in pixels")->capture_default_str();
@@ -74,19 +72,14 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       "tilelight");
   Arguments arguments;
   add_options(cli, arguments);
-  try {
-    cli.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    // cli.exit() prints the message (or the help); --help and --version are successes.
-    const int code = cli.exit(e, out, err);
-    return code == 0 ? 0 : kExitUsage;
-  }
+  const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
+  if (auto exit_code = command_line::parse(cli, args, out, err)) return *exit_code;
   std::string stage = "starting";
   try {
     return render_run(arguments, out, stage);
   } catch (...) {
     err << "tilelight: error: " << failure_message(stage, std::current_exception()) << '\n';
-    return kExitError;
+    return command_line::kExitError;
   }
 }
 

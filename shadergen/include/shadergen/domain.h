@@ -156,7 +156,8 @@ struct DomainSpec {
   std::vector<std::string> optimised_bit_names() const;
 };
 
-// Reads and checks a spec. Diagnostics name the spec path and the line of the offending value.
+// Reads and checks a spec (implemented with the digest the build needs in spec/load_spec.cpp).
+// Diagnostics name the spec path and the line of the offending value.
 Result<DomainSpec> load_domain(const std::filesystem::path& spec_path);
 
 // Same, from text already read; `spec_path` locates relative paths and names the file in errors.

@@ -1,0 +1,211 @@
+#include "shadergen/build.h"
+
+#include <chrono>
+#include <memory>
+
+#include "base/file_io.h"
+#include "base/phase_clock.h"
+#include "base/untrusted_text.h"
+#include "cache/cache.h"
+#include "cache/input_cache.h"
+#include "cache/remote_cache.h"
+#include "compile/compile_domain.h"
+#include "compile/toolchain.h"
+#include "output/codegen.h"
+#include "output/manifest.h"
+#include "output/output_dir.h"
+#include "shadergen/domain.h"
+#include "shadergen/permutations.h"
+#include "spec/defines.h"
+#include "spec/load_spec.h"
+
+namespace shadergen {
+namespace {
+
+Status check_names(const BuildOptions& options, const std::string& cpp_name, const std::string& ns) {
+  if (!is_valid_namespace(ns))
+    return make_error("--namespace: \"" + ns + "\" is not a C++ namespace (identifiers joined by ::)");
+  if (cpp_name.empty() || cpp_name.find('/') != std::string::npos || cpp_name.find('\\') != std::string::npos ||
+      cpp_name.front() == '.')
+    return make_error("--cpp-name: \"" + cpp_name + "\" is not a plain file name");
+  if (options.out_dir.empty()) return make_error("--out: no output folder given");
+  if (!options.remote_cache_url.empty())
+    if (std::string problem = remote_cache_url_problem(options.remote_cache_url); !problem.empty())
+      return make_error("--remote-cache: \"" + printable(redacted_url(options.remote_cache_url)) + "\" " + problem +
+                        " (set by the option or SHADERGEN_REMOTE_CACHE)");
+  return Ok{};
+}
+
+StagedOutput outputs_for(const BuildOptions& options, const CompiledDomain& domain, const std::string& cpp_name,
+                         const std::string& ns, double seconds) {
+  StagedOutput staged(options.out_dir);
+  staged.add("manifest.json", write_manifest(domain));
+  for (const Blob& blob : domain.blobs) {
+    const auto* bytes = reinterpret_cast<const char*>(blob.words.data());
+    staged.add(blob_relative_path(blob), std::string(bytes, blob.words.size() * sizeof(std::uint32_t)));
+  }
+  GeneratedCpp cpp = generate_cpp(domain, cpp_name + ".h", ns);
+  staged.add(cpp_name + ".h", std::move(cpp.header));
+  staged.add(cpp_name + ".cpp", std::move(cpp.source));
+  if (options.write_stats) staged.add("stats.json", write_stats(domain, seconds));
+  return staged;
+}
+
+// The command line's defines on top of the spec's. A feature's define is refused: the
+// permutations without the feature would have it on.
+Status apply_command_line_defines(DomainSpec& spec, const std::vector<std::string>& arguments) {
+  Diagnostics errors;
+  std::vector<std::string> parsed;
+  for (const std::string& argument : arguments) {
+    auto define = parse_define_argument(argument);
+    if (!define) {
+      errors.push_back(define.errors().front());
+      continue;
+    }
+    for (const RawFeature& feature : spec.raw_features)
+      if (feature.define == define_name(*define))
+        errors.push_back(make_error("--define " + argument + ": " + feature.define + " is the define of raw feature " +
+                                    feature.name + " of " + spec.spec_path.string() +
+                                    "; a fixed define cannot also be a feature"));
+    parsed.push_back(std::move(define).value());
+  }
+  if (!errors.empty()) return errors;
+  spec.defines = override_defines(std::move(spec.defines), parsed);
+  return Ok{};
+}
+
+// --target-env wins over the spec's "target_env".
+Status apply_target_env(DomainSpec& spec, const std::string& argument) {
+  if (argument.empty() || parse_target_env(argument, spec.target_env)) return Ok{};
+  return make_error("--target-env: unknown target environment \"" + argument + "\" (expected " +
+                    std::string(target_env_choices()) + ")");
+}
+
+// The settings that the spec's bytes do not hold but that decide the content keys, for the
+// input-set key.
+std::string preprocessing_settings(const DomainSpec& spec) {
+  std::string text = "target " + std::string(target_env_name(spec.target_env)) + "\ndefines";
+  for (const std::string& define : spec.defines) text += "\n" + define;
+  return text;
+}
+
+BuildSummary summarise(const CompiledDomain& d) {
+  BuildSummary s;
+  s.raw = static_cast<std::uint32_t>(d.plan.raw.size());
+  for (const RawPermutation& raw : d.plan.raw) s.pruned += raw.pruned;
+  s.optimised = static_cast<std::uint32_t>(d.plan.optimised.size());
+  s.companions = static_cast<std::uint32_t>(d.spec.companions.size());
+  s.unique_sources = static_cast<std::uint32_t>(d.sources.size());
+  for (const SourceRecord& source : d.sources) (source.cache_hit ? s.cache_hits : s.compiled)++;
+  s.permutations = static_cast<std::uint32_t>(d.jobs.size());
+  for (const CompileJob& job : d.jobs)
+    (d.sources[static_cast<std::size_t>(job.source)].cache_hit ? s.reused : s.recompiled)++;
+  s.inputs_reused = d.inputs_reused;
+  s.unique_blobs = static_cast<std::uint32_t>(d.blobs.size());
+  for (const Blob& b : d.blobs) s.optimiser_fallbacks += b.fell_back;
+  if (d.remote) {
+    s.remote_cache = true;
+    s.remote_fetched = d.remote->fetched, s.remote_uploaded = d.remote->uploaded, s.remote_failed = d.remote->failed;
+  }
+  return s;
+}
+
+// "out/" and "out" are the same folder; the staging logic needs the form with a file name.
+BuildOptions normalised(BuildOptions options) {
+  std::filesystem::path out = options.out_dir.lexically_normal();
+  while (!out.empty() && !out.has_filename() && out.has_parent_path() && out != out.root_path())
+    out = out.parent_path();
+  options.out_dir = out;
+  return options;
+}
+
+std::unique_ptr<RemoteCache> remote_cache_for(const BuildOptions& options) {
+  if (!options.use_cache || options.remote_cache_url.empty()) return nullptr;
+  RemoteCacheSettings settings{options.remote_cache_url, options.remote_cache_read_only, options.remote_cache_secret,
+                               options.remote_cache_budget, options.remote_cache_request_limit};
+  return std::make_unique<RemoteCache>(std::move(settings), make_curl_http_client(), options.log);
+}
+
+// Optimised IDs that no raw ID maps to cost a compile each and are never drawn: name them.
+void warn_unreachable(const BuildOptions& options, const PermutationPlan& plan) {
+  std::string ids;
+  std::size_t count = 0;
+  for (const OptimisedPermutation& o : plan.optimised)
+    if (o.raw_mapped == 0) ids += (count++ ? ", " : "") + std::to_string(o.id);
+  if (count == 0 || !options.log) return;
+  options.log("warning: " + options.spec_path.string() + ": optimised ID" + (count > 1 ? "s " : " ") + ids +
+              (count > 1 ? " are" : " is") +
+              " reached by no raw ID; compiled all the same (`shadergen lut` shows the table; to avoid them, "
+              "change the optimised bits' \"when\" rules so that no combination of bits is impossible, or use "
+              "fewer bits)");
+}
+
+}  // namespace
+
+Result<BuildSummary> build(const BuildOptions& given) {
+  const BuildOptions options = normalised(given);
+  auto start = std::chrono::steady_clock::now();
+  std::vector<PhaseTime> phases;
+  PhaseClock clock(phases);
+  auto loaded = load_spec(options.spec_path);
+  if (!loaded) return std::move(loaded).take_errors();
+  Result<DomainSpec> spec(std::move(loaded->spec));
+  std::string cpp_name = options.cpp_name.empty() ? spec->name : options.cpp_name;
+  std::string ns = options.cpp_namespace.empty() ? spec->name : options.cpp_namespace;
+  if (Status ok = check_names(options, cpp_name, ns); !ok) return std::move(ok).take_errors();
+  if (Status ok = apply_command_line_defines(*spec, options.defines); !ok) return std::move(ok).take_errors();
+  if (Status ok = apply_target_env(*spec, options.target_env); !ok) return std::move(ok).take_errors();
+  spec->strip_debug = spec->strip_debug || options.strip_debug;
+  auto plan = expand(*spec);
+  if (!plan) return std::move(plan).take_errors();
+  warn_unreachable(options, *plan);
+  clock.lap("parse spec");
+
+  ContentCache cache;
+  InputCache inputs;
+  if (options.use_cache) {
+    std::filesystem::path dir = options.cache_dir.empty() ? default_cache_directory() : options.cache_dir;
+    if (!dir.empty()) cache = ContentCache(dir), inputs = InputCache(dir);
+  }
+  CompileOptions compile_options{
+      options.jobs, cache.enabled() ? &cache : nullptr, nullptr, {}, options.verbose, options.log, options.cancelled};
+  std::unique_ptr<RemoteCache> remote = remote_cache_for(options);
+  compile_options.remote = remote.get();
+  if (inputs.enabled()) {
+    compile_options.inputs = &inputs;
+    compile_options.input_key =
+        input_set_key(current_cache_key_parts(), options.spec_path, loaded->digest, preprocessing_settings(*spec));
+  }
+  auto domain = compile_domain(std::move(spec).value(), std::move(plan).value(), compile_options);
+  if (!domain) return std::move(domain).take_errors();
+  phases.insert(phases.end(), domain->phases.begin(), domain->phases.end());
+  if (remote) domain->remote = remote->stats();
+  clock.restart();
+
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const Blob& blob : domain->blobs)
+    if (blob.fell_back && options.log)
+      // The reason may come from a remote cache's entry: printed escaped and bounded.
+      options.log("warning: optimiser fallback for blob " + blob.hash.substr(0, 16) + ": " +
+                  printable(blob.fallback_reason));
+  if (options.cancelled && options.cancelled()) return make_error("build interrupted");
+  StagedOutput staged = outputs_for(options, *domain, cpp_name, ns, seconds);
+  clock.lap("manifest and codegen");
+  auto changed = staged.commit(options.cancelled);
+  if (!changed) return std::move(changed).take_errors();
+  clock.lap("output compare or write");
+  if (!options.depfile.empty()) {
+    std::string target = (options.out_dir / (cpp_name + ".h")).string();
+    std::string text = write_depfile(target, *domain);
+    if (!file_has_bytes(options.depfile, text))
+      if (Status written = write_file_atomic(options.depfile, text); !written) return std::move(written).take_errors();
+  }
+  clock.lap("depfile");
+  BuildSummary summary = summarise(*domain);
+  summary.output_changed = *changed;
+  summary.phases = std::move(phases);
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace shadergen

@@ -1,0 +1,31 @@
+// build_command.h - `shadergen build`: its options, and running it with them.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <atomic>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace shadergen {
+
+struct BuildArgs {
+  std::string spec, out, cache_dir, depfile, cpp_name, ns, target_env;
+  std::vector<std::string> defines;
+  unsigned jobs = 0;
+  bool no_cache = false, stats = false, verbose = false, strip_debug = false;
+  std::string remote_cache;
+  bool remote_cache_readonly = false;
+  std::string remote_cache_secret_file;
+  double remote_cache_budget = 10.0;  // seconds
+};
+
+// Adds the `build` subcommand and its options to `app`; a parse fills `args`.
+CLI::App* add_build_command(CLI::App& app, BuildArgs& args);
+
+// Runs a parsed `build`: the summary line (and --stats) on `out`, progress and errors on `err`.
+// `interrupted` is polled between jobs (set by SIGINT/SIGTERM). Returns the exit code.
+int run_build(const BuildArgs& args, const std::atomic<bool>& interrupted, std::ostream& out, std::ostream& err);
+
+}  // namespace shadergen

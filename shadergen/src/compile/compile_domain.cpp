@@ -1,0 +1,552 @@
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+
+#include "base/phase_clock.h"
+#include "base/sha256.h"
+#include "base/thread_pool.h"
+#include "cache/cache.h"
+#include "cache/input_cache.h"
+#include "cache/remote_cache.h"
+#include "cache/source_key.h"
+#include "compile/compile_domain.h"
+#include "compile/entry_check.h"
+#include "compile/error_grouping.h"
+#include "compile/glsl_compiler.h"
+#include "compile/program_check.h"
+#include "compile/spirv_passes.h"
+#include "compile/toolchain.h"
+#include "spec/defines.h"
+#include "spec/target_env.h"
+
+namespace shadergen {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan& plan) {
+  std::vector<CompileJob> jobs;
+  for (const RawPermutation& raw : plan.raw)
+    if (!raw.pruned) jobs.push_back({JobKind::raw, raw.id, raw.defines, spec.uber.stage, spec.uber.path, {}});
+  for (const OptimisedPermutation& optimised : plan.optimised)
+    jobs.push_back({JobKind::optimised, optimised.id, optimised.defines, spec.uber.stage, spec.uber.path, {}});
+  if (spec.program_vertex) {
+    const ShaderFile& vertex = *spec.program_vertex;
+    for (const RawPermutation& raw : plan.raw)
+      if (!raw.pruned) jobs.push_back({JobKind::raw, raw.id, raw.defines, vertex.stage, vertex.path, {}, true});
+    for (const OptimisedPermutation& o : plan.optimised)
+      jobs.push_back({JobKind::optimised, o.id, o.defines, vertex.stage, vertex.path, {}, true});
+  }
+  for (std::size_t i = 0; i < spec.companions.size(); ++i) {
+    const CompanionSpec& companion = spec.companions[i];
+    jobs.push_back({JobKind::companion, static_cast<std::uint32_t>(i), companion.defines, companion.file.stage,
+                    companion.file.path, companion.name});
+  }
+  return jobs;
+}
+
+// The domain's fixed defines, less those the job sets itself (a companion's own value wins).
+GlslSource source_of(const DomainSpec& spec, const CompileJob& job) {
+  GlslSource source{job.path, job.stage, spec.include_dirs, job.defines, {}, spec.target_env};
+  for (const std::string& fixed : spec.defines) {
+    bool own = std::any_of(job.defines.begin(), job.defines.end(),
+                           [&](const std::string& d) { return define_name(d) == define_name(fixed); });
+    if (!own) source.fixed_defines.push_back(fixed);
+  }
+  return source;
+}
+
+class DomainCompiler {
+ public:
+  DomainCompiler(CompiledDomain& domain, const CompileOptions& options) : d_(domain), options_(options) {
+    key_parts_.target = target_description(d_.spec.target_env);
+  }
+
+  Status run() {
+    if (Status s = check_shader_files(); !s) return s;
+    d_.jobs = make_jobs(d_.spec, d_.plan);
+    index_jobs();
+    PhaseClock clock(d_.phases);
+    d_.inputs_reused = reuse_inputs();
+    clock.lap("input check");
+    if (!d_.inputs_reused) {
+      if (Status s = preprocess_all(); !s) return s;
+      clock.lap("preprocess");
+    }
+    if (Status s = compile_sources(); !s) return s;
+    clock.lap("compile or load");
+    Status checked = check_blobs(clock);
+    if (!checked && remote_hits() > 0) checked = recompile_remote_hits(std::move(checked), clock);
+    if (!checked) return checked;
+    keep_remote_hits();
+    if (d_.spec.strip_debug) {
+      // Only now: the caches, the server's entries included, keep the blobs with their names.
+      if (Status s = strip_blobs(); !s) return s;
+      clock.lap("strip debug");
+    }
+    remember_inputs();
+    clock.lap("remember");
+    return Ok{};
+  }
+
+ private:
+  void index_jobs() {
+    d_.raw_jobs.assign(d_.plan.raw.size(), -1);
+    d_.optimised_jobs.assign(d_.plan.optimised.size(), -1);
+    d_.companion_jobs.assign(d_.spec.companions.size(), -1);
+    bool program = d_.spec.program_vertex.has_value();
+    d_.raw_vertex_jobs.assign(program ? d_.plan.raw.size() : 0, -1);
+    d_.optimised_vertex_jobs.assign(program ? d_.plan.optimised.size() : 0, -1);
+    for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
+      const CompileJob& job = d_.jobs[i];
+      auto& index = job.kind == JobKind::raw         ? (job.vertex_half ? d_.raw_vertex_jobs : d_.raw_jobs)
+                    : job.kind == JobKind::optimised ? (job.vertex_half ? d_.optimised_vertex_jobs : d_.optimised_jobs)
+                                                     : d_.companion_jobs;
+      index[job.id] = static_cast<int>(i);
+    }
+  }
+
+  // A shader file that is not there is the spec's mistake: said once, at the spec's key and
+  // line, rather than once per permutation as a compile error.
+  Status check_shader_files() const {
+    std::vector<const ShaderFile*> files{&d_.spec.uber};
+    if (d_.spec.program_vertex) files.push_back(&*d_.spec.program_vertex);
+    for (const CompanionSpec& c : d_.spec.companions) files.push_back(&c.file);
+    Diagnostics errors;
+    for (const ShaderFile* file : files) {
+      std::error_code ec;
+      if (std::filesystem::exists(file->path, ec) || ec) continue;  // unreadable: the compile says why
+      errors.push_back(Diagnostic{Severity::error, d_.spec.spec_path.string(), file->line, file->column,
+                                  (file->spec_key.empty() ? std::string("shader") : file->spec_key) + ": shader file " +
+                                      file->path.string() + " does not exist"});
+    }
+    if (!errors.empty()) return errors;
+    return Ok{};
+  }
+
+  bool cancelled() const { return options_.cancelled && options_.cancelled(); }
+
+  Status check_blobs(PhaseClock& clock) {
+    if (Status s = reflect_blobs(); !s) return s;
+    clock.lap("reflect");
+    if (Status s = merge(); !s) return s;
+    if (Status s = check_program(); !s) return s;
+    clock.lap("layout");
+    return Ok{};
+  }
+
+  std::size_t remote_hits() const {
+    return static_cast<std::size_t>(
+        std::count_if(d_.sources.begin(), d_.sources.end(), [](const SourceRecord& r) { return r.remote_hit; }));
+  }
+
+  // Entries that are each valid SPIR-V can still fail together (a foreign shader with another
+  // layout). The server is then not trusted for this build: its entries are compiled here and
+  // checked again, so the outcome is what a build without it would give. Only when that passes
+  // was the server to blame, and warned about; otherwise the domain's own error stands.
+  Status recompile_remote_hits(Status failed, PhaseClock& clock) {
+    remote_distrusted_ = true;
+    std::vector<bool> compiled(d_.sources.size());
+    for (std::size_t i = 0; i < d_.sources.size(); ++i) {
+      SourceRecord& record = d_.sources[i];
+      if (record.remote_hit) record.remote_hit = record.cache_hit = false, record.blob = -1;
+      compiled[i] = !record.cache_hit;
+    }
+    d_.blobs.clear();
+    d_.layout = {};
+    if (Status s = compile_sources(); !s) return s;
+    // What the first pass compiled now loads from the local cache; the summary counts it compiled.
+    for (std::size_t i = 0; i < d_.sources.size(); ++i)
+      if (compiled[i]) d_.sources[i].cache_hit = false;
+    clock.lap("compile again");
+    Status checked = check_blobs(clock);
+    if (checked) options_.remote->distrust(failed.errors().front().message);
+    return checked;
+  }
+
+  // A remote entry reaches the local cache only once the whole build has used it: the local
+  // cache never holds what the checks would reject.
+  void keep_remote_hits() {
+    parallel_for(d_.sources.size(), options_.jobs, [&](std::size_t s) {
+      const SourceRecord& record = d_.sources[s];
+      if (!record.remote_hit) return;
+      const Blob& blob = d_.blobs[static_cast<std::size_t>(record.blob)];
+      store_local(record.key, CachedBlob{blob.words, blob.fell_back, blob.fallback_reason});
+      note_server_has(record.key);
+    });
+    if (options_.cache && options_.remote && server_keys_changed_)
+      options_.cache->remember_keys_on_server(options_.remote->shown_url(), server_keys_);
+  }
+
+  // What the local cache knows the server holds, read on first use.
+  bool server_has(const std::string& key) {
+    std::lock_guard lock(server_keys_mutex_);
+    if (!server_keys_loaded_ && options_.cache)
+      server_keys_ = options_.cache->keys_on_server(options_.remote->shown_url());
+    server_keys_loaded_ = true;
+    return server_keys_.count(key) > 0;
+  }
+
+  void note_server_has(const std::string& key) {
+    if (!server_has(key)) {
+      std::lock_guard lock(server_keys_mutex_);
+      server_keys_changed_ = server_keys_.insert(key).second || server_keys_changed_;
+    }
+  }
+
+  Status cancelled_error() const { return make_error("build interrupted"); }
+
+  void log(const std::string& line) const {
+    if (options_.log) options_.log(line);
+  }
+
+  // Gives job `i` the distinct source with this cache key, adding it if new.
+  void assign_source(std::size_t i, const std::string& key, std::map<std::string, int>& by_key) {
+    auto [it, fresh] = by_key.try_emplace(key, static_cast<int>(d_.sources.size()));
+    if (fresh) d_.sources.push_back({key, i, false, 0.0, -1});
+    d_.jobs[i].source = it->second;
+  }
+
+  // With an input-set entry whose every file is unchanged, the preprocessed texts (and so
+  // their keys) are what they were: take the keys and skip glslang altogether.
+  bool reuse_inputs() {
+    if (!options_.inputs || options_.input_key.empty()) return false;
+    auto set = options_.inputs->load(options_.input_key);
+    if (!set) set = remote_input_set();
+    if (!set || set->source_keys.size() != d_.jobs.size() || !inputs_unchanged(set->files)) return false;
+    std::map<std::string, int> by_key;
+    for (std::size_t i = 0; i < d_.jobs.size(); ++i) assign_source(i, set->source_keys[i], by_key);
+    std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
+    for (const InputRead& file : set->files)
+      if (file.found) dependencies.insert(file.path);
+    d_.dependencies.assign(dependencies.begin(), dependencies.end());
+    return true;
+  }
+
+  // The signed input set another machine of the team remembered (RemoteCache::load_input_set):
+  // a served build then skips preprocessing too. Checked like a local one before use.
+  std::optional<InputSet> remote_input_set() {
+    if (!options_.remote || options_.input_key.empty()) return std::nullopt;
+    auto bytes = options_.remote->load_input_set(options_.input_key);
+    if (!bytes) return std::nullopt;
+    auto set = decode_input_set(options_.input_key, *bytes);
+    if (set) remote_input_set_ = *bytes;
+    return set;
+  }
+
+  void remember_inputs() {
+    if (!options_.inputs || options_.input_key.empty()) return;
+    // An input set from the server is kept here once the build has used it successfully.
+    if (d_.inputs_reused && remote_input_set_) {
+      if (auto set = decode_input_set(options_.input_key, *remote_input_set_))
+        (void)options_.inputs->store(options_.input_key, *set);
+      return;
+    }
+    if (d_.inputs_reused || !reads_) return;
+    InputSet set{std::move(*reads_), {}};
+    for (const CompileJob& job : d_.jobs)
+      set.source_keys.push_back(d_.sources[static_cast<std::size_t>(job.source)].key);
+    // Like the content cache: failing to remember only costs time later.
+    if (Status stored = options_.inputs->store(options_.input_key, set); !stored)
+      log("warning: " + stored.errors().front().to_string());
+    if (options_.remote && !remote_distrusted_)
+      options_.remote->store_input_set(options_.input_key, encode_input_set(options_.input_key, set));
+  }
+
+  Status preprocess_all() {
+    std::vector<Result<Preprocessed>> results(d_.jobs.size(), Result<Preprocessed>(Preprocessed{}));
+    parallel_for(
+        d_.jobs.size(), options_.jobs,
+        [&](std::size_t i) {
+          auto start = Clock::now();
+          results[i] = preprocess(source_of(d_.spec, d_.jobs[i]));
+          d_.jobs[i].preprocess_ms = milliseconds_since(start);
+        },
+        options_.cancelled);
+    if (cancelled()) return cancelled_error();
+    std::vector<JobFailure> failures;
+    std::map<std::string, int> by_key;
+    std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
+    std::vector<std::vector<InputRead>> reads;
+    for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
+      dependencies.insert(d_.jobs[i].path.lexically_normal());
+      if (!results[i]) {
+        failures.push_back({i, results[i].errors(), {}});
+        continue;
+      }
+      for (const auto& include : results[i]->includes) dependencies.insert(include);
+      assign_source(i, cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(results[i]->text)), by_key);
+      reads.push_back(std::move(results[i]->reads));
+    }
+    d_.dependencies.assign(dependencies.begin(), dependencies.end());
+    if (!failures.empty()) return group_failures(d_.jobs, failures, options_.verbose);
+    reads_ = merge_reads(reads);
+    return Ok{};
+  }
+
+  // Locally, then remotely (a local hit is offered to the server, which may lack it). A remote
+  // entry is used only if its SPIR-V validates for this build's target and has an entry point of
+  // its stage (entry_check.h); the build then reflects it and checks the layout with the rest,
+  // and keeps it locally only once all of that passed (keep_remote_hits).
+  std::optional<CachedBlob> load_cached(SourceRecord& record) {
+    std::optional<CachedBlob> hit;
+    if (options_.cache) hit = options_.cache->load(record.key);
+    if (hit && options_.remote && !options_.remote->read_only() && !server_has(record.key) &&
+        options_.remote->offer(record.key, *hit))
+      note_server_has(record.key);
+    if (!hit && options_.remote && !remote_distrusted_ &&
+        (hit = options_.remote->load(record.key, fit_check(d_.jobs[record.first_job].stage))))
+      record.remote_hit = true;
+    record.cache_hit = hit.has_value();
+    return hit;
+  }
+
+  // Remote entries are validated once per distinct blob and stage: many sources share a blob.
+  RemoteCache::Check fit_check(Stage stage) {
+    return [this, stage](const CachedBlob& blob) {
+      std::string id = sha256_hex(blob.words) + std::string(stage_name(stage));
+      {
+        std::lock_guard lock(checked_mutex_);
+        if (auto found = checked_.find(id); found != checked_.end()) return found->second;
+      }
+      std::string reason = unfit_reason(blob.words, stage, d_.spec.target_env);
+      std::lock_guard lock(checked_mutex_);
+      checked_.emplace(std::move(id), reason);
+      return reason;
+    };
+  }
+
+  void store_local(const std::string& key, const CachedBlob& blob) {
+    if (!options_.cache) return;
+    // A cache that cannot be written only costs time later; the build itself is fine.
+    if (Status stored = options_.cache->store(key, blob); !stored)
+      log("warning: " + stored.errors().front().to_string());
+  }
+
+  // The preprocessed lines of each failed job, so that grouping can count the permutations
+  // that stopped at an earlier error but compile a later error's line too. Only failed
+  // builds pay for this second preprocessing.
+  std::vector<JobFailure> with_lines(std::vector<JobFailure> failures) {
+    parallel_for(
+        failures.size(), options_.jobs,
+        [&](std::size_t i) {
+          const CompileJob& job = d_.jobs[failures[i].job];
+          if (auto text = preprocess(source_of(d_.spec, job)))
+            failures[i].lines = live_lines(text->text, job.path.lexically_normal().string());
+        },
+        options_.cancelled);
+    return failures;
+  }
+
+  Result<CachedBlob> compile_one(SourceRecord& record) {
+    if (auto hit = load_cached(record)) return std::move(*hit);
+    auto start = Clock::now();
+    auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
+    if (!words) return std::move(words).take_errors();
+    auto optimised = optimise_and_validate(std::move(words).value(), d_.spec.target_env);
+    if (!optimised) return std::move(optimised).take_errors();
+    record.compile_ms = milliseconds_since(start);
+    CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
+    store_local(record.key, blob);
+    if (options_.remote && !remote_distrusted_ && options_.remote->store(record.key, blob)) note_server_has(record.key);
+    return blob;
+  }
+
+  Status compile_sources() {
+    std::vector<Result<CachedBlob>> results(d_.sources.size(), Result<CachedBlob>(CachedBlob{}));
+    std::atomic<std::size_t> done{0};
+    std::mutex log_mutex;
+    std::size_t total = d_.sources.size();
+    parallel_for(
+        total, options_.jobs,
+        [&](std::size_t i) {
+          results[i] = compile_one(d_.sources[i]);
+          std::size_t finished = ++done;
+          report_progress(finished, total, i, log_mutex);
+        },
+        options_.cancelled);
+    if (cancelled()) return cancelled_error();
+    std::vector<JobFailure> failures;
+    // Every job with a failed source has that source's errors.
+    for (std::size_t j = 0; j < d_.jobs.size(); ++j) {
+      const auto& result = results[static_cast<std::size_t>(d_.jobs[j].source)];
+      if (!result) failures.push_back({j, result.errors(), {}});
+    }
+    if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)), options_.verbose);
+    store_blobs(results);
+    return Ok{};
+  }
+
+  void report_progress(std::size_t finished, std::size_t total, std::size_t source, std::mutex& mutex) {
+    std::lock_guard lock(mutex);
+    const SourceRecord& record = d_.sources[source];
+    if (options_.verbose) {
+      const CompileJob& job = d_.jobs[record.first_job];
+      std::string defines;
+      for (const std::string& d : job.defines) {
+        defines += ' ';
+        defines += d;
+      }
+      log("[" + std::to_string(finished) + "/" + std::to_string(total) + "] " +
+          (record.remote_hit  ? "remote   "
+           : record.cache_hit ? "cached   "
+                              : "compiled ") +
+          job.label() + (defines.empty() ? "" : ":" + defines));
+    } else if (total >= 8 && finished % (total / 4) == 0 && finished != total) {
+      log(std::to_string(finished) + "/" + std::to_string(total) + " sources done");
+    }
+  }
+
+  // Distinct sources can still give equal SPIR-V (a define that changes no code path that
+  // survives optimisation); those share one blob.
+  void store_blobs(std::vector<Result<CachedBlob>>& results) {
+    std::map<std::string, int> by_hash;
+    for (std::size_t s = 0; s < d_.sources.size(); ++s) {
+      CachedBlob& compiled = results[s].value();
+      std::string hash = sha256_hex(compiled.words);
+      auto [it, fresh] = by_hash.try_emplace(hash, static_cast<int>(d_.blobs.size()));
+      if (fresh)
+        d_.blobs.push_back(
+            Blob{std::move(compiled.words), hash, {}, compiled.fell_back, std::move(compiled.fallback_reason)});
+      d_.sources[s].blob = it->second;
+    }
+    for (CompileJob& job : d_.jobs) job.blob = d_.sources[static_cast<std::size_t>(job.source)].blob;
+  }
+
+  Status reflect_blobs() {
+    Diagnostics errors;
+    std::vector<Stage> stages(d_.blobs.size(), Stage::fragment);
+    for (const CompileJob& job : d_.jobs) stages[static_cast<std::size_t>(job.blob)] = job.stage;
+    for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
+      auto info = reflect(d_.blobs[b].words, stages[b]);
+      if (!info) {
+        for (Diagnostic error : info.errors()) errors.push_back(std::move(error));
+        continue;
+      }
+      d_.blobs[b].reflection = std::move(info).value();
+    }
+    if (!errors.empty()) return errors;
+    return Ok{};
+  }
+
+  // After reflection, which reads the names: the blobs lose their debug instructions. Blobs
+  // that differed only in those become one; every job and source follows its blob.
+  Status strip_blobs() {
+    std::vector<Blob> stripped;
+    std::vector<int> moved(d_.blobs.size(), -1);
+    std::map<std::string, int> by_hash;
+    Diagnostics errors;
+    for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
+      auto words = strip_debug_info(d_.blobs[b].words, d_.spec.target_env);
+      if (!words) {
+        for (Diagnostic error : words.errors()) errors.push_back(std::move(error));
+        continue;
+      }
+      std::string hash = sha256_hex(*words);
+      auto [it, fresh] = by_hash.try_emplace(hash, static_cast<int>(stripped.size()));
+      if (fresh) {
+        stripped.push_back(std::move(d_.blobs[b]));
+        stripped.back().words = std::move(words).value();
+        stripped.back().hash = hash;
+      }
+      moved[b] = it->second;
+    }
+    if (!errors.empty()) return errors;
+    d_.blobs = std::move(stripped);
+    for (CompileJob& job : d_.jobs) job.blob = moved[static_cast<std::size_t>(job.blob)];
+    for (SourceRecord& source : d_.sources) source.blob = moved[static_cast<std::size_t>(source.blob)];
+    return Ok{};
+  }
+
+  Status merge() {
+    // Each permutation keeps its own reflection; there is nothing to merge or check.
+    if (d_.spec.layout == LayoutMode::per_permutation) return Ok{};
+    std::vector<LabelledReflection> labelled;
+    std::set<int> seen;
+    for (const CompileJob& job : d_.jobs) {
+      if (job.kind == JobKind::companion && !d_.spec.companions[job.id].shared_layout) continue;
+      if (!seen.insert(job.blob).second) continue;
+      std::string label = job.label();
+      if (job.kind != JobKind::companion && !job.defines.empty()) {
+        label += " (";
+        for (std::size_t i = 0; i < job.defines.size(); ++i) {
+          if (i) label += ' ';
+          label += job.defines[i];
+        }
+        label += ")";
+      }
+      labelled.push_back(
+          {label, job.stage, job.kind != JobKind::companion, &d_.blobs[static_cast<std::size_t>(job.blob)].reflection});
+    }
+    auto layout = merge_layouts(labelled);
+    if (!layout) {
+      Diagnostics errors = std::move(layout).take_errors();
+      for (Diagnostic& e : errors) e.file = d_.spec.spec_path.string();
+      return errors;
+    }
+    d_.layout = std::move(layout).value();
+    return Ok{};
+  }
+
+  // The "program" form: every permutation's fragment inputs are among its vertex outputs. A
+  // problem is said once with the permutations that have it, as GLSL errors are.
+  Status check_program() {
+    if (!d_.spec.program_vertex) return Ok{};
+    std::map<std::string, std::set<std::size_t>> problems;  // -> fragment jobs
+    std::vector<std::string> order;
+    for (const CompileJob& job : d_.jobs) {
+      if (!job.vertex_half) continue;
+      const auto& index = job.kind == JobKind::raw ? d_.raw_jobs : d_.optimised_jobs;
+      std::size_t fragment = static_cast<std::size_t>(index[job.id]);
+      for (std::string& problem :
+           interface_problems(d_.blobs[static_cast<std::size_t>(job.blob)].reflection.outputs,
+                              d_.blobs[static_cast<std::size_t>(d_.jobs[fragment].blob)].reflection.inputs)) {
+        auto [it, fresh] = problems.try_emplace(problem);
+        if (fresh) order.push_back(std::move(problem));
+        it->second.insert(fragment);
+      }
+    }
+    Diagnostics errors;
+    for (const std::string& problem : order) {
+      Diagnostic error =
+          make_error(problem + " (" + where_it_occurs(d_.jobs, problems[problem], options_.verbose) + ")");
+      error.file = d_.spec.spec_path.string();
+      errors.push_back(std::move(error));
+    }
+    if (!errors.empty()) return errors;
+    return Ok{};
+  }
+
+  CompiledDomain& d_;
+  const CompileOptions& options_;
+  CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
+  std::optional<std::vector<InputRead>> reads_;          // what preprocessing read; nullopt: inconsistent
+  bool remote_distrusted_ = false;                       // its entries failed the checks together
+  std::optional<std::string> remote_input_set_;          // the bytes of the input set the server gave
+  std::mutex checked_mutex_;                             // guards checked_
+  std::map<std::string, std::string> checked_;           // blob hash + stage -> unfit_reason()
+  std::mutex server_keys_mutex_;                         // guards the three below
+  std::set<std::string> server_keys_;                    // keys the remote cache is known to hold
+  bool server_keys_loaded_ = false, server_keys_changed_ = false;
+};
+
+}  // namespace
+
+Result<CompiledDomain> compile_domain(DomainSpec spec, PermutationPlan plan, const CompileOptions& options) {
+  CompiledDomain domain;
+  domain.spec = std::move(spec);
+  domain.plan = std::move(plan);
+  if (Status status = DomainCompiler(domain, options).run(); !status) return std::move(status).take_errors();
+  return domain;
+}
+
+}  // namespace shadergen

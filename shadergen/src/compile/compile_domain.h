@@ -1,0 +1,37 @@
+// compile_domain.h - compiling a whole domain: every permutation and companion preprocessed,
+// deduplicated, compiled (or taken from the caches), optimised, validated and reflected, then
+// the domain's layout and program checks. The result is a CompiledDomain (compiled_domain.h);
+// nothing is written but cache entries.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "compile/compiled_domain.h"
+#include "shadergen/diagnostic.h"
+#include "shadergen/domain.h"
+#include "shadergen/permutations.h"
+
+namespace shadergen {
+
+class ContentCache;
+class InputCache;
+class RemoteCache;
+
+struct CompileOptions {
+  unsigned jobs = 0;
+  const ContentCache* cache = nullptr;  // nullptr: no cache
+  const InputCache* inputs = nullptr;   // nullptr: always preprocess
+  std::string input_key;                // input_set_key() of this build; empty: always preprocess
+  bool verbose = false;
+  std::function<void(const std::string&)> log;
+  std::function<bool()> cancelled;
+  RemoteCache* remote = nullptr;  // nullptr: no remote cache; else asked after a local miss
+};
+
+// Preprocesses, deduplicates, compiles (or loads from the cache), optimises, validates and
+// reflects every permutation, then checks the merged layout. Diagnostics about GLSL errors are
+// grouped: one per distinct message, naming the permutations it occurs in.
+Result<CompiledDomain> compile_domain(DomainSpec spec, PermutationPlan plan, const CompileOptions& options);
+
+}  // namespace shadergen

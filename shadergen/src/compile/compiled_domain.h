@@ -1,0 +1,81 @@
+// compiled_domain.h - the in-memory result of compiling a domain, before anything is written.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cache/remote_cache.h"
+#include "compile/layout_check.h"
+#include "compile/reflection.h"
+#include "shadergen/build_summary.h"
+#include "shadergen/diagnostic.h"
+#include "shadergen/domain.h"
+#include "shadergen/permutations.h"
+
+namespace shadergen {
+
+// One distinct SPIR-V blob; permutations with equal words share it.
+struct Blob {
+  std::vector<std::uint32_t> words;
+  std::string hash;  // SHA-256 of the words, hex
+  ReflectionInfo reflection;
+  bool fell_back = false;
+  std::string fallback_reason;
+};
+
+enum class JobKind { raw, optimised, companion };
+
+// One thing to compile: a raw or optimised permutation or a companion shader.
+struct CompileJob {
+  JobKind kind = JobKind::raw;
+  std::uint32_t id = 0;  // raw/optimised ID, or companion index
+  std::vector<std::string> defines;
+  Stage stage = Stage::fragment;
+  std::filesystem::path path;
+  std::string label() const;  // "raw 37", "optimised 5", "companion tile" needs the name:
+  std::string name;           // companion name (empty otherwise)
+  bool vertex_half = false;   // the vertex half of a "program" permutation
+  // Filled while compiling:
+  int source = -1;  // index of its distinct preprocessed source
+  int blob = -1;    // index into CompiledDomain::blobs
+  double preprocess_ms = 0.0;
+};
+
+struct SourceRecord {
+  std::string key;  // cache key
+  std::size_t first_job = 0;
+  bool cache_hit = false;
+  double compile_ms = 0.0;
+  int blob = -1;
+  bool remote_hit = false;  // the cache hit came from the remote cache
+};
+
+struct CompiledDomain {
+  DomainSpec spec;
+  PermutationPlan plan;
+  std::vector<CompileJob> jobs;
+  // Index into `jobs` by raw ID, optimised ID and companion index (-1: none, e.g. pruned),
+  // so looking a permutation up is constant time even with 65,536 raw IDs.
+  std::vector<int> raw_jobs, optimised_jobs, companion_jobs;
+  std::vector<int> raw_vertex_jobs, optimised_vertex_jobs;  // "program" form only
+  std::vector<SourceRecord> sources;
+  std::vector<Blob> blobs;
+  MergedLayout layout;
+  std::vector<std::filesystem::path> dependencies;  // spec, shaders, includes; sorted, unique
+  bool inputs_reused = false;                       // source keys came from the input-set cache, no preprocessing
+  std::vector<PhaseTime> phases;                    // preprocess (or input check), compile or load, reflect, layout
+  std::optional<RemoteCacheStats> remote;           // with a remote cache only
+
+  // Blob of raw ID `id`, or nullptr when pruned. Likewise for optimised IDs and companions.
+  const Blob* raw_blob(std::uint32_t id) const;
+  const Blob* optimised_blob(std::uint32_t id) const;
+  const Blob* companion_blob(std::size_t index) const;
+  // The vertex half of a "program" permutation, or nullptr.
+  const Blob* raw_vertex_blob(std::uint32_t id) const;
+  const Blob* optimised_vertex_blob(std::uint32_t id) const;
+};
+
+}  // namespace shadergen

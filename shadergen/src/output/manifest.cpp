@@ -1,0 +1,304 @@
+#include "output/manifest.h"
+
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
+#include <nlohmann/json.hpp>
+
+#include "spec/stages.h"
+
+namespace shadergen {
+
+std::string blob_relative_path(const Blob& blob) { return "spirv/" + blob.hash.substr(0, 16) + ".spv"; }
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Two-space indentation, keys in insertion order, "\n" line ends and a final newline. UTF-8 is
+// written as it is. The spec reader accepts only UTF-8; should a byte that is not UTF-8 reach
+// here from elsewhere (an optimiser's message), it becomes U+FFFD: the output stays valid JSON
+// and writing never throws.
+std::string dump(const Json& document) { return document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; }
+
+Json stage_list(std::uint32_t stages) {
+  Json names = Json::array();
+  for (std::uint32_t bit = 1; bit <= static_cast<std::uint32_t>(Stage::callable); bit <<= 1)
+    if (stages & bit) names.push_back(stage_name(static_cast<Stage>(bit)));
+  return names;
+}
+
+// {set, binding, kind, count, stages, name}, plus runtime_sized and input_attachment_index
+// where they apply.
+Json bindings_json(const std::vector<BindingInfo>& bindings) {
+  Json out = Json::array();
+  for (const BindingInfo& b : bindings) {
+    Json& entry = out.emplace_back(Json::object());
+    entry["set"] = b.set;
+    entry["binding"] = b.binding;
+    entry["kind"] = descriptor_kind_name(b.kind);
+    entry["count"] = b.count;
+    entry["stages"] = stage_list(b.stages);
+    entry["name"] = b.name;
+    if (b.runtime_sized) entry["runtime_sized"] = true;
+    if (b.kind == DescriptorKind::input_attachment) entry["input_attachment_index"] = b.input_attachment_index;
+  }
+  return out;
+}
+
+Json variables_json(const std::vector<VariableInfo>& variables) {
+  Json out = Json::array();
+  for (const VariableInfo& v : variables)
+    out.push_back(Json{{"location", v.location}, {"components", v.components}, {"name", v.name}});
+  return out;
+}
+
+// With "layout": "per_permutation", the permutation's own layout: its blob's bindings, push
+// constants and outputs.
+Json own_layout(const Blob& blob) {
+  return Json{{"bindings", bindings_json(blob.reflection.bindings)},
+              {"push_constant_size", blob.reflection.push_constant_size},
+              {"outputs", variables_json(blob.reflection.outputs)}};
+}
+
+void add_blob_fields(Json& entry, const Blob* blob, const DomainSpec& spec) {
+  if (!blob) return;
+  entry["spirv"] = blob_relative_path(*blob);
+  entry["hash"] = blob->hash;
+  if (spec.layout == LayoutMode::per_permutation) entry["layout"] = own_layout(*blob);
+}
+
+// The "program" form: the permutation's vertex shader beside its fragment shader.
+void add_vertex_half(Json& entry, const Blob* blob) {
+  if (!blob) return;
+  entry["vertex_spirv"] = blob_relative_path(*blob);
+  entry["vertex_hash"] = blob->hash;
+}
+
+void add_features(Json& manifest, const DomainSpec& spec) {
+  Json& raw = manifest["raw_features"] = Json::array();
+  for (const RawFeature& f : spec.raw_features)
+    raw.push_back(Json{{"name", f.name}, {"bit", f.bit}, {"define", f.define}});
+  Json& optimised = manifest["optimised_bits"] = Json::array();
+  for (const OptimisedBit& b : spec.optimised_bits)
+    optimised.push_back(Json{{"name", b.name}, {"bit", b.bit}, {"when", b.when.text}});
+}
+
+Json raw_json(const CompiledDomain& d) {
+  Json out = Json::array();
+  for (const RawPermutation& raw : d.plan.raw) {
+    Json& entry = out.emplace_back(Json{{"id", raw.id}, {"defines", raw.defines}, {"pruned", raw.pruned}});
+    if (d.spec.collapsed) entry["optimised"] = raw.optimised;
+    add_blob_fields(entry, raw.pruned ? nullptr : d.raw_blob(raw.id), d.spec);
+    add_vertex_half(entry, raw.pruned ? nullptr : d.raw_vertex_blob(raw.id));
+  }
+  return out;
+}
+
+Json optimised_json(const CompiledDomain& d) {
+  Json out = Json::array();
+  for (const OptimisedPermutation& optimised : d.plan.optimised) {
+    Json& entry = out.emplace_back(Json{{"id", optimised.id},
+                                        {"defines", optimised.defines},
+                                        {"raw_equivalent", optimised.raw_equivalent},
+                                        {"raw_mapped", optimised.raw_mapped}});
+    add_blob_fields(entry, d.optimised_blob(optimised.id), d.spec);
+    add_vertex_half(entry, d.optimised_vertex_blob(optimised.id));
+  }
+  return out;
+}
+
+Json companions_json(const CompiledDomain& d) {
+  Json out = Json::array();
+  for (std::size_t i = 0; i < d.spec.companions.size(); ++i) {
+    const CompanionSpec& c = d.spec.companions[i];
+    Json& entry = out.emplace_back(Json{{"name", c.name},
+                                        {"stage", stage_name(c.file.stage)},
+                                        {"defines", c.defines},
+                                        {"shared_layout", c.shared_layout}});
+    add_blob_fields(entry, d.companion_blob(i), d.spec);
+  }
+  return out;
+}
+
+std::string_view scalar_type_name(ScalarType type) {
+  switch (type) {
+    case ScalarType::boolean: return "bool";
+    case ScalarType::int32: return "int";
+    case ScalarType::uint32: return "uint";
+    case ScalarType::float32: return "float";
+  }
+  return "?";
+}
+
+// A float as the double with the shortest decimal form that reads back as the same float
+// (0.1f is written 0.1, not 0.10000000149011612).
+double shortest_double(float value) {
+  char text[32];
+  auto [end, ec] = std::to_chars(text, text + sizeof text - 1, value);
+  *end = '\0';
+  return ec == std::errc() ? std::strtod(text, nullptr) : static_cast<double>(value);
+}
+
+// The default as JSON of its own type: bool, integer, or (for float) a JSON float.
+Json default_json(const SpecConstantInfo& c) {
+  switch (c.type) {
+    case ScalarType::boolean: return c.default_bits != 0;
+    case ScalarType::int32: return static_cast<std::int32_t>(c.default_bits);
+    case ScalarType::uint32: return c.default_bits;
+    case ScalarType::float32: {
+      float f = 0;
+      std::memcpy(&f, &c.default_bits, sizeof f);
+      return shortest_double(f);
+    }
+  }
+  return nullptr;
+}
+
+void add_workgroup(Json& entry, const ReflectionInfo& r) {
+  entry["local_size"] = Json(r.local_size);
+  Json& ids = entry["local_size_ids"] = Json::array();
+  for (std::uint32_t id : r.local_size_ids) ids.push_back(id == Reflection::kNoConstant ? Json(nullptr) : Json(id));
+}
+
+Json specialization_constants_json(const ReflectionInfo& r) {
+  Json out = Json::array();
+  for (const SpecConstantInfo& c : r.specialization_constants)
+    out.push_back(
+        Json{{"id", c.id}, {"name", c.name}, {"type", scalar_type_name(c.type)}, {"default", default_json(c)}});
+  return out;
+}
+
+// Every distinct blob with its own reflection: what a permutation needs when it has a
+// pipeline layout of its own, its work-group size and its specialization constants.
+Json blobs_json(const CompiledDomain& d) {
+  std::vector<Stage> stages(d.blobs.size(), Stage::fragment);
+  for (const CompileJob& job : d.jobs) stages[static_cast<std::size_t>(job.blob)] = job.stage;
+  Json out = Json::array();
+  for (std::size_t i = 0; i < d.blobs.size(); ++i) {
+    const ReflectionInfo& r = d.blobs[i].reflection;
+    Json& entry = out.emplace_back(Json{{"spirv", blob_relative_path(d.blobs[i])},
+                                        {"stage", stage_name(stages[i])},
+                                        {"bindings", bindings_json(r.bindings)},
+                                        {"push_constant_size", r.push_constant_size},
+                                        {"inputs", variables_json(r.inputs)},
+                                        {"outputs", variables_json(r.outputs)}});
+    if (has_workgroup(stages[i])) add_workgroup(entry, r);
+    entry["specialization_constants"] = specialization_constants_json(r);
+  }
+  return out;
+}
+
+Json layout_json(const MergedLayout& layout) {
+  Json push_constants = Json::array();
+  for (const PushConstantInfo& p : layout.push_constants)
+    push_constants.push_back(Json{{"size", p.size}, {"stages", stage_list(p.stages)}});
+  return Json{{"bindings", bindings_json(layout.bindings)}, {"push_constants", std::move(push_constants)}};
+}
+
+}  // namespace
+
+std::string write_manifest(const CompiledDomain& d) {
+  Json m = Json::object();
+  m["format"] = 1;
+  m["generator"] = "shadergen " SHADERGEN_VERSION;
+  m["domain"] = d.spec.name;
+  m["uber_shader"] = d.spec.uber.path.filename().string();
+  m["stage"] = stage_name(d.spec.uber.stage);
+  if (d.spec.program_vertex) m["vertex_shader"] = d.spec.program_vertex->path.filename().string();
+  m["target_env"] = target_env_name(d.spec.target_env);
+  m["collapsed"] = d.spec.collapsed;
+  m["layout"] = d.spec.layout == LayoutMode::shared ? "shared" : "per_permutation";
+  // The fixed defines every shader was compiled with (spec, --define, CMake DEFINES), in order.
+  m["defines"] = d.spec.defines;
+  add_features(m, d.spec);
+  m["raw"] = raw_json(d);
+  m["optimised"] = optimised_json(d);
+  m["companions"] = companions_json(d);
+  m["pipeline_layout"] = layout_json(d.layout);
+  m["blobs"] = blobs_json(d);
+  return dump(m);
+}
+
+namespace {
+
+Json stage_counts(const CompiledDomain& d) {
+  std::uint32_t pruned = 0, hits = 0, fallbacks = 0;
+  for (const RawPermutation& raw : d.plan.raw) pruned += raw.pruned;
+  for (const SourceRecord& s : d.sources) hits += s.cache_hit;
+  for (const Blob& b : d.blobs) fallbacks += b.fell_back;
+  Json counts = Json::object();
+  counts["raw"] = d.plan.raw.size();
+  counts["pruned"] = pruned;
+  counts["canonical"] = d.jobs.size();
+  counts["unique_sources"] = d.sources.size();
+  counts["cache_hits"] = hits;
+  counts["unique_blobs"] = d.blobs.size();
+  counts["optimiser_fallbacks"] = fallbacks;
+  return counts;
+}
+
+Json remote_counts(const RemoteCacheStats& remote) {
+  return Json{
+      {"fetched", remote.fetched}, {"missed", remote.missed}, {"uploaded", remote.uploaded}, {"failed", remote.failed}};
+}
+
+Json permutation_timings(const CompiledDomain& d) {
+  Json out = Json::array();
+  for (const CompileJob& job : d.jobs) {
+    const SourceRecord& source = d.sources[static_cast<std::size_t>(job.source)];
+    const Blob& blob = d.blobs[static_cast<std::size_t>(job.blob)];
+    Json& entry =
+        out.emplace_back(Json{{"permutation", job.label()},
+                              {"source", job.source},
+                              {"compiled_here", source.first_job == static_cast<std::size_t>(&job - d.jobs.data())},
+                              {"cache_hit", source.cache_hit},
+                              {"preprocess_ms", job.preprocess_ms},
+                              {"compile_ms", source.compile_ms},
+                              {"spirv_bytes", blob.words.size() * 4}});
+    if (blob.fell_back) entry["optimiser_fallback"] = blob.fallback_reason;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string write_stats(const CompiledDomain& d, double seconds) {
+  std::uint32_t recompiled = 0;
+  for (const CompileJob& job : d.jobs) recompiled += !d.sources[static_cast<std::size_t>(job.source)].cache_hit;
+  Json s = Json::object();
+  s["stages"] = stage_counts(d);
+  s["recompiled_permutations"] = recompiled;
+  s["reused_permutations"] = static_cast<std::uint32_t>(d.jobs.size()) - recompiled;
+  s["inputs_reused"] = d.inputs_reused;
+  if (d.remote) s["remote_cache"] = remote_counts(*d.remote);
+  Json& phases = s["phases_ms"] = Json::object();
+  for (const PhaseTime& phase : d.phases) phases[phase.name] = phase.ms;
+  s["seconds"] = seconds;
+  s["permutations"] = permutation_timings(d);
+  return dump(s);
+}
+
+namespace {
+std::string escape_make(const std::string& path) {
+  std::string out;
+  for (char c : path) {
+    if (c == ' ' || c == '#') out += '\\';
+    if (c == '$') out += '$';
+    out += c;
+  }
+  return out;
+}
+}  // namespace
+
+std::string write_depfile(const std::string& target, const CompiledDomain& d) {
+  std::string out = escape_make(target) + ":";
+  for (const auto& dep : d.dependencies) {
+    std::error_code ec;
+    auto absolute = std::filesystem::absolute(dep, ec);
+    out += " \\\n  " + escape_make((ec ? dep : absolute).lexically_normal().string());
+  }
+  return out + "\n";
+}
+
+}  // namespace shadergen

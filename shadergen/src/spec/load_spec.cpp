@@ -1,0 +1,35 @@
+#include "spec/load_spec.h"
+
+#include <fstream>
+
+#include "base/sha256.h"
+#include "spec/json.h"
+
+namespace shadergen {
+
+Result<LoadedSpec> load_spec(const std::filesystem::path& spec_path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(spec_path, ec)) return make_error(spec_path.string(), 0, "spec file does not exist");
+  if (std::filesystem::is_directory(spec_path, ec))
+    return make_error(spec_path.string(), 0, "spec path is a directory, not a file");
+  std::ifstream in(spec_path, std::ios::binary);
+  if (!in) return make_error(spec_path.string(), 0, "cannot open spec file for reading");
+  std::string text;
+  char buffer[65536];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > json::kMaxJsonBytes)
+      return make_error(spec_path.string(), 0, "spec is larger than " + std::to_string(json::kMaxJsonBytes) + " bytes");
+  }
+  auto spec = parse_domain(text, spec_path);
+  if (!spec) return std::move(spec).take_errors();
+  return LoadedSpec{std::move(spec).value(), sha256_hex(text)};
+}
+
+Result<DomainSpec> load_domain(const std::filesystem::path& spec_path) {
+  auto loaded = load_spec(spec_path);
+  if (!loaded) return std::move(loaded).take_errors();
+  return std::move(loaded->spec);
+}
+
+}  // namespace shadergen

@@ -1,0 +1,2 @@
+// The header the spec-area fixture wrongly includes.
+#pragma once
