@@ -37,7 +37,8 @@ glm::mat4 local_transform(const tinygltf::Node& node, int index) {
     glm::mat4 m(1.0f);
     for (int column = 0; column < 4; ++column) {
       for (int row = 0; row < 4; ++row)
-        m[column][row] = static_cast<float>(node.matrix[static_cast<std::size_t>(column * 4 + row)]);
+        m[column][row] =
+            static_cast<float>(node.matrix[static_cast<std::size_t>(column) * 4 + static_cast<std::size_t>(row)]);
     }
     return m;
   }
