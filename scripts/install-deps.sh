@@ -1,10 +1,11 @@
 #!/bin/sh
 # Installs the Debian 12 packages the project builds with, if any is missing (needs root).
 #   scripts/install-deps.sh           what the build and the main job need
-#   scripts/install-deps.sh --tests   that, and what only the test suite uses (clang-format for
-#                                     the style test, assimp-testmodels' real and broken glTF
-#                                     files for the scene tests, Apache mod_dav for the remote-cache
-#                                     tests)
+#   scripts/install-deps.sh --tests   that, and what only the test suite and CI use (clang-format
+#                                     for the style test, clang-tidy for scripts/lint.sh, which CI
+#                                     runs, assimp-testmodels' real and broken glTF files for the
+#                                     scene tests, Apache mod_dav for the remote-cache tests, ccache
+#                                     for repeat runs of scripts/run-tests.sh)
 set -eu
 
 PACKAGES="cmake ninja-build g++ pkg-config
@@ -14,7 +15,7 @@ libglm-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
 libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev
 libcurl4-openssl-dev nginx"
 if [ "${1:-}" = "--tests" ]; then
-    PACKAGES="$PACKAGES clang-format assimp-testmodels apache2"
+    PACKAGES="$PACKAGES clang-format clang-tidy assimp-testmodels apache2 ccache"
 fi
 
 missing=""

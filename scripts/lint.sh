@@ -1,6 +1,7 @@
 #!/bin/sh
-# The project's style checks, by hand or before a commit (CI runs only the clang-format half,
-# as the test style.clang_format; clang-tidy over everything takes longer than the whole suite):
+# The project's style checks, by hand, before a commit and in CI (.ci/run: scripts/run-tests.sh
+# --lint runs this after the test build; the suite runs the clang-format half on its own as the
+# test style.clang_format, so a plain ctest still checks the layout):
 #   scripts/lint.sh            clang-format, then clang-tidy (.clang-tidy) over every project
 #                              source in build/tests/compile_commands.json
 #   scripts/lint.sh --format   clang-format only
