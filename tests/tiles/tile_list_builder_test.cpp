@@ -106,7 +106,7 @@ TEST(TileListBuilder, WithinAClassTilesAreInRowMajorOrder) {
   EXPECT_EQ(b.dispatches[4].x, 0u) << "a class without tiles dispatches nothing";
 }
 
-std::string error_of(const TileGrid& grid, std::vector<std::uint8_t> row_major) {
+std::string error_of(const TileGrid& grid, const std::vector<std::uint8_t>& row_major) {
   try {
     build(grid, row_major, 4);
   } catch (const Error& e) {
