@@ -38,7 +38,7 @@ std::string key_of(const FakeRequest& request) { return request.path.substr(requ
 
 // Serves, for the first `count` keys asked, a well-formed entry of that key holding `words`;
 // 404 for the others.
-FakeHttpServer::Handler serving(std::vector<std::uint32_t> words, int count) {
+FakeHttpServer::Handler serving(const std::vector<std::uint32_t>& words, int count) {
   auto served = std::make_shared<std::atomic<int>>(0);
   return [words, count, served](const FakeRequest& request) {
     if (request.method != "GET") return FakeReply{201, {}};

@@ -264,7 +264,7 @@ TEST(RemoteCacheServer, SignedEntriesNeedTheSecret) {
   sgtest::TempDir run_dir("run");
   const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
-  auto with_secret = [](std::string secret) {
+  auto with_secret = [](const std::string& secret) {
     return [secret](BuildOptions& options) { options.remote_cache_secret = secret; };
   };
   ASSERT_TRUE(build_toy_with(dir, "ci", server.url(), with_secret("team secret")).summary);

@@ -85,7 +85,7 @@ class DomainCompiler {
     if (Status s = compile_sources(); !s) return s;
     clock.lap("compile or load");
     Status checked = check_blobs(clock);
-    if (!checked && remote_hits() > 0) checked = recompile_remote_hits(std::move(checked), clock);
+    if (!checked && remote_hits() > 0) checked = recompile_remote_hits(checked, clock);
     if (!checked) return checked;
     keep_remote_hits();
     if (d_.spec.strip_debug) {
@@ -153,7 +153,7 @@ class DomainCompiler {
   // layout). The server is then not trusted for this build: its entries are compiled here and
   // checked again, so the outcome is what a build without it would give. Only when that passes
   // was the server to blame, and warned about; otherwise the domain's own error stands.
-  Status recompile_remote_hits(Status failed, PhaseClock& clock) {
+  Status recompile_remote_hits(const Status& failed, PhaseClock& clock) {
     remote_distrusted_ = true;
     std::vector<bool> compiled(d_.sources.size());
     for (std::size_t i = 0; i < d_.sources.size(); ++i) {

@@ -100,6 +100,7 @@ std::string where_it_occurs(const std::vector<CompileJob>& jobs, const std::set<
   bool listed = every_example && failing.size() > 1 && pattern(jobs, raw).empty();
   if (listed) {
     std::vector<std::string> all;
+    all.reserve(failing.size());
     for (std::size_t index : failing) all.push_back(describe_job(jobs[index]));
     return text + "; namely " + join(all, ", ");
   }
