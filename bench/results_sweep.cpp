@@ -23,15 +23,12 @@
 #include "tilelight/vulkan/context.h"
 
 #include <fmt/format.h>
+#include <whole_file/whole_file.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
-#include <fstream>
 #include <iostream>
 #include <map>
-#include <sstream>
 
 namespace {
 
@@ -47,11 +44,10 @@ std::vector<const Measurement*> rows_of(const Comparison& c, const std::vector<M
 }
 
 std::string read_document(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (!file) throw Error("--update-doc " + path.string() + ": cannot read: " + std::strerror(errno));
-  return text.str();
+  std::string text;
+  if (auto failure = whole_file::read(path, text))
+    throw Error("--update-doc " + path.string() + ": cannot read: " + failure->reason.message());
+  return text;
 }
 
 // The document's sweep sections: one per comparison, and "run" for the line naming the run.

@@ -29,6 +29,7 @@
 
 #include <unistd.h>
 
+#include <median/median.h>
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
 #include "timed_process.h"
@@ -36,7 +37,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-using bench::median;
 using bench::output_files;
 using bench::read_text;
 using bench::Run;
@@ -205,7 +205,8 @@ class Bench {
   }
 
   void report() const {
-    double script = median(script_s_), cold = median(cold_s_), warm = median(warm_s_), edit = median(edit_s_);
+    double script = median::of(script_s_), cold = median::of(cold_s_), warm = median::of(warm_s_),
+           edit = median::of(edit_s_);
     std::printf("shadergen build speed: %s, %zu permutations, %d repetition(s), medians, back to back\n",
                 o_.spec.string().c_str(), jobs_.size(), o_.repetitions);
     std::printf("  (a) script: glslangValidator + spirv-opt -O + spirv-val, 2 at a time  %8.3f s\n", script);
@@ -239,7 +240,7 @@ class Bench {
   }
 
   Run step(const std::string& what, const std::vector<std::string>& args) const {
-    Run r = bench::run(args, o_.work / "step.log");
+    Run r = bench::run(args);
     if (!r.ok) std::cerr << "shadergen_build_bench: " << what << " failed:\n" << r.out;
     return r;
   }

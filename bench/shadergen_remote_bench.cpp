@@ -9,7 +9,7 @@
 //   c) the same again, other local cache, same server (served: every entry fetched, 0 compiled).
 // Every step is a separate process, timed from start to exit. Prints the medians and the ratio.
 // With --slow S, then once: (d) a build against a server answering every request after S seconds
-// (tests/support/fake_http_server.h), to show the time budget's bound.
+// (<testsupport/fake_http_server.h>), to show the time budget's bound.
 // Exits 1 if a step fails, (b) did not upload every source, (c) compiled anything or fetched
 // fewer, or an output differs from (a)'s, so a one-repetition run is a smoke test.
 #include <chrono>
@@ -24,8 +24,9 @@
 
 #include <unistd.h>
 
-#include "fake_http_server.h"
-#include "nginx_server.h"
+#include <median/median.h>
+#include <testsupport/fake_http_server.h>
+#include <testsupport/nginx_server.h>
 #include "timed_process.h"
 
 namespace {
@@ -110,7 +111,7 @@ class RemoteBench {
   }
 
   void report() const {
-    double cold = bench::median(cold_s_), upload = bench::median(upload_s_), served = bench::median(served_s_);
+    double cold = median::of(cold_s_), upload = median::of(upload_s_), served = median::of(served_s_);
     std::printf("shadergen remote cache: %s, %d distinct sources, %d repetition(s), medians, empty local cache\n",
                 o_.spec.string().c_str(), sources_, o_.repetitions);
     std::printf("  (a) shadergen build -j 2, no remote cache (cold)              %8.3f s\n", cold);
@@ -163,7 +164,7 @@ class RemoteBench {
   }
 
   bench::Run step(const std::string& what, const std::vector<std::string>& args) const {
-    bench::Run r = bench::run(args, o_.work / "step.log");
+    bench::Run r = bench::run(args);
     if (!r.ok) std::cerr << "shadergen_remote_bench: " << what << " failed:\n" << r.out;
     return r;
   }

@@ -1,40 +1,29 @@
 #include "timed_process.h"
 
-#include <algorithm>
+#include <testsupport/child_process.h>
+#include <whole_file/whole_file.h>
+
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 namespace bench {
-namespace {
-
-std::string quote(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-}  // namespace
 
 std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::string text;
+  // Unreadable reads as empty: the step that needed the file then fails and says so.
+  (void)whole_file::read(path, text);
+  return text;
 }
 
-Run run(const std::vector<std::string>& args, const std::filesystem::path& log) {
-  std::string command;
-  for (const std::string& arg : args) command += (command.empty() ? "" : " ") + quote(arg);
-  command += " >" + quote(log.string()) + " 2>&1 </dev/null";
-  auto start = std::chrono::steady_clock::now();
-  int status = std::system(command.c_str());
+Run run(const std::vector<std::string>& args) {
+  const auto start = std::chrono::steady_clock::now();
+  testsupport::Child child(args.front(), {args.begin() + 1, args.end()});
+  const testsupport::ChildOutcome outcome = child.wait();
   Run r;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.ok = status == 0;
-  r.out = read_text(log);
+  r.ok = outcome.exit_code == 0;
+  r.out = outcome.out + outcome.err;
+  if (!child.started()) r.out = "cannot start " + args.front() + " (fork or pipe failed)\n";
   return r;
 }
 

@@ -1,8 +1,7 @@
-// timed_process.h - what the shadergen benchmarks share: a command run through the shell and
-// timed from start to exit, medians, and an output folder read back for comparison.
+// timed_process.h - what the shadergen benchmarks share: a program run (through the project's
+// one runner, <testsupport/child_process.h>) and timed from start to exit, and an output folder
+// read back for comparison.
 #pragma once
-
-#include "tilelight/base/median.h"
 
 #include <filesystem>
 #include <map>
@@ -14,18 +13,17 @@ namespace bench {
 struct Run {
   bool ok = false;       // exit status 0
   double seconds = 0.0;  // wall time, start to exit
-  std::string out;       // stdout and stderr
+  std::string out;       // stdout, then stderr
 };
 
-// Runs `args` (quoted for the shell) with stdin from /dev/null and both outputs into `log`.
-Run run(const std::vector<std::string>& args, const std::filesystem::path& log);
-
-// The runtime's median (tilelight/base/median.h): one definition for every timing table.
-using tilelight::median;
+// Runs the program args[0] (a path, or a name looked up in PATH) with the other arguments and
+// stdin from /dev/null. Precondition: `args` is not empty.
+Run run(const std::vector<std::string>& args);
 
 // "1.234 1.198 1.305": every run, in order, for the report.
 std::string seconds_list(const std::vector<double>& values);
 
+// The whole file (<whole_file/whole_file.h>); empty when it cannot be read.
 std::string read_text(const std::filesystem::path& path);
 
 // Every file of a shadergen output folder but stats.json (timings), relative path -> bytes.

@@ -1,8 +1,7 @@
 #include "sweep_tables.h"
 
-#include "tilelight/base/median.h"
-
 #include <fmt/format.h>
+#include <median/median.h>
 
 #include <algorithm>
 #include <utility>
@@ -46,7 +45,7 @@ std::string stages_table(const Measurement& m) {
 }
 
 std::string min_median_max(const std::vector<double>& values) {
-  return fmt::format("{:.2f}x / {:.2f}x / {:.2f}x", *std::min_element(values.begin(), values.end()), median(values),
+  return fmt::format("{:.2f}x / {:.2f}x / {:.2f}x", *std::min_element(values.begin(), values.end()), median::of(values),
                      *std::max_element(values.begin(), values.end()));
 }
 

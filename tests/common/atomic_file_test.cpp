@@ -31,7 +31,7 @@ std::vector<std::string> names_in(const fs::path& dir) {
   return names;
 }
 
-fs::path scratch() { return testsupport::scratch_dir(ATOMIC_FILE_TEST_SCRATCH); }
+fs::path scratch() { return testsupport::scratch_dir(COMMON_TEST_SCRATCH); }
 
 TEST(AtomicFile, WritesANewFileAndReplacesAnOldOneLeavingNoTemporary) {
   const fs::path dir = scratch();

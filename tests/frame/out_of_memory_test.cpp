@@ -2,7 +2,7 @@
 // limit makes the driver's allocations and the C++ library's fail exactly as they would on a
 // machine without the memory). Whatever fails first, the process must exit 1 with one line that
 // names the stage, never abort or die on a signal, and must write no output.
-#include "child_process.h"
+#include <testsupport/child_process.h>
 #include "sanitizer.h"
 #include "tilelight_testing/test_support.h"
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "child_process.h"
+#include <testsupport/child_process.h>
 
 namespace registry_digests {
 

@@ -13,10 +13,10 @@
 #include <sstream>
 #include <tuple>
 
+#include <testsupport/fake_http_server.h>
 #include "cache/cache.h"
 #include "compile/entry_check.h"
 #include "compile/glsl_compiler.h"
-#include "fake_http_server.h"
 #include "remote_builds.h"
 #include "shadergen/build.h"
 #include "shadergen/cli.h"

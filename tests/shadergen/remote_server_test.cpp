@@ -14,10 +14,10 @@
 #include <sstream>
 #include <thread>
 
-#include "apache_server.h"
+#include <testsupport/apache_server.h>
+#include <testsupport/nginx_server.h>
 #include "cache/cache.h"
 #include "cache/http_client.h"
-#include "nginx_server.h"
 #include "remote_builds.h"
 #include "shadergen/build.h"
 #include "shadergen/cli.h"

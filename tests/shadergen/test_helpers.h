@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "child_process.h"
+#include <testsupport/child_process.h>
 #include "shadergen/build.h"
 
 namespace sgtest {

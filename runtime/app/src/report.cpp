@@ -1,7 +1,6 @@
 #include "tilelight/app/report.h"
 
-#include "tilelight/base/median.h"
-
+#include <median/median.h>
 #include <split_second_shaders.h>
 
 #include <fmt/format.h>
@@ -63,7 +62,7 @@ MedianTimings median_timings(const std::vector<FrameTimings>& frames) {
     std::vector<double> values;
     values.reserve(frames.size());
     for (const FrameTimings& f : frames) values.push_back(f.*field);
-    m.*field = median(values);
+    m.*field = median::of(values);
   }
   return m;
 }

@@ -15,10 +15,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <string>
@@ -32,8 +29,8 @@ using namespace gltf_detail;
 constexpr std::size_t kMaxInstances = std::size_t{1} << 20;
 constexpr std::uint64_t kMaxSceneTriangles = std::uint64_t{1} << 26;  // drawn per frame, instances counted
 
-// tinygltf's file callbacks: external buffers are read with read_file(), or, for a load from
-// memory without a folder, refused. Paths are used as written (no wordexp() expansion).
+// tinygltf's file callbacks: external buffers are read with the project's one reader, worded
+// like read_file(), or, for a load from memory without a folder, refused. Paths are used as written (no wordexp() expansion).
 struct FileAccess {
   bool allowed = false;
 };
@@ -51,13 +48,11 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
     if (err != nullptr) *err += path + ": external files are not read here\n";
     return false;
   }
-  try {
-    *out = read_file(path, path);
-    return true;
-  } catch (const Error& e) {
-    if (err != nullptr) *err += std::string(e.what()) + "\n";
+  if (auto failure = whole_file::read(path, *out, kMaxFileBytes)) {
+    if (err != nullptr) *err += describe_read_failure(*failure, path) + "\n";
     return false;
   }
+  return true;
 }
 
 bool write_whole_file(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {

@@ -4,26 +4,21 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
+#include <system_error>
 
 namespace tilelight::gltf_detail {
 
+std::string describe_read_failure(const whole_file::Failure& failure, const std::string& what) {
+  using Step = whole_file::Failure::Step;
+  if (failure.step == Step::too_large)
+    return fmt::format("{}: {} bytes, more than this loader reads ({})", what, failure.size, kMaxFileBytes);
+  if (failure.reason == std::errc::is_a_directory) return what + ": is a folder, not a file";
+  return what + (failure.step == Step::open ? ": cannot open: " : ": read failed: ") + failure.reason.message();
+}
+
 std::vector<std::uint8_t> read_file(const std::filesystem::path& path, const std::string& what) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(what + ": is a folder, not a file");
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error(what + ": cannot open: " + std::strerror(errno));
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw Error(what + ": cannot read its size");
-  if (static_cast<std::uint64_t>(size) > kMaxFileBytes) {
-    throw Error(fmt::format("{}: {} bytes, more than this loader reads ({})", what, size, kMaxFileBytes));
-  }
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), size))
-    throw Error(what + ": read failed: " + std::strerror(errno));
+  std::vector<std::uint8_t> bytes;
+  if (auto failure = whole_file::read(path, bytes, kMaxFileBytes)) throw Error(describe_read_failure(*failure, what));
   return bytes;
 }
 

@@ -14,7 +14,7 @@
 // noise, and over 400 extra frames it still catches any leak of about 41 KiB or more per frame:
 // a read-back image at this size (128x72 RGBA32F, 144 KiB) or a per-frame copy of the G-buffer
 // would fail it. Smaller leaks are LeakSanitizer's job (the sanitizer build).
-#include "child_process.h"
+#include <testsupport/child_process.h>
 #include "sanitizer.h"
 
 #include <gtest/gtest.h>

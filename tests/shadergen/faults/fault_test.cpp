@@ -10,9 +10,9 @@
 #include <algorithm>
 #include <csignal>
 
+#include <testsupport/child_process.h>
 #include "cache/cache.h"
 #include "cache/input_cache.h"
-#include "child_process.h"
 #include "test_helpers.h"
 
 namespace {

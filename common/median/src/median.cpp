@@ -1,10 +1,11 @@
-#include "tilelight/base/median.h"
+#include "median/median.h"
 
 #include <algorithm>
+#include <cstddef>
 
-namespace tilelight {
+namespace median {
 
-double median(std::vector<double> values) {
+double of(std::vector<double> values) {
   if (values.empty()) return 0.0;
   const std::size_t mid = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
@@ -14,4 +15,4 @@ double median(std::vector<double> values) {
   return 0.5 * (lower + values[mid]);
 }
 
-}  // namespace tilelight
+}  // namespace median
