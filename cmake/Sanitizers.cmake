@@ -32,15 +32,16 @@ if(SANITIZE)
   endif()
 endif()
 
-# Every sanitized executable carries its runtime options (tests/sanitizers/default_options.cpp):
-# the tests under ctest, shadergen run at build time by shadergen_add_permutations() and a
-# binary started by hand all get the same options and the same LeakSanitizer suppressions,
-# with no environment to remember. ASAN_OPTIONS / UBSAN_OPTIONS / LSAN_OPTIONS still override.
-set(SHADERGEN_LSAN_SUPPRESSIONS "${PROJECT_SOURCE_DIR}/tests/sanitizers/lsan.supp")
+# Every sanitized executable carries its runtime options (cmake/sanitizers/default_options.cpp:
+# build configuration compiled into the products too, so it lives here, not under tests/): the
+# tests under ctest, shadergen run at build time by shadergen_add_permutations() and a binary
+# started by hand all get the same options and the same LeakSanitizer suppressions, with no
+# environment to remember. ASAN_OPTIONS / UBSAN_OPTIONS / LSAN_OPTIONS still override.
+set(SHADERGEN_LSAN_SUPPRESSIONS "${PROJECT_SOURCE_DIR}/cmake/sanitizers/lsan.supp")
 if(SANITIZE)
   add_library(shadergen_sanitizer_defaults OBJECT
-    ${PROJECT_SOURCE_DIR}/tests/sanitizers/default_options.cpp
-    ${PROJECT_SOURCE_DIR}/tests/sanitizers/keep_drivers_loaded.cpp)
+    ${PROJECT_SOURCE_DIR}/cmake/sanitizers/default_options.cpp
+    ${PROJECT_SOURCE_DIR}/cmake/sanitizers/keep_drivers_loaded.cpp)
   target_compile_definitions(shadergen_sanitizer_defaults PRIVATE
     SHADERGEN_LSAN_SUPPRESSIONS="${SHADERGEN_LSAN_SUPPRESSIONS}")
 endif()

@@ -42,7 +42,7 @@ ctest --preset tests
 
 # AddressSanitizer + UndefinedBehaviorSanitizer on every target (cmake/Sanitizers.cmake), the
 # shadergen runs at build time and the lavapipe tests included. The sanitizer options and the
-# driver-only leak suppressions are built into the executables (tests/sanitizers/), so a plain
+# driver-only leak suppressions are built into the executables (cmake/sanitizers/), so a plain
 # `ctest` in build/sanitize behaves the same.
 # shellcheck disable=SC2086
 cmake --preset sanitize $launcher

@@ -3,7 +3,7 @@
 // The Vulkan loader dlcloses the driver (and any layer) when the instance is destroyed. A leak
 // inside a library that is no longer mapped shows as "<unknown module>" in LeakSanitizer's
 // report, and a suppression can only name a library that is still mapped at exit. Opening the
-// libraries once more with RTLD_NODELETE keeps them mapped, so tests/sanitizers/lsan.supp can
+// libraries once more with RTLD_NODELETE keeps them mapped, so cmake/sanitizers/lsan.supp can
 // suppress the driver's leaks by library name and nothing else.
 #include <dlfcn.h>
 

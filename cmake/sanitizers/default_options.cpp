@@ -17,5 +17,5 @@ SHADERGEN_SANITIZER_HOOK const char* __asan_default_options() {
 SHADERGEN_SANITIZER_HOOK const char* __ubsan_default_options() { return "print_stacktrace=1:halt_on_error=1"; }
 
 // Leaks inside the uninstrumented Vulkan driver stack are suppressed by library name only;
-// tests/sanitizers/lsan.supp says which and why.
+// cmake/sanitizers/lsan.supp says which and why.
 SHADERGEN_SANITIZER_HOOK const char* __lsan_default_options() { return "suppressions=" SHADERGEN_LSAN_SUPPRESSIONS; }
