@@ -10,7 +10,7 @@
 // vertical grid lines; the value-axis label. The category-axis label stands above the category
 // names. Bars start at zero; every value must be finite and >= 0.
 
-#include "tilelight/picture/tile_class_image.h"
+#include "tilelight/picture/rgba8_canvas.h"
 
 #include <string>
 #include <vector>

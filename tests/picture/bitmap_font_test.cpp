@@ -1,7 +1,7 @@
 // The legend font: glyph table sanity, placement inside the cell, clipping and scaling.
 #include "tilelight/picture/bitmap_font.h"
 #include "tilelight/base/error.h"
-#include "tilelight/picture/tile_class_image.h"
+#include "tilelight/picture/rgba8_canvas.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,8 @@
-// PNG output: correct pixels, atomic replacement, errors that name the path.
+// PNG output: correct pixels, atomic replacement (encode_png's bytes written as the products
+// write them, through tilelight/base/atomic_write.h), errors that name the path.
 #include "tilelight/picture/png.h"
 #include "tilelight/base/error.h"
+#include "tilelight_testing/png_file.h"
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
@@ -50,9 +52,9 @@ TEST(Png, WritesDecodablePixelsAndNoTemporaryFile) {
   const std::filesystem::path dir = testsupport::scratch_dir(TILELIGHT_PICTURE_OUT);
   const std::filesystem::path path = dir / "lit.png";
   const RgbaImage image = gradient(17, 9);
-  write_png(path, image);
+  test::write_png(path, image);
   // Writing again replaces the file in one step.
-  write_png(path, image);
+  test::write_png(path, image);
   EXPECT_EQ(entries(dir), std::vector<std::filesystem::path>{"lit.png"});
 
   int width = 0;
@@ -73,7 +75,7 @@ TEST(Png, UnwritableFolderNamesThePath) {
   std::ofstream(dir / "not-a-folder") << "x";
   const std::filesystem::path path = dir / "not-a-folder" / "out.png";
   try {
-    write_png(path, gradient(2, 2));
+    test::write_png(path, gradient(2, 2));
     FAIL() << "no error";
   } catch (const Error& e) {
     const std::string text = e.what();
@@ -86,7 +88,7 @@ TEST(Png, UnwritableFolderNamesThePath) {
 TEST(Png, SizeMismatchIsAnError) {
   const std::filesystem::path dir = testsupport::scratch_dir(TILELIGHT_PICTURE_OUT);
   const std::vector<std::uint8_t> too_short(4 * 3);
-  EXPECT_THROW(write_png_rgba8(dir / "x.png", 2, 2, too_short), Error);
+  EXPECT_THROW(test::write_png_rgba8(dir / "x.png", 2, 2, too_short), Error);
   EXPECT_TRUE(entries(dir).empty());
 }
 

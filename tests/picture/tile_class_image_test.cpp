@@ -2,7 +2,9 @@
 #include "tilelight/picture/tile_class_image.h"
 
 #include "tilelight/base/error.h"
+#include "tilelight/picture/bitmap_font.h"
 #include "tilelight/picture/png.h"
+#include "tilelight_testing/png_file.h"
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
@@ -425,7 +427,7 @@ TEST(TileClassImage, WritesExamplePictures) {
     const std::size_t i = (std::size_t{y} * width + x) * 4;
     EXPECT_EQ(canvas.pixel(x, y), expected_blend({frame8[i], frame8[i + 1], frame8[i + 2], 255}, ids[3 * tiles_x + 5]));
 
-    write_png_rgba8(out / name, canvas.width, canvas.height, canvas.pixels);
+    test::write_png_rgba8(out / name, canvas.width, canvas.height, canvas.pixels);
     const std::vector<std::uint8_t> decoded = decode_png(out / name, canvas.width, canvas.height);
     EXPECT_TRUE(decoded == canvas.pixels) << "the PNG does not hold the composed picture";
   }

@@ -1,5 +1,6 @@
-// Fences and timeline semaphores: host signals, bounded waits, and a submit that waits for a
+// Fences and semaphores: host signals, bounded waits, and a submit that waits for a
 // host signal (the draw-patching mechanism of docs/design.md).
+#include "tilelight_testing/sync_probes.h"
 #include "tilelight_testing/test_support.h"
 
 #include "tilelight/vulkan/barriers.h"
@@ -56,10 +57,10 @@ TEST_F(VulkanTest, TimelineSignalMustIncrease) {
 
 TEST_F(VulkanTest, FenceStatesAndBoundedWait) {
   const Fence done(context(), "done", true);
-  EXPECT_TRUE(done.signaled());
+  EXPECT_TRUE(test::is_signaled(context(), done));
   EXPECT_NO_THROW(done.wait("nothing", Seconds{1.0}));
   done.reset();
-  EXPECT_FALSE(done.signaled());
+  EXPECT_FALSE(test::is_signaled(context(), done));
   try {
     done.wait("the G-buffer pass", Seconds{0.02});
     FAIL() << "no timeout";
@@ -69,7 +70,7 @@ TEST_F(VulkanTest, FenceStatesAndBoundedWait) {
 }
 
 TEST_F(VulkanTest, BinarySemaphoreOrdersTwoSubmits) {
-  const Semaphore between(context(), "between");
+  const test::BinarySemaphore between(context(), "between");
   Buffer buffer(context(), {16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostReadback, "ordered"});
   UniqueCommandBuffer first = pool().allocate("first");
   UniqueCommandBuffer second = pool().allocate("second");

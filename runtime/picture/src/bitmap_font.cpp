@@ -1,7 +1,6 @@
 #include "tilelight/picture/bitmap_font.h"
 
 #include "tilelight/base/error.h"
-#include "tilelight/picture/tile_class_image.h"
 
 #include <algorithm>
 #include <cstddef>

@@ -8,9 +8,8 @@
 #include <utility>
 
 namespace tilelight {
-namespace {
 
-UniqueSemaphore create_semaphore(const Context& context, const void* next, const std::string& name) {
+UniqueSemaphore create_semaphore(const Context& context, const std::string& name, const void* next) {
   VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
   info.pNext = next;
   VkSemaphore semaphore = VK_NULL_HANDLE;
@@ -19,8 +18,6 @@ UniqueSemaphore create_semaphore(const Context& context, const void* next, const
   context.name_object(semaphore, name);
   return owned;
 }
-
-}  // namespace
 
 Fence::Fence(const Context& context, std::string name, bool signaled)
     : device_(context.device()), name_(std::move(name)) {
@@ -41,29 +38,17 @@ void Fence::wait(std::string_view stage, Seconds timeout) const {
   check(result, "vkWaitForFences", name_);
 }
 
-bool Fence::signaled() const {
-  const VkResult result = vkGetFenceStatus(device_, fence_.get());
-  if (result == VK_NOT_READY) {
-    return false;
-  }
-  check(result, "vkGetFenceStatus", name_);
-  return true;
-}
-
 void Fence::reset() const {
   const VkFence fence = fence_.get();
   check(vkResetFences(device_, 1, &fence), "vkResetFences", name_);
 }
-
-Semaphore::Semaphore(const Context& context, std::string name)
-    : name_(std::move(name)), semaphore_(create_semaphore(context, nullptr, name_)) {}
 
 TimelineSemaphore::TimelineSemaphore(const Context& context, std::string name, std::uint64_t initial_value)
     : device_(context.device()), name_(std::move(name)) {
   VkSemaphoreTypeCreateInfo type{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
   type.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
   type.initialValue = initial_value;
-  semaphore_ = create_semaphore(context, &type, name_);
+  semaphore_ = create_semaphore(context, name_, &type);
 }
 
 std::uint64_t TimelineSemaphore::value() const {

@@ -8,16 +8,13 @@
 // and one blank row separates lines. Every character is one byte: printable ASCII 32..126 has
 // a glyph; any other byte (control characters, each byte of a UTF-8 sequence) draws as a box.
 
+#include "tilelight/picture/rgba8_canvas.h"
+
 #include <array>
 #include <cstdint>
 #include <string_view>
 
 namespace tilelight {
-
-struct Rgba8Canvas;  // tilelight/picture/tile_class_image.h
-
-// An 8-bit RGBA colour.
-using Rgba8 = std::array<std::uint8_t, 4>;
 
 inline constexpr int kGlyphWidth = 5;
 inline constexpr int kGlyphHeight = 8;

@@ -1,11 +1,11 @@
 #pragma once
-// PNG output. Files are written atomically (tilelight/base/atomic_write.h), so a crashed or
-// concurrent run never leaves a half-written image that a later comparison would read.
+// PNG encoding, in memory: the callers write the bytes atomically with their other outputs
+// (tilelight/app/output_files.h), so a crashed or concurrent run never leaves a half-written
+// image that a later comparison would read.
 
 #include "tilelight/picture/rgba_image.h"
 
 #include <cstdint>
-#include <filesystem>
 #include <span>
 #include <vector>
 
@@ -22,14 +22,5 @@ std::vector<std::uint8_t> encode_png(std::uint32_t width, std::uint32_t height, 
 
 // encode_png() of to_rgba8(image).
 std::vector<std::uint8_t> encode_png(const RgbaImage& image);
-
-// Writes `image` (through to_rgba8) as an RGBA PNG at `path`. The parent folder must exist.
-// Throws tilelight::Error naming the path (and the OS reason) on failure; no temporary file is
-// left behind either way.
-void write_png(const std::filesystem::path& path, const RgbaImage& image);
-
-// Writes 8-bit RGBA pixels (rows top to bottom, width * height * 4 bytes) as a PNG at `path`.
-void write_png_rgba8(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
-                     std::span<const std::uint8_t> rgba);
 
 }  // namespace tilelight

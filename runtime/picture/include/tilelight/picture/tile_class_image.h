@@ -32,7 +32,7 @@
 //     Its geometry is given by tile_class_legend_layout().
 //   - text scale is 2 when frame.height >= 600, otherwise 1 (see bitmap_font.h).
 
-#include "tilelight/picture/bitmap_font.h"
+#include "tilelight/picture/rgba8_canvas.h"
 #include "tilelight/picture/rgba_image.h"
 
 #include <array>
@@ -45,26 +45,6 @@
 namespace tilelight {
 
 inline constexpr std::uint32_t kOptimisedClassCount = 32;
-
-// 8-bit RGBA pixels, rows top to bottom, tightly packed (the layout write_png_rgba8 takes).
-struct Rgba8Canvas {
-  std::uint32_t width = 0;
-  std::uint32_t height = 0;
-  std::vector<std::uint8_t> pixels;  // width * height * 4
-
-  // A width x height canvas filled with `colour`.
-  static Rgba8Canvas filled(std::uint32_t width, std::uint32_t height, Rgba8 colour);
-
-  // Precondition: x < width, y < height (not checked: this is for inner loops and tests).
-  Rgba8 pixel(std::uint32_t x, std::uint32_t y) const;
-
-  // Sets one pixel; coordinates outside the canvas are ignored.
-  void set_pixel(int x, int y, Rgba8 colour);
-
-  // Fills the rectangle [x, x + w) x [y, y + h), clipped to the canvas; w or h <= 0 draws
-  // nothing.
-  void fill_rect(int x, int y, int w, int h, Rgba8 colour);
-};
 
 // One legend row: a class that occurs in the frame and how many tiles have it.
 struct TileClassLegendEntry {

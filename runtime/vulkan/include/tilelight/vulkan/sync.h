@@ -1,5 +1,6 @@
 #pragma once
-// Fences and semaphores. Every wait here is bounded and throws TimeoutError
+// Fences and timeline semaphores, what the renderer synchronises with (the tests' binary
+// semaphore is in their support library). Every wait here is bounded and throws TimeoutError
 // ("GPU did not finish <stage> within N s") instead of blocking forever.
 
 #include "tilelight/vulkan/timeout.h"
@@ -27,7 +28,6 @@ class Fence {
   // VulkanError on device loss. Precondition: the fence was submitted (or created signalled),
   // or another thread will submit it.
   void wait(std::string_view stage, Seconds timeout = kDefaultGpuTimeout) const;
-  bool signaled() const;  // non-blocking
   // Precondition: the fence is not pending in a queue.
   void reset() const;
 
@@ -37,20 +37,10 @@ class Fence {
   UniqueFence fence_;
 };
 
-// A binary semaphore: GPU-to-GPU ordering between submits. There is no host wait for binary
-// semaphores in Vulkan, hence no wait() here.
-class Semaphore {
- public:
-  Semaphore() = default;
-  Semaphore(const Context& context, std::string name);
-
-  VkSemaphore handle() const { return semaphore_.get(); }
-  const std::string& name() const { return name_; }
-
- private:
-  std::string name_;
-  UniqueSemaphore semaphore_;
-};
+// A new semaphore named `name` for the validation layer's messages; `next` is the create info's
+// pNext chain (a VkSemaphoreTypeCreateInfo for a timeline semaphore; nullptr: a binary one).
+// Throws VulkanError.
+UniqueSemaphore create_semaphore(const Context& context, const std::string& name, const void* next = nullptr);
 
 // A timeline semaphore (Vulkan 1.2 core): a 64-bit counter that the GPU or the host raises and
 // either side waits for. The draw-patching path uses it both ways: submit 1 signals "tile IDs
