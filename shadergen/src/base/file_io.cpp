@@ -1,42 +1,21 @@
 #include "base/file_io.h"
 
 #include <atomic_file/atomic_file.h>
+#include <whole_file/whole_file.h>
 
-#include <algorithm>
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace shadergen {
 
-// One read() into a string sized from fstat: a warm build reads megabytes of cache entries,
-// and a stream read through an intermediate buffer costs a second copy of every byte.
+// whole_file sizes the string from fstat and reads into it directly: a warm build reads
+// megabytes of cache entries, and a stream read would copy every byte twice.
 Result<std::string> read_file(const std::filesystem::path& path) {
-  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return make_error(path.string(), 0, std::string("cannot read: ") + std::strerror(errno));
-  struct stat info {};
   std::string bytes;
-  if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode)) bytes.resize(static_cast<std::size_t>(info.st_size));
-  std::size_t used = 0;
-  for (;;) {
-    if (used == bytes.size()) bytes.resize(std::max<std::size_t>(bytes.size() * 2, 4096));  // grew, or not a file
-    ssize_t got = ::read(fd, bytes.data() + used, bytes.size() - used);
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) {
-      int error = errno;
-      ::close(fd);
-      return make_error(path.string(), 0, std::string("read failed: ") + std::strerror(error));
-    }
-    if (got == 0) break;
-    used += static_cast<std::size_t>(got);
+  if (std::optional<whole_file::Failure> failure = whole_file::read(path, bytes)) {
+    const char* what = failure->step == whole_file::Failure::Step::open ? "cannot read: " : "read failed: ";
+    return make_error(path.string(), 0, what + failure->reason.message());
   }
-  ::close(fd);
-  bytes.resize(used);
   return bytes;
 }
 

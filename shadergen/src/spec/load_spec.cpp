@@ -1,6 +1,8 @@
 #include "spec/load_spec.h"
 
-#include <fstream>
+#include <whole_file/whole_file.h>
+
+#include <optional>
 
 #include "base/sha256.h"
 #include "spec/json.h"
@@ -12,14 +14,17 @@ Result<LoadedSpec> load_spec(const std::filesystem::path& spec_path) {
   if (!std::filesystem::exists(spec_path, ec)) return make_error(spec_path.string(), 0, "spec file does not exist");
   if (std::filesystem::is_directory(spec_path, ec))
     return make_error(spec_path.string(), 0, "spec path is a directory, not a file");
-  std::ifstream in(spec_path, std::ios::binary);
-  if (!in) return make_error(spec_path.string(), 0, "cannot open spec file for reading");
   std::string text;
-  char buffer[65536];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > json::kMaxJsonBytes)
-      return make_error(spec_path.string(), 0, "spec is larger than " + std::to_string(json::kMaxJsonBytes) + " bytes");
+  if (std::optional<whole_file::Failure> failure = whole_file::read(spec_path, text, json::kMaxJsonBytes)) {
+    switch (failure->step) {
+      case whole_file::Failure::Step::open:
+        return make_error(spec_path.string(), 0, "cannot open spec file for reading");
+      case whole_file::Failure::Step::too_large:
+        return make_error(spec_path.string(), 0,
+                          "spec is larger than " + std::to_string(json::kMaxJsonBytes) + " bytes");
+      case whole_file::Failure::Step::read:
+        return make_error(spec_path.string(), 0, "cannot read spec file: " + failure->reason.message());
+    }
   }
   auto spec = parse_domain(text, spec_path);
   if (!spec) return std::move(spec).take_errors();

@@ -12,7 +12,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <cstring>
 
 namespace tilelight {
 namespace {
@@ -45,6 +44,15 @@ struct Flags {
 
 // What a G-buffer sample stores: rt0[4], rt1[4], rt2[4], depth (GBufferSamples pads to 16).
 constexpr std::size_t kStoredFloats = 13;
+
+// Whether two samples store the same bits in their first `count` floats. Bits, not values: the
+// classifier's question is whether the samples differ at all (a float compare would call -0 and
+// +0 equal).
+bool same_bits(const float* a, const float* b, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i)
+    if (std::bit_cast<std::uint32_t>(a[i]) != std::bit_cast<std::uint32_t>(b[i])) return false;
+  return true;
+}
 
 struct Sample {
   const float* v;  // rt0[4], rt1[4], rt2[4], depth
@@ -190,7 +198,7 @@ Flags classify_pixel(const SampleClassifier& classifier, const GBufferSamples& g
     face = face || Sample{g.at(x, y, s)}.face_bit();
   }
   for (std::uint32_t s = 1; face && !edge && s < g.samples; ++s) {
-    edge = std::memcmp(g.at(x, y, s), g.at(x, y, 0), kStoredFloats * sizeof(float)) != 0;
+    edge = !same_bits(g.at(x, y, s), g.at(x, y, 0), kStoredFloats);
   }
   const bool partial = edge || face;
   Flags f;
