@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <csignal>
+#include <optional>
 
 #include <testsupport/child_process.h>
 #include "cache/cache.h"
@@ -255,23 +256,31 @@ bool nobody_can_build() {
   return run_shadergen({"list", sgtest::toy_spec().string()}, setup).exit_code == 0;
 }
 
+// The child setup under which mode bits stop a build: as it is, or as uid 65534 when the tests
+// run as root (root ignores them). nullopt when uid 65534 cannot run shadergen or read the
+// fixture; the caller skips with kCannotDropPrivileges.
+std::optional<ChildSetup> setup_that_mode_bits_bind() {
+  ChildSetup setup;
+  if (::geteuid() != 0) return setup;
+  if (!nobody_can_build()) return std::nullopt;
+  setup.drop_to_nobody = true;
+  return setup;
+}
+
+constexpr const char* kCannotDropPrivileges =
+    "running as root and uid 65534 cannot run shadergen or read the fixture, so a read-only folder cannot be tested";
+
 TEST(FailedWrite, ReadOnlyParentFolderGivesAnErrorNamingTheOutputAndKeepsIt) {
   sgtest::TempDir dir("readonly");
   const fs::path parent = dir / "gen";
   const fs::path out = parent / "toy";
   build_previous_output(out);
   const auto before = sgtest::snapshot(out);
-  ChildSetup setup;
-  if (::geteuid() == 0) {
-    // Root ignores the mode bits, so the build runs as uid 65534 instead.
-    if (!nobody_can_build())
-      GTEST_SKIP() << "running as root and uid 65534 cannot run " << sgtest::shadergen_exe()
-                   << " or read the fixture, so a read-only folder cannot be tested";
-    setup.drop_to_nobody = true;
-  }
+  const std::optional<ChildSetup> setup = setup_that_mode_bits_bind();
+  if (!setup) GTEST_SKIP() << kCannotDropPrivileges;
   fs::permissions(parent, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
                               fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
-  ChildOutcome r = run_shadergen(build_args(sgtest::toy_spec(), out, {}), setup);
+  ChildOutcome r = run_shadergen(build_args(sgtest::toy_spec(), out, {}), *setup);
   fs::permissions(parent, fs::perms::owner_all, fs::perm_options::add);
 
   EXPECT_EQ(r.exit_code, 1) << r.err;
@@ -303,14 +312,10 @@ TEST(FailedWrite, ReadOnlyOutputFolderIsReplacedAndNothingIsLeftBesideIt) {
   const fs::path parent = dir / "gen";
   const fs::path out = parent / "toy";
   fs::create_directories(parent);
-  ChildSetup setup;
-  if (::geteuid() == 0) {
-    if (!nobody_can_build())
-      GTEST_SKIP() << "running as root and uid 65534 cannot run " << sgtest::shadergen_exe()
-                   << " or read the fixture, so a read-only folder cannot be tested";
-    setup.drop_to_nobody = true;
-    ASSERT_EQ(::chown(parent.c_str(), 65534, 65534), 0);
-  }
+  const std::optional<ChildSetup> found = setup_that_mode_bits_bind();
+  if (!found) GTEST_SKIP() << kCannotDropPrivileges;
+  const ChildSetup setup = *found;
+  if (setup.drop_to_nobody) ASSERT_EQ(::chown(parent.c_str(), 65534, 65534), 0);
   ASSERT_EQ(run_shadergen(build_args(sgtest::toy_spec(), out, {}, {"--namespace", "previous"}), setup).exit_code, 0);
   make_tree_read_only(out);
   // A leftover of an earlier run that failed to remove what it set aside: a read-only

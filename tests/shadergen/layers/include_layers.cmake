@@ -12,7 +12,7 @@ if(NOT ROOT)
   message(FATAL_ERROR "usage: cmake -DROOT=<shadergen folder> -P include_layers.cmake")
 endif()
 
-set(areas base spec cache compile output build cli)
+set(areas base spec cache compile output driver cli)
 # shadergen/<name>.h -> the area whose sources define what it declares.
 set(public_area_diagnostic base)
 set(public_area_build_summary base)
@@ -21,7 +21,7 @@ set(public_area_vulkan base)
 set(public_area_expression spec)
 set(public_area_domain spec)
 set(public_area_permutations spec)
-set(public_area_build build)
+set(public_area_build driver)
 set(public_area_cli cli)
 
 function(area_of_file file out)
