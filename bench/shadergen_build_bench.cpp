@@ -7,12 +7,15 @@
 //      GL_GOOGLE_include_directive gets that line in the copy, as the script needs it);
 //   b) `shadergen build --no-cache -j 2` (cold);
 //   c) `shadergen build -j 2` with a populated cache and an unchanged output (warm);
-//   d) after inserting one declaration inside one `#ifdef FEATURE` block of the uber-shader,
-//      `shadergen build -j 2 --stats`, and how many permutations it recompiled.
+//   d) after inserting one declaration inside one `#ifdef FEATURE` block of the uber-shader or
+//      of a file it includes, `shadergen build -j 2 --stats`, and how many permutations it
+//      recompiled.
 // Every step is a separate process, timed from start to exit. Prints the medians and the
 // ratios. Exits 1 if a step fails or a count is wrong (the warm build compiled something or
 // changed the output, its output differs from the cold build's, or the #ifdef edit recompiled
-// other than the permutations that define FEATURE), so a one-repetition run is a smoke test.
+// other than the permutations whose text holds the edited block: those counted by preprocessing
+// every permutation with glslangValidator -E, independently of shadergen), so a one-repetition
+// run is a smoke test.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -47,7 +50,7 @@ struct Options {
   fs::path script = SHADERGEN_SOURCE_DIR "/bench/shadergen_script.sh";
   fs::path work;  // empty: a fresh folder under the system temporary folder, removed at the end
   int repetitions = 5;
-  std::string edit_define;  // empty: the first raw feature with an `#ifdef` line in the uber-shader
+  std::string edit_define;  // empty: the first raw feature with an `#ifdef` line (uber-shader or its includes)
 };
 
 std::optional<Options> parse_args(int argc, char** argv) {
@@ -147,14 +150,6 @@ void write_job_list(const std::vector<Job>& jobs, const fs::path& file) {
   write_text(file, text);
 }
 
-// Counted from the defines, independently of shadergen: the permutations whose text contains
-// the edited block, i.e. those of the uber-shader that define `define`.
-std::size_t jobs_defining(const std::vector<Job>& jobs, const fs::path& uber, const std::string& define) {
-  return static_cast<std::size_t>(std::count_if(jobs.begin(), jobs.end(), [&](const Job& job) {
-    return job.path == uber && std::find(job.defines.begin(), job.defines.end(), define) != job.defines.end();
-  }));
-}
-
 std::string trimmed(const std::string& line) {
   auto first = line.find_first_not_of(" \t");
   auto last = line.find_last_not_of(" \t\r");
@@ -173,11 +168,87 @@ std::size_t ifdef_line_end(const std::string& text, const std::string& define) {
   return std::string::npos;
 }
 
-std::string pick_define(const shadergen::DomainSpec& spec, const std::string& text, const std::string& wanted) {
-  if (!wanted.empty()) return ifdef_line_end(text, wanted) == std::string::npos ? std::string() : wanted;
-  for (const auto& feature : spec.raw_features)
-    if (ifdef_line_end(text, feature.define) != std::string::npos) return feature.define;
+// The file and the line the edit goes after.
+struct EditSite {
+  std::string define;
+  fs::path file;
+};
+
+// The uber-shader, then every file it includes, transitively, in the order first met: an
+// `#include "name"` resolves against the including file's folder, then the include folders.
+std::vector<fs::path> include_closure(const fs::path& shader, const std::vector<fs::path>& include_dirs) {
+  static const std::regex include_line(R"re(^\s*#\s*include\s*"([^"]+)")re");
+  std::vector<fs::path> files{fs::absolute(shader).lexically_normal()};
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::istringstream lines(read_text(files[i]));
+    std::string line;
+    std::smatch m;
+    while (std::getline(lines, line)) {
+      if (!std::regex_search(line, m, include_line)) continue;
+      std::vector<fs::path> candidates{files[i].parent_path() / m[1].str()};
+      for (const fs::path& dir : include_dirs) candidates.push_back(fs::absolute(dir) / m[1].str());
+      for (const fs::path& candidate : candidates) {
+        if (!fs::is_regular_file(candidate)) continue;
+        fs::path found = candidate.lexically_normal();
+        if (std::find(files.begin(), files.end(), found) == files.end()) files.push_back(found);
+        break;
+      }
+    }
+  }
+  return files;
+}
+
+// The first file of the uber-shader's include closure with an `#ifdef DEFINE` line, for the
+// wanted define or else the first raw feature that has one. Empty define: none.
+EditSite pick_edit_site(const shadergen::DomainSpec& spec, const std::string& wanted) {
+  std::vector<std::string> defines;
+  if (!wanted.empty())
+    defines.push_back(wanted);
+  else
+    for (const auto& feature : spec.raw_features) defines.push_back(feature.define);
+  std::vector<fs::path> files = include_closure(spec.uber.path, spec.include_dirs);
+  for (const std::string& define : defines)
+    for (const fs::path& file : files)
+      if (ifdef_line_end(read_text(file), define) != std::string::npos) return {define, file};
   return {};
+}
+
+// "NAME" means NAME=1, as in shadergen's preamble.
+std::string define_argument(const std::string& define) {
+  return "-D" + define + (define.find('=') == std::string::npos ? "=1" : "");
+}
+
+// How many jobs' preprocessed text holds the block after `#ifdef site.define` in site.file:
+// a probe declaration goes there, glslangValidator -E preprocesses every job, and the file is
+// restored. nullopt (after a message) when a job does not preprocess.
+std::optional<std::size_t> jobs_reaching(const std::vector<Job>& jobs, const shadergen::DomainSpec& spec,
+                                         const EditSite& site) {
+  const std::string original = read_text(site.file);
+  const std::string probe = "shadergen_bench_probe";
+  std::string probed = original;
+  probed.insert(ifdef_line_end(probed, site.define), "float " + probe + " = 0.0;\n");
+  write_text(site.file, probed);
+  std::size_t count = 0;
+  bool ok = true;
+  for (const Job& job : jobs) {
+    std::vector<std::string> args{"glslangValidator", "-E", "-S", stage_flag(job.stage)};
+    auto name_of = [](const std::string& d) { return d.substr(0, d.find('=')); };
+    for (const std::string& d : spec.defines)  // a job's own define of the same name replaces it
+      if (std::none_of(job.defines.begin(), job.defines.end(), [&](const auto& j) { return name_of(j) == name_of(d); }))
+        args.push_back(define_argument(d));
+    for (const std::string& d : job.defines) args.push_back(define_argument(d));
+    for (const fs::path& dir : spec.include_dirs) args.push_back("-I" + dir.string());
+    args.push_back(job.path.string());
+    bench::Run r = bench::run(args);
+    if (!r.ok) {
+      std::cerr << "shadergen_build_bench: glslangValidator -E failed on " << job.name << ":\n" << r.out;
+      ok = false;
+      break;
+    }
+    count += r.out.find(probe) != std::string::npos;
+  }
+  write_text(site.file, original);
+  return ok ? std::optional<std::size_t>(count) : std::nullopt;
 }
 
 std::optional<int> number_after(const std::string& text, const std::string& pattern) {
@@ -188,16 +259,12 @@ std::optional<int> number_after(const std::string& text, const std::string& patt
 
 class Bench {
  public:
-  Bench(Options o, shadergen::DomainSpec spec, std::vector<Job> jobs, std::string define)
-      : o_(std::move(o)),
-        spec_(std::move(spec)),
-        jobs_(std::move(jobs)),
-        define_(std::move(define)),
-        expected_(jobs_defining(jobs_, spec_.uber.path, define_)) {}
+  Bench(Options o, shadergen::DomainSpec spec, std::vector<Job> jobs, EditSite site, std::size_t expected)
+      : o_(std::move(o)), spec_(std::move(spec)), jobs_(std::move(jobs)), site_(std::move(site)), expected_(expected) {}
 
   bool run_all() {
     write_job_list(jobs_, o_.work / "jobs.txt");
-    original_ = read_text(spec_.uber.path);
+    original_ = read_text(site_.file);
     if (!step("prime the cache", build("warm", false, true)).ok) return false;
     for (int rep = 1; rep <= o_.repetitions; ++rep)
       if (!repetition(rep)) return false;
@@ -219,9 +286,9 @@ class Bench {
         "(target >= 20x)\n",
         warm, cold / warm);
     std::printf(
-        "  (d) after an edit inside #ifdef %s: rebuild                %8.3f s  %d of %zu permutations recompiled (%zu "
-        "define %s)\n",
-        define_.c_str(), edit, recompiled_, jobs_.size(), expected_, define_.c_str());
+        "  (d) after an edit inside #ifdef %s (%s): rebuild  %8.3f s  %d of %zu permutations recompiled (%zu "
+        "hold the block)\n",
+        site_.define.c_str(), site_.file.filename().c_str(), edit, recompiled_, jobs_.size(), expected_);
     std::printf("  every run (s): (a) %s; (b) %s; (c) %s; (d) %s\n", bench::seconds_list(script_s_).c_str(),
                 bench::seconds_list(cold_s_).c_str(), bench::seconds_list(warm_s_).c_str(),
                 bench::seconds_list(edit_s_).c_str());
@@ -271,8 +338,8 @@ class Bench {
   // repetition changes the text of the same permutations.
   bool edit_and_rebuild(int rep) {
     std::string text = original_;
-    text.insert(ifdef_line_end(text, define_), "float shadergen_bench_edit_" + std::to_string(rep) + " = 0.0;\n");
-    write_text(spec_.uber.path, text);
+    text.insert(ifdef_line_end(text, site_.define), "float shadergen_bench_edit_" + std::to_string(rep) + " = 0.0;\n");
+    write_text(site_.file, text);
     Run d = step("rebuild after the edit", build("edited", false, false));
     if (!d.ok) return false;
     auto recompiled = number_after(d.out, R"(permutations: \d+ \((\d+) recompiled)");
@@ -289,7 +356,7 @@ class Bench {
   Options o_;
   shadergen::DomainSpec spec_;
   std::vector<Job> jobs_;
-  std::string define_;
+  EditSite site_;
   std::size_t expected_;  // permutations the edit must recompile
   std::string original_;
   int recompiled_ = 0;
@@ -322,10 +389,13 @@ int run(int argc, char** argv) {
 
   name_include_extension(spec->uber.path);
   for (const auto& companion : spec->companions) name_include_extension(companion.file.path);
-  std::string define = pick_define(*spec, read_text(spec->uber.path), options->edit_define);
-  if (define.empty()) return std::cerr << "shadergen_build_bench: no `#ifdef FEATURE` line to edit\n", 1;
+  EditSite site = pick_edit_site(*spec, options->edit_define);
+  if (site.define.empty())
+    return std::cerr << "shadergen_build_bench: no `#ifdef FEATURE` line in the uber-shader or its includes\n", 1;
   std::vector<Job> jobs = jobs_of(*spec, *plan);
-  Bench bench(*options, std::move(spec).value(), std::move(jobs), define);
+  auto expected = jobs_reaching(jobs, *spec, site);
+  if (!expected) return 1;
+  Bench bench(*options, std::move(spec).value(), std::move(jobs), site, *expected);
   bool ok = bench.run_all();
   if (ok) bench.report();
   if (temporary) fs::remove_all(options->work);
