@@ -1,7 +1,14 @@
 #include "base/sha256.h"
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
 #include <cstring>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define SHADERGEN_SHA256_X86 1
+#endif
 
 namespace shadergen {
 namespace {
@@ -18,12 +25,9 @@ constexpr std::array<std::uint32_t, 64> kRoundConstants = {
 
 constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
 
-}  // namespace
+using State = std::array<std::uint32_t, 8>;
 
-Sha256::Sha256()
-    : state_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
-
-void Sha256::compress(const std::uint8_t* block) {
+void compress_portable(State& state, const std::uint8_t* block) {
   std::uint32_t w[64];
   for (std::size_t i = 0; i < 16; ++i)
     w[i] = (std::uint32_t{block[4 * i]} << 24) | (std::uint32_t{block[4 * i + 1]} << 16) |
@@ -33,7 +37,7 @@ void Sha256::compress(const std::uint8_t* block) {
     std::uint32_t s1 = rotr(w[i - 2], 17) ^ rotr(w[i - 2], 19) ^ (w[i - 2] >> 10);
     w[i] = w[i - 16] + s0 + w[i - 7] + s1;
   }
-  auto [a, b, c, d, e, f, g, h] = state_;
+  auto [a, b, c, d, e, f, g, h] = state;
   for (int i = 0; i < 64; ++i) {
     std::uint32_t s1 = rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25);
     std::uint32_t choose = (e & f) ^ (~e & g);
@@ -50,19 +54,98 @@ void Sha256::compress(const std::uint8_t* block) {
     b = a;
     a = t1 + t2;
   }
-  state_[0] += a;
-  state_[1] += b;
-  state_[2] += c;
-  state_[3] += d;
-  state_[4] += e;
-  state_[5] += f;
-  state_[6] += g;
-  state_[7] += h;
+  state[0] += a;
+  state[1] += b;
+  state[2] += c;
+  state[3] += d;
+  state[4] += e;
+  state[5] += f;
+  state[6] += g;
+  state[7] += h;
 }
+
+#ifdef SHADERGEN_SHA256_X86
+// One block with SHA-NI. The instructions keep the eight state words as two vectors, ABEF and
+// CDGH; sha256rnds2 does two rounds, and sha256msg1/msg2 extend the message schedule four words
+// at a time: W[t..t+3] = msg2(msg1(W[t-16..t-13], W[t-12..]) + W[t-7..t-4], W[t-4..t-1]).
+__attribute__((target("sha,sse4.1,ssse3"))) void compress_x86_sha(State& state, const std::uint8_t* block) {
+  const __m128i big_endian_words = _mm_set_epi64x(0x0c0d0e0f08090a0bLL, 0x0405060700010203LL);
+  __m128i dcba = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&state[0]));
+  __m128i hgfe = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&state[4]));
+  __m128i cdab = _mm_shuffle_epi32(dcba, 0xB1);
+  __m128i efgh = _mm_shuffle_epi32(hgfe, 0x1B);
+  __m128i abef = _mm_alignr_epi8(cdab, efgh, 8);
+  __m128i cdgh = _mm_blend_epi16(efgh, cdab, 0xF0);
+  const __m128i abef_before = abef, cdgh_before = cdgh;
+
+  __m128i w[16];
+  for (int i = 0; i < 16; ++i) {
+    if (i < 4) {
+      w[i] = _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(block + 16 * i)), big_endian_words);
+    } else {
+      __m128i sum = _mm_add_epi32(_mm_sha256msg1_epu32(w[i - 4], w[i - 3]), _mm_alignr_epi8(w[i - 1], w[i - 2], 4));
+      w[i] = _mm_sha256msg2_epu32(sum, w[i - 1]);
+    }
+    __m128i k = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&kRoundConstants[static_cast<std::size_t>(4 * i)]));
+    __m128i message = _mm_add_epi32(w[i], k);
+    cdgh = _mm_sha256rnds2_epu32(cdgh, abef, message);
+    abef = _mm_sha256rnds2_epu32(abef, cdgh, _mm_shuffle_epi32(message, 0x0E));
+  }
+  abef = _mm_add_epi32(abef, abef_before);
+  cdgh = _mm_add_epi32(cdgh, cdgh_before);
+
+  __m128i feba = _mm_shuffle_epi32(abef, 0x1B);
+  __m128i dchg = _mm_shuffle_epi32(cdgh, 0xB1);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(&state[0]), _mm_blend_epi16(feba, dchg, 0xF0));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(&state[4]), _mm_alignr_epi8(dchg, feba, 8));
+}
+
+bool cpu_has_sha_extensions() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("sha") && __builtin_cpu_supports("sse4.1") && __builtin_cpu_supports("ssse3");
+}
+#else
+bool cpu_has_sha_extensions() { return false; }
+#endif
+
+using CompressFunction = void (*)(State&, const std::uint8_t*);
+
+CompressFunction compress_of(Sha256Engine engine) {
+#ifdef SHADERGEN_SHA256_X86
+  if (engine == Sha256Engine::x86_sha_extensions) return compress_x86_sha;
+#endif
+  (void)engine;
+  return compress_portable;
+}
+
+std::atomic<Sha256Engine>& engine_in_use() {
+  static std::atomic<Sha256Engine> engine{cpu_has_sha_extensions() ? Sha256Engine::x86_sha_extensions
+                                                                   : Sha256Engine::portable};
+  return engine;
+}
+
+}  // namespace
+
+Sha256Engine sha256_engine() { return engine_in_use().load(std::memory_order_relaxed); }
+
+bool use_sha256_engine(Sha256Engine engine) {
+  if (engine == Sha256Engine::x86_sha_extensions && !cpu_has_sha_extensions()) return false;
+  engine_in_use().store(engine, std::memory_order_relaxed);
+  return true;
+}
+
+Sha256::Sha256()
+    : state_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
+
+void Sha256::compress(const std::uint8_t* block) { compress_of(sha256_engine())(state_, block); }
 
 Sha256& Sha256::update(std::span<const std::uint8_t> bytes) {
   total_bytes_ += bytes.size();
   std::size_t i = 0;
+  if (buffered_ == 0) {  // whole blocks straight from the input, without the copy
+    auto compress_block = compress_of(sha256_engine());
+    for (; bytes.size() - i >= buffer_.size(); i += buffer_.size()) compress_block(state_, bytes.data() + i);
+  }
   while (i < bytes.size()) {
     std::size_t take = std::min(bytes.size() - i, buffer_.size() - buffered_);
     std::memcpy(buffer_.data() + buffered_, bytes.data() + i, take);
@@ -122,7 +205,12 @@ std::string to_hex(std::span<const std::uint8_t> bytes) {
 std::string sha256_hex(std::string_view text) { return Sha256().update(text).finish_hex(); }
 
 std::string sha256_hex(std::span<const std::uint32_t> words) {
-  // Little-endian byte order, the order SPIR-V files use on disk.
+  // Little-endian byte order, the order SPIR-V files use on disk: on a little-endian host,
+  // the words' own bytes.
+  if constexpr (std::endian::native == std::endian::little)
+    return Sha256()
+        .update(std::span(reinterpret_cast<const std::uint8_t*>(words.data()), words.size_bytes()))
+        .finish_hex();
   Sha256 hasher;
   for (std::uint32_t word : words) {
     std::uint8_t bytes[4] = {static_cast<std::uint8_t>(word), static_cast<std::uint8_t>(word >> 8),

@@ -38,4 +38,13 @@ std::string to_hex(std::span<const std::uint8_t> bytes);
 // HMAC-SHA256 (RFC 2104): the signature of remote-cache entries, keyed by a team's secret.
 std::array<std::uint8_t, 32> hmac_sha256(std::string_view key, std::string_view message);
 
+// The block function the hashers run: the x86 SHA extensions where the CPU has them (a warm
+// build hashes every cache entry it loads, about 2 MB for Split/Second, and the extensions do
+// that several times faster), else portable C++. Both give the same digests.
+enum class Sha256Engine { portable, x86_sha_extensions };
+Sha256Engine sha256_engine();
+// For tests and benchmarks: hashers run `engine` from now on. Returns false, changing nothing,
+// when this CPU lacks it. Not to be called while another thread is hashing.
+bool use_sha256_engine(Sha256Engine engine);
+
 }  // namespace shadergen
