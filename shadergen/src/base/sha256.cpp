@@ -6,6 +6,7 @@
 #include <cstring>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <cpuid.h>
 #include <immintrin.h>
 #define SHADERGEN_SHA256_X86 1
 #endif
@@ -79,14 +80,14 @@ __attribute__((target("sha,sse4.1,ssse3"))) void compress_x86_sha(State& state, 
   const __m128i abef_before = abef, cdgh_before = cdgh;
 
   __m128i w[16];
-  for (int i = 0; i < 16; ++i) {
+  for (std::size_t i = 0; i < 16; ++i) {
     if (i < 4) {
       w[i] = _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(block + 16 * i)), big_endian_words);
     } else {
       __m128i sum = _mm_add_epi32(_mm_sha256msg1_epu32(w[i - 4], w[i - 3]), _mm_alignr_epi8(w[i - 1], w[i - 2], 4));
       w[i] = _mm_sha256msg2_epu32(sum, w[i - 1]);
     }
-    __m128i k = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&kRoundConstants[static_cast<std::size_t>(4 * i)]));
+    __m128i k = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&kRoundConstants[4 * i]));
     __m128i message = _mm_add_epi32(w[i], k);
     cdgh = _mm_sha256rnds2_epu32(cdgh, abef, message);
     abef = _mm_sha256rnds2_epu32(abef, cdgh, _mm_shuffle_epi32(message, 0x0E));
@@ -100,9 +101,13 @@ __attribute__((target("sha,sse4.1,ssse3"))) void compress_x86_sha(State& state, 
   _mm_storeu_si128(reinterpret_cast<__m128i*>(&state[4]), _mm_alignr_epi8(dchg, feba, 8));
 }
 
+// CPUID leaf 7 EBX bit 29 is SHA; leaf 1 ECX bits 9 and 19 are SSSE3 and SSE4.1.
 bool cpu_has_sha_extensions() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("sha") && __builtin_cpu_supports("sse4.1") && __builtin_cpu_supports("ssse3");
+  unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+  if (__get_cpuid(1, &eax, &ebx, &ecx, &edx) == 0) return false;
+  const bool ssse3 = (ecx >> 9) & 1u, sse41 = (ecx >> 19) & 1u;
+  if (__get_cpuid_count(7, 0, &eax, &ebx, &ecx, &edx) == 0) return false;
+  return ssse3 && sse41 && ((ebx >> 29) & 1u);
 }
 #else
 bool cpu_has_sha_extensions() { return false; }
