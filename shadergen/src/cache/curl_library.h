@@ -28,4 +28,9 @@ struct CurlLibrary {
 // (thread-safe), and never unloaded; a failed load is not retried.
 Result<const CurlLibrary*> curl_library();
 
+// What curl_library() does, for the library `soname` and without keeping the result: the tests'
+// way to see a failed load. Every successful call fills the same table, so call it only for a
+// library that is not libcurl, or before any client exists.
+Result<const CurlLibrary*> load_curl_library(const char* soname);
+
 }  // namespace shadergen
