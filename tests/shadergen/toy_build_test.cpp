@@ -421,4 +421,41 @@ TEST(ToyBuildNames, InvalidNamespaceIsRefusedBeforeAnythingIsWritten) {
   EXPECT_FALSE(sgtest::fs::exists(dir / "out"));
 }
 
+// "compile": "optimised": the 4 optimised permutations and the companion are compiled, the raw
+// ones keep their IDs, defines and table entries but carry no SPIR-V.
+TEST(ToyBuildCompileSet, OptimisedOnlyCompilesTheOptimisedPermutations) {
+  sgtest::TempDir dir("toy-optimised-only");
+  sgtest::fs::copy(sgtest::toy_spec().parent_path(), dir / "toy", sgtest::fs::copy_options::recursive);
+  std::string spec = sgtest::read_file(dir / "toy" / "toy.json");
+  spec.insert(spec.find('{') + 1, "\n  \"compile\": \"optimised\",");
+  sgtest::write_file(dir / "toy" / "toy.json", spec);
+  auto summary = shadergen::build(sgtest::build_options(dir / "toy" / "toy.json", dir / "out", dir / "cache"));
+  ASSERT_TRUE(summary.ok()) << first_error(summary);
+  EXPECT_EQ(summary->raw, 16u);
+  EXPECT_EQ(summary->permutations, 5u) << "4 optimised + the companion";
+  EXPECT_EQ(summary->unique_sources, 5u);
+  json manifest = json::parse(sgtest::read_file(dir / "out" / "manifest.json"));
+  EXPECT_EQ(manifest["compile"], "optimised");
+  for (std::uint32_t id = 0; id < 16; ++id) {
+    SCOPED_TRACE("raw " + std::to_string(id));
+    EXPECT_FALSE(manifest["raw"][id].contains("spirv"));
+    if (kToyTable[id] >= 0) {
+      EXPECT_EQ(manifest["raw"][id]["optimised"], kToyTable[id]);
+    }
+  }
+  for (const json& optimised : manifest["optimised"]) EXPECT_TRUE(optimised.contains("spirv"));
+
+  // Without a collapse there is nothing else to compile: refused at the key.
+  std::string identity = sgtest::read_file(sgtest::fixtures_dir() / "identity" / "identity.json");
+  identity.insert(identity.find('{') + 1, "\n  \"compile\": \"optimised\",");
+  sgtest::fs::copy(sgtest::fixtures_dir() / "identity", dir / "identity", sgtest::fs::copy_options::recursive);
+  sgtest::write_file(dir / "identity" / "identity.json", identity);
+  auto refused = shadergen::build(sgtest::build_options(dir / "identity" / "identity.json", dir / "id", dir / "cache"));
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.errors().front().to_string(),
+            (dir / "identity" / "identity.json").string() +
+                ":2:14: error: compile: \"optimised\" needs an \"optimised\" section: without a collapse the raw "
+                "permutations are the only ones");
+}
+
 }  // namespace

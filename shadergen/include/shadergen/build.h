@@ -3,8 +3,10 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,13 @@
 #include "shadergen/diagnostic.h"
 
 namespace shadergen {
+
+// `--shard I/N`: part I (0-based) of N of a domain's distinct sources.
+struct Shard {
+  std::uint32_t index = 0;
+  std::uint32_t count = 1;
+};
+inline constexpr std::uint32_t kMaxShards = 4096;
 
 struct BuildOptions {
   std::filesystem::path spec_path;
@@ -47,6 +56,16 @@ struct BuildOptions {
   // rest of the build does not use it. Each request also waits at most remote_cache_request_limit.
   std::chrono::milliseconds remote_cache_budget{10000};
   std::chrono::milliseconds remote_cache_request_limit{5000};
+  // Set: compile only this shard's distinct sources (after pruning, collapse and dedup) and
+  // store each on the remote cache; nothing is written under out_dir (which may be empty).
+  // The build fails, naming how many, unless every source of the shard is on the server.
+  // Preconditions: a remote cache that is not read-only; index < count <= kMaxShards.
+  std::optional<Shard> shard;
+  // The merge of a sharded build: compile nothing. A distinct source found in neither the local
+  // nor the remote cache (or failing verification) is missing, and the build then fails naming
+  // how many, per shard when `shards` is not 0, and writes nothing. Needs a remote cache.
+  bool require_remote_hits = false;
+  std::uint32_t shards = 0;  // how many shards filled the cache (for the merge's message); 0: unknown
   // Receives progress lines (the CLI prints them on stderr). May be empty.
   std::function<void(const std::string&)> log;
   // Polled between jobs; when it returns true the build stops and fails, output untouched.

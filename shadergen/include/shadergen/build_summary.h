@@ -33,6 +33,12 @@ struct BuildSummary {
   std::uint32_t remote_fetched = 0;  // of cache_hits, entries taken from the remote cache
   std::uint32_t remote_uploaded = 0;
   std::uint32_t remote_failed = 0;  // requests without a usable answer, and rejected entries
+  // A shard (`--shard I/N`): its place and what became of its sources.
+  bool sharded = false;
+  std::uint32_t shard_index = 0, shard_count = 0;
+  std::uint32_t shard_sources = 0;    // distinct sources this shard owns
+  std::uint32_t shard_on_server = 0;  // of which the server held already (verified, or offered from the local cache)
+  std::uint32_t shard_uploaded = 0;   // of which compiled (or taken from the local cache) and uploaded now
   double seconds = 0.0;
   std::vector<PhaseTime> phases;  // in order; their sum is close to `seconds`
 };

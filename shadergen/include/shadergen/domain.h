@@ -96,6 +96,11 @@ bool parse_target_env(std::string_view name, TargetEnv& env);
 // "vulkan1.0, vulkan1.1, vulkan1.2 or vulkan1.3", for messages.
 std::string_view target_env_choices();
 
+// "compile": which permutations a collapsed domain compiles: every raw one and every optimised
+// one ("all", the default), or the optimised ones only ("optimised"): then the registry's raw
+// permutations carry no SPIR-V and a runtime draws raw IDs through the lookup table.
+enum class CompileSet { all, optimised };
+
 // "layout": one pipeline layout for the whole domain (checked across every permutation), or
 // one per permutation (no check: permutations may differ in descriptor kinds and outputs).
 enum class LayoutMode { shared, per_permutation };
@@ -136,6 +141,7 @@ struct DomainSpec {
   // "strip_debug" (or build --strip-debug): the written blobs lose their debug instructions
   // (names, sources, lines); reflection, the manifest and the registry still have the names.
   bool strip_debug = false;
+  CompileSet compile = CompileSet::all;
   // Fixed defines, "NAME=VALUE", in spec order: every shader of the domain (uber-shader and
   // companions) is compiled with them. None names a raw feature's define.
   std::vector<std::string> defines;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <thread>
 
 #include "base/untrusted_text.h"
 #include "cache/signed_entry.h"
@@ -163,9 +164,23 @@ bool RemoteCache::create_collections(const std::string& relative) {
 }
 
 // One request for <url>/<relative> within the budget; nullopt when it got no answer (then the
-// cache is off).
+// cache is off). Networked, it is tried again after a failure or a 5xx (RemoteCacheSettings).
 std::optional<HttpResponse> RemoteCache::send(std::string_view method, const std::string& relative,
                                               std::string_view body) {
+  if (!settings_.networked) return send_once(method, relative, body);
+  std::chrono::seconds pause{1};
+  for (int attempt = 0;; ++attempt, pause *= 2) {
+    const bool last = attempt == kNetworkedRetries;
+    auto response = send_once(method, relative, body, !last);
+    // Off (another request used up its retries): no point in waiting.
+    if (last || off_.load() || (response && response->status < 500)) return response;
+    std::this_thread::sleep_for(pause);
+  }
+}
+
+// One attempt. `quiet`: a failure neither warns nor turns the cache off (a retry follows).
+std::optional<HttpResponse> RemoteCache::send_once(std::string_view method, const std::string& relative,
+                                                   std::string_view body, bool quiet) {
   if (off_.load()) return std::nullopt;
   std::chrono::milliseconds limit = begin_request();
   if (limit.count() <= 0) {
@@ -178,10 +193,11 @@ std::optional<HttpResponse> RemoteCache::send(std::string_view method, const std
   auto response = http_->send(HttpRequest{method, url, body, limit});
   end_request();
   if (response) return std::move(response).value();
+  if (quiet) return std::nullopt;
   // A request shortened to fit the budget that ran its whole time failed because the budget
   // ran out, whatever the HTTP library says.
   bool ran_out = limit < settings_.request_limit && Clock::now() - start + std::chrono::milliseconds(50) >= limit;
-  if (ran_out || waited() >= settings_.budget)
+  if (!settings_.networked && (ran_out || waited() >= settings_.budget))
     budget_spent();
   else
     turn_off(method, relative, without_credentials(response.errors().front().message, url_));
@@ -194,6 +210,7 @@ std::chrono::milliseconds RemoteCache::begin_request() {
   auto now = Clock::now();
   auto spent = waited_ + (in_flight_ > 0 ? now - busy_since_ : Clock::duration{});
   if (in_flight_++ == 0) busy_since_ = now;
+  if (settings_.networked) return settings_.request_limit;
   auto left = std::chrono::duration_cast<std::chrono::milliseconds>(settings_.budget - spent);
   return std::min(left, settings_.request_limit);
 }

@@ -57,7 +57,13 @@ struct RemoteCacheSettings {
   // The waiting time all requests of one build may cost together, and each one at most.
   std::chrono::milliseconds budget{10000};
   std::chrono::milliseconds request_limit{5000};
+  // A shard or a merge (build --shard, --require-remote-hits) lives on the network: no budget,
+  // and a request that gets no answer or a 5xx is sent again, up to kNetworkedRetries more
+  // times, after 1, 2 and 4 s. Each attempt still waits at most request_limit.
+  bool networked = false;
 };
+
+inline constexpr int kNetworkedRetries = 3;
 
 class RemoteCache {
  public:
@@ -100,6 +106,8 @@ class RemoteCache {
 
  private:
   std::optional<HttpResponse> send(std::string_view method, const std::string& relative, std::string_view body = {});
+  std::optional<HttpResponse> send_once(std::string_view method, const std::string& relative, std::string_view body,
+                                        bool quiet = false);
   std::optional<std::string> fetch(const std::string& relative);
   std::optional<std::string> body_entry(std::string_view body) const;
   bool put(const std::string& relative, std::string_view body);

@@ -60,7 +60,57 @@ BuildOptions options_from(const BuildArgs& a) {
   options.remote_cache_url = a.remote_cache;
   options.remote_cache_read_only = a.remote_cache_readonly;
   options.remote_cache_budget = std::chrono::milliseconds(static_cast<long long>(a.remote_cache_budget * 1000.0));
+  options.require_remote_hits = a.require_remote_hits;
+  options.shards = a.shards;
   return options;
+}
+
+// "I/N" with 0 <= I < N <= kMaxShards, or nullopt.
+std::optional<Shard> parse_shard(const std::string& text) {
+  std::size_t slash = text.find('/');
+  if (slash == std::string::npos || slash == 0 || slash + 1 == text.size() || text.size() > 16) return std::nullopt;
+  std::uint64_t parts[2] = {0, 0};
+  for (int p = 0; p < 2; ++p) {
+    std::string_view digits =
+        p == 0 ? std::string_view(text).substr(0, slash) : std::string_view(text).substr(slash + 1);
+    for (char c : digits) {
+      if (c < '0' || c > '9') return std::nullopt;
+      parts[p] = parts[p] * 10 + static_cast<std::uint64_t>(c - '0');
+    }
+  }
+  if (parts[1] == 0 || parts[1] > kMaxShards || parts[0] >= parts[1]) return std::nullopt;
+  return Shard{static_cast<std::uint32_t>(parts[0]), static_cast<std::uint32_t>(parts[1])};
+}
+
+// The command-line mistakes of the sharded build's options (exit 2), or nullopt. Fills
+// options.shard from --shard.
+std::optional<std::string> usage_problem(const BuildArgs& a, BuildOptions& options) {
+  if (!a.shard.empty()) {
+    options.shard = parse_shard(a.shard);
+    if (!options.shard) return "--shard " + a.shard + ": expected I/N with 0 <= I < N <= " + std::to_string(kMaxShards);
+    if (a.remote_cache.empty())
+      return std::string(
+          "--shard needs --remote-cache (or SHADERGEN_REMOTE_CACHE): a shard's results reach the "
+          "merge only through it");
+    if (a.remote_cache_readonly) return std::string("--shard cannot use --remote-cache-readonly: a shard uploads");
+    if (a.require_remote_hits) return std::string("--shard and --require-remote-hits exclude each other");
+  } else if (a.out.empty()) {
+    return std::string("--out is required (except with --shard)");
+  }
+  if (a.require_remote_hits && a.remote_cache.empty())
+    return std::string("--require-remote-hits needs --remote-cache (or SHADERGEN_REMOTE_CACHE)");
+  if (a.shards != 0 && !a.require_remote_hits) return std::string("--shards only goes with --require-remote-hits");
+  return std::nullopt;
+}
+
+// "shadergen: shard 2/8: 1234 distinct sources (1200 uploaded, 34 already on the server) in 9.81 s".
+void print_shard_summary(const BuildArgs& a, const BuildSummary& s, std::ostream& out) {
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, " in %.2f s\n", s.seconds);
+  out << "shadergen: shard " << s.shard_index << "/" << s.shard_count << ": " << s.shard_sources << " of "
+      << s.unique_sources << " distinct sources (" << s.shard_uploaded << " uploaded, " << s.shard_on_server
+      << " already on the server)" << seconds;
+  if (a.stats) out << format_build_stats(s);
 }
 
 // "shadergen: <out>: 128 raw (32 pruned), 32 optimised, ... in 0.83 s", then --stats.
@@ -80,9 +130,9 @@ void print_summary(const BuildArgs& a, const BuildSummary& s, std::ostream& out)
 CLI::App* add_build_command(CLI::App& app, BuildArgs& args) {
   CLI::App* build_cmd = app.add_subcommand("build", "Compile every permutation of a domain into an output folder");
   build_cmd->add_option("spec", args.spec, "Domain spec (JSON)")->required();
-  build_cmd
-      ->add_option("--out,-o", args.out, "Output folder: manifest.json, spirv/, <name>.h/.cpp (replaced atomically)")
-      ->required();
+  build_cmd->add_option("--out,-o", args.out,
+                        "Output folder: manifest.json, spirv/, <name>.h/.cpp (replaced atomically); required "
+                        "except with --shard");
   build_cmd->add_option("-j,--jobs", args.jobs, "Parallel compile jobs (default: one per hardware thread)")
       ->check(CLI::Range(1u, 1024u));
   build_cmd->add_flag("--no-cache", args.no_cache, "Ignore the content cache and compile everything (a cold build)");
@@ -120,11 +170,27 @@ CLI::App* add_build_command(CLI::App& app, BuildArgs& args) {
                    "Seconds the remote cache's requests may keep a build waiting in all before it is turned off "
                    "for the rest of the build (default 10; each request waits at most 5)")
       ->check(CLI::Range(0.0, 3600.0));
+  build_cmd->add_option("--shard", args.shard,
+                        "I/N: compile only shard I (0-based) of N of the domain's distinct sources and store them on "
+                        "--remote-cache; writes no output folder; exits 1 unless all of them are on the server "
+                        "(docs/distributed.md)");
+  build_cmd->add_flag("--require-remote-hits", args.require_remote_hits,
+                      "The merge of a sharded build: compile nothing, take every source from the caches, and fail "
+                      "(writing nothing) if any is missing");
+  build_cmd
+      ->add_option("--shards", args.shards,
+                   "With --require-remote-hits: how many shards filled the cache, so that missing sources are "
+                   "counted per shard")
+      ->check(CLI::Range(1u, kMaxShards));
   return build_cmd;
 }
 
 int run_build(const BuildArgs& a, const std::atomic<bool>& interrupted, std::ostream& out, std::ostream& err) {
   BuildOptions options = options_from(a);
+  if (auto usage = usage_problem(a, options)) {
+    err << "shadergen: error: " << *usage << '\n';
+    return command_line::kExitUsage;
+  }
   auto secret = remote_cache_secret(a, err);
   if (!secret) return command_line::kExitError;
   options.remote_cache_secret = std::move(*secret);
@@ -138,7 +204,10 @@ int run_build(const BuildArgs& a, const std::atomic<bool>& interrupted, std::ost
     }
     return print_errors(summary.errors(), err);
   }
-  print_summary(a, *summary, out);
+  if (summary->sharded)
+    print_shard_summary(a, *summary, out);
+  else
+    print_summary(a, *summary, out);
   return command_line::kExitSuccess;
 }
 

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <atomic>
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ struct BuildArgs {
   bool remote_cache_readonly = false;
   std::string remote_cache_secret_file;
   double remote_cache_budget = 10.0;  // seconds
+  std::string shard;                  // "I/N", or empty
+  bool require_remote_hits = false;
+  std::uint32_t shards = 0;
 };
 
 // Adds the `build` subcommand and its options to `app`; a parse fills `args`.

@@ -18,6 +18,7 @@
 #include "compile/error_grouping.h"
 #include "compile/glsl_compiler.h"
 #include "compile/program_check.h"
+#include "compile/shard_partition.h"
 #include "compile/spirv_passes.h"
 #include "compile/toolchain.h"
 #include "spec/defines.h"
@@ -33,16 +34,20 @@ double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+// "compile": "optimised" leaves the raw permutations out (they have no job, so no blob).
 std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan& plan) {
   std::vector<CompileJob> jobs;
+  const bool raw_too = spec.compile == CompileSet::all;
   for (const RawPermutation& raw : plan.raw)
-    if (!raw.pruned) jobs.push_back({JobKind::raw, raw.id, raw.defines, spec.uber.stage, spec.uber.path, {}});
+    if (raw_too && !raw.pruned)
+      jobs.push_back({JobKind::raw, raw.id, raw.defines, spec.uber.stage, spec.uber.path, {}});
   for (const OptimisedPermutation& optimised : plan.optimised)
     jobs.push_back({JobKind::optimised, optimised.id, optimised.defines, spec.uber.stage, spec.uber.path, {}});
   if (spec.program_vertex) {
     const ShaderFile& vertex = *spec.program_vertex;
     for (const RawPermutation& raw : plan.raw)
-      if (!raw.pruned) jobs.push_back({JobKind::raw, raw.id, raw.defines, vertex.stage, vertex.path, {}, true});
+      if (raw_too && !raw.pruned)
+        jobs.push_back({JobKind::raw, raw.id, raw.defines, vertex.stage, vertex.path, {}, true});
     for (const OptimisedPermutation& o : plan.optimised)
       jobs.push_back({JobKind::optimised, o.id, o.defines, vertex.stage, vertex.path, {}, true});
   }
@@ -81,6 +86,12 @@ class DomainCompiler {
     if (!d_.inputs_reused) {
       if (Status s = preprocess_all(); !s) return s;
       clock.lap("preprocess");
+    }
+    if (options_.shard) {
+      Status s = compile_shard(*options_.shard);
+      clock.lap("shard compile or find");
+      if (s) remember_inputs();
+      return s;
     }
     if (Status s = compile_sources(); !s) return s;
     clock.lap("compile or load");
@@ -363,18 +374,25 @@ class DomainCompiler {
 
   Status compile_sources() {
     std::vector<Result<CachedBlob>> results(d_.sources.size(), Result<CachedBlob>(CachedBlob{}));
+    std::vector<char> missing(d_.sources.size(), 0);
     std::atomic<std::size_t> done{0};
     std::mutex log_mutex;
     std::size_t total = d_.sources.size();
     parallel_for(
         total, options_.jobs,
         [&](std::size_t i) {
-          results[i] = compile_one(d_.sources[i]);
+          if (!options_.require_remote_hits)
+            results[i] = compile_one(d_.sources[i]);
+          else if (auto hit = load_cached(d_.sources[i]))
+            results[i] = std::move(*hit);
+          else
+            missing[i] = 1;
           std::size_t finished = ++done;
           report_progress(finished, total, i, log_mutex);
         },
         options_.cancelled);
     if (cancelled()) return cancelled_error();
+    if (Status s = refuse_missing(missing); !s) return s;
     std::vector<JobFailure> failures;
     // Every job with a failed source has that source's errors.
     for (std::size_t j = 0; j < d_.jobs.size(); ++j) {
@@ -384,6 +402,87 @@ class DomainCompiler {
     if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)), options_.verbose);
     store_blobs(results);
     return Ok{};
+  }
+
+  // The merge (require_remote_hits): every distinct source must have come from a cache.
+  Status refuse_missing(const std::vector<char>& missing) const {
+    std::size_t count = static_cast<std::size_t>(std::count(missing.begin(), missing.end(), 1));
+    if (count == 0) return Ok{};
+    const std::size_t total = missing.size();
+    Diagnostics errors{
+        make_error(std::to_string(count) + " of " + std::to_string(total) +
+                   " distinct sources missing from the remote cache " + options_.remote->shown_url() +
+                   " (or failing verification); --require-remote-hits compiles nothing, so nothing was written")};
+    if (options_.shards == 0) return errors;
+    std::map<std::uint32_t, std::size_t> per_shard;
+    for (std::size_t s = 0; s < total; ++s)
+      if (missing[s]) ++per_shard[shard_of(s, total, options_.shards)];
+    for (const auto& [shard, n] : per_shard)
+      errors.push_back(make_error("shard " + std::to_string(shard) + "/" + std::to_string(options_.shards) + ": " +
+                                  std::to_string(n) + " source" + (n == 1 ? "" : "s") + " missing"));
+    return errors;
+  }
+
+  // One source of a shard: on the server when this returns true (found there, offered from the
+  // local cache, or compiled and uploaded). A compile error is returned as such.
+  enum class ShardFate { on_server, uploaded, missing };
+  Result<ShardFate> make_sure_on_server(SourceRecord& record) {
+    if (options_.cache)
+      if (auto local = options_.cache->load(record.key)) {
+        record.cache_hit = true;
+        if (options_.remote->offer(record.key, *local)) return ShardFate::on_server;
+        return ShardFate::missing;
+      }
+    if (options_.remote->load(record.key, fit_check(d_.jobs[record.first_job].stage))) {
+      record.cache_hit = record.remote_hit = true;
+      return ShardFate::on_server;
+    }
+    auto start = Clock::now();
+    auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
+    if (!words) return std::move(words).take_errors();
+    auto optimised = optimise_and_validate(std::move(words).value(), d_.spec.target_env);
+    if (!optimised) return std::move(optimised).take_errors();
+    record.compile_ms = milliseconds_since(start);
+    CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
+    store_local(record.key, blob);
+    return options_.remote->store(record.key, blob) ? ShardFate::uploaded : ShardFate::missing;
+  }
+
+  // build --shard: this shard's sources, each made sure of on the server. GLSL errors are
+  // grouped over the permutations of the shard's sources, as in a whole build.
+  Status compile_shard(ShardPlace shard) {
+    const SourceRange range = shard_range(d_.sources.size(), shard.index, shard.count);
+    const std::size_t total = range.last - range.first;
+    std::vector<Result<ShardFate>> fates(total, Result<ShardFate>(ShardFate::missing));
+    std::atomic<std::size_t> done{0};
+    std::mutex log_mutex;
+    parallel_for(
+        total, options_.jobs,
+        [&](std::size_t k) {
+          fates[k] = make_sure_on_server(d_.sources[range.first + k]);
+          report_progress(++done, total, range.first + k, log_mutex);
+        },
+        options_.cancelled);
+    if (cancelled()) return cancelled_error();
+    std::vector<JobFailure> failures;
+    for (std::size_t j = 0; j < d_.jobs.size(); ++j) {
+      std::size_t source = static_cast<std::size_t>(d_.jobs[j].source);
+      if (source >= range.first && source < range.last && !fates[source - range.first])
+        failures.push_back({j, fates[source - range.first].errors(), {}});
+    }
+    if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)), options_.verbose);
+    ShardOutcome outcome{shard.index, shard.count, static_cast<std::uint32_t>(total), 0, 0};
+    for (const auto& fate : fates) {
+      outcome.on_server += *fate == ShardFate::on_server;
+      outcome.uploaded += *fate == ShardFate::uploaded;
+    }
+    d_.shard = outcome;
+    std::uint32_t missing = outcome.sources - outcome.on_server - outcome.uploaded;
+    if (missing == 0) return Ok{};
+    return make_error("shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) + ": " +
+                      std::to_string(missing) + " of its " + std::to_string(outcome.sources) +
+                      " distinct sources are not on the remote cache " + options_.remote->shown_url() +
+                      " (uploads failed; the warnings above say why)");
   }
 
   void report_progress(std::size_t finished, std::size_t total, std::size_t source, std::mutex& mutex) {

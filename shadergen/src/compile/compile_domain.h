@@ -5,9 +5,11 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "compile/compiled_domain.h"
+#include "compile/shard_partition.h"
 #include "shadergen/diagnostic.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
@@ -27,6 +29,12 @@ struct CompileOptions {
   std::function<void(const std::string&)> log;
   std::function<bool()> cancelled;
   RemoteCache* remote = nullptr;  // nullptr: no remote cache; else asked after a local miss
+  // build --shard: only this shard's sources, each made sure of on the remote cache (needs
+  // `remote`); the domain is not reflected or checked, and has no blobs.
+  std::optional<ShardPlace> shard;
+  // The merge: nothing is compiled; a source in neither cache fails the build (needs `remote`).
+  bool require_remote_hits = false;
+  std::uint32_t shards = 0;  // the merge names the shards that owned missing sources; 0: not
 };
 
 // Preprocesses, deduplicates, compiles (or loads from the cache), optimises, validates and

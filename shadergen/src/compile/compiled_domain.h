@@ -53,6 +53,14 @@ struct SourceRecord {
   bool remote_hit = false;  // the cache hit came from the remote cache
 };
 
+// What a shard (CompileOptions::shard) did with the sources it owns.
+struct ShardOutcome {
+  std::uint32_t index = 0, count = 0;
+  std::uint32_t sources = 0;    // distinct sources the shard owns
+  std::uint32_t on_server = 0;  // the server had them already
+  std::uint32_t uploaded = 0;   // stored on the server now
+};
+
 struct CompiledDomain {
   DomainSpec spec;
   PermutationPlan plan;
@@ -68,6 +76,7 @@ struct CompiledDomain {
   bool inputs_reused = false;                       // source keys came from the input-set cache, no preprocessing
   std::vector<PhaseTime> phases;                    // preprocess (or input check), compile or load, reflect, layout
   std::optional<RemoteCacheStats> remote;           // with a remote cache only
+  std::optional<ShardOutcome> shard;                // a shard's build only (then `blobs` is empty)
 
   // Blob of raw ID `id`, or nullptr when pruned. Likewise for optimised IDs and companions.
   const Blob* raw_blob(std::uint32_t id) const;

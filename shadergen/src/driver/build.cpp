@@ -22,13 +22,34 @@
 namespace shadergen {
 namespace {
 
+// A shard and a merge need a remote cache, and a shard one it may write to.
+Status check_network_roles(const BuildOptions& options) {
+  if (options.shard) {
+    const Shard& shard = *options.shard;
+    if (shard.count == 0 || shard.count > kMaxShards || shard.index >= shard.count)
+      return make_error("--shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
+                        ": expected I/N with 0 <= I < N <= " + std::to_string(kMaxShards));
+    if (options.remote_cache_url.empty())
+      return make_error("--shard needs --remote-cache: a shard's results reach the merge only through it");
+    if (options.remote_cache_read_only)
+      return make_error("--shard cannot use --remote-cache-readonly: a shard uploads what it compiles");
+    if (options.require_remote_hits) return make_error("--shard and --require-remote-hits exclude each other");
+  }
+  if (options.require_remote_hits && options.remote_cache_url.empty())
+    return make_error("--require-remote-hits needs --remote-cache: it takes every source from there");
+  if (options.shards > kMaxShards)
+    return make_error("--shards " + std::to_string(options.shards) + ": at most " + std::to_string(kMaxShards));
+  return Ok{};
+}
+
 Status check_names(const BuildOptions& options, const std::string& cpp_name, const std::string& ns) {
   if (!is_valid_namespace(ns))
     return make_error("--namespace: \"" + ns + "\" is not a C++ namespace (identifiers joined by ::)");
   if (cpp_name.empty() || cpp_name.find('/') != std::string::npos || cpp_name.find('\\') != std::string::npos ||
       cpp_name.front() == '.')
     return make_error("--cpp-name: \"" + cpp_name + "\" is not a plain file name");
-  if (options.out_dir.empty()) return make_error("--out: no output folder given");
+  if (options.out_dir.empty() && !options.shard) return make_error("--out: no output folder given");
+  if (Status ok = check_network_roles(options); !ok) return ok;
   if (!options.remote_cache_url.empty())
     if (std::string problem = remote_cache_url_problem(options.remote_cache_url); !problem.empty())
       return make_error("--remote-cache: \"" + printable(redacted_url(options.remote_cache_url)) + "\" " + problem +
@@ -119,10 +140,14 @@ BuildOptions normalised(BuildOptions options) {
   return options;
 }
 
+// A shard and a merge live on the network: they use the remote cache even with --no-cache
+// (which then only skips the local one), with no budget and with retries.
 std::unique_ptr<RemoteCache> remote_cache_for(const BuildOptions& options) {
-  if (!options.use_cache || options.remote_cache_url.empty()) return nullptr;
-  RemoteCacheSettings settings{options.remote_cache_url, options.remote_cache_read_only, options.remote_cache_secret,
-                               options.remote_cache_budget, options.remote_cache_request_limit};
+  const bool networked = options.shard || options.require_remote_hits;
+  if ((!options.use_cache && !networked) || options.remote_cache_url.empty()) return nullptr;
+  RemoteCacheSettings settings{options.remote_cache_url,           options.remote_cache_read_only,
+                               options.remote_cache_secret,        options.remote_cache_budget,
+                               options.remote_cache_request_limit, networked};
   return std::make_unique<RemoteCache>(std::move(settings), make_curl_http_client(), options.log);
 }
 
@@ -138,6 +163,20 @@ void warn_unreachable(const BuildOptions& options, const PermutationPlan& plan) 
               " reached by no raw ID; compiled all the same (`shadergen lut` shows the table; to avoid them, "
               "change the optimised bits' \"when\" rules so that no combination of bits is impossible, or use "
               "fewer bits)");
+}
+
+// A shard writes nothing: its summary says what became of its sources.
+BuildSummary shard_summary(const CompiledDomain& domain, std::vector<PhaseTime> phases,
+                           std::chrono::steady_clock::time_point start) {
+  BuildSummary summary = summarise(domain);
+  const ShardOutcome& shard = *domain.shard;
+  summary.sharded = true;
+  summary.shard_index = shard.index, summary.shard_count = shard.count;
+  summary.shard_sources = shard.sources, summary.shard_on_server = shard.on_server;
+  summary.shard_uploaded = shard.uploaded;
+  summary.phases = std::move(phases);
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
 }
 
 }  // namespace
@@ -167,10 +206,17 @@ Result<BuildSummary> build(const BuildOptions& given) {
     std::filesystem::path dir = options.cache_dir.empty() ? default_cache_directory() : options.cache_dir;
     if (!dir.empty()) cache = ContentCache(dir), inputs = InputCache(dir);
   }
-  CompileOptions compile_options{
-      options.jobs, cache.enabled() ? &cache : nullptr, nullptr, {}, options.verbose, options.log, options.cancelled};
+  CompileOptions compile_options;
+  compile_options.jobs = options.jobs;
+  compile_options.cache = cache.enabled() ? &cache : nullptr;
+  compile_options.verbose = options.verbose;
+  compile_options.log = options.log;
+  compile_options.cancelled = options.cancelled;
   std::unique_ptr<RemoteCache> remote = remote_cache_for(options);
   compile_options.remote = remote.get();
+  if (options.shard) compile_options.shard = ShardPlace{options.shard->index, options.shard->count};
+  compile_options.require_remote_hits = options.require_remote_hits;
+  compile_options.shards = options.shards;
   if (inputs.enabled()) {
     compile_options.inputs = &inputs;
     compile_options.input_key =
@@ -181,6 +227,7 @@ Result<BuildSummary> build(const BuildOptions& given) {
   phases.insert(phases.end(), domain->phases.begin(), domain->phases.end());
   if (remote) domain->remote = remote->stats();
   clock.restart();
+  if (domain->shard) return shard_summary(*domain, std::move(phases), start);
 
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const Blob& blob : domain->blobs)

@@ -209,6 +209,8 @@ std::string write_manifest(const CompiledDomain& d) {
   m["target_env"] = target_env_name(d.spec.target_env);
   m["collapsed"] = d.spec.collapsed;
   m["layout"] = d.spec.layout == LayoutMode::shared ? "shared" : "per_permutation";
+  // Only when not the default, so the manifests of "all" domains stay as they were.
+  if (d.spec.compile == CompileSet::optimised) m["compile"] = "optimised";
   // The fixed defines every shader was compiled with (spec, --define, CMake DEFINES), in order.
   m["defines"] = d.spec.defines;
   add_features(m, d.spec);

@@ -169,7 +169,7 @@ class DomainBuilder {
     }
     reader_.only_keys(root, "spec",
                       {"format", "name", "description", "uber_shader", "program", "include_dirs", "target_env",
-                       "layout", "strip_debug", "defines", "companions", "raw", "optimised"});
+                       "layout", "strip_debug", "defines", "companions", "raw", "optimised", "compile"});
     read_header(root);
     read_permuted_shaders(root);
     read_include_dirs(root);
@@ -185,6 +185,7 @@ class DomainBuilder {
     spec_.collapsed = root.find("optimised") != nullptr;
     if (const Value* optimised = reader_.member(root, "spec", "optimised", Type::object, false))
       read_optimised(*optimised);
+    read_compile_set(root);
     return std::move(spec_);
   }
 
@@ -270,6 +271,20 @@ class DomainBuilder {
       reader_.error(
           *env, "target_env",
           "unknown target environment \"" + env->string + "\" (expected " + std::string(target_env_choices()) + ")");
+  }
+
+  void read_compile_set(const Value& root) {
+    const Value* compile = reader_.member(root, "spec", "compile", Type::string, false);
+    if (!compile) return;
+    if (compile->string == "optimised") {
+      spec_.compile = CompileSet::optimised;
+      if (!spec_.collapsed)
+        reader_.error(*compile, "compile",
+                      "\"optimised\" needs an \"optimised\" section: without a collapse the raw permutations are "
+                      "the only ones");
+    } else if (compile->string != "all") {
+      reader_.error(*compile, "compile", "unknown value \"" + compile->string + "\" (expected all or optimised)");
+    }
   }
 
   void read_layout(const Value& root) {
