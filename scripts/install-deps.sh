@@ -5,7 +5,8 @@
 #                                     for the style test, clang-tidy for scripts/lint.sh, which CI
 #                                     runs, assimp-testmodels' real and broken glTF files for the
 #                                     scene tests, Apache mod_dav for the remote-cache tests, ccache
-#                                     for repeat runs of scripts/run-tests.sh)
+#                                     for repeat runs of scripts/run-tests.sh, Slurm and munge for
+#                                     the one-node cluster of shadergen.slurm_shards)
 set -eu
 
 PACKAGES="cmake ninja-build g++ pkg-config
@@ -15,7 +16,7 @@ libglm-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
 libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev
 libcurl4-openssl-dev nginx"
 if [ "${1:-}" = "--tests" ]; then
-    PACKAGES="$PACKAGES clang-format clang-tidy assimp-testmodels apache2 ccache"
+    PACKAGES="$PACKAGES clang-format clang-tidy assimp-testmodels apache2 ccache slurm-wlm munge"
 fi
 
 missing=""
