@@ -23,6 +23,8 @@ Run run(const std::vector<std::string>& args) {
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.ok = outcome.exit_code == 0;
   r.out = outcome.out + outcome.err;
+  r.cpu_seconds = outcome.cpu_seconds;
+  r.peak_rss_kib = outcome.peak_rss_kib;
   if (!child.started()) r.out = "cannot start " + args.front() + " (fork or pipe failed)\n";
   return r;
 }

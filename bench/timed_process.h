@@ -11,9 +11,11 @@
 namespace bench {
 
 struct Run {
-  bool ok = false;       // exit status 0
-  double seconds = 0.0;  // wall time, start to exit
-  std::string out;       // stdout, then stderr
+  bool ok = false;           // exit status 0
+  double seconds = 0.0;      // wall time, start to exit
+  std::string out;           // stdout, then stderr
+  double cpu_seconds = 0.0;  // user + system of the program itself
+  long peak_rss_kib = 0;     // its peak resident set
 };
 
 // Runs the program args[0] (a path, or a name looked up in PATH) with the other arguments and

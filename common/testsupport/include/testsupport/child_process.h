@@ -29,6 +29,9 @@ struct ChildOutcome {
   int signal = 0;      // the signal that killed it, 0 if none
   std::string out;
   std::string err;
+  // What the child (not its own children) used, from wait4(): for the benchmarks.
+  double cpu_seconds = 0.0;  // user + system
+  long peak_rss_kib = 0;     // ru_maxrss
 };
 
 class Child {
