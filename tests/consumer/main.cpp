@@ -1,6 +1,7 @@
 // Checks that the generated registry links and holds what the manifest promises, and that the
 // generated API's contract compiles outside the project: Features with designated
-// initializers, raw_id(), kFeatures, kDefines, find_raw_id() and shadergen/vulkan.h.
+// initializers, raw_id(), kFeatures, kDefines, find_raw_id() in the one grammar and
+// shadergen/vulkan.h.
 #include <consumer_shaders.h>
 #include <shadergen/vulkan.h>
 
@@ -13,7 +14,10 @@ namespace shaders = game::shaders;
 static_assert(shaders::raw_id({.SOFT = true, .DISTORT = true}) == 0b1100u);
 static_assert(shaders::find_raw_id("SOFT|DISTORT") == 0b1100u);
 static_assert(shaders::find_raw_id("") == 0u);
+static_assert(shaders::find_raw_id("(none)") == 0u);
 static_assert(!shaders::find_raw_id("SOFT|NOT_A_FEATURE"));
+static_assert(!shaders::find_raw_id("SOFT_PARTICLES") && !shaders::find_raw_id("12") &&
+              !shaders::find_raw_id("SOFT=1"));
 static_assert(shaders::kFeatures[0].name == "SOFT" && shaders::kFeatures[0].bit == 2);
 
 int main() {

@@ -275,6 +275,11 @@ TEST_F(ToyBuild, GeneratedHeaderCarriesBannerTableAndStaticAssert) {
       << header;
   EXPECT_TRUE(sgtest::contains(header, "inline constexpr std::uint32_t SOFT = 1u << 2;  // #define SOFT_PARTICLES\n"));
   EXPECT_TRUE(sgtest::contains(header, "inline constexpr std::uint32_t SAMPLED = 1u << 1;\n"));
+  // The one grammar's parser lives in <shadergen/registry.h>; the header only hands it kFeatures.
+  EXPECT_TRUE(sgtest::contains(header,
+                               "constexpr std::optional<std::uint32_t> find_raw_id(std::string_view text) {\n"
+                               "  return shadergen::find_raw_id(kFeatures, text);\n}\n"))
+      << header;
   EXPECT_TRUE(sgtest::contains(header, "static_assert("));
   EXPECT_TRUE(sgtest::contains(header, "const shadergen::Registry& registry();"));
   EXPECT_FALSE(sgtest::contains(header, "0x07230203")) << "SPIR-V words belong in the source, not the header";

@@ -89,11 +89,12 @@ void feature_tables(std::ostringstream& h, const CompiledDomain& d, const std::v
     std::string value = define.size() > name.size() ? define.substr(name.size() + 1) : std::string("1");
     h << "    {" << literal(name) << ", " << literal(value) << "},\n";
   }
-  h << "}};\n\n// The raw ID `text` names, as `shadergen explain` reads it (\"NORMAL_MAP|SHADOW_QUALITY=2\", \"0x5\"); "
-       "\"\" "
-       "is 0;\n// nullopt for an unknown name or value.\n"
+  h << "}};\n\n"
+       "// The raw ID `text` names in shadergen's one grammar (\"NORMAL_MAP|SHADOW_QUALITY=2\", \"(none)\";\n"
+       "// \"\" is 0), pruned or not; nullopt when the text is refused:\n"
+       "// shadergen::parse_combination(kFeatures, text) says why.\n"
     << "constexpr std::optional<std::uint32_t> find_raw_id(std::string_view text) {\n"
-    << "  return shadergen::find_raw_id(kFeatures, " << d.spec.raw_bits() << ", text);\n}\n\n";
+    << "  return shadergen::find_raw_id(kFeatures, text);\n}\n\n";
 }
 
 std::string typed_features(const CompiledDomain& d) {
