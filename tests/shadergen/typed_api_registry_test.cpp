@@ -1,11 +1,14 @@
 // The generated API's contract, compiled as a consumer compiles it (tests/fixtures/typed_api:
 // features listed out of bit order, integer, negative and identifier values, fixed defines
 // from the spec and from CMake's DEFINES, one quoted): Features with designated initializers
-// in spec order, raw_id(), the value enums, kFeatures, kDefines, find_raw_id() round trips for
-// every raw ID in the one grammar, and shadergen/vulkan.h's create-infos checked against the manifest and handed
+// in spec order, raw_id() (checked: a cast enum value gives none), the value enums, kFeatures,
+// kDefines, find_raw_id() round trips for every raw ID in the one grammar, the checked lookups
+// by raw ID, and shadergen/vulkan.h's create-infos checked against the manifest and handed
 // to a real driver (lavapipe in CI; skipped where the machine has no Vulkan device).
 #include <gtest/gtest.h>
 #include <shadergen/vulkan.h>
+
+#include "registry_lookups.h"
 
 #include <bit>
 #include <fstream>
@@ -29,6 +32,12 @@ static_assert(static_cast<std::uint32_t>(BIAS_value::_m1) == 0u && static_cast<s
 static_assert(static_cast<std::uint32_t>(TONEMAP_value::FILMIC) == 2u);
 static_assert(find_raw_id("TONEMAP=ACES|SHARPEN|QUALITY=2|BIAS=1") == raw_id(kAcesSharpHigh));
 static_assert(std::is_aggregate_v<Features>);
+// A value cast from outside its enum is no raw ID: QUALITY has 3 values in a 2-bit field (3
+// fits the field but names no value), TONEMAP 7 and BIAS 2 would spill into the next field.
+static_assert(raw_id({.QUALITY = static_cast<QUALITY_value>(3)}) == std::nullopt);
+static_assert(raw_id({.TONEMAP = static_cast<TONEMAP_value>(7)}) == std::nullopt);
+static_assert(raw_id({.BIAS = static_cast<BIAS_value>(2)}) == std::nullopt);
+static_assert(raw_id({.BIAS = static_cast<BIAS_value>(0xffffffffu)}) == std::nullopt);
 
 TEST(TypedApi, FeaturesAreListedInSpecOrder) {
   ASSERT_EQ(kFeatures.size(), 4u);
@@ -124,6 +133,22 @@ TEST(TypedApi, FindRawIdRefusesWhatIsNotARawId) {
     EXPECT_EQ(find_raw_id(text), std::nullopt) << '"' << text << '"';
     EXPECT_EQ(shadergen::parse_combination(kFeatures, text).error, error) << '"' << text << '"';
   }
+}
+
+// raw_id() and the lookups by raw ID, all checked: a domain without collapse, so optimised_id()
+// is the raw ID itself, and the 28 IDs whose fields hold no value are pruned.
+TEST(TypedApi, LookupsByRawIdAreChecked) {
+  static_assert(optimised_id(*raw_id(kAcesSharpHigh)) == raw_id(kAcesSharpHigh));
+  static_assert(is_valid_raw_id(0) && !is_valid_raw_id(kRawCount) && !is_valid_raw_id(3u << 1));
+  const registry_lookups::Counts counts =
+      registry_lookups::expect_checked_lookups(registry(), {kRawCount, kRawPruned, {}, is_valid_raw_id, optimised_id});
+  EXPECT_EQ(counts.valid, 36u);
+  EXPECT_EQ(counts.pruned, 28u);
+  const std::optional<std::uint32_t> id = raw_id({.TONEMAP = TONEMAP_value::FILMIC, .SHARPEN = true});
+  ASSERT_TRUE(id);
+  const shadergen::Permutation* p = registry().optimised_for_raw(*id);
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p, &registry().raw[*id]);
 }
 
 nlohmann::json manifest() {

@@ -10,11 +10,14 @@
 //   inline constexpr std::array<bool, kRawCount> kRawPruned;               // impossible raw IDs
 //   namespace raw_bit       { inline constexpr std::uint32_t <FEATURE> = 1u << n; ... }
 //   namespace optimised_bit { inline constexpr std::uint32_t <BIT> = 1u << n; ... }
+//   constexpr bool is_valid_raw_id(std::uint32_t);       // < kRawCount and not pruned
+//   constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id);  // checked lookup
 //   enum class <FEATURE>_value : std::uint32_t { <value>, ... };  // per valued feature: its values,
 //                                                        // an integer 2 spelt _2 (-1: _m1)
 //   struct Features { bool <FEATURE> = false; <FEATURE>_value <FEATURE> = ...; ... };
 //                                                        // one member per raw feature, in spec order
-//   constexpr std::uint32_t raw_id(const Features&);     // the raw ID those features make
+//   constexpr std::optional<std::uint32_t> raw_id(const Features&);  // the raw ID those features
+//                                                        // make; nullopt: a value out of its enum, or pruned
 //   inline constexpr std::array<shadergen::Feature, n> kFeatures;           // in spec order
 //   inline constexpr std::array<shadergen::FixedDefine, n> kDefines;        // the fixed defines
 //   constexpr std::optional<std::uint32_t> find_raw_id(std::string_view);   // "A|B=2" -> raw ID
@@ -165,8 +168,10 @@ struct Registry {
   std::span<const std::string_view> optimised_bit_names;  // indexed by optimised bit
   std::span<const std::uint8_t> raw_to_optimised;         // the LUT, one entry per raw ID;
                                                           // empty when the domain is not collapsed
-  std::span<const Permutation> raw;                       // indexed by raw ID
-  std::span<const Permutation> optimised;                 // indexed by optimised ID
+  // Indexed by raw ID, unchecked, like the spans above: for an ID from outside (a classifier,
+  // a file, a cast), use find_raw(), optimised_id() or optimised_for_raw(), which check it.
+  std::span<const Permutation> raw;
+  std::span<const Permutation> optimised;  // indexed by optimised ID
   std::span<const CompanionShader> companions;
   std::span<const DescriptorBinding> pipeline_layout;  // merged over every blob
   std::span<const PushConstantRange> push_constants;   // merged over every blob
@@ -174,10 +179,29 @@ struct Registry {
   // empty and each permutation's reflection is its own layout.
   bool per_permutation_layout = false;
 
-  // Precondition: raw_id < raw.size(). Returns the permutation a raw ID is drawn with: its
-  // optimised permutation, or, in a domain without collapse, the raw permutation itself.
-  const Permutation& optimised_for_raw(std::uint32_t raw_id) const {
-    return raw_to_optimised.empty() ? raw[raw_id] : optimised[raw_to_optimised[raw_id]];
+  // The lookups by raw ID. Each checks the ID, so an ID from outside can never read past a
+  // table: one outside the domain (>= raw.size()) or pruned (no shader) is "none".
+
+  // The raw permutation `raw_id` names, or nullptr when it is out of range or pruned.
+  constexpr const Permutation* find_raw(std::uint32_t raw_id) const {
+    if (raw_id >= raw.size() || raw[raw_id].pruned) return nullptr;
+    return &raw[raw_id];
+  }
+  // The optimised ID `raw_id` is drawn with, or nullopt when it is out of range or pruned (or
+  // its table entry names no optimised permutation, which a generated registry never holds).
+  // In a domain without collapse every raw ID is its own permutation: the raw ID itself.
+  constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) const {
+    if (find_raw(raw_id) == nullptr) return std::nullopt;
+    if (raw_to_optimised.empty()) return raw_id;
+    if (raw_id >= raw_to_optimised.size() || raw_to_optimised[raw_id] >= optimised.size()) return std::nullopt;
+    return raw_to_optimised[raw_id];
+  }
+  // The permutation `raw_id` is drawn with: its optimised permutation, or, in a domain without
+  // collapse, the raw permutation itself; nullptr when optimised_id() is nullopt.
+  constexpr const Permutation* optimised_for_raw(std::uint32_t raw_id) const {
+    std::optional<std::uint32_t> id = optimised_id(raw_id);
+    if (!id) return nullptr;
+    return raw_to_optimised.empty() ? &raw[*id] : &optimised[*id];
   }
   // Returns the companion called `name`, or nullptr.
   const CompanionShader* companion(std::string_view wanted) const {
