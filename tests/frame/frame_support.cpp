@@ -8,7 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace tilelight::test {
 
@@ -40,7 +43,11 @@ FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, dou
 
 std::set<std::uint32_t> optimised_ids_of(const std::vector<std::uint8_t>& raw_ids) {
   std::set<std::uint32_t> ids;
-  for (std::uint8_t raw : raw_ids) ids.insert(split_second::kRawToOptimised[raw]);
+  for (std::uint8_t raw : raw_ids) {
+    const std::optional<std::uint32_t> id = split_second::optimised_id(raw);
+    if (!id) throw std::runtime_error("raw tile ID " + std::to_string(raw) + " is out of range or pruned");
+    ids.insert(*id);
+  }
   return ids;
 }
 

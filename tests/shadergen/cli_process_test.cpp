@@ -128,9 +128,13 @@ TEST(CliProcess, ExplainRejectsABadRawIdNamingTheValue) {
            Case{"128", "shadergen: error: raw ID 128 is out of range: domain split_second has raw IDs 0 to 127\n"},
            Case{"0x80", "shadergen: error: raw ID 0x80 is out of range: domain split_second has raw IDs 0 to 127\n"},
            Case{"NOT_A_FEATURE",
-                "shadergen: error: unknown raw feature \"NOT_A_FEATURE\" (known: SHADOW_SOLID, SHADOW_SOFT, "
+                "shadergen: error: unknown feature \"NOT_A_FEATURE\" (known: SHADOW_SOLID, SHADOW_SOFT, "
                 "SHADOW_FADE, LIGHT_SCATTERING, MSAA_EDGE, SKY, SUN_LIGHT)\n"},
-           Case{"12abc", "shadergen: error: \"12abc\" is not a raw ID (a number or feature names joined by '|')\n"},
+           Case{"SKY|SOFT_SHADOW",
+                "shadergen: error: \"SOFT_SHADOW\" is the define of feature SHADOW_SOFT; name the feature\n"},
+           Case{"SKY=1",
+                "shadergen: error: feature SKY is a boolean: write SKY alone, or leave it out (SKY=1 is not "
+                "accepted)\n"},
        }) {
     ProcessResult r = shadergen_run({"explain", spec, c.raw});
     EXPECT_EQ(r.exit_code, 2) << c.raw;

@@ -99,23 +99,58 @@ TEST(Cli, ListNamesEveryPermutation) {
 }
 
 TEST(Cli, ExplainAcceptsNumbersAndNames) {
-  CliRun by_number = cli({"explain", sgtest::split_second_spec().string(), "69"});
+  const std::string spec = sgtest::split_second_spec().string();
+  CliRun by_number = cli({"explain", spec, "69"});
   EXPECT_EQ(by_number.code, 0);
   EXPECT_NE(by_number.out.find("-> optimised ID 8"), std::string::npos) << by_number.out;
-  CliRun by_name = cli({"explain", sgtest::split_second_spec().string(), "SHADOW_SOLID|SHADOW_FADE|SUN_LIGHT"});
-  EXPECT_EQ(by_name.out, by_number.out);
-  CliRun hex = cli({"explain", sgtest::split_second_spec().string(), "0x45"});
-  EXPECT_EQ(hex.out, by_number.out);
+  // A whole argument that is a number is the raw ID; anything else is read in the grammar of
+  // shadergen::parse_combination().
+  for (const char* same :
+       {"0x45", "0b1000101", " 69 ", "SHADOW_SOLID|SHADOW_FADE|SUN_LIGHT", " SUN_LIGHT |\tSHADOW_FADE| SHADOW_SOLID"}) {
+    CliRun r = cli({"explain", spec, same});
+    EXPECT_EQ(r.code, 0) << same << ": " << r.err;
+    EXPECT_EQ(r.out, by_number.out) << same;
+  }
+  CliRun none = cli({"explain", spec, "(none)"});
+  EXPECT_EQ(none.code, 0) << none.err;
+  EXPECT_EQ(none.out, cli({"explain", spec, "0"}).out);
 }
 
-TEST(Cli, ExplainRejectsBadIdsNamingTheValue) {
-  CliRun out_of_range = cli({"explain", sgtest::split_second_spec().string(), "128"});
-  EXPECT_EQ(out_of_range.code, 2);
-  EXPECT_EQ(out_of_range.err,
-            "shadergen: error: raw ID 128 is out of range: domain split_second has raw IDs 0 to 127\n");
-  CliRun unknown = cli({"explain", sgtest::split_second_spec().string(), "SKY|MOON"});
-  EXPECT_EQ(unknown.code, 2);
-  EXPECT_NE(unknown.err.find("unknown raw feature \"MOON\""), std::string::npos) << unknown.err;
+// Every refusal is a usage error (2) whose one line names the offending word.
+TEST(Cli, ExplainRejectsBadIdsNamingTheWord) {
+  const std::string split_second = sgtest::split_second_spec().string();
+  const std::string valued = (sgtest::fixtures_dir() / "valued" / "valued.json").string();
+  const std::string known =
+      " (known: SHADOW_SOLID, SHADOW_SOFT, SHADOW_FADE, LIGHT_SCATTERING, MSAA_EDGE, SKY, SUN_LIGHT)";
+  struct Case {
+    const std::string& spec;
+    std::string raw;
+    std::string message;
+  };
+  const Case cases[] = {
+      {split_second, "128", "raw ID 128 is out of range: domain split_second has raw IDs 0 to 127"},
+      {split_second, "0x80", "raw ID 0x80 is out of range: domain split_second has raw IDs 0 to 127"},
+      {split_second, "99999999999999999999999",
+       "raw ID 99999999999999999999999 is out of range: domain split_second has raw IDs 0 to 127"},
+      {split_second, "SKY|MOON", "unknown feature \"MOON\"" + known},
+      {split_second, "12abc", "unknown feature \"12abc\"" + known},
+      {split_second, "SKY+SUN_LIGHT", "unknown feature \"SKY+SUN_LIGHT\"" + known},
+      {split_second, "SKY|12", "\"12\" is a number; name the features instead, joined by '|'"},
+      {split_second, "SOFT_SHADOW|SUN_LIGHT", "\"SOFT_SHADOW\" is the define of feature SHADOW_SOFT; name the feature"},
+      {split_second, "MSAA_EDGE=1",
+       "feature MSAA_EDGE is a boolean: write MSAA_EDGE alone, or leave it out (MSAA_EDGE=1 is not accepted)"},
+      {split_second, "SKY=0", "feature SKY is a boolean: write SKY alone, or leave it out (SKY=0 is not accepted)"},
+      {split_second, "SKY||SUN_LIGHT", "an empty word at offset 4: two '|' in a row, or one at the start or the end"},
+      {split_second, "SKY|SUN_LIGHT|SKY", "feature SKY is named twice (again as \"SKY\"); name each feature once"},
+      {valued, "TAA_QUALITY=7", "TAA_QUALITY has no value \"7\" (values: 0, 1, 2)"},
+      {valued, "SHARPEN|TAA_QUALITY", "feature TAA_QUALITY takes a value: write TAA_QUALITY=<value> (values: 0, 1, 2)"},
+  };
+  for (const Case& c : cases) {
+    CliRun r = cli({"explain", c.spec, c.raw});
+    EXPECT_EQ(r.code, 2) << c.raw;
+    EXPECT_EQ(r.err, "shadergen: error: " + c.message + "\n") << c.raw;
+    EXPECT_TRUE(r.out.empty()) << c.raw << ": " << r.out;
+  }
 }
 
 TEST(Cli, MissingSpecNamesThePath) {

@@ -5,10 +5,18 @@
 #include <gtest/gtest.h>
 
 #include "registry_digests.h"
+#include "registry_lookups.h"
 
 #include <fixed_defines_permutations.h>
 
 namespace {
+
+TEST(FixedDefinesRegistry, LookupsByRawIdAreChecked) {
+  const registry_lookups::Counts counts = registry_lookups::expect_checked_lookups(
+      fixed::registry(),
+      {fixed::kRawCount, fixed::kRawPruned, fixed::kRawToOptimised, fixed::is_valid_raw_id, fixed::optimised_id});
+  EXPECT_EQ(counts.valid, 2u);
+}
 
 TEST(FixedDefinesRegistry, CMakeDefinesReachEveryShader) {
   const shadergen::Registry& r = fixed::registry();

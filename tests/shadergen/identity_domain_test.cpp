@@ -65,6 +65,11 @@ TEST(IdentityDomain, BuildsEveryCompiledRawIdAsItsOwnBlob) {
   std::string header = sgtest::read_file(dir / "out" / "static_mesh.h");
   EXPECT_FALSE(sgtest::contains(header, "kRawToOptimised")) << "no lookup table in the generated C++";
   EXPECT_TRUE(sgtest::contains(header, "inline constexpr std::uint32_t kOptimisedCount = 0;"));
+  // Without a table the checked lookup gives the raw ID itself.
+  EXPECT_TRUE(sgtest::contains(header,
+                               "constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
+                               "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n  return raw_id;\n}\n"))
+      << header;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "registry_digests.h"
+#include "registry_lookups.h"
 
 #include <per_permutation_permutations.h>
 
@@ -18,6 +19,14 @@ const shadergen::DescriptorBinding* binding_at(const shadergen::Permutation& p, 
     return b.set == set && b.binding == binding;
   });
   return found == list.end() ? nullptr : &*found;
+}
+
+TEST(PerPermutationRegistry, LookupsByRawIdAreChecked) {
+  const registry_lookups::Counts counts = registry_lookups::expect_checked_lookups(
+      per_permutation::registry(),
+      {per_permutation::kRawCount, per_permutation::kRawPruned, per_permutation::kRawToOptimised,
+       per_permutation::is_valid_raw_id, per_permutation::optimised_id});
+  EXPECT_EQ(counts.valid, 8u);
 }
 
 TEST(PerPermutationRegistry, EachPermutationHasItsOwnLayout) {

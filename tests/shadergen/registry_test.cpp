@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "registry_digests.h"
+#include "registry_lookups.h"
 
 #include <split_second_shaders.h>
 
@@ -36,7 +37,19 @@ TEST(GeneratedRegistry, TableAndPermutations) {
   }
   EXPECT_EQ(pruned, 32u);
   EXPECT_EQ(r.optimised[31].defines.size(), 6u);
-  EXPECT_EQ(&r.optimised_for_raw(69), &r.optimised[8]);
+  EXPECT_EQ(r.optimised_for_raw(69), &r.optimised[8]);
+}
+
+// Every lookup by raw ID is checked: 96 valid IDs, 32 pruned, and IDs past 127 find nothing.
+TEST(GeneratedRegistry, LookupsByRawIdAreChecked) {
+  static_assert(split_second::optimised_id(69) == 8u);
+  static_assert(!split_second::optimised_id(3) && !split_second::optimised_id(128));
+  static_assert(split_second::is_valid_raw_id(127 - 1) && !split_second::is_valid_raw_id(127));
+  const registry_lookups::Counts counts = registry_lookups::expect_checked_lookups(
+      split_second::registry(), {split_second::kRawCount, split_second::kRawPruned, split_second::kRawToOptimised,
+                                 split_second::is_valid_raw_id, split_second::optimised_id});
+  EXPECT_EQ(counts.valid, 96u);
+  EXPECT_EQ(counts.pruned, 32u);
 }
 
 TEST(GeneratedRegistry, CompanionAndLayout) {

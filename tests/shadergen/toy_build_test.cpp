@@ -275,6 +275,28 @@ TEST_F(ToyBuild, GeneratedHeaderCarriesBannerTableAndStaticAssert) {
       << header;
   EXPECT_TRUE(sgtest::contains(header, "inline constexpr std::uint32_t SOFT = 1u << 2;  // #define SOFT_PARTICLES\n"));
   EXPECT_TRUE(sgtest::contains(header, "inline constexpr std::uint32_t SAMPLED = 1u << 1;\n"));
+  // Every lookup by raw ID is checked before it indexes a table, and raw_id() checks too.
+  EXPECT_TRUE(sgtest::contains(header,
+                               "constexpr bool is_valid_raw_id(std::uint32_t raw_id) { return raw_id < kRawCount && "
+                               "!kRawPruned[raw_id]; }\n"))
+      << header;
+  EXPECT_TRUE(sgtest::contains(header,
+                               "constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
+                               "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n"
+                               "  return kRawToOptimised[raw_id];\n}\n"))
+      << header;
+  EXPECT_TRUE(sgtest::contains(header,
+                               "constexpr std::optional<std::uint32_t> raw_id([[maybe_unused]] const Features& "
+                               "features) {\n  std::uint32_t id = 0;\n  if (features.SOFT) id |= 1u << 2;\n"
+                               "  if (features.LIT) id |= 1u << 0;\n  if (features.TEXTURED) id |= 1u << 1;\n"
+                               "  if (features.DISTORT) id |= 1u << 3;\n"
+                               "  if (!is_valid_raw_id(id)) return std::nullopt;\n  return id;\n}\n"))
+      << header;
+  // The one grammar's parser lives in <shadergen/registry.h>; the header only hands it kFeatures.
+  EXPECT_TRUE(sgtest::contains(header,
+                               "constexpr std::optional<std::uint32_t> find_raw_id(std::string_view text) {\n"
+                               "  return shadergen::find_raw_id(kFeatures, text);\n}\n"))
+      << header;
   EXPECT_TRUE(sgtest::contains(header, "static_assert("));
   EXPECT_TRUE(sgtest::contains(header, "const shadergen::Registry& registry();"));
   EXPECT_FALSE(sgtest::contains(header, "0x07230203")) << "SPIR-V words belong in the source, not the header";

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "registry_digests.h"
+#include "registry_lookups.h"
 
 #include <toy_permutations.h>
 
@@ -28,6 +29,14 @@ static_assert(toy::kRawPruned[toy::raw_bit::DISTORT | toy::raw_bit::LIT]);
 static_assert(!toy::kRawPruned[toy::raw_bit::DISTORT | toy::raw_bit::TEXTURED]);
 static_assert(toy::raw_bit::LIT == 1u && toy::raw_bit::TEXTURED == 2u && toy::raw_bit::SOFT == 4u &&
               toy::raw_bit::DISTORT == 8u);
+
+// The checked lookups too: a pruned ID or one past the table is none.
+static_assert(toy::optimised_id(toy::raw_bit::LIT | toy::raw_bit::TEXTURED) == 3u);
+static_assert(toy::optimised_id(toy::raw_bit::DISTORT | toy::raw_bit::LIT) == std::nullopt);
+static_assert(toy::optimised_id(toy::kRawCount) == std::nullopt && toy::optimised_id(0xffffffffu) == std::nullopt);
+static_assert(toy::is_valid_raw_id(0) && !toy::is_valid_raw_id(9) && !toy::is_valid_raw_id(16));
+static_assert(toy::raw_id({.LIT = true, .DISTORT = true}) == std::nullopt, "pruned");
+static_assert(toy::raw_id({.SOFT = true, .DISTORT = true}) == (toy::raw_bit::SOFT | toy::raw_bit::DISTORT));
 
 constexpr std::array<int, 16> kExpected = {0, 1, 2, 3, 2, 3, 2, 3, 1, -1, 3, -1, 3, -1, 3, -1};
 constexpr std::uint32_t kSpirvMagic = 0x07230203u;
@@ -56,9 +65,20 @@ TEST(ToyRegistry, TableMatchesTheConstexprTableAndTheSpec) {
     EXPECT_EQ(r.raw[id].pruned, kExpected[id] < 0);
     if (kExpected[id] >= 0) {
       EXPECT_EQ(static_cast<int>(r.raw_to_optimised[id]), kExpected[id]);
-      EXPECT_EQ(&r.optimised_for_raw(id), &r.optimised[static_cast<std::size_t>(kExpected[id])]);
+      EXPECT_EQ(r.optimised_for_raw(id), &r.optimised[static_cast<std::size_t>(kExpected[id])]);
+    } else {
+      EXPECT_EQ(r.optimised_for_raw(id), nullptr) << "pruned: no shader, though the table holds an entry";
     }
   }
+}
+
+TEST(ToyRegistry, LookupsByRawIdAreChecked) {
+  const registry_lookups::Counts counts = registry_lookups::expect_checked_lookups(
+      toy::registry(),
+      {toy::kRawCount, toy::kRawPruned, toy::kRawToOptimised, toy::is_valid_raw_id, toy::optimised_id});
+  EXPECT_EQ(counts.valid, 12u);
+  EXPECT_EQ(counts.pruned, 4u);
+  EXPECT_EQ(counts.out_of_range, 4u);
 }
 
 TEST(ToyRegistry, PermutationsCarrySpirvUnlessPruned) {

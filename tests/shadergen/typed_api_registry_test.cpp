@@ -1,11 +1,14 @@
 // The generated API's contract, compiled as a consumer compiles it (tests/fixtures/typed_api:
 // features listed out of bit order, integer, negative and identifier values, fixed defines
 // from the spec and from CMake's DEFINES, one quoted): Features with designated initializers
-// in spec order, raw_id(), the value enums, kFeatures, kDefines, find_raw_id() round trips for
-// every raw ID, and shadergen/vulkan.h's create-infos checked against the manifest and handed
+// in spec order, raw_id() (checked: a cast enum value gives none), the value enums, kFeatures,
+// kDefines, find_raw_id() round trips for every raw ID in the one grammar, the checked lookups
+// by raw ID, and shadergen/vulkan.h's create-infos checked against the manifest and handed
 // to a real driver (lavapipe in CI; skipped where the machine has no Vulkan device).
 #include <gtest/gtest.h>
 #include <shadergen/vulkan.h>
+
+#include "registry_lookups.h"
 
 #include <bit>
 #include <fstream>
@@ -29,6 +32,12 @@ static_assert(static_cast<std::uint32_t>(BIAS_value::_m1) == 0u && static_cast<s
 static_assert(static_cast<std::uint32_t>(TONEMAP_value::FILMIC) == 2u);
 static_assert(find_raw_id("TONEMAP=ACES|SHARPEN|QUALITY=2|BIAS=1") == raw_id(kAcesSharpHigh));
 static_assert(std::is_aggregate_v<Features>);
+// A value cast from outside its enum is no raw ID: QUALITY has 3 values in a 2-bit field (3
+// fits the field but names no value), TONEMAP 7 and BIAS 2 would spill into the next field.
+static_assert(raw_id({.QUALITY = static_cast<QUALITY_value>(3)}) == std::nullopt);
+static_assert(raw_id({.TONEMAP = static_cast<TONEMAP_value>(7)}) == std::nullopt);
+static_assert(raw_id({.BIAS = static_cast<BIAS_value>(2)}) == std::nullopt);
+static_assert(raw_id({.BIAS = static_cast<BIAS_value>(0xffffffffu)}) == std::nullopt);
 
 TEST(TypedApi, FeaturesAreListedInSpecOrder) {
   ASSERT_EQ(kFeatures.size(), 4u);
@@ -79,10 +88,7 @@ std::optional<std::string> names_of(std::uint32_t id) {
 TEST(TypedApi, FindRawIdRoundTripsEveryRawId) {
   std::size_t named = 0;
   for (std::uint32_t id = 0; id < kRawCount; ++id) {
-    EXPECT_EQ(find_raw_id(std::to_string(id)), id);
-    std::ostringstream hex;
-    hex << "0x" << std::hex << id;
-    EXPECT_EQ(find_raw_id(hex.str()), id);
+    EXPECT_EQ(find_raw_id(std::to_string(id)), std::nullopt) << "a number is no feature text: " << id;
     if (auto names = names_of(id)) {
       EXPECT_EQ(find_raw_id(*names), id) << *names;
       ++named;
@@ -93,24 +99,56 @@ TEST(TypedApi, FindRawIdRoundTripsEveryRawId) {
   EXPECT_EQ(named, 3u * 2u * 3u * 2u);
 }
 
+// The one grammar (shadergen::parse_combination): feature names joined by '|', valued ones as
+// NAME=VALUE, blanks ignored, "" and "(none)" are 0; everything else is refused.
 TEST(TypedApi, FindRawIdRefusesWhatIsNotARawId) {
-  const std::vector<std::pair<std::string, std::optional<std::uint32_t>>> cases = {
+  using Error = shadergen::CombinationError;
+  const std::vector<std::pair<std::string, std::optional<std::uint32_t>>> accepted = {
       {"", 0u},
+      {"(none)", 0u},
       {"SHARPEN", 1u},
-      {"USE_SHARPEN", 1u},
       {" SHARPEN | QUALITY = 2 ", 5u},
-      {"SHARPEN+TONEMAP=FILMIC,BIAS=-1", 1u | (2u << 3)},
-      {"0b101", 5u},
-      {"63", 63u},
-      {"64", std::nullopt},
-      {"SHARPEN=1", std::nullopt},
-      {"QUALITY", std::nullopt},
-      {"QUALITY=3", std::nullopt},
-      {"TONEMAP=aces", std::nullopt},
-      {"NOT_A_FEATURE", std::nullopt},
-      {"12abc", std::nullopt},
+      {"SHARPEN|TONEMAP=FILMIC|BIAS=-1", 1u | (2u << 3)},
+      {"BIAS=1\t|\tTONEMAP=LINEAR", 1u << 5},
   };
-  for (const auto& [text, expected] : cases) EXPECT_EQ(find_raw_id(text), expected) << '"' << text << '"';
+  for (const auto& [text, expected] : accepted) EXPECT_EQ(find_raw_id(text), expected) << '"' << text << '"';
+  const std::vector<std::pair<std::string, Error>> refused = {
+      {"USE_SHARPEN", Error::define_name},
+      {"SHARPEN+TONEMAP=FILMIC", Error::unknown_name},
+      {"SHARPEN,BIAS=-1", Error::unknown_name},
+      {"0b101", Error::number},
+      {"63", Error::number},
+      {"SHARPEN=1", Error::boolean_with_value},
+      {"SHARPEN=0", Error::boolean_with_value},
+      {"QUALITY", Error::missing_value},
+      {"QUALITY=3", Error::unknown_value},
+      {"TONEMAP=aces", Error::unknown_value},
+      {"NOT_A_FEATURE", Error::unknown_name},
+      {"12abc", Error::unknown_name},
+      {"SHARPEN|SHARPEN", Error::repeated},
+      {"QUALITY=1|QUALITY=2", Error::repeated},
+      {"SHARPEN|", Error::empty_word},
+  };
+  for (const auto& [text, error] : refused) {
+    EXPECT_EQ(find_raw_id(text), std::nullopt) << '"' << text << '"';
+    EXPECT_EQ(shadergen::parse_combination(kFeatures, text).error, error) << '"' << text << '"';
+  }
+}
+
+// raw_id() and the lookups by raw ID, all checked: a domain without collapse, so optimised_id()
+// is the raw ID itself, and the 28 IDs whose fields hold no value are pruned.
+TEST(TypedApi, LookupsByRawIdAreChecked) {
+  static_assert(optimised_id(*raw_id(kAcesSharpHigh)) == raw_id(kAcesSharpHigh));
+  static_assert(is_valid_raw_id(0) && !is_valid_raw_id(kRawCount) && !is_valid_raw_id(3u << 1));
+  const registry_lookups::Counts counts =
+      registry_lookups::expect_checked_lookups(registry(), {kRawCount, kRawPruned, {}, is_valid_raw_id, optimised_id});
+  EXPECT_EQ(counts.valid, 36u);
+  EXPECT_EQ(counts.pruned, 28u);
+  const std::optional<std::uint32_t> id = raw_id({.TONEMAP = TONEMAP_value::FILMIC, .SHARPEN = true});
+  ASSERT_TRUE(id);
+  const shadergen::Permutation* p = registry().optimised_for_raw(*id);
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p, &registry().raw[*id]);
 }
 
 nlohmann::json manifest() {

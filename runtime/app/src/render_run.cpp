@@ -11,8 +11,6 @@
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
 
-#include <split_second_shaders.h>
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -47,14 +45,6 @@ RgbaImage display_encoded(const RgbaImage& linear) {
     if (i % 4 == 3) continue;
     const float v = std::isnan(out.pixels[i]) ? 0.0f : std::clamp(out.pixels[i], 0.0f, 1.0f);
     out.pixels[i] = std::pow(v, 1.0f / 2.2f);
-  }
-  return out;
-}
-
-std::vector<std::uint8_t> optimised_ids(const std::vector<std::uint8_t>& raw_ids) {
-  std::vector<std::uint8_t> out(raw_ids.size());
-  for (std::size_t i = 0; i < raw_ids.size(); ++i) {
-    out[i] = raw_ids[i] < split_second::kRawCount ? split_second::kRawToOptimised[raw_ids[i]] : std::uint8_t{0};
   }
   return out;
 }
@@ -181,7 +171,7 @@ void write_outputs(OutputFiles& files, FrameReport& report, const ReadBack& fram
       files.retire(name);
     }
   }
-  const Rgba8Canvas canvas = compose_tile_class_image(shown, tile_size, optimised_ids(frames.raw_ids));
+  const Rgba8Canvas canvas = compose_tile_class_image(shown, tile_size, optimised_tile_ids(frames.raw_ids));
   files.stage("tile_classes.png", encode_png(canvas.width, canvas.height, canvas.pixels));
   // Measured last, so the figure covers every frame, the read-back and the PNG encoding.
   report.process.peak_rss_mib = peak_rss_mib();

@@ -1,5 +1,7 @@
 #include "tilelight/app/report.h"
 
+#include "tilelight/base/error.h"
+
 #include <median/median.h>
 #include <split_second_shaders.h>
 
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 namespace tilelight::app {
@@ -34,6 +37,20 @@ nlohmann::ordered_json equivalence_json(const Equivalence& e) {
 
 }  // namespace
 
+std::vector<std::uint8_t> optimised_tile_ids(const std::vector<std::uint8_t>& raw_ids) {
+  std::vector<std::uint8_t> out(raw_ids.size());
+  for (std::size_t i = 0; i < raw_ids.size(); ++i) {
+    const std::optional<std::uint32_t> id = split_second::optimised_id(raw_ids[i]);
+    if (!id) {
+      throw Error(
+          fmt::format("tile {}: raw ID {} is {}", i, raw_ids[i],
+                      raw_ids[i] < split_second::kRawCount ? "impossible (a pruned class)" : "out of range (0..127)"));
+    }
+    out[i] = static_cast<std::uint8_t>(*id);
+  }
+  return out;
+}
+
 void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids) {
   namespace bit = split_second::raw_bit;
   const std::vector<std::pair<std::string, std::uint32_t>> properties{{"SKY", bit::SKY},
@@ -51,9 +68,7 @@ void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids) 
     report.raw_property_tiles.emplace_back(name, static_cast<std::uint32_t>(count));
   }
   report.optimised_tiles.assign(split_second::kOptimisedCount, 0);
-  for (std::uint8_t id : raw_ids) {
-    if (id < split_second::kRawCount) ++report.optimised_tiles[split_second::kRawToOptimised[id]];
-  }
+  for (std::uint8_t id : optimised_tile_ids(raw_ids)) ++report.optimised_tiles[id];
 }
 
 MedianTimings median_timings(const std::vector<FrameTimings>& frames) {

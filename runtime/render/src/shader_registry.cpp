@@ -21,6 +21,11 @@ static_assert(split_second::kRawCount == split_second_compute::kRawCount);
 static_assert(split_second::kOptimisedCount == split_second_compute::kOptimisedCount);
 static_assert(split_second::kRawToOptimised == split_second_compute::kRawToOptimised);
 static_assert(split_second::kRawToOptimised == split_second_compute_1x::kRawToOptimised);
+// And prune the same IDs: the renderer's draw classes and pruned set (tile_renderer.cpp) come
+// from whichever registry draws, through its checked lookups, and must mean the same IDs.
+static_assert(split_second::kRawPruned == split_second_1x::kRawPruned);
+static_assert(split_second::kRawPruned == split_second_compute::kRawPruned);
+static_assert(split_second::kRawPruned == split_second_compute_1x::kRawPruned);
 
 const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples) {
   return gbuffer_samples == VK_SAMPLE_COUNT_1_BIT ? split_second_1x::registry() : split_second::registry();

@@ -89,16 +89,26 @@ TilePrimitive choose_primitive(const Context& context, const TileGrid& grid, std
   return *asked;
 }
 
-// raw ID -> draw class: the generated LUT, or the identity when drawing raw permutations.
+// raw ID -> draw class: the registry's checked lookup, or the identity when drawing raw
+// permutations. A pruned ID has no class (0 here); pruned_raw_ids() marks it, and the index
+// builds refuse a tile that holds one.
 std::vector<std::uint8_t> draw_classes(const shadergen::Registry& registry, bool raw_permutations) {
-  std::vector<std::uint8_t> classes(registry.raw_to_optimised.begin(), registry.raw_to_optimised.end());
-  if (raw_permutations) std::iota(classes.begin(), classes.end(), std::uint8_t{0});
+  std::vector<std::uint8_t> classes(split_second::kRawCount, 0);
+  for (std::uint32_t raw = 0; raw < split_second::kRawCount; ++raw) {
+    if (raw_permutations) {
+      classes[raw] = static_cast<std::uint8_t>(raw);
+    } else if (const std::optional<std::uint32_t> id = registry.optimised_id(raw)) {
+      classes[raw] = static_cast<std::uint8_t>(*id);
+    }
+  }
   return classes;
 }
 
+// Every raw ID the registry has no permutation for: pruned, or (for a registry smaller than
+// the domain, which the static_asserts of shader_registry.cpp rule out) missing.
 std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Registry& registry) {
   std::array<bool, split_second::kRawCount> pruned{};
-  for (const shadergen::Permutation& p : registry.raw) pruned[p.id] = p.pruned;
+  for (std::uint32_t raw = 0; raw < split_second::kRawCount; ++raw) pruned[raw] = registry.find_raw(raw) == nullptr;
   return pruned;
 }
 

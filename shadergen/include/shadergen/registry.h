@@ -10,11 +10,14 @@
 //   inline constexpr std::array<bool, kRawCount> kRawPruned;               // impossible raw IDs
 //   namespace raw_bit       { inline constexpr std::uint32_t <FEATURE> = 1u << n; ... }
 //   namespace optimised_bit { inline constexpr std::uint32_t <BIT> = 1u << n; ... }
+//   constexpr bool is_valid_raw_id(std::uint32_t);       // < kRawCount and not pruned
+//   constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id);  // checked lookup
 //   enum class <FEATURE>_value : std::uint32_t { <value>, ... };  // per valued feature: its values,
 //                                                        // an integer 2 spelt _2 (-1: _m1)
 //   struct Features { bool <FEATURE> = false; <FEATURE>_value <FEATURE> = ...; ... };
 //                                                        // one member per raw feature, in spec order
-//   constexpr std::uint32_t raw_id(const Features&);     // the raw ID those features make
+//   constexpr std::optional<std::uint32_t> raw_id(const Features&);  // the raw ID those features
+//                                                        // make; nullopt: a value out of its enum, or pruned
 //   inline constexpr std::array<shadergen::Feature, n> kFeatures;           // in spec order
 //   inline constexpr std::array<shadergen::FixedDefine, n> kDefines;        // the fixed defines
 //   constexpr std::optional<std::uint32_t> find_raw_id(std::string_view);   // "A|B=2" -> raw ID
@@ -27,6 +30,7 @@
 // without linking shadergen itself.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -132,14 +136,6 @@ struct FixedDefine {
   std::string_view value;
 };
 
-// The raw ID that `text` names, in the syntax of `shadergen explain`: a number (12, 0x0c,
-// 0b1100) below 1 << `raw_bits`, or features by name or define joined by '|', '+' or ','
-// (spaces ignored), a valued one as NAME=VALUE; "" is 0. Returns nullopt for an unknown name
-// or value, a value given to a boolean feature, or a number out of range. Linear in the text
-// and the features; usable at compile time.
-constexpr std::optional<std::uint32_t> find_raw_id(std::span<const Feature> features, std::uint32_t raw_bits,
-                                                   std::string_view text);
-
 // One compiled permutation (or one non-permuted companion shader).
 struct Permutation {
   std::uint32_t id;                           // raw or optimised ID; index for companions
@@ -172,8 +168,10 @@ struct Registry {
   std::span<const std::string_view> optimised_bit_names;  // indexed by optimised bit
   std::span<const std::uint8_t> raw_to_optimised;         // the LUT, one entry per raw ID;
                                                           // empty when the domain is not collapsed
-  std::span<const Permutation> raw;                       // indexed by raw ID
-  std::span<const Permutation> optimised;                 // indexed by optimised ID
+  // Indexed by raw ID, unchecked, like the spans above: for an ID from outside (a classifier,
+  // a file, a cast), use find_raw(), optimised_id() or optimised_for_raw(), which check it.
+  std::span<const Permutation> raw;
+  std::span<const Permutation> optimised;  // indexed by optimised ID
   std::span<const CompanionShader> companions;
   std::span<const DescriptorBinding> pipeline_layout;  // merged over every blob
   std::span<const PushConstantRange> push_constants;   // merged over every blob
@@ -181,10 +179,29 @@ struct Registry {
   // empty and each permutation's reflection is its own layout.
   bool per_permutation_layout = false;
 
-  // Precondition: raw_id < raw.size(). Returns the permutation a raw ID is drawn with: its
-  // optimised permutation, or, in a domain without collapse, the raw permutation itself.
-  const Permutation& optimised_for_raw(std::uint32_t raw_id) const {
-    return raw_to_optimised.empty() ? raw[raw_id] : optimised[raw_to_optimised[raw_id]];
+  // The lookups by raw ID. Each checks the ID, so an ID from outside can never read past a
+  // table: one outside the domain (>= raw.size()) or pruned (no shader) is "none".
+
+  // The raw permutation `raw_id` names, or nullptr when it is out of range or pruned.
+  constexpr const Permutation* find_raw(std::uint32_t raw_id) const {
+    if (raw_id >= raw.size() || raw[raw_id].pruned) return nullptr;
+    return &raw[raw_id];
+  }
+  // The optimised ID `raw_id` is drawn with, or nullopt when it is out of range or pruned (or
+  // its table entry names no optimised permutation, which a generated registry never holds).
+  // In a domain without collapse every raw ID is its own permutation: the raw ID itself.
+  constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) const {
+    if (find_raw(raw_id) == nullptr) return std::nullopt;
+    if (raw_to_optimised.empty()) return raw_id;
+    if (raw_id >= raw_to_optimised.size() || raw_to_optimised[raw_id] >= optimised.size()) return std::nullopt;
+    return raw_to_optimised[raw_id];
+  }
+  // The permutation `raw_id` is drawn with: its optimised permutation, or, in a domain without
+  // collapse, the raw permutation itself; nullptr when optimised_id() is nullopt.
+  constexpr const Permutation* optimised_for_raw(std::uint32_t raw_id) const {
+    std::optional<std::uint32_t> id = optimised_id(raw_id);
+    if (!id) return nullptr;
+    return raw_to_optimised.empty() ? &raw[*id] : &optimised[*id];
   }
   // Returns the companion called `name`, or nullptr.
   const CompanionShader* companion(std::string_view wanted) const {
@@ -194,7 +211,49 @@ struct Registry {
   }
 };
 
+// ---------------------------------------------------------------------------------------------
+// Raw IDs as text: the one grammar that the generated find_raw_id(), `shadergen explain` and
+// variants files read, so a text means the same wherever it is written.
+//
+//   text     = "" | "(none)" | word *( "|" word )     blanks (spaces, tabs) around any token
+//   word     = NAME                  a boolean feature: on (a feature left out is off)
+//            | NAME "=" VALUE        a valued feature: VALUE exactly as the spec's "values" writes it
+//
+// NAME is a feature's name, never its define. "" and "(none)" are raw ID 0, every feature off
+// (what describe_raw() prints for 0). A valued feature left out holds its first value (index 0).
+// Everything else is refused, naming the offending word, so that a typo never becomes a
+// different shader: a number, a define, a value given to a boolean (SKY=0 would otherwise
+// read as "on"), a valued feature without its value, a feature named twice, an empty word.
+
+// Why parse_combination() refused a text. Each names ParsedCombination::word.
+enum class CombinationError : std::uint8_t {
+  none,
+  empty_word,          // "A||B", "A|", "|A", "=2": no feature name where one belongs
+  unknown_name,        // no feature is called `word`
+  define_name,         // `word` is the define of features[feature], not a feature name
+  number,              // `word` is a raw number (12, 0x5, 0b11): texts name features
+  boolean_with_value,  // `word` ("SKY=1") gives boolean features[feature] a value
+  missing_value,       // `word` names valued features[feature] without "=value"
+  unknown_value,       // `word` is none of features[feature]'s values
+  repeated,            // `word` names features[feature] a second time
+};
+
+// The raw ID a text names, or why it names none.
+struct ParsedCombination {
+  std::uint32_t raw_id = 0;  // 0 on error
+  CombinationError error = CombinationError::none;
+  // The offending part of the text, blanks trimmed (a view into it; empty when error is none):
+  // the name for unknown_name, define_name, number and missing_value, the value for
+  // unknown_value, the whole word ("SKY=1") for boolean_with_value, repeated and empty_word.
+  std::string_view word;
+  std::size_t position = 0;  // offset of `word` in the text, for a caret or a column
+  std::size_t feature = 0;   // index into the features, for the errors about one feature
+  constexpr explicit operator bool() const { return error == CombinationError::none; }
+};
+
 namespace detail {
+
+constexpr bool is_blank(char c) { return c == ' ' || c == '\t'; }
 
 constexpr bool is_digit_in(char c, std::uint32_t base) {
   std::uint32_t digit = c >= '0' && c <= '9'   ? static_cast<std::uint32_t>(c - '0')
@@ -204,67 +263,144 @@ constexpr bool is_digit_in(char c, std::uint32_t base) {
   return digit < base;
 }
 
-// A number in `shadergen explain`'s forms, or nullopt when `text` is not all digits of its base.
-constexpr std::optional<std::uint64_t> parse_number(std::string_view text) {
+// True for a whole number as `shadergen explain` takes one: 12, 0x0c, 0b1100 (any size).
+constexpr bool is_number(std::string_view word) {
   std::uint32_t base = 10;
-  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X' || text[1] == 'b')) {
-    base = text[1] == 'b' ? 2 : 16;
-    text.remove_prefix(2);
+  if (word.size() > 2 && word[0] == '0' && (word[1] == 'x' || word[1] == 'X' || word[1] == 'b' || word[1] == 'B')) {
+    base = word[1] == 'b' || word[1] == 'B' ? 2 : 16;
+    word.remove_prefix(2);
   }
-  std::uint64_t value = 0;
-  for (char c : text) {
-    if (!is_digit_in(c, base)) return std::nullopt;
-    std::uint32_t digit =
-        c <= '9' ? static_cast<std::uint32_t>(c - '0') : static_cast<std::uint32_t>((c | 0x20) - 'a' + 10);
-    value = value * base + digit;
-    if (value > 0xffffffffu) return std::nullopt;
-  }
-  return value;
+  if (word.empty()) return false;
+  for (char c : word)
+    if (!is_digit_in(c, base)) return false;
+  return true;
 }
 
-constexpr std::string_view trim(std::string_view text) {
-  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
-  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
-  return text;
+// The bits of a feature's field. 64-bit, so that a field reaching bit 31 shifts safely.
+constexpr std::uint32_t field_mask(const Feature& f) {
+  return static_cast<std::uint32_t>(((std::uint64_t{1} << f.width) - 1u) << f.bit);
 }
 
-// The bits one term ("NAME" or "NAME=VALUE") sets, or nullopt.
-constexpr std::optional<std::uint32_t> term_bits(std::span<const Feature> features, std::string_view term) {
-  std::size_t equals = term.find('=');
-  std::string_view name = trim(term.substr(0, equals));
-  for (const Feature& f : features) {
-    if (f.name != name && f.define != name) continue;
-    if (equals == std::string_view::npos)
-      return f.values.empty() ? std::optional<std::uint32_t>(1u << f.bit) : std::nullopt;
-    std::string_view value = trim(term.substr(equals + 1));
-    for (std::uint32_t i = 0; i < f.values.size(); ++i)
-      if (f.values[i] == value) return i << f.bit;
+// One pass over a text: each '|'-separated word is checked alone, then against the words
+// before it (a feature named twice).
+class CombinationParser {
+ public:
+  constexpr CombinationParser(std::span<const Feature> features, std::string_view text)
+      : features_(features), text_(text) {}
+
+  constexpr ParsedCombination run() {
+    const Range all = trimmed(0, text_.size());
+    if (all.empty() || slice(all) == "(none)") return result_;
+    for (std::size_t start = 0;;) {
+      const std::size_t bar = text_.find('|', start);
+      const std::size_t end = bar == std::string_view::npos ? text_.size() : bar;
+      if (!add_word(trimmed(start, end))) return result_;
+      if (bar == std::string_view::npos) return result_;
+      start = bar + 1;
+    }
+  }
+
+ private:
+  struct Range {
+    std::size_t begin = 0;
+    std::size_t end = 0;
+    constexpr bool empty() const { return begin == end; }
+  };
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+
+  constexpr Range trimmed(std::size_t begin, std::size_t end) const {
+    while (begin < end && is_blank(text_[begin])) ++begin;
+    while (end > begin && is_blank(text_[end - 1])) --end;
+    return {begin, end};
+  }
+  constexpr std::string_view slice(Range r) const { return text_.substr(r.begin, r.end - r.begin); }
+
+  // Where the word's first '=' is, or its end when it has none.
+  constexpr std::size_t equals_in(Range word) const {
+    const std::size_t at = slice(word).find('=');
+    return at == std::string_view::npos ? word.end : word.begin + at;
+  }
+
+  // The feature whose name (or, with `by_define`, whose define) is `word`, or kNone.
+  constexpr std::size_t index_of(std::string_view word, bool by_define) const {
+    for (std::size_t i = 0; i < features_.size(); ++i)
+      if ((by_define ? features_[i].define : features_[i].name) == word) return i;
+    return kNone;
+  }
+
+  constexpr bool fail(CombinationError error, Range word, std::size_t feature = 0) {
+    result_ = {0, error, slice(word), word.begin, feature};
+    return false;
+  }
+
+  // Adds what one word names to the raw ID; false (with result_ saying why) when it is refused.
+  constexpr bool add_word(Range word) {
+    if (word.empty()) return fail(CombinationError::empty_word, word);
+    const std::size_t equals = equals_in(word);
+    const Range name = trimmed(word.begin, equals);
+    if (name.empty()) return fail(CombinationError::empty_word, word);
+    const std::size_t index = index_of(slice(name), false);
+    if (index == kNone) return fail_unknown(name);
+    const Feature& f = features_[index];
+    std::optional<std::uint32_t> bits =
+        f.values.empty() ? boolean_bits(f, word, equals, index) : valued_bits(f, word, name, equals, index);
+    if (!bits) return false;
+    if (seen_ & field_mask(f)) return fail(CombinationError::repeated, word, index);
+    seen_ |= field_mask(f);
+    result_.raw_id |= *bits;
+    return true;
+  }
+
+  // Says what an unknown name is instead: some feature's define, a number, or nothing.
+  constexpr bool fail_unknown(Range name) {
+    if (const std::size_t of = index_of(slice(name), true); of != kNone)
+      return fail(CombinationError::define_name, name, of);
+    return fail(is_number(slice(name)) ? CombinationError::number : CombinationError::unknown_name, name);
+  }
+
+  constexpr std::optional<std::uint32_t> boolean_bits(const Feature& f, Range word, std::size_t equals,
+                                                      std::size_t index) {
+    if (equals != word.end) {
+      fail(CombinationError::boolean_with_value, word, index);
+      return std::nullopt;
+    }
+    return static_cast<std::uint32_t>(std::uint64_t{1} << f.bit);
+  }
+
+  constexpr std::optional<std::uint32_t> valued_bits(const Feature& f, Range word, Range name, std::size_t equals,
+                                                     std::size_t index) {
+    if (equals == word.end) {
+      fail(CombinationError::missing_value, name, index);
+      return std::nullopt;
+    }
+    const Range value = trimmed(equals + 1, word.end);
+    for (std::size_t i = 0; i < f.values.size(); ++i)
+      if (f.values[i] == slice(value)) return static_cast<std::uint32_t>(std::uint64_t{i} << f.bit);
+    fail(CombinationError::unknown_value, value, index);
     return std::nullopt;
   }
-  return std::nullopt;
-}
+
+  std::span<const Feature> features_;
+  std::string_view text_;
+  ParsedCombination result_;
+  std::uint32_t seen_ = 0;  // the fields of the features named so far
+};
 
 }  // namespace detail
 
-constexpr std::optional<std::uint32_t> find_raw_id(std::span<const Feature> features, std::uint32_t raw_bits,
-                                                   std::string_view text) {
-  if (std::string_view number_text = detail::trim(text);
-      !number_text.empty() && number_text.front() >= '0' && number_text.front() <= '9') {
-    auto number = detail::parse_number(number_text);
-    if (!number || *number >= (std::uint64_t{1} << raw_bits)) return std::nullopt;
-    return static_cast<std::uint32_t>(*number);
-  }
-  std::uint32_t id = 0;
-  while (!text.empty()) {
-    std::size_t end = text.find_first_of("|+,");
-    std::string_view term = detail::trim(text.substr(0, end));
-    text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
-    if (term.empty()) continue;
-    auto bits = detail::term_bits(features, term);
-    if (!bits) return std::nullopt;
-    id |= *bits;
-  }
-  return id;
+// Reads `text` in the grammar above against `features` (a domain's kFeatures). Precondition:
+// each feature's field fits a 32-bit raw ID (bit + width <= 32). Linear in the text times the
+// features; usable at compile time.
+constexpr ParsedCombination parse_combination(std::span<const Feature> features, std::string_view text) {
+  return detail::CombinationParser(features, text).run();
+}
+
+// The raw ID `text` names, or nullopt when parse_combination() refuses it (which says why).
+// A pruned combination is named like any other: the lookups by raw ID then say "none".
+constexpr std::optional<std::uint32_t> find_raw_id(std::span<const Feature> features, std::string_view text) {
+  ParsedCombination parsed = parse_combination(features, text);
+  if (!parsed) return std::nullopt;
+  return parsed.raw_id;
 }
 
 }  // namespace shadergen

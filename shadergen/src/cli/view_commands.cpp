@@ -2,83 +2,55 @@
 
 #include <command_line/command_line.h>
 
-#include <algorithm>
-#include <cctype>
+#include <charconv>
 #include <cstdint>
 #include <optional>
-#include <stdexcept>
+#include <string_view>
 
 #include "cli/print_errors.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
+#include "spec/combination_text.h"
 
 namespace shadergen {
 namespace {
 
-std::string value_names(const RawFeature& feature) {
-  std::string text;
-  for (const std::string& v : feature.values) text += (text.empty() ? "" : ", ") + v;
-  return "(" + text + ")";
+// The value of a whole argument that is a number (12, 0x0c, 0b1100; blanks around it are
+// allowed), saturated at 2^32 so that a long one still reads as out of range; nullopt for
+// anything else, which then goes to the features' grammar.
+std::optional<std::uint64_t> raw_number(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
+  int base = 10;
+  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X' || text[1] == 'b' || text[1] == 'B')) {
+    base = (text[1] == 'x' || text[1] == 'X') ? 16 : 2;
+    text.remove_prefix(2);
+  }
+  std::uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  auto [stop, error] = std::from_chars(text.data(), end, value, base);
+  if (text.empty() || stop != end) return std::nullopt;
+  if (error == std::errc::result_out_of_range) return std::uint64_t{1} << 32;
+  if (error != std::errc{}) return std::nullopt;
+  return value;
 }
 
-// A raw ID as a number (12, 0x0c, 0b1100) or feature names joined by '|', '+' or ','.
+// explain's argument: a raw ID as a number of its own, or features in the one grammar of
+// shadergen/registry.h (parse_combination), its errors worded by describe_combination_error().
 std::optional<std::uint32_t> parse_raw_id(const DomainSpec& spec, const std::string& text, std::string& why) {
-  try {
-    std::size_t used = 0;
-    int base = 10;
-    std::string digits = text;
-    if (text.rfind("0x", 0) == 0 || text.rfind("0X", 0) == 0)
-      base = 16, digits = text.substr(2);
-    else if (text.rfind("0b", 0) == 0)
-      base = 2, digits = text.substr(2);
-    if (base != 10 || (!digits.empty() && std::isdigit(static_cast<unsigned char>(digits[0])))) {
-      unsigned long value = std::stoul(digits, &used, base);
-      if (used != digits.size()) throw std::invalid_argument("trailing characters");
-      if (value >= spec.raw_count()) {
-        why = "raw ID " + text + " is out of range: domain " + spec.name + " has raw IDs 0 to " +
-              std::to_string(spec.raw_count() - 1);
-        return std::nullopt;
-      }
-      return static_cast<std::uint32_t>(value);
-    }
-  } catch (const std::exception&) {
-    why = "\"" + text + "\" is not a raw ID (a number or feature names joined by '|')";
+  if (std::optional<std::uint64_t> number = raw_number(text)) {
+    if (*number < spec.raw_count()) return static_cast<std::uint32_t>(*number);
+    why = "raw ID " + text + " is out of range: domain " + spec.name + " has raw IDs 0 to " +
+          std::to_string(spec.raw_count() - 1);
     return std::nullopt;
   }
-  std::uint32_t id = 0;
-  std::string name;
-  // A boolean feature by name, or a valued one as NAME=VALUE.
-  auto flush = [&]() -> bool {
-    if (name.empty()) return true;
-    std::string feature_name = name.substr(0, name.find('='));
-    std::string value = feature_name.size() < name.size() ? name.substr(feature_name.size() + 1) : std::string();
-    auto found = std::find_if(spec.raw_features.begin(), spec.raw_features.end(),
-                              [&](const RawFeature& f) { return f.name == feature_name || f.define == feature_name; });
-    if (found == spec.raw_features.end()) {
-      why = "unknown raw feature \"" + feature_name + "\" (known: ";
-      for (std::size_t i = 0; i < spec.raw_features.size(); ++i) why += (i ? ", " : "") + spec.raw_features[i].name;
-      why += ")";
-      return false;
-    }
-    auto index = std::find(found->values.begin(), found->values.end(), value);
-    if (found->valued() && index == found->values.end()) {
-      why = "\"" + name + "\": " + found->name + " has values " + value_names(*found) + "; write " + found->name +
-            "=<value>";
-      return false;
-    }
-    id |= found->valued() ? static_cast<std::uint32_t>(index - found->values.begin()) << found->bit : 1u << found->bit;
-    name.clear();
-    return true;
-  };
-  for (char c : text) {
-    if (c == '|' || c == '+' || c == ',') {
-      if (!flush()) return std::nullopt;
-    } else if (c != ' ') {
-      name += c;
-    }
+  const FeatureTable table(spec);
+  const ParsedCombination parsed = parse_combination(table.features(), text);
+  if (!parsed) {
+    why = describe_combination_error(parsed, table.features());
+    return std::nullopt;
   }
-  if (!flush()) return std::nullopt;
-  return id;
+  return parsed.raw_id;
 }
 
 // Loads and expands the spec, then shows it; errors in the spec are printed and give 1.
@@ -101,7 +73,8 @@ ViewCommands add_view_commands(CLI::App& app, ViewArgs& args) {
   commands.list->add_option("spec", args.spec_path, "Domain spec (JSON)")->required();
   commands.explain = app.add_subcommand("explain", "Explain what a raw ID means and which optimised ID it maps to");
   commands.explain->add_option("spec", args.spec_path, "Domain spec (JSON)")->required();
-  commands.explain->add_option("raw-id", args.raw_id, "A raw ID: 83, 0x53, or names such as SKY|SUN_LIGHT")->required();
+  commands.explain->add_option("raw-id", args.raw_id, "A raw ID: 83, 0x53, or feature names such as SKY|SUN_LIGHT")
+      ->required();
   return commands;
 }
 

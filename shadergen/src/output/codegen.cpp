@@ -38,18 +38,21 @@ std::vector<const RawFeature*> in_spec_order(const DomainSpec& spec) {
 // One enum class per valued feature, its enumerators the values in order (so each is the
 // index the raw ID holds).
 void value_enums(std::ostringstream& h, const std::vector<const RawFeature*>& features) {
+  bool any = false;
   for (const RawFeature* f : features) {
     if (!f->valued()) continue;
     h << "enum class " << f->name << "_value : std::uint32_t {";
     for (std::size_t i = 0; i < f->values.size(); ++i) h << (i ? ", " : " ") << enumerator_name(f->values[i]);
     h << " };\n";
+    any = true;
   }
+  if (any) h << "\n";
 }
 
 // The Features aggregate (members in spec order, so designated initializers follow the spec)
 // and raw_id(), the one place that knows the bit layout.
 void features_struct(std::ostringstream& h, const std::vector<const RawFeature*>& features) {
-  h << "\n// A raw ID by its features: raw_id({.FEATURE = true, .VALUED = VALUED_value::_2}).\nstruct Features {\n";
+  h << "// A raw ID by its features: raw_id({.FEATURE = true, .VALUED = VALUED_value::_2}).\nstruct Features {\n";
   for (const RawFeature* f : features) {
     if (f->valued())
       h << "  " << f->name << "_value " << f->name << " = " << f->name << "_value::" << enumerator_name(f->values[0])
@@ -57,15 +60,21 @@ void features_struct(std::ostringstream& h, const std::vector<const RawFeature*>
     else
       h << "  bool " << f->name << " = false;  // #define " << f->define << "\n";
   }
-  h << "};\n\n// The raw ID of `features`: each boolean's bit, each valued feature's value index in its field.\n"
-       "constexpr std::uint32_t raw_id([[maybe_unused]] const Features& features) {\n  std::uint32_t id = 0;\n";
+  h << "};\n\n// The raw ID of `features`: each boolean's bit, each valued feature's value index in its field;\n"
+       "// nullopt when a value is none of its enum's (a cast) or the combination is pruned.\n"
+       "constexpr std::optional<std::uint32_t> raw_id([[maybe_unused]] const Features& features) {\n"
+       "  std::uint32_t id = 0;\n";
   for (const RawFeature* f : features) {
-    if (f->valued())
-      h << "  id |= static_cast<std::uint32_t>(features." << f->name << ") << " << f->bit << ";\n";
-    else
+    if (!f->valued()) {
       h << "  if (features." << f->name << ") id |= 1u << " << f->bit << ";\n";
+      continue;
+    }
+    // Checked before the shift: an index past the values would spill into the next field.
+    h << "  if (static_cast<std::uint32_t>(features." << f->name << ") >= " << f->values.size()
+      << "u) return std::nullopt;\n"
+      << "  id |= static_cast<std::uint32_t>(features." << f->name << ") << " << f->bit << ";\n";
   }
-  h << "  return id;\n}\n\n";
+  h << "  if (!is_valid_raw_id(id)) return std::nullopt;\n  return id;\n}\n\n";
 }
 
 // kFeatures (spec order), kDefines and find_raw_id().
@@ -89,11 +98,28 @@ void feature_tables(std::ostringstream& h, const CompiledDomain& d, const std::v
     std::string value = define.size() > name.size() ? define.substr(name.size() + 1) : std::string("1");
     h << "    {" << literal(name) << ", " << literal(value) << "},\n";
   }
-  h << "}};\n\n// The raw ID `text` names, as `shadergen explain` reads it (\"NORMAL_MAP|SHADOW_QUALITY=2\", \"0x5\"); "
-       "\"\" "
-       "is 0;\n// nullopt for an unknown name or value.\n"
+  h << "}};\n\n"
+       "// The raw ID `text` names in shadergen's one grammar (\"NORMAL_MAP|SHADOW_QUALITY=2\", \"(none)\";\n"
+       "// \"\" is 0), pruned or not; nullopt when the text is refused:\n"
+       "// shadergen::parse_combination(kFeatures, text) says why.\n"
     << "constexpr std::optional<std::uint32_t> find_raw_id(std::string_view text) {\n"
-    << "  return shadergen::find_raw_id(kFeatures, " << d.spec.raw_bits() << ", text);\n}\n\n";
+    << "  return shadergen::find_raw_id(kFeatures, text);\n}\n\n";
+}
+
+// The checked lookups by raw ID: an ID outside the domain, or pruned, is "none", so an ID from
+// outside (a classifier, a file, a cast) never indexes a table unchecked.
+void raw_id_lookups(std::ostringstream& h, const CompiledDomain& d) {
+  h << "// True when `raw_id` is a raw ID of this domain that is not pruned: the IDs every lookup accepts.\n"
+       "constexpr bool is_valid_raw_id(std::uint32_t raw_id) { return raw_id < kRawCount && !kRawPruned[raw_id]; }\n\n";
+  if (d.spec.collapsed)
+    h << "// The optimised ID `raw_id` is drawn with; nullopt when it is out of range or pruned.\n"
+         "constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
+         "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n  return kRawToOptimised[raw_id];\n}\n\n";
+  else
+    h << "// Not collapsed: every raw ID is drawn with its own permutation, so the optimised ID of a raw\n"
+         "// ID is the raw ID itself; nullopt when it is out of range or pruned.\n"
+         "constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
+         "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n  return raw_id;\n}\n\n";
 }
 
 std::string typed_features(const CompiledDomain& d) {
@@ -114,15 +140,17 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
   h << "inline constexpr std::uint32_t kRawCount = " << d.plan.raw.size() << ";\n";
   h << "inline constexpr std::uint32_t kOptimisedCount = " << d.plan.optimised.size() << ";\n\n";
   if (d.spec.collapsed) {
-    h << "// The raw -> optimised lookup table, indexed by raw ID.\n";
+    h << "// The raw -> optimised lookup table, indexed by raw ID, unchecked: optimised_id() checks the ID.\n";
     h << "inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised = {{";
     for (std::size_t i = 0; i < d.plan.raw.size(); ++i)
       h << (i % 16 ? " " : "\n    ") << d.plan.raw[i].optimised << ",";
     h << "\n}};\n\n";
   } else {
-    h << "// Not collapsed: no lookup table; registry().optimised_for_raw(id) is registry().raw[id].\n\n";
+    h << "// Not collapsed: no lookup table; optimised_id(id) is id, registry().optimised_for_raw(id) is\n"
+         "// registry().find_raw(id).\n\n";
   }
-  h << "// Impossible raw IDs: never produced by a correct classifier, never compiled.\n";
+  h << "// Impossible raw IDs: never produced by a correct classifier, never compiled. Indexed\n"
+       "// unchecked: is_valid_raw_id() checks the ID.\n";
   h << "inline constexpr std::array<bool, kRawCount> kRawPruned = {{";
   for (std::size_t i = 0; i < d.plan.raw.size(); ++i)
     h << (i % 16 ? " " : "\n    ") << (d.plan.raw[i].pruned ? "true," : "false,");
@@ -143,6 +171,7 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
   for (const OptimisedBit& b : d.spec.optimised_bits)
     h << "inline constexpr std::uint32_t " << b.name << " = 1u << " << b.bit << ";\n";
   h << "}  // namespace optimised_bit\n\n";
+  raw_id_lookups(h, d);
   h << typed_features(d);
   if (d.spec.collapsed) {
     h << "// The table is total: every raw ID names an optimised permutation that exists.\n";

@@ -63,8 +63,14 @@ struct FrameReport {
   ProcessFigures process;
 };
 
-// Counts per raw property and per optimised ID from the row-major raw tile IDs (through the
-// generated LUT), whatever path or permutation set drew the frame.
+// The optimised ID of each row-major raw tile ID, through the generated checked lookup
+// (split_second::optimised_id). Throws tilelight::Error naming the first tile whose raw ID is
+// out of range or pruned: the index build refuses such a frame before it gets here.
+std::vector<std::uint8_t> optimised_tile_ids(const std::vector<std::uint8_t>& raw_ids);
+
+// Counts per raw property and per optimised ID from the row-major raw tile IDs (through
+// optimised_tile_ids(), so it throws as that does), whatever path or permutation set drew the
+// frame.
 void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids);
 
 MedianTimings median_timings(const std::vector<FrameTimings>& frames);
