@@ -358,8 +358,8 @@ class DomainCompiler {
     return failures;
   }
 
-  Result<CachedBlob> compile_one(SourceRecord& record) {
-    if (auto hit = load_cached(record)) return std::move(*hit);
+  // Compiles, optimises and validates a source, and keeps the blob in the local cache.
+  Result<CachedBlob> compile_fresh(SourceRecord& record) {
     auto start = Clock::now();
     auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
     if (!words) return std::move(words).take_errors();
@@ -368,7 +368,14 @@ class DomainCompiler {
     record.compile_ms = milliseconds_since(start);
     CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
     store_local(record.key, blob);
-    if (options_.remote && !remote_distrusted_ && options_.remote->store(record.key, blob)) note_server_has(record.key);
+    return blob;
+  }
+
+  Result<CachedBlob> compile_one(SourceRecord& record) {
+    if (auto hit = load_cached(record)) return std::move(*hit);
+    auto blob = compile_fresh(record);
+    if (blob && options_.remote && !remote_distrusted_ && options_.remote->store(record.key, *blob))
+      note_server_has(record.key);
     return blob;
   }
 
@@ -437,15 +444,9 @@ class DomainCompiler {
       record.cache_hit = record.remote_hit = true;
       return ShardFate::on_server;
     }
-    auto start = Clock::now();
-    auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
-    if (!words) return std::move(words).take_errors();
-    auto optimised = optimise_and_validate(std::move(words).value(), d_.spec.target_env);
-    if (!optimised) return std::move(optimised).take_errors();
-    record.compile_ms = milliseconds_since(start);
-    CachedBlob blob{std::move(optimised->words), optimised->fell_back, std::move(optimised->fallback_reason)};
-    store_local(record.key, blob);
-    return options_.remote->store(record.key, blob) ? ShardFate::uploaded : ShardFate::missing;
+    auto blob = compile_fresh(record);
+    if (!blob) return std::move(blob).take_errors();
+    return options_.remote->store(record.key, *blob) ? ShardFate::uploaded : ShardFate::missing;
   }
 
   // build --shard: this shard's sources, each made sure of on the server. GLSL errors are
