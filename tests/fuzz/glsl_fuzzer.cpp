@@ -161,7 +161,7 @@ class Scratch {
 
   // The input's files in place, and nothing of the previous input's outcome.
   void prepare(const std::vector<std::string_view>& parts) {
-    write(dir_ / "shader.glsl", parts.size() > 0 ? parts[0] : std::string_view());
+    write(dir_ / "shader.glsl", !parts.empty() ? parts[0] : std::string_view());
     write(dir_ / "include" / "fuzz.glsl", parts.size() > 1 ? parts[1] : std::string_view());
     write(dir_ / "second.glsl", parts.size() > 2 ? parts[2] : std::string_view());
     std::error_code ec;
