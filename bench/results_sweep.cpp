@@ -138,9 +138,9 @@ int run_sweep(const SweepOptions& options) {
       threads != nullptr ? threads : "(default)", scene.source.empty() ? "procedural" : scene.source,
       scene.triangle_count());
   const std::map<std::string, std::string> sections = report_comparisons(plan, measurements, run_line, files);
-  SweepRun run{context.device_name(), threads != nullptr ? threads : "", &options, &plan, &measurements};
-  run.scene = scene.source;
-  run.scene_triangles = scene.triangle_count();
+  const SweepRun run{
+      context.device_name(), threads != nullptr ? threads : "", &options, &plan, &measurements, scene.source,
+      scene.triangle_count()};
   files.stage_text("results.json", results_json(run));
   files.commit();
   std::cerr << "wrote " << (files.folder() / "results.json").string() << " and one PNG per comparison\n";

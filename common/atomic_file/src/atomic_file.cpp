@@ -48,7 +48,9 @@ std::string describe(const Failure& failure) {
 
 std::string temporary_name(std::string_view stem) {
   static std::atomic<unsigned> counter{0};
-  return "." + std::string(stem) + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  std::string name(".");
+  name.append(stem).append(".tmp-").append(std::to_string(::getpid())).append("-").append(std::to_string(counter++));
+  return name;
 }
 
 StagedFile::StagedFile(fs::path final_path, std::string_view bytes, bool durable)

@@ -26,10 +26,10 @@ std::string define_line(std::string_view define) {
 
 std::string define_name_problem(std::string_view name) {
   if (!is_identifier(name))
-    return "\"" + std::string(name) + "\" is not an identifier ([A-Za-z_][A-Za-z0-9_]*, at most 64)";
+    return std::string("\"").append(name).append("\" is not an identifier ([A-Za-z_][A-Za-z0-9_]*, at most 64)");
   // GLSL reserves these for the implementation; glslang rejects them in a #define.
   if (name.rfind("GL_", 0) == 0 || name.find("__") != std::string_view::npos)
-    return "\"" + std::string(name) + "\" is reserved by GLSL (a GL_ prefix or a double underscore)";
+    return std::string("\"").append(name).append("\" is reserved by GLSL (a GL_ prefix or a double underscore)");
   return {};
 }
 

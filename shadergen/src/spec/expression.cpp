@@ -44,7 +44,7 @@ std::string Expression::to_string() const {
         case Node::Kind::symbol: text = n.text; break;
         // A comparison binds tighter than '!', so "!(A == 1)" keeps its parentheses.
         case Node::Kind::comparison: text = outer == 3 ? "(" + n.text + ")" : n.text; break;
-        case Node::Kind::negation: text = "!" + run(*n.left, 3); break;
+        case Node::Kind::negation: text = std::string("!").append(run(*n.left, 3)); break;
         case Node::Kind::conjunction: text = run(*n.left, 2) + " && " + run(*n.right, 2); break;
         case Node::Kind::disjunction: text = run(*n.left, 1) + " || " + run(*n.right, 1); break;
       }
@@ -71,8 +71,8 @@ class ExpressionParser {
     skip_space();
     if (pos_ < text_.size()) {
       if (peek_operator("&") || peek_operator("|"))
-        return fail("'" + std::string(1, text_[pos_]) + "' is not an operator; use '&&' or '||'");
-      return fail("unexpected '" + std::string(1, text_[pos_]) + "'");
+        return fail(std::string("'").append(1, text_[pos_]).append("' is not an operator; use '&&' or '||'"));
+      return fail(std::string("unexpected '").append(1, text_[pos_]).append("'"));
     }
     return Expression(std::move(root));
   }
