@@ -194,24 +194,6 @@ std::vector<std::string_view> split_files(std::string_view text) {
   return parts;
 }
 
-// Known finding, not yet fixed (docs/reliability.md): glslang follows an #include cycle without
-// end, reading the file again at every level and growing without bound (about 90 MB/s), because
-// the includer in compile/glsl_compiler.cpp does not limit the nesting depth. Until it does,
-// inputs that could form a cycle are skipped: a cycle needs an included file that includes, so
-// the include file may not say "include", and no shader may name a shader file (an absolute path
-// would need the scratch folder's random name). Remove this once the depth is limited; the
-// corpus keeps the cycle as regression-include-cycle-*.
-constexpr bool kSkipIncludeCycles = true;
-
-bool may_include_itself(const std::vector<std::string_view>& parts) {
-  auto says = [](std::string_view text, std::string_view word) { return text.find(word) != std::string_view::npos; };
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    if (i == 1 && says(parts[i], "include")) return true;
-    if (says(parts[i], "shader.glsl") || says(parts[i], "second.glsl")) return true;
-  }
-  return false;
-}
-
 bool one_line(const std::string& text) { return text.find_first_of("\r\n") == std::string::npos; }
 
 // Nothing written beside the output either: no staging or set-aside folder of a failed commit.
@@ -273,10 +255,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   const Template& spec = kTemplates[data[0] % kTemplateCount];
   std::vector<std::string_view> parts = split_files(std::string_view(reinterpret_cast<const char*>(data), size));
-  if (kSkipIncludeCycles && may_include_itself(parts)) {
-    if (verbose()) std::fprintf(stderr, "  skipped: it may form an #include cycle (a known finding)\n");
-    return -1;  // libFuzzer: not worth keeping
-  }
   scratch.prepare(parts);
 
   shadergen::BuildOptions options;

@@ -11,6 +11,7 @@
 
 #include "base/file_io.h"
 #include "base/sha256.h"
+#include "base/untrusted_text.h"
 #include "spec/defines.h"
 
 namespace shadergen {
@@ -71,15 +72,27 @@ class RecordingIncluder final : public glslang::TShader::Includer {
   RecordingIncluder(std::filesystem::path main_file, std::vector<std::filesystem::path> dirs)
       : main_file_(std::move(main_file)), dirs_(std::move(dirs)) {}
 
-  IncludeResult* includeLocal(const char* header, const char* includer, std::size_t) override {
+  IncludeResult* includeLocal(const char* header, const char* includer, std::size_t depth) override {
+    if (depth > kMaxIncludeDepth) return too_deep();
     std::filesystem::path from = includer && *includer ? std::filesystem::path(includer) : main_file_;
     return open(from.parent_path() / header);
   }
 
-  IncludeResult* includeSystem(const char* header, const char*, std::size_t) override {
+  IncludeResult* includeSystem(const char* header, const char*, std::size_t depth) override {
+    if (depth > kMaxIncludeDepth) return too_deep();
     for (const auto& dir : dirs_)
       if (IncludeResult* found = open(dir / header)) return found;
     return nullptr;
+  }
+
+  // glslang sets no limit of its own: a file that includes itself without a guard would
+  // recurse until memory runs out. A result without a header name is reported by glslang as an
+  // error at the #include line, with this text.
+  static constexpr std::size_t kMaxIncludeDepth = 64;
+  IncludeResult* too_deep() {
+    static const std::string message =
+        "#include nested more than " + std::to_string(kMaxIncludeDepth) + " deep: an include cycle?";
+    return new IncludeResult("", message.data(), message.size(), nullptr);
   }
 
   void releaseInclude(IncludeResult* result) override {
@@ -130,17 +143,23 @@ Diagnostics parse_log(const std::string& log, const std::string& fallback_file) 
   Diagnostics out;
   std::istringstream lines(log);
   std::string line;
+  bool in_error = false;  // the last message line was an error's
   while (std::getline(lines, line)) {
     std::smatch m;
     if (std::regex_match(line, m, located)) {
-      if (m[1] != "ERROR") continue;
-      out.push_back(make_error(m[2], std::stoi(m[3]), m[4]));
+      in_error = m[1] == "ERROR";
+      // The shader's own bytes reach the message (an unexpected token): shown escaped.
+      if (in_error) out.push_back(make_error(m[2], std::stoi(m[3]), printable(m[4].str())));
     } else if (std::regex_match(line, m, unlocated)) {
-      if (m[1] != "ERROR") continue;
       std::string text = m[2];
       // Summary lines ("1 compilation errors.  No code generated.") add nothing.
-      if (text.find("compilation errors") != std::string::npos) continue;
-      out.push_back(make_error(fallback_file, 0, text));
+      in_error = m[1] == "ERROR" && text.find("compilation errors") == std::string::npos;
+      if (in_error) out.push_back(make_error(fallback_file, 0, printable(text)));
+    } else if (in_error && !line.empty() && !out.empty()) {
+      // A message's continuation: "Possible extensions include:" lists them on the lines after.
+      std::string& message = out.back().message;
+      message += (message.empty() || message.back() == ':' || message.back() == ' ' ? "" : ",");
+      message += (message.empty() || message.back() == ' ' ? "" : " ") + printable(line);
     }
   }
   // After a real error glslang adds follow-on noise: "compilation terminated" and, because
