@@ -496,7 +496,7 @@ class DomainCompiler {
         defines += ' ';
         defines += d;
       }
-      log("[" + std::to_string(finished) + "/" + std::to_string(total) + "] " +
+      log(std::string("[").append(std::to_string(finished)) + "/" + std::to_string(total) + "] " +
           (record.remote_hit  ? "remote   "
            : record.cache_hit ? "cached   "
                               : "compiled ") +

@@ -24,8 +24,8 @@ std::string_view descriptor_kind_name(DescriptorKind kind) {
 namespace {
 
 std::string describe(const BindingInfo& b) {
-  return std::string(descriptor_kind_name(b.kind)) + (b.count > 1 ? "[" + std::to_string(b.count) + "]" : "") + " \"" +
-         b.name + "\"";
+  return std::string(descriptor_kind_name(b.kind)) +
+         (b.count > 1 ? std::string("[").append(std::to_string(b.count)).append("]") : "") + " \"" + b.name + "\"";
 }
 
 std::string describe_outputs(const std::vector<VariableInfo>& outputs) {

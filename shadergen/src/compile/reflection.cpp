@@ -185,8 +185,8 @@ ReflectionInfo reflect_unchecked(std::span<const std::uint32_t> words, Stage sta
 }
 
 std::string describe(const BindingInfo& b) {
-  return std::string(descriptor_kind_name(b.kind)) + (b.count != 1 ? "[" + std::to_string(b.count) + "]" : "") + " \"" +
-         b.name + "\"";
+  return std::string(descriptor_kind_name(b.kind)) +
+         (b.count != 1 ? std::string("[").append(std::to_string(b.count)).append("]") : "") + " \"" + b.name + "\"";
 }
 
 // Declarations aliased at one (set, binding) are one descriptor: a set layout lists it once,

@@ -36,7 +36,7 @@ fs::path sibling(const fs::path& out_dir, std::string_view what) {
 
 // The start of every sibling(out_dir, what) name (see temporary_name()).
 std::string sibling_prefix(const fs::path& out_dir, std::string_view what) {
-  return "." + out_dir.filename().string() + "." + std::string(what) + ".tmp-";
+  return std::string(".").append(out_dir.filename().string()).append(".").append(what).append(".tmp-");
 }
 
 bool starts_with(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }

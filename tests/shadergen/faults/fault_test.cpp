@@ -315,7 +315,9 @@ TEST(FailedWrite, ReadOnlyOutputFolderIsReplacedAndNothingIsLeftBesideIt) {
   const std::optional<ChildSetup> found = setup_that_mode_bits_bind();
   if (!found) GTEST_SKIP() << kCannotDropPrivileges;
   const ChildSetup setup = *found;
-  if (setup.drop_to_nobody) ASSERT_EQ(::chown(parent.c_str(), 65534, 65534), 0);
+  if (setup.drop_to_nobody) {
+    ASSERT_EQ(::chown(parent.c_str(), 65534, 65534), 0);
+  }
   ASSERT_EQ(run_shadergen(build_args(sgtest::toy_spec(), out, {}, {"--namespace", "previous"}), setup).exit_code, 0);
   make_tree_read_only(out);
   // A leftover of an earlier run that failed to remove what it set aside: a read-only
