@@ -8,7 +8,7 @@ namespace shadergen {
 namespace {
 
 // The word as written, quoted; a word from a command line or a file may hold anything.
-std::string quoted(std::string_view word) { return "\"" + printable(word, 200) + "\""; }
+std::string quoted(std::string_view word) { return std::string("\"").append(printable(word, 200)).append("\""); }
 
 std::string joined(std::span<const std::string_view> names) {
   std::string text;
