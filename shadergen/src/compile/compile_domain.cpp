@@ -430,8 +430,9 @@ class DomainCompiler {
     return errors;
   }
 
-  // One source of a shard: on the server when this returns true (found there, offered from the
-  // local cache, or compiled and uploaded). A compile error is returned as such.
+  // One source of a shard: on_server when the server had it (verified, or offered from the
+  // local cache), uploaded when it was compiled here and stored, missing when an upload failed.
+  // A compile error is returned as such.
   enum class ShardFate { on_server, uploaded, missing };
   Result<ShardFate> make_sure_on_server(SourceRecord& record) {
     if (options_.cache)
