@@ -158,8 +158,8 @@ Diagnostics parse_log(const std::string& log, const std::string& fallback_file) 
     } else if (in_error && !line.empty() && !out.empty()) {
       // A message's continuation: "Possible extensions include:" lists them on the lines after.
       std::string& message = out.back().message;
-      message += (message.empty() || message.back() == ':' || message.back() == ' ' ? "" : ",");
-      message += (message.empty() || message.back() == ' ' ? "" : " ") + printable(line);
+      while (!message.empty() && message.back() == ' ') message.pop_back();
+      message += (message.empty() || message.back() == ':' ? " " : ", ") + printable(line);
     }
   }
   // After a real error glslang adds follow-on noise: "compilation terminated" and, because
