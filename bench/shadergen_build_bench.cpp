@@ -133,7 +133,9 @@ struct Job {
 std::vector<Job> jobs_of(const shadergen::DomainSpec& spec, const shadergen::PermutationPlan& plan) {
   std::vector<Job> jobs;
   for (const auto& raw : plan.raw)
-    if (!raw.pruned) jobs.push_back({"raw" + std::to_string(raw.id), spec.uber.stage, spec.uber.path, raw.defines});
+    if (!raw.pruned)
+      jobs.push_back(
+          {"raw" + std::to_string(raw.id), spec.uber.stage, spec.uber.path, shadergen::raw_defines(spec, raw.id)});
   for (const auto& o : plan.optimised)
     jobs.push_back({"optimised" + std::to_string(o.id), spec.uber.stage, spec.uber.path, o.defines});
   for (const auto& c : spec.companions) jobs.push_back({"companion_" + c.name, c.file.stage, c.file.path, c.defines});

@@ -1,6 +1,6 @@
 # shadergen_add_permutations(<target> DOMAIN <spec> [NAMESPACE <ns>] [CACHE_DIR <dir>] [JOBS <n>]
 #                            [TARGET_ENV <vulkan1.0|vulkan1.1|vulkan1.2|vulkan1.3>]
-#                            [DEFINES <NAME=VALUE|NAME>...] [STRIP_DEBUG]
+#                            [DEFINES <NAME=VALUE|NAME>...] [STRIP_DEBUG] [VARIANTS <file>]
 #                            [REMOTE_CACHE <url> [REMOTE_CACHE_READONLY]]
 #                            [REMOTE_CACHE_SECRET_FILE <file>])
 #
@@ -14,6 +14,10 @@
 # passes `--strip-debug`: blobs without names, sources or lines (the registry keeps the names). Files whose bytes did not change keep their
 # timestamps, so nothing downstream recompiles after an edit that changes no SPIR-V.
 #
+# VARIANTS passes --variants: the raw combinations to build, one per line (it replaces the spec's
+# "variants_file"; a domain of more than 2^20 raw IDs needs one). Like the spec it is an input:
+# editing it reruns shadergen.
+#
 # REMOTE_CACHE passes --remote-cache (without it, shadergen still reads SHADERGEN_REMOTE_CACHE
 # from the build's environment); REMOTE_CACHE_READONLY passes --remote-cache-readonly;
 # REMOTE_CACHE_SECRET_FILE passes --remote-cache-secret-file (without it, shadergen reads
@@ -23,7 +27,7 @@
 # Needs SHADERGEN_EXECUTABLE to name the shadergen executable target (the project sets it; the
 # package config sets it to the imported shadergen::shadergen).
 function(shadergen_add_permutations target)
-  cmake_parse_arguments(PARSE_ARGV 1 SG "REMOTE_CACHE_READONLY;STRIP_DEBUG" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS;TARGET_ENV;REMOTE_CACHE;REMOTE_CACHE_SECRET_FILE"
+  cmake_parse_arguments(PARSE_ARGV 1 SG "REMOTE_CACHE_READONLY;STRIP_DEBUG" "DOMAIN;NAMESPACE;CACHE_DIR;JOBS;TARGET_ENV;REMOTE_CACHE;REMOTE_CACHE_SECRET_FILE;VARIANTS"
                         "DEFINES")
   if(SG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "shadergen_add_permutations(${target}): unknown arguments: ${SG_UNPARSED_ARGUMENTS}")
@@ -47,6 +51,15 @@ function(shadergen_add_permutations target)
     set(SG_NAMESPACE ${target})
   endif()
 
+  set(variants)
+  if(SG_VARIANTS)
+    cmake_path(ABSOLUTE_PATH SG_VARIANTS BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}" NORMALIZE OUTPUT_VARIABLE variants)
+    if(NOT EXISTS "${variants}")
+      message(FATAL_ERROR "shadergen_add_permutations(${target}): VARIANTS ${SG_VARIANTS} does not exist (looked for "
+                          "${variants})")
+    endif()
+  endif()
+
   set(out "${CMAKE_CURRENT_BINARY_DIR}/${target}.shadergen")
   set(depfile "${CMAKE_CURRENT_BINARY_DIR}/${target}.shadergen.d")
   set(extra)
@@ -61,6 +74,9 @@ function(shadergen_add_permutations target)
   endif()
   if(SG_STRIP_DEBUG)
     list(APPEND extra --strip-debug)
+  endif()
+  if(variants)
+    list(APPEND extra --variants "${variants}")
   endif()
   foreach(define IN LISTS SG_DEFINES)
     list(APPEND extra --define "${define}")
@@ -78,7 +94,7 @@ function(shadergen_add_permutations target)
     OUTPUT "${out}/${target}.h" "${out}/${target}.cpp" "${out}/manifest.json"
     COMMAND "$<TARGET_FILE:${SHADERGEN_EXECUTABLE}>" build "${spec}" --out "${out}" --cpp-name "${target}"
             --namespace "${SG_NAMESPACE}" --depfile "${depfile}" ${extra}
-    DEPENDS "${spec}" ${SHADERGEN_EXECUTABLE}
+    DEPENDS "${spec}" ${variants} ${SHADERGEN_EXECUTABLE}
     DEPFILE "${depfile}"
     COMMENT "shadergen: compiling the permutations of ${SG_DOMAIN} into ${target}"
     VERBATIM)

@@ -169,7 +169,7 @@ TEST(CombinationText, ReadsBackWhatDescribeRawPrintsForEveryRawId) {
   const DomainSpec& spec = *loaded;
   const FeatureTable table(spec);
   std::size_t read = 0;
-  for (std::uint32_t id = 0; id < spec.raw_count(); ++id) {
+  for (std::uint32_t id = 0; id < spec.raw_space(); ++id) {
     const std::string text = describe_raw(spec, id);
     if (text.find('?') != std::string::npos) continue;  // a field holding no value: not a combination
     EXPECT_EQ(find_raw_id(table.features(), text), id) << text;

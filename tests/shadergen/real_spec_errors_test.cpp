@@ -52,7 +52,7 @@ TEST(RealSpec, ParsesAndExpandsWithoutError) {
   EXPECT_EQ(first_error(real_spec()), "(no error)");
   auto spec = shadergen::parse_domain(real_spec(), kFile);
   ASSERT_TRUE(spec.ok());
-  EXPECT_EQ(spec->raw_count(), 128u);
+  EXPECT_EQ(spec->raw_space(), 128u);
   EXPECT_EQ(spec->optimised_count(), 32u);
   EXPECT_TRUE(shadergen::expand(*spec).ok());
 }
@@ -189,10 +189,10 @@ INSTANTIATE_TEST_SUITE_P(
             "unknown_key_in_feature", "\"description\": \"a pixel is sky\"", "\"descripton\": \"a pixel is sky\"", "",
             14,
             "raw.features[5]: unknown key \"descripton\" (expected one of: name, bit, define, values, description)"},
-        EditCase{
-            "unknown_top_level_key", "\"include_dirs\"", "\"include_dir\"", "", 15,
-            "spec: unknown key \"include_dir\" (expected one of: format, name, description, uber_shader, "
-            "program, include_dirs, target_env, layout, strip_debug, defines, companions, raw, optimised, compile)"},
+        EditCase{"unknown_top_level_key", "\"include_dirs\"", "\"include_dir\"", "", 15,
+                 "spec: unknown key \"include_dir\" (expected one of: format, name, description, uber_shader, "
+                 "program, include_dirs, target_env, layout, strip_debug, defines, companions, raw, optimised, "
+                 "compile, variants_file)"},
         EditCase{"bit_out_of_range", "\"bit\": 6", "\"bit\": 7", "\"SUN_LIGHT\"", 7,
                  "raw.features[6].bit: bit must be an integer from 0 to 6, found 7"},
         EditCase{"negative_bit", "\"bit\": 0", "\"bit\": -1", "", 7,

@@ -466,6 +466,14 @@ TEST(ToyBuildCompileSet, OptimisedOnlyCompilesTheOptimisedPermutations) {
     }
   }
   for (const json& optimised : manifest["optimised"]) EXPECT_TRUE(optimised.contains("spirv"));
+  // The registry keeps the raw IDs' own pruned flags (4 of 16), so its lookups still draw the
+  // 12 others through the table: a raw permutation without SPIR-V is not a pruned one.
+  const std::string source = sgtest::read_file(dir / "out" / "toy_particles.cpp");
+  std::size_t pruned = 0, unpruned = 0;
+  for (std::size_t at = 0; (at = source.find("), true, {}, \"\", {}}", at)) != std::string::npos; ++at) ++pruned;
+  for (std::size_t at = 0; (at = source.find("), false, {}, \"\", {}}", at)) != std::string::npos; ++at) ++unpruned;
+  EXPECT_EQ(pruned, 4u);
+  EXPECT_EQ(unpruned, 12u);
 
   // Without a collapse there is nothing else to compile: refused at the key.
   std::string identity = sgtest::read_file(sgtest::fixtures_dir() / "identity" / "identity.json");

@@ -69,7 +69,7 @@ TEST_F(ValuedFeatures, EveryRawPermutationIsCompiledWithItsValues) {
     if (f.sharpen) expected.push_back("SHARPEN");
     expected.push_back("TAA_QUALITY=" + std::to_string(f.taa));
     expected.push_back("TONEMAP=" + tonemaps[f.tonemap]);
-    EXPECT_EQ(plan_.raw[id].defines, expected) << "raw " << id;
+    EXPECT_EQ(shadergen::raw_defines(spec_, id), expected) << "raw " << id;
   }
   // Variants name a valued feature with its value.
   EXPECT_EQ(plan_.optimised[3].defines, (std::vector<std::string>{"SHARPEN", "TAA_QUALITY=2", "TONEMAP=ACES"}));

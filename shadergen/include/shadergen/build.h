@@ -25,6 +25,9 @@ inline constexpr std::uint32_t kMaxShards = 4096;
 struct BuildOptions {
   std::filesystem::path spec_path;
   std::filesystem::path out_dir;
+  // `--variants`: the raw combinations to build, one per line; replaces the spec's
+  // "variants_file". Empty: the spec's, or every raw ID (docs/spec-format.md).
+  std::filesystem::path variants;
   unsigned jobs = 0;                // 0 = one per hardware thread
   bool use_cache = true;            // false: compile everything (a cold build)
   std::filesystem::path cache_dir;  // empty: default_cache_directory()

@@ -21,15 +21,21 @@
 
 namespace shadergen {
 
-// Raw bits, not features: a valued feature takes several. 16 bits are 65,536 raw IDs, which
-// expansion handles in linear time and the generated table holds in 64 KiB.
-inline constexpr std::uint32_t kMaxRawFeatures = 16;
+// Raw bits, not features: a valued feature takes several. A raw ID is 32 bits wide.
+inline constexpr std::uint32_t kMaxRawFeatures = 32;
+// Up to 20 raw bits (1,048,576 raw IDs) every raw ID is enumerated. A wider domain names the
+// combinations it uses in a variants file, and only those are expanded and built.
+inline constexpr std::uint32_t kMaxEnumeratedRawBits = 20;
 inline constexpr std::size_t kMaxFeatureValues = 256;  // a valued feature's field: at most 8 bits
-inline constexpr std::uint32_t kMaxOptimisedBits = 8;  // the LUT stores optimised IDs as bytes
+inline constexpr std::uint32_t kMaxOptimisedBits = 16;
+// Up to 8 optimised bits the lookup table stores optimised IDs as bytes, past that as 16-bit words.
+inline constexpr std::uint32_t kMaxByteTableOptimisedBits = 8;
+// A variants file lists at most this many lines (combinations, comments and blank lines).
+inline constexpr std::size_t kMaxVariantsLines = std::size_t{1} << 22;
 inline constexpr std::size_t kMaxCompanions = 64;
 inline constexpr std::size_t kMaxIncludeDirs = 64;
 // Rule counts bound the cost of expansion: every impossible rule is evaluated for each of up to
-// 65,536 raw IDs, every variant for each of up to 256 optimised IDs.
+// raw ID expanded, every variant for each optimised ID.
 inline constexpr std::size_t kMaxImpossibleRules = 64;
 inline constexpr std::size_t kMaxVariants = 256;
 // A spec reports at most this many problems; a hostile file cannot grow the list without bound.
@@ -153,10 +159,22 @@ struct DomainSpec {
   // False when the spec has no "optimised" section: no collapse, every non-pruned raw ID is
   // compiled as its own permutation and there is no lookup table.
   bool collapsed = true;
+  // "variants_file" (resolved against the spec's folder), or build --variants, which wins: the
+  // raw combinations the domain builds, one per line (docs/spec-format.md). Empty: every raw
+  // ID is enumerated, which needs raw_bits() <= kMaxEnumeratedRawBits.
+  std::filesystem::path variants_path;
+  int variants_line = 0;  // line of "variants_file" in the spec; 0 when given on the command line
+  // The raw IDs the variants file lists, ascending, each once (read_variants_file() fills it).
+  std::vector<std::uint32_t> listed_raw_ids;
 
+  bool listed() const { return !variants_path.empty(); }
   std::uint32_t raw_bits() const;
-  std::uint32_t raw_count() const { return 1u << raw_bits(); }
+  // How many raw IDs the bits can hold: 2^raw_bits(), up to 2^32.
+  std::uint64_t raw_space() const { return std::uint64_t{1} << raw_bits(); }
+  // 2^optimised bits when collapsed (at most 65,536), else 0.
   std::uint32_t optimised_count() const { return collapsed ? 1u << optimised_bits.size() : 0u; }
+  // True when the lookup table stores optimised IDs as 16-bit words (more than 8 optimised bits).
+  bool wide_table() const { return optimised_bits.size() > kMaxByteTableOptimisedBits; }
   std::vector<std::string> raw_feature_names() const;
   std::vector<ExpressionSymbol> raw_symbols() const;  // for rules over raw features
   std::vector<std::string> optimised_bit_names() const;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,14 +12,15 @@
 
 namespace shadergen {
 
+// A raw ID's record: a few words, so that 2^20 of them fit in memory (its defines are computed
+// when needed: raw_defines()).
 struct RawPermutation {
   std::uint32_t id = 0;
-  std::vector<std::string> defines;  // GLSL defines, in raw bit order ("NAME" or "NAME=VALUE")
-  bool pruned = false;               // matches an impossible rule or holds no value: never compiled
-  int pruned_by = -1;                // index into DomainSpec::impossible, or -1
-  int unvalued = -1;                 // index into DomainSpec::raw_features of a valued feature
-                                     // whose field holds no value, or -1
-  std::uint32_t optimised = 0;       // the lookup table's entry
+  bool pruned = false;          // matches an impossible rule or holds no value: never compiled
+  int pruned_by = -1;           // index into DomainSpec::impossible, or -1
+  int unvalued = -1;            // index into DomainSpec::raw_features of a valued feature
+                                // whose field holds no value, or -1
+  std::uint32_t optimised = 0;  // the lookup table's entry
 };
 
 struct OptimisedPermutation {
@@ -28,15 +30,32 @@ struct OptimisedPermutation {
   std::uint32_t raw_mapped = 0;      // how many non-pruned raw IDs map here
 };
 
+// What a domain builds. Both lists ascend by ID. An enumerated domain (no variants file) holds
+// every raw ID, pruned or not, and every optimised ID, so that raw[i].id == i and
+// optimised[i].id == i. With a variants file they hold only the listed raw IDs and the
+// optimised IDs those map to: the plan grows with what is built, not with the raw space.
 struct PermutationPlan {
-  std::vector<RawPermutation> raw;              // indexed by raw ID
-  std::vector<OptimisedPermutation> optimised;  // indexed by optimised ID
+  std::vector<RawPermutation> raw;
+  std::vector<OptimisedPermutation> optimised;
+
+  // Where raw ID `id` is in `raw`, or nullopt when the plan does not hold it (outside the
+  // domain, or not listed). Constant time when enumerated, else a binary search.
+  std::optional<std::size_t> raw_position(std::uint32_t id) const;
+  std::optional<std::size_t> optimised_position(std::uint32_t id) const;
+  const RawPermutation* find_raw(std::uint32_t id) const;  // nullptr when not held
+  const OptimisedPermutation* find_optimised(std::uint32_t id) const;
 };
 
-// Expands the domain. Fails when an optimised ID would be compiled with an impossible raw
-// feature set, or when a non-pruned raw ID maps to an optimised ID... (cannot happen: every
-// value < 2^M exists; the generated code still static_asserts it).
+// Expands the domain: every raw ID up to kMaxEnumeratedRawBits raw bits, else the ones
+// spec.listed_raw_ids holds (read_variants_file() fills them; an enumerated domain may list
+// too). Fails when a wider domain lists nothing (naming the 2^20 limit and "variants_file"),
+// or when an optimised ID that is built would be compiled with an impossible raw feature set or
+// with two values of one feature. Time and memory grow with the IDs built, never with 2^32.
 Result<PermutationPlan> expand(const DomainSpec& spec);
+
+// The GLSL defines raw ID `raw_id` is compiled with, in raw bit order ("NAME" or "NAME=VALUE";
+// none for a valued feature whose field holds no value).
+std::vector<std::string> raw_defines(const DomainSpec& spec, std::uint32_t raw_id);
 
 // The optimised ID the rules give for a raw ID (ignores pruning).
 std::uint32_t apply_rules(const DomainSpec& spec, std::uint32_t raw_id);
@@ -50,7 +69,7 @@ std::string describe_raw(const DomainSpec& spec, std::uint32_t raw_id);
 // Human-readable views for the CLI.
 std::string format_lut(const DomainSpec& spec, const PermutationPlan& plan);
 std::string format_list(const DomainSpec& spec, const PermutationPlan& plan);
-// Precondition: raw_id < spec.raw_count().
+// Any raw ID of the domain (precondition: raw_id < spec.raw_space()), built or not.
 std::string format_explanation(const DomainSpec& spec, const PermutationPlan& plan, std::uint32_t raw_id);
 
 }  // namespace shadergen

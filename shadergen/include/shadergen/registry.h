@@ -3,15 +3,22 @@
 // A registry is generated per domain spec (see shadergen_add_permutations() in CMake). Its
 // header declares, inside the namespace chosen at generation time:
 //
-//   inline constexpr std::uint32_t kRawCount;            // 1 << raw bits (128 for Split/Second)
-//   inline constexpr std::uint32_t kOptimisedCount;      // 1 << optimised bits (32); 0: not collapsed
+//   inline constexpr std::uint32_t kRawBits;             // raw bits (7 for Split/Second), up to 32
+//   inline constexpr std::uint32_t kRawCount;            // raw IDs in the registry: 1 << kRawBits
+//                                                        // (128), or those a variants file lists
+//   inline constexpr std::uint32_t kOptimisedCount;      // 1 << optimised bits (32), or those the
+//                                                        // listed IDs map to; 0: not collapsed
+//   Small enumerated domains (at most 65,536 raw IDs, no variants file) only, in the header:
 //   inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised;  // the lookup table
-//                                                        // (absent when the domain is not collapsed)
+//                                                        // (absent when the domain is not collapsed;
+//                                                        // std::uint16_t past 8 optimised bits)
 //   inline constexpr std::array<bool, kRawCount> kRawPruned;               // impossible raw IDs
 //   namespace raw_bit       { inline constexpr std::uint32_t <FEATURE> = 1u << n; ... }
 //   namespace optimised_bit { inline constexpr std::uint32_t <BIT> = 1u << n; ... }
-//   constexpr bool is_valid_raw_id(std::uint32_t);       // < kRawCount and not pruned
+//   constexpr bool is_valid_raw_id(std::uint32_t);       // built: in range, not pruned, listed
 //   constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id);  // checked lookup
+//   (Larger or listed domains: the table is in the generated source, and is_valid_raw_id(),
+//   optimised_id() and raw_id() are declared here without constexpr.)
 //   enum class <FEATURE>_value : std::uint32_t { <value>, ... };  // per valued feature: its values,
 //                                                        // an integer 2 spelt _2 (-1: _m1)
 //   struct Features { bool <FEATURE> = false; <FEATURE>_value <FEATURE> = ...; ... };
@@ -141,8 +148,10 @@ struct Permutation {
   std::uint32_t id;                           // raw or optimised ID; index for companions
   std::span<const std::string_view> defines;  // GLSL defines it was compiled with
   bool pruned;                                // impossible raw ID: no SPIR-V (spirv is empty)
-  std::span<const std::uint32_t> spirv;       // SPIR-V words, validated
-  std::string_view hash;                      // content hash of the SPIR-V (hex)
+  // SPIR-V words, validated. Empty when pruned, and for every raw permutation of a domain that
+  // compiles only its optimised ones ("compile": "optimised"): those are drawn through the table.
+  std::span<const std::uint32_t> spirv;
+  std::string_view hash;  // content hash of the SPIR-V (hex)
   Reflection reflection;
   // The spec's "program" form: the vertex shader compiled with the same defines (empty
   // otherwise, and for pruned IDs); `spirv` is then the fragment shader.
@@ -166,42 +175,81 @@ struct Registry {
   // but one name): entry i is the feature whose field is i-th from bit 0, not the name of bit i.
   std::span<const std::string_view> raw_feature_names;
   std::span<const std::string_view> optimised_bit_names;  // indexed by optimised bit
-  std::span<const std::uint8_t> raw_to_optimised;         // the LUT, one entry per raw ID;
-                                                          // empty when the domain is not collapsed
-  // Indexed by raw ID, unchecked, like the spans above: for an ID from outside (a classifier,
-  // a file, a cast), use find_raw(), optimised_id() or optimised_for_raw(), which check it.
+  // The LUT with at most 8 optimised bits: entry i is raw[i]'s optimised ID. Empty when the
+  // domain is not collapsed or has more bits (then raw_to_optimised_wide holds it).
+  std::span<const std::uint8_t> raw_to_optimised;
+  // Ascending by raw ID: every raw ID of an enumerated domain, so that raw[id].id == id, or the
+  // IDs a variants file lists. Unchecked, like the spans above: for an ID from outside (a
+  // classifier, a file, a cast), use find_raw(), optimised_id() or optimised_for_raw().
   std::span<const Permutation> raw;
-  std::span<const Permutation> optimised;  // indexed by optimised ID
+  // Ascending by optimised ID: every one (optimised[id].id == id), or with a variants file the
+  // ones the listed raw IDs map to. find_optimised() looks one up by ID.
+  std::span<const Permutation> optimised;
   std::span<const CompanionShader> companions;
   std::span<const DescriptorBinding> pipeline_layout;  // merged over every blob
   std::span<const PushConstantRange> push_constants;   // merged over every blob
   // The spec's "layout": "per_permutation". Then pipeline_layout and push_constants are
   // empty and each permutation's reflection is its own layout.
   bool per_permutation_layout = false;
+  // The LUT with more than 8 optimised bits (up to 16): entry i is raw[i]'s optimised ID.
+  std::span<const std::uint16_t> raw_to_optimised_wide = {};
 
-  // The lookups by raw ID. Each checks the ID, so an ID from outside can never read past a
-  // table: one outside the domain (>= raw.size()) or pruned (no shader) is "none".
+  // The lookups by ID. Each checks the ID, so an ID from outside can never read past a table:
+  // one outside the domain, pruned (no shader) or not built (not in a variants file) is "none".
 
-  // The raw permutation `raw_id` names, or nullptr when it is out of range or pruned.
+  // Where `raw_id` is in `raw`, or nullopt: constant time when enumerated, else a binary search.
+  constexpr std::optional<std::size_t> raw_position(std::uint32_t raw_id) const { return position_in(raw, raw_id); }
+  // The raw permutation `raw_id` names, or nullptr when it is out of range, pruned or not built.
   constexpr const Permutation* find_raw(std::uint32_t raw_id) const {
-    if (raw_id >= raw.size() || raw[raw_id].pruned) return nullptr;
-    return &raw[raw_id];
+    std::optional<std::size_t> at = raw_position(raw_id);
+    if (!at || raw[*at].pruned) return nullptr;
+    return &raw[*at];
   }
-  // The optimised ID `raw_id` is drawn with, or nullopt when it is out of range or pruned (or
-  // its table entry names no optimised permutation, which a generated registry never holds).
-  // In a domain without collapse every raw ID is its own permutation: the raw ID itself.
+  // The optimised permutation `id`, or nullptr when the registry has none of that ID.
+  constexpr const Permutation* find_optimised(std::uint32_t id) const {
+    std::optional<std::size_t> at = position_in(optimised, id);
+    return at ? &optimised[*at] : nullptr;
+  }
+  // True when the domain is collapsed: raw IDs are drawn through the lookup table.
+  constexpr bool collapsed() const { return !raw_to_optimised.empty() || !raw_to_optimised_wide.empty(); }
+  // The optimised ID `raw_id` is drawn with, or nullopt when find_raw() is nullptr (or its table
+  // entry names no optimised permutation, which a generated registry never holds). In a domain
+  // without collapse every raw ID is its own permutation: the raw ID itself.
   constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) const {
-    if (find_raw(raw_id) == nullptr) return std::nullopt;
-    if (raw_to_optimised.empty()) return raw_id;
-    if (raw_id >= raw_to_optimised.size() || raw_to_optimised[raw_id] >= optimised.size()) return std::nullopt;
-    return raw_to_optimised[raw_id];
+    std::optional<std::size_t> at = raw_position(raw_id);
+    if (!at || raw[*at].pruned) return std::nullopt;
+    if (!collapsed()) return raw_id;
+    std::uint32_t id = 0;
+    if (!raw_to_optimised.empty()) {
+      if (*at >= raw_to_optimised.size()) return std::nullopt;
+      id = raw_to_optimised[*at];
+    } else {
+      if (*at >= raw_to_optimised_wide.size()) return std::nullopt;
+      id = raw_to_optimised_wide[*at];
+    }
+    if (!find_optimised(id)) return std::nullopt;
+    return id;
   }
   // The permutation `raw_id` is drawn with: its optimised permutation, or, in a domain without
   // collapse, the raw permutation itself; nullptr when optimised_id() is nullopt.
   constexpr const Permutation* optimised_for_raw(std::uint32_t raw_id) const {
     std::optional<std::uint32_t> id = optimised_id(raw_id);
     if (!id) return nullptr;
-    return raw_to_optimised.empty() ? &raw[*id] : &optimised[*id];
+    return collapsed() ? find_optimised(*id) : find_raw(*id);
+  }
+  // Where the permutation of ID `id` is in `list` (ascending by ID), or nullopt.
+  static constexpr std::optional<std::size_t> position_in(std::span<const Permutation> list, std::uint32_t id) {
+    if (id < list.size() && list[id].id == id) return id;  // enumerated: the ID is the position
+    std::size_t low = 0, high = list.size();
+    while (low < high) {
+      const std::size_t middle = low + (high - low) / 2;
+      if (list[middle].id < id)
+        low = middle + 1;
+      else
+        high = middle;
+    }
+    if (low == list.size() || list[low].id != id) return std::nullopt;
+    return low;
   }
   // Returns the companion called `name`, or nullptr.
   const CompanionShader* companion(std::string_view wanted) const {

@@ -46,6 +46,7 @@ BuildOptions options_from(const BuildArgs& a) {
   BuildOptions options;
   options.spec_path = a.spec;
   options.out_dir = a.out;
+  options.variants = a.variants;
   options.jobs = a.jobs;
   options.use_cache = !a.no_cache;
   options.cache_dir = a.cache_dir;
@@ -133,6 +134,9 @@ CLI::App* add_build_command(CLI::App& app, BuildArgs& args) {
   build_cmd->add_option("--out,-o", args.out,
                         "Output folder: manifest.json, spirv/, <name>.h/.cpp (replaced atomically); required "
                         "except with --shard");
+  build_cmd->add_option("--variants", args.variants,
+                        "Variants file: the raw combinations to build, one per line (replaces the spec's "
+                        "\"variants_file\"; needed past 2^20 raw IDs)");
   build_cmd->add_option("-j,--jobs", args.jobs, "Parallel compile jobs (default: one per hardware thread)")
       ->check(CLI::Range(1u, 1024u));
   build_cmd->add_flag("--no-cache", args.no_cache, "Ignore the content cache and compile everything (a cold build)");

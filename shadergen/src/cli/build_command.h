@@ -14,6 +14,7 @@ namespace shadergen {
 struct BuildArgs {
   std::string spec, out, cache_dir, depfile, cpp_name, ns, target_env;
   std::vector<std::string> defines;
+  std::string variants;  // --variants FILE, or empty
   unsigned jobs = 0;
   bool no_cache = false, stats = false, verbose = false, strip_debug = false;
   std::string remote_cache;

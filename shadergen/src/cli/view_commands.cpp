@@ -11,6 +11,7 @@
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
 #include "spec/combination_text.h"
+#include "spec/variants_file.h"
 
 namespace shadergen {
 namespace {
@@ -39,9 +40,9 @@ std::optional<std::uint64_t> raw_number(std::string_view text) {
 // shadergen/registry.h (parse_combination), its errors worded by describe_combination_error().
 std::optional<std::uint32_t> parse_raw_id(const DomainSpec& spec, const std::string& text, std::string& why) {
   if (std::optional<std::uint64_t> number = raw_number(text)) {
-    if (*number < spec.raw_count()) return static_cast<std::uint32_t>(*number);
+    if (*number < spec.raw_space()) return static_cast<std::uint32_t>(*number);
     why = "raw ID " + text + " is out of range: domain " + spec.name + " has raw IDs 0 to " +
-          std::to_string(spec.raw_count() - 1);
+          std::to_string(spec.raw_space() - 1);
     return std::nullopt;
   }
   const FeatureTable table(spec);
@@ -55,9 +56,10 @@ std::optional<std::uint32_t> parse_raw_id(const DomainSpec& spec, const std::str
 
 // Loads and expands the spec, then shows it; errors in the spec are printed and give 1.
 template <class Show>
-int load_and_show(const std::string& spec_path, std::ostream& out, std::ostream& err, Show show) {
-  auto spec = load_domain(spec_path);
+int load_and_show(const ViewArgs& args, std::ostream& out, std::ostream& err, Show show) {
+  auto spec = load_domain(args.spec_path);
   if (!spec) return print_errors(spec.errors(), err);
+  if (auto listed = read_variants_file(*spec, args.variants_path); !listed) return print_errors(listed.errors(), err);
   auto plan = expand(*spec);
   if (!plan) return print_errors(plan.errors(), err);
   return show(*spec, *plan, out);
@@ -65,14 +67,28 @@ int load_and_show(const std::string& spec_path, std::ostream& out, std::ostream&
 
 }  // namespace
 
+namespace {
+
+void add_spec_options(CLI::App& command, ViewArgs& args) {
+  command.add_option("spec", args.spec_path, "Domain spec (JSON)")->required();
+  command.add_option("--variants", args.variants_path,
+                     "Variants file: the raw combinations the domain builds, one per line (replaces the spec's "
+                     "\"variants_file\")");
+}
+
+}  // namespace
+
 ViewCommands add_view_commands(CLI::App& app, ViewArgs& args) {
   ViewCommands commands;
-  commands.lut = app.add_subcommand("lut", "Print the raw -> optimised lookup table");
-  commands.lut->add_option("spec", args.spec_path, "Domain spec (JSON)")->required();
-  commands.list = app.add_subcommand("list", "List every raw and optimised permutation with its defines");
-  commands.list->add_option("spec", args.spec_path, "Domain spec (JSON)")->required();
-  commands.explain = app.add_subcommand("explain", "Explain what a raw ID means and which optimised ID it maps to");
-  commands.explain->add_option("spec", args.spec_path, "Domain spec (JSON)")->required();
+  commands.lut = app.add_subcommand(
+      "lut", "Print the raw -> optimised lookup table (with a variants file: one row per listed raw ID)");
+  add_spec_options(*commands.lut, args);
+  commands.list = app.add_subcommand(
+      "list", "List every raw and optimised permutation with its defines (with a variants file: the listed ones)");
+  add_spec_options(*commands.list, args);
+  commands.explain =
+      app.add_subcommand("explain", "Explain what a raw ID means and which optimised ID it maps to, built or not");
+  add_spec_options(*commands.explain, args);
   commands.explain->add_option("raw-id", args.raw_id, "A raw ID: 83, 0x53, or feature names such as SKY|SUN_LIGHT")
       ->required();
   return commands;
@@ -80,16 +96,16 @@ ViewCommands add_view_commands(CLI::App& app, ViewArgs& args) {
 
 int run_view(const ViewCommands& commands, const ViewArgs& args, std::ostream& out, std::ostream& err) {
   if (*commands.lut)
-    return load_and_show(args.spec_path, out, err, [](const DomainSpec& s, const PermutationPlan& p, std::ostream& o) {
+    return load_and_show(args, out, err, [](const DomainSpec& s, const PermutationPlan& p, std::ostream& o) {
       o << format_lut(s, p);
       return command_line::kExitSuccess;
     });
   if (*commands.list)
-    return load_and_show(args.spec_path, out, err, [](const DomainSpec& s, const PermutationPlan& p, std::ostream& o) {
+    return load_and_show(args, out, err, [](const DomainSpec& s, const PermutationPlan& p, std::ostream& o) {
       o << format_list(s, p);
       return command_line::kExitSuccess;
     });
-  return load_and_show(args.spec_path, out, err, [&](const DomainSpec& s, const PermutationPlan& p, std::ostream& o) {
+  return load_and_show(args, out, err, [&](const DomainSpec& s, const PermutationPlan& p, std::ostream& o) {
     std::string why;
     auto id = parse_raw_id(s, args.raw_id, why);
     if (!id) {

@@ -11,7 +11,8 @@ namespace shadergen {
 
 struct ViewArgs {
   std::string spec_path;
-  std::string raw_id;  // explain's argument, as typed
+  std::string variants_path;  // --variants: replaces the spec's "variants_file"
+  std::string raw_id;         // explain's argument, as typed
 };
 
 struct ViewCommands {

@@ -40,14 +40,14 @@ std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan&
   const bool raw_too = spec.compile == CompileSet::all;
   for (const RawPermutation& raw : plan.raw)
     if (raw_too && !raw.pruned)
-      jobs.push_back({JobKind::raw, raw.id, raw.defines, spec.uber.stage, spec.uber.path, {}});
+      jobs.push_back({JobKind::raw, raw.id, raw_defines(spec, raw.id), spec.uber.stage, spec.uber.path, {}});
   for (const OptimisedPermutation& optimised : plan.optimised)
     jobs.push_back({JobKind::optimised, optimised.id, optimised.defines, spec.uber.stage, spec.uber.path, {}});
   if (spec.program_vertex) {
     const ShaderFile& vertex = *spec.program_vertex;
     for (const RawPermutation& raw : plan.raw)
       if (raw_too && !raw.pruned)
-        jobs.push_back({JobKind::raw, raw.id, raw.defines, vertex.stage, vertex.path, {}, true});
+        jobs.push_back({JobKind::raw, raw.id, raw_defines(spec, raw.id), vertex.stage, vertex.path, {}, true});
     for (const OptimisedPermutation& o : plan.optimised)
       jobs.push_back({JobKind::optimised, o.id, o.defines, vertex.stage, vertex.path, {}, true});
   }
@@ -122,8 +122,16 @@ class DomainCompiler {
       auto& index = job.kind == JobKind::raw         ? (job.vertex_half ? d_.raw_vertex_jobs : d_.raw_jobs)
                     : job.kind == JobKind::optimised ? (job.vertex_half ? d_.optimised_vertex_jobs : d_.optimised_jobs)
                                                      : d_.companion_jobs;
-      index[job.id] = static_cast<int>(i);
+      index[slot_of(job)] = static_cast<int>(i);
     }
+  }
+
+  // Where a job's permutation is in the plan's list (raw and optimised IDs of a listed domain
+  // are not positions), or a companion's index.
+  std::size_t slot_of(const CompileJob& job) const {
+    if (job.kind == JobKind::raw) return *d_.plan.raw_position(job.id);
+    if (job.kind == JobKind::optimised) return *d_.plan.optimised_position(job.id);
+    return job.id;
   }
 
   // A shader file that is not there is the spec's mistake: said once, at the spec's key and
@@ -607,7 +615,7 @@ class DomainCompiler {
     for (const CompileJob& job : d_.jobs) {
       if (!job.vertex_half) continue;
       const auto& index = job.kind == JobKind::raw ? d_.raw_jobs : d_.optimised_jobs;
-      std::size_t fragment = static_cast<std::size_t>(index[job.id]);
+      std::size_t fragment = static_cast<std::size_t>(index[slot_of(job)]);
       for (std::string& problem :
            interface_problems(d_.blobs[static_cast<std::size_t>(job.blob)].reflection.outputs,
                               d_.blobs[static_cast<std::size_t>(d_.jobs[fragment].blob)].reflection.inputs)) {

@@ -13,24 +13,28 @@ std::string CompileJob::label() const {
 
 namespace {
 
-const Blob* blob_of(const CompiledDomain& d, const std::vector<int>& index, std::size_t id) {
-  if (id >= index.size() || index[id] < 0) return nullptr;
-  int blob = d.jobs[static_cast<std::size_t>(index[id])].blob;
+const Blob* blob_of(const CompiledDomain& d, const std::vector<int>& index, std::optional<std::size_t> slot) {
+  if (!slot || *slot >= index.size() || index[*slot] < 0) return nullptr;
+  int blob = d.jobs[static_cast<std::size_t>(index[*slot])].blob;
   return blob < 0 ? nullptr : &d.blobs[static_cast<std::size_t>(blob)];
 }
 
 }  // namespace
 
-const Blob* CompiledDomain::raw_blob(std::uint32_t id) const { return blob_of(*this, raw_jobs, id); }
+const Blob* CompiledDomain::raw_blob(std::uint32_t id) const { return blob_of(*this, raw_jobs, plan.raw_position(id)); }
 
-const Blob* CompiledDomain::optimised_blob(std::uint32_t id) const { return blob_of(*this, optimised_jobs, id); }
+const Blob* CompiledDomain::optimised_blob(std::uint32_t id) const {
+  return blob_of(*this, optimised_jobs, plan.optimised_position(id));
+}
 
 const Blob* CompiledDomain::companion_blob(std::size_t index) const { return blob_of(*this, companion_jobs, index); }
 
-const Blob* CompiledDomain::raw_vertex_blob(std::uint32_t id) const { return blob_of(*this, raw_vertex_jobs, id); }
+const Blob* CompiledDomain::raw_vertex_blob(std::uint32_t id) const {
+  return blob_of(*this, raw_vertex_jobs, plan.raw_position(id));
+}
 
 const Blob* CompiledDomain::optimised_vertex_blob(std::uint32_t id) const {
-  return blob_of(*this, optimised_vertex_jobs, id);
+  return blob_of(*this, optimised_vertex_jobs, plan.optimised_position(id));
 }
 
 }  // namespace shadergen

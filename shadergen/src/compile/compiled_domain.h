@@ -65,8 +65,8 @@ struct CompiledDomain {
   DomainSpec spec;
   PermutationPlan plan;
   std::vector<CompileJob> jobs;
-  // Index into `jobs` by raw ID, optimised ID and companion index (-1: none, e.g. pruned),
-  // so looking a permutation up is constant time even with 65,536 raw IDs.
+  // Index into `jobs` by position in plan.raw and plan.optimised (the ID itself when the domain
+  // is enumerated) and by companion index; -1: none, e.g. pruned.
   std::vector<int> raw_jobs, optimised_jobs, companion_jobs;
   std::vector<int> raw_vertex_jobs, optimised_vertex_jobs;  // "program" form only
   std::vector<SourceRecord> sources;

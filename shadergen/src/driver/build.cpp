@@ -1,5 +1,6 @@
 #include "shadergen/build.h"
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
@@ -18,6 +19,7 @@
 #include "shadergen/permutations.h"
 #include "spec/defines.h"
 #include "spec/load_spec.h"
+#include "spec/variants_file.h"
 
 namespace shadergen {
 namespace {
@@ -104,10 +106,19 @@ Status apply_target_env(DomainSpec& spec, const std::string& argument) {
 
 // The settings that the spec's bytes do not hold but that decide the content keys, for the
 // input-set key.
-std::string preprocessing_settings(const DomainSpec& spec) {
+// The variants file is an input like the spec: its digest is part of the key.
+std::string preprocessing_settings(const DomainSpec& spec, const std::string& variants_digest) {
   std::string text = "target " + std::string(target_env_name(spec.target_env)) + "\ndefines";
   for (const std::string& define : spec.defines) text += "\n" + define;
+  if (!variants_digest.empty()) text += "\nvariants " + variants_digest;
   return text;
+}
+
+// The depfile names the variants file too, so that editing it rebuilds.
+void add_dependency(std::vector<std::filesystem::path>& dependencies, const std::filesystem::path& file) {
+  if (file.empty()) return;
+  auto at = std::lower_bound(dependencies.begin(), dependencies.end(), file);
+  if (at == dependencies.end() || *at != file) dependencies.insert(at, file);
 }
 
 BuildSummary summarise(const CompiledDomain& d) {
@@ -195,6 +206,8 @@ Result<BuildSummary> build(const BuildOptions& given) {
   if (Status ok = apply_command_line_defines(*spec, options.defines); !ok) return std::move(ok).take_errors();
   if (Status ok = apply_target_env(*spec, options.target_env); !ok) return std::move(ok).take_errors();
   spec->strip_debug = spec->strip_debug || options.strip_debug;
+  auto variants_digest = read_variants_file(*spec, options.variants);
+  if (!variants_digest) return std::move(variants_digest).take_errors();
   auto plan = expand(*spec);
   if (!plan) return std::move(plan).take_errors();
   warn_unreachable(options, *plan);
@@ -219,11 +232,12 @@ Result<BuildSummary> build(const BuildOptions& given) {
   compile_options.shards = options.shards;
   if (inputs.enabled()) {
     compile_options.inputs = &inputs;
-    compile_options.input_key =
-        input_set_key(current_cache_key_parts(), options.spec_path, loaded->digest, preprocessing_settings(*spec));
+    compile_options.input_key = input_set_key(current_cache_key_parts(), options.spec_path, loaded->digest,
+                                              preprocessing_settings(*spec, *variants_digest));
   }
   auto domain = compile_domain(std::move(spec).value(), std::move(plan).value(), compile_options);
   if (!domain) return std::move(domain).take_errors();
+  add_dependency(domain->dependencies, domain->spec.variants_path);
   phases.insert(phases.end(), domain->phases.begin(), domain->phases.end());
   if (remote) domain->remote = remote->stats();
   clock.restart();

@@ -51,7 +51,7 @@ void value_enums(std::ostringstream& h, const std::vector<const RawFeature*>& fe
 
 // The Features aggregate (members in spec order, so designated initializers follow the spec)
 // and raw_id(), the one place that knows the bit layout.
-void features_struct(std::ostringstream& h, const std::vector<const RawFeature*>& features) {
+void features_struct(std::ostringstream& h, const std::vector<const RawFeature*>& features, bool inline_tables) {
   h << "// A raw ID by its features: raw_id({.FEATURE = true, .VALUED = VALUED_value::_2}).\nstruct Features {\n";
   for (const RawFeature* f : features) {
     if (f->valued())
@@ -61,8 +61,9 @@ void features_struct(std::ostringstream& h, const std::vector<const RawFeature*>
       h << "  bool " << f->name << " = false;  // #define " << f->define << "\n";
   }
   h << "};\n\n// The raw ID of `features`: each boolean's bit, each valued feature's value index in its field;\n"
-       "// nullopt when a value is none of its enum's (a cast) or the combination is pruned.\n"
-       "constexpr std::optional<std::uint32_t> raw_id([[maybe_unused]] const Features& features) {\n"
+       "// nullopt when a value is none of its enum's (a cast) or the combination is pruned or not built.\n"
+    << (inline_tables ? "constexpr" : "inline")
+    << " std::optional<std::uint32_t> raw_id([[maybe_unused]] const Features& features) {\n"
        "  std::uint32_t id = 0;\n";
   for (const RawFeature* f : features) {
     if (!f->valued()) {
@@ -106,9 +107,26 @@ void feature_tables(std::ostringstream& h, const CompiledDomain& d, const std::v
     << "  return shadergen::find_raw_id(kFeatures, text);\n}\n\n";
 }
 
+// Up to this many raw IDs the lookup table and the pruned flags sit in the header, constexpr for
+// every includer; past it (or with a variants file) they sit in the generated source, so that a
+// translation unit including the header of a 2^20-entry domain still compiles in moments.
+constexpr std::size_t kHeaderTableLimit = std::size_t{1} << 16;
+
+bool tables_in_header(const CompiledDomain& d) { return !d.spec.listed() && d.plan.raw.size() <= kHeaderTableLimit; }
+
+std::string_view table_type(const DomainSpec& spec) { return spec.wide_table() ? "std::uint16_t" : "std::uint8_t"; }
+
 // The checked lookups by raw ID: an ID outside the domain, or pruned, is "none", so an ID from
 // outside (a classifier, a file, a cast) never indexes a table unchecked.
 void raw_id_lookups(std::ostringstream& h, const CompiledDomain& d) {
+  if (!tables_in_header(d)) {
+    h << "// True when `raw_id` is a raw ID of this domain that is built (not pruned"
+      << (d.spec.listed() ? ", listed in the variants file" : "") << "): the IDs every lookup accepts.\n"
+      << "bool is_valid_raw_id(std::uint32_t raw_id);\n\n"
+      << "// The optimised ID `raw_id` is drawn with; nullopt when is_valid_raw_id(raw_id) is false.\n"
+      << "std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id);\n\n";
+    return;
+  }
   h << "// True when `raw_id` is a raw ID of this domain that is not pruned: the IDs every lookup accepts.\n"
        "constexpr bool is_valid_raw_id(std::uint32_t raw_id) { return raw_id < kRawCount && !kRawPruned[raw_id]; }\n\n";
   if (d.spec.collapsed)
@@ -126,22 +144,16 @@ std::string typed_features(const CompiledDomain& d) {
   std::ostringstream h;
   std::vector<const RawFeature*> features = in_spec_order(d.spec);
   value_enums(h, features);
-  features_struct(h, features);
+  features_struct(h, features, tables_in_header(d));
   feature_tables(h, d, features);
   return h.str();
 }
 
-std::string header_text(const CompiledDomain& d, const std::string& ns) {
-  std::ostringstream h;
-  h << banner(d)
-    << "#pragma once\n\n#include <array>\n#include <cstdint>\n#include <optional>\n#include <string_view>\n\n"
-       "#include <shadergen/registry.h>\n\n"
-    << open_namespace(ns) << "\n";
-  h << "inline constexpr std::uint32_t kRawCount = " << d.plan.raw.size() << ";\n";
-  h << "inline constexpr std::uint32_t kOptimisedCount = " << d.plan.optimised.size() << ";\n\n";
+// The table and the pruned flags, constexpr in the header (small enumerated domains).
+void header_tables(std::ostringstream& h, const CompiledDomain& d) {
   if (d.spec.collapsed) {
     h << "// The raw -> optimised lookup table, indexed by raw ID, unchecked: optimised_id() checks the ID.\n";
-    h << "inline constexpr std::array<std::uint8_t, kRawCount> kRawToOptimised = {{";
+    h << "inline constexpr std::array<" << table_type(d.spec) << ", kRawCount> kRawToOptimised = {{";
     for (std::size_t i = 0; i < d.plan.raw.size(); ++i)
       h << (i % 16 ? " " : "\n    ") << d.plan.raw[i].optimised << ",";
     h << "\n}};\n\n";
@@ -154,8 +166,12 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
   h << "inline constexpr std::array<bool, kRawCount> kRawPruned = {{";
   for (std::size_t i = 0; i < d.plan.raw.size(); ++i)
     h << (i % 16 ? " " : "\n    ") << (d.plan.raw[i].pruned ? "true," : "false,");
-  h << "\n}};\n\nnamespace raw_bit {\n";
-  for (const RawFeature& f : d.spec.raw_features) {
+  h << "\n}};\n\n";
+}
+
+void bit_constants(std::ostringstream& h, const DomainSpec& spec) {
+  h << "namespace raw_bit {\n";
+  for (const RawFeature& f : spec.raw_features) {
     if (!f.valued()) {
       h << "inline constexpr std::uint32_t " << f.name << " = 1u << " << f.bit << ";  // #define " << f.define << "\n";
       continue;
@@ -168,14 +184,34 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
     h << "inline constexpr std::uint32_t " << f.name << "_mask = 0x" << std::hex << f.mask() << std::dec << "u;\n";
   }
   h << "}  // namespace raw_bit\n\nnamespace optimised_bit {\n";
-  for (const OptimisedBit& b : d.spec.optimised_bits)
+  for (const OptimisedBit& b : spec.optimised_bits)
     h << "inline constexpr std::uint32_t " << b.name << " = 1u << " << b.bit << ";\n";
   h << "}  // namespace optimised_bit\n\n";
+}
+
+std::string header_text(const CompiledDomain& d, const std::string& ns) {
+  std::ostringstream h;
+  h << banner(d)
+    << "#pragma once\n\n#include <array>\n#include <cstdint>\n#include <optional>\n#include <string_view>\n\n"
+       "#include <shadergen/registry.h>\n\n"
+    << open_namespace(ns) << "\n";
+  h << "inline constexpr std::uint32_t kRawBits = " << d.spec.raw_bits() << ";\n";
+  if (d.spec.listed())
+    h << "// The raw IDs the variants file lists (registry().raw holds them, ascending); the others are not built.\n";
+  h << "inline constexpr std::uint32_t kRawCount = " << d.plan.raw.size() << ";\n";
+  h << "inline constexpr std::uint32_t kOptimisedCount = " << d.plan.optimised.size() << ";\n\n";
+  if (tables_in_header(d))
+    header_tables(h, d);
+  else
+    h << "// The lookup table (" << d.plan.raw.size() << " entries) is in the generated source: in this header it\n"
+      << "// would cost every includer its compile time. Look raw IDs up with is_valid_raw_id(), optimised_id()\n"
+      << "// or registry().\n\n";
+  bit_constants(h, d.spec);
   raw_id_lookups(h, d);
   h << typed_features(d);
-  if (d.spec.collapsed) {
+  if (d.spec.collapsed && tables_in_header(d)) {
     h << "// The table is total: every raw ID names an optimised permutation that exists.\n";
-    h << "static_assert([] {\n    for (std::uint8_t id : kRawToOptimised)\n        if (id >= kOptimisedCount) "
+    h << "static_assert([] {\n    for (auto id : kRawToOptimised)\n        if (id >= kOptimisedCount) "
          "return false;\n    return true;\n}());\n\n";
   }
   h << "// The permutations, their SPIR-V and reflection. Defined in the generated source.\n";
@@ -193,7 +229,9 @@ class SourceWriter {
   explicit SourceWriter(const CompiledDomain& d) : d_(d) {}
 
   std::string run(const std::string& header_name, const std::string& ns) {
-    out_ << banner(d_) << "#include " << literal(header_name) << "\n\n#include <span>\n#include <string_view>\n\n"
+    out_ << banner(d_) << "#include " << literal(header_name) << "\n\n"
+         << (tables_in_header(d_) ? "" : "#include <algorithm>\n#include <cstddef>\n")
+         << "#include <span>\n#include <string_view>\n\n"
          << open_namespace(ns) << "namespace {\n\n";
     // The words are most of the bytes: they go straight into one string, not through the stream.
     std::string text = out_.str();
@@ -201,9 +239,12 @@ class SourceWriter {
     words(text);
     reflections();
     names_and_defines();
+    source_tables();
     permutations();
     registry();
-    out_ << "}  // namespace\n\nconst shadergen::Registry& registry() { return kRegistry; }\n\n" << close_namespace(ns);
+    out_ << "}  // namespace\n\nconst shadergen::Registry& registry() { return kRegistry; }\n\n";
+    source_lookups();
+    out_ << close_namespace(ns);
     text += out_.str();
     return text;
   }
@@ -308,7 +349,7 @@ class SourceWriter {
   }
 
   void names_and_defines() {
-    for (const RawPermutation& raw : d_.plan.raw) pool_define_list(raw.defines);
+    for (const RawPermutation& raw : d_.plan.raw) pool_define_list(raw_defines(d_.spec, raw.id));
     for (const OptimisedPermutation& o : d_.plan.optimised) pool_define_list(o.defines);
     for (const CompanionSpec& c : d_.spec.companions) pool_define_list(c.defines);
     out_ << "constexpr std::array<std::string_view, " << defines_pool_.size() << "> kDefinePool{{";
@@ -321,12 +362,14 @@ class SourceWriter {
     out_ << "}};\n\n";
   }
 
-  std::string permutation(std::uint32_t id, const std::vector<std::string>& defines, const Blob* blob,
+  // `pruned` is the raw ID's own flag: under "compile": "optimised" a raw permutation has no
+  // blob and is still not pruned, so the lookups keep drawing it through the table.
+  std::string permutation(std::uint32_t id, const std::vector<std::string>& defines, bool pruned, const Blob* blob,
                           const Blob* vertex = nullptr) {
     std::ostringstream p;
     p << "{" << id << ", std::span<const std::string_view>(kDefinePool.data() + " << pool_define_list(defines) << ", "
       << defines.size() << "), ";
-    if (!blob) return p.str() + "true, {}, \"\", {}}";
+    if (!blob) return p.str() + (pruned ? "true" : "false") + ", {}, \"\", {}}";
     std::size_t index = static_cast<std::size_t>(blob - d_.blobs.data());
     p << "false, std::span<const std::uint32_t>(kWords + " << word_offset_[index] << ", " << blob->words.size() << "), "
       << literal(blob->hash) << ", kReflections[" << index << "]";
@@ -343,28 +386,106 @@ class SourceWriter {
     out_ << "constexpr std::array<shadergen::Permutation, kRawCount> kRaw{{\n";
     for (const RawPermutation& raw : d_.plan.raw)
       out_ << "    "
-           << permutation(raw.id, raw.defines, raw.pruned ? nullptr : d_.raw_blob(raw.id),
+           << permutation(raw.id, raw_defines(d_.spec, raw.id), raw.pruned, raw.pruned ? nullptr : d_.raw_blob(raw.id),
                           raw.pruned ? nullptr : d_.raw_vertex_blob(raw.id))
            << ",\n";
     out_ << "}};\n\nconstexpr std::array<shadergen::Permutation, kOptimisedCount> kOptimised{{\n";
     for (const OptimisedPermutation& o : d_.plan.optimised)
-      out_ << "    " << permutation(o.id, o.defines, d_.optimised_blob(o.id), d_.optimised_vertex_blob(o.id)) << ",\n";
+      out_ << "    " << permutation(o.id, o.defines, false, d_.optimised_blob(o.id), d_.optimised_vertex_blob(o.id))
+           << ",\n";
     out_ << "}};\n\nconstexpr std::array<shadergen::CompanionShader, " << d_.spec.companions.size()
          << "> kCompanions{{\n";
     for (std::size_t i = 0; i < d_.spec.companions.size(); ++i) {
       const CompanionSpec& c = d_.spec.companions[i];
       out_ << "    {" << literal(c.name) << ", " << stage_enum(c.file.stage) << ",\n     "
-           << permutation(static_cast<std::uint32_t>(i), c.defines, d_.companion_blob(i)) << "},\n";
+           << permutation(static_cast<std::uint32_t>(i), c.defines, false, d_.companion_blob(i)) << "},\n";
     }
     out_ << "}};\n\n";
   }
 
   void registry() {
+    const bool narrow = d_.spec.collapsed && !d_.spec.wide_table(), wide = d_.spec.collapsed && d_.spec.wide_table();
     out_ << "constexpr shadergen::Registry kRegistry{\n    " << literal(d_.spec.name) << ",\n    "
          << stage_enum(d_.spec.uber.stage) << ",\n    kRawFeatureNames,\n    kOptimisedBitNames,\n    "
-         << (d_.spec.collapsed ? "kRawToOptimised" : "{}")
+         << (narrow ? "kRawToOptimised" : "{}")
          << ",\n    kRaw,\n    kOptimised,\n    kCompanions,\n    kLayoutBindings,\n    kPushConstants,\n    "
-         << (d_.spec.layout == LayoutMode::per_permutation ? "true" : "false") << ",\n};\n\n";
+         << (d_.spec.layout == LayoutMode::per_permutation ? "true" : "false") << ",\n";
+    if (wide) out_ << "    kRawToOptimised,\n";
+    out_ << "};\n\n";
+  }
+
+  // A large or listed domain's table, pruned flags (or listed IDs) and their totality check:
+  // here rather than in the header (see kHeaderTableLimit).
+  void source_tables() {
+    if (tables_in_header(d_)) return;
+    const bool listed = d_.spec.listed();
+    if (d_.spec.collapsed) {
+      out_ << "// The raw -> optimised lookup table: entry i belongs to kRaw[i].\n";
+      number_array(std::string("std::array<") + std::string(table_type(d_.spec)) + ", kRawCount> kRawToOptimised",
+                   d_.plan.raw, [](const RawPermutation& r) { return std::to_string(r.optimised); });
+    }
+    if (listed) {
+      out_ << "// The raw IDs the variants file lists, ascending: entry i is kRaw[i]'s ID.\n";
+      number_array("std::array<std::uint32_t, kRawCount> kRawIds", d_.plan.raw,
+                   [](const RawPermutation& r) { return std::to_string(r.id) + "u"; });
+      out_ << "// The optimised IDs built, ascending: entry i is kOptimised[i]'s ID.\n";
+      number_array("std::array<std::uint32_t, kOptimisedCount> kOptimisedIds", d_.plan.optimised,
+                   [](const OptimisedPermutation& o) { return std::to_string(o.id) + "u"; });
+    } else {
+      out_ << "// Impossible raw IDs: never produced by a correct classifier, never compiled.\n";
+      number_array("std::array<bool, kRawCount> kRawPruned", d_.plan.raw,
+                   [](const RawPermutation& r) { return std::string(r.pruned ? "true" : "false"); });
+    }
+    position_lookups(listed);
+    totality_checks(listed);
+  }
+
+  template <class List, class Text>
+  void number_array(const std::string& declaration, const List& list, Text text) {
+    out_ << "constexpr " << declaration << " = {{";
+    for (std::size_t i = 0; i < list.size(); ++i) out_ << (i % 16 ? " " : "\n    ") << text(list[i]) << ",";
+    out_ << "\n}};\n\n";
+  }
+
+  void position_lookups(bool listed) {
+    out_ << "// Where raw ID `raw_id` is in kRaw, or nullopt when the domain does not build it.\n"
+            "constexpr std::optional<std::size_t> raw_position(std::uint32_t raw_id) {\n";
+    if (listed)
+      out_ << "  const auto* at = std::lower_bound(kRawIds.begin(), kRawIds.end(), raw_id);\n"
+              "  if (at == kRawIds.end() || *at != raw_id) return std::nullopt;\n"
+              "  return static_cast<std::size_t>(at - kRawIds.begin());\n}\n\n"
+              "constexpr bool is_built_optimised(std::uint32_t id) {\n"
+              "  return std::binary_search(kOptimisedIds.begin(), kOptimisedIds.end(), id);\n}\n\n";
+    else
+      out_ << "  if (raw_id >= kRawCount || kRawPruned[raw_id]) return std::nullopt;\n  return raw_id;\n}\n\n"
+              "constexpr bool is_built_optimised(std::uint32_t id) { return id < kOptimisedCount; }\n\n";
+  }
+
+  // One constant evaluation may run at most 262,144 iterations of a loop (GCC's
+  // -fconstexpr-loop-limit), so the table is checked in slices of 2^17 entries.
+  void totality_checks(bool listed) {
+    if (!d_.spec.collapsed && !listed) return;
+    out_ << "// The table is total: every entry names an optimised permutation that is built"
+         << (listed ? ", and the listed IDs ascend" : "") << ".\n"
+         << "constexpr bool table_is_total(std::size_t begin, std::size_t end) {\n"
+         << "  for (std::size_t i = begin; i < end && i < kRawCount; ++i) {\n";
+    if (d_.spec.collapsed) out_ << "    if (!is_built_optimised(kRawToOptimised[i])) return false;\n";
+    if (listed) out_ << "    if (i > 0 && kRawIds[i - 1] >= kRawIds[i]) return false;\n";
+    out_ << "  }\n  return true;\n}\n";
+    constexpr std::size_t kSlice = std::size_t{1} << 17;
+    for (std::size_t begin = 0; begin < d_.plan.raw.size(); begin += kSlice)
+      out_ << "static_assert(table_is_total(" << begin << ", " << begin + kSlice << "));\n";
+    out_ << "\n";
+  }
+
+  // The checked lookups the header declares for a large or listed domain.
+  void source_lookups() {
+    if (tables_in_header(d_)) return;
+    out_ << "bool is_valid_raw_id(std::uint32_t raw_id) { return raw_position(raw_id).has_value(); }\n\n"
+            "std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
+            "  const std::optional<std::size_t> at = raw_position(raw_id);\n"
+            "  if (!at) return std::nullopt;\n"
+         << (d_.spec.collapsed ? "  return kRawToOptimised[*at];\n}\n\n" : "  return raw_id;\n}\n\n");
   }
 
   const CompiledDomain& d_;

@@ -87,7 +87,8 @@ void add_features(Json& manifest, const DomainSpec& spec) {
 Json raw_json(const CompiledDomain& d) {
   Json out = Json::array();
   for (const RawPermutation& raw : d.plan.raw) {
-    Json& entry = out.emplace_back(Json{{"id", raw.id}, {"defines", raw.defines}, {"pruned", raw.pruned}});
+    Json& entry =
+        out.emplace_back(Json{{"id", raw.id}, {"defines", raw_defines(d.spec, raw.id)}, {"pruned", raw.pruned}});
     if (d.spec.collapsed) entry["optimised"] = raw.optimised;
     add_blob_fields(entry, raw.pruned ? nullptr : d.raw_blob(raw.id), d.spec);
     add_vertex_half(entry, raw.pruned ? nullptr : d.raw_vertex_blob(raw.id));
@@ -211,6 +212,12 @@ std::string write_manifest(const CompiledDomain& d) {
   m["layout"] = d.spec.layout == LayoutMode::shared ? "shared" : "per_permutation";
   // Only when not the default, so the manifests of "all" domains stay as they were.
   if (d.spec.compile == CompileSet::optimised) m["compile"] = "optimised";
+  // Only with a variants file: then "raw" and "optimised" hold the listed IDs and the ones they
+  // map to, not every ID of the 2^raw_bits.
+  if (d.spec.listed()) {
+    m["raw_bits"] = d.spec.raw_bits();
+    m["variants_file"] = d.spec.variants_path.filename().string();
+  }
   // The fixed defines every shader was compiled with (spec, --define, CMake DEFINES), in order.
   m["defines"] = d.spec.defines;
   add_features(m, d.spec);

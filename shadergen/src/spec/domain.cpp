@@ -167,9 +167,10 @@ class DomainBuilder {
       reader_.error(root, "spec", "the spec must be a JSON object");
       return std::move(spec_);
     }
-    reader_.only_keys(root, "spec",
-                      {"format", "name", "description", "uber_shader", "program", "include_dirs", "target_env",
-                       "layout", "strip_debug", "defines", "companions", "raw", "optimised", "compile"});
+    reader_.only_keys(
+        root, "spec",
+        {"format", "name", "description", "uber_shader", "program", "include_dirs", "target_env", "layout",
+         "strip_debug", "defines", "companions", "raw", "optimised", "compile", "variants_file"});
     read_header(root);
     read_permuted_shaders(root);
     read_include_dirs(root);
@@ -186,6 +187,7 @@ class DomainBuilder {
     if (const Value* optimised = reader_.member(root, "spec", "optimised", Type::object, false))
       read_optimised(*optimised);
     read_compile_set(root);
+    read_variants_file_key(root);
     return std::move(spec_);
   }
 
@@ -285,6 +287,18 @@ class DomainBuilder {
     } else if (compile->string != "all") {
       reader_.error(*compile, "compile", "unknown value \"" + compile->string + "\" (expected all or optimised)");
     }
+  }
+
+  // Only the path: the file is read once the command line had its say (build --variants).
+  void read_variants_file_key(const Value& root) {
+    const Value* file = reader_.member(root, "spec", "variants_file", Type::string, false);
+    if (!file) return;
+    if (file->string.empty()) {
+      reader_.error(*file, "variants_file", "the path is empty");
+      return;
+    }
+    spec_.variants_path = (base_ / file->string).lexically_normal();
+    spec_.variants_line = file->line;
   }
 
   void read_layout(const Value& root) {

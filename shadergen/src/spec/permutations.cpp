@@ -1,5 +1,6 @@
 #include "shadergen/permutations.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -32,19 +33,6 @@ std::string describe_raw(const DomainSpec& spec, std::uint32_t raw_id) {
 
 namespace {
 
-// Boolean features set: "DEFINE"; valued features: "DEFINE=value" (none when the field holds
-// no value, which only pruned IDs do).
-std::vector<std::string> defines_for(const DomainSpec& spec, std::uint32_t raw_bits) {
-  std::vector<std::string> defines;
-  for (const RawFeature& feature : spec.raw_features) {
-    std::uint32_t index = feature.index_in(raw_bits);
-    if (!feature.valued() && index) defines.push_back(feature.define);
-    if (feature.valued() && index < feature.values.size())
-      defines.push_back(feature.define + "=" + feature.values[index]);
-  }
-  return defines;
-}
-
 int first_unvalued_feature(const DomainSpec& spec, std::uint32_t raw_id) {
   for (std::size_t i = 0; i < spec.raw_features.size(); ++i) {
     const RawFeature& f = spec.raw_features[i];
@@ -57,6 +45,16 @@ int first_impossible_rule(const DomainSpec& spec, std::uint32_t raw_id) {
   for (std::size_t i = 0; i < spec.impossible.size(); ++i)
     if (spec.impossible[i].when.expression.evaluate(raw_id)) return static_cast<int>(i);
   return -1;
+}
+
+RawPermutation classify(const DomainSpec& spec, std::uint32_t id) {
+  RawPermutation raw;
+  raw.id = id;
+  raw.pruned_by = first_impossible_rule(spec, id);
+  raw.unvalued = first_unvalued_feature(spec, id);
+  raw.pruned = raw.pruned_by >= 0 || raw.unvalued >= 0;
+  raw.optimised = spec.collapsed ? apply_rules(spec, id) : id;
+  return raw;
 }
 
 // The raw features an optimised ID is compiled with: the union over matching variants. Two
@@ -74,50 +72,121 @@ std::uint32_t raw_features_for_optimised(const DomainSpec& spec, std::uint32_t o
   return raw_bits;
 }
 
+// The optimised permutation `id`, or the error that forbids building it.
+Result<OptimisedPermutation> optimised_permutation(const DomainSpec& spec, std::uint32_t id) {
+  OptimisedPermutation optimised;
+  optimised.id = id;
+  std::uint32_t conflict = 0;
+  optimised.raw_equivalent = raw_features_for_optimised(spec, id, conflict);
+  optimised.defines = raw_defines(spec, optimised.raw_equivalent);
+  auto names = spec.optimised_bit_names();
+  if (conflict) {
+    std::string features;
+    for (const RawFeature& f : spec.raw_features)
+      if (f.mask() & conflict) features += (features.empty() ? "" : ", ") + f.name;
+    return make_error(spec.spec_path.string(), 0,
+                      "optimised ID " + std::to_string(id) + " (" + describe_bits(names, id) +
+                          ") matches variants that give " + features + " different values");
+  }
+  if (int rule_index = first_impossible_rule(spec, optimised.raw_equivalent); rule_index >= 0) {
+    const ImpossibleSet& rule = spec.impossible[static_cast<std::size_t>(rule_index)];
+    return make_error(spec.spec_path.string(), rule.when.line,
+                      "optimised ID " + std::to_string(id) + " (" + describe_bits(names, id) +
+                          ") is compiled with raw features " + describe_raw(spec, optimised.raw_equivalent) +
+                          ", which the impossible rule \"" + rule.when.text + "\" prunes");
+  }
+  return optimised;
+}
+
+// The raw IDs to expand: all of them, or the listed ones.
+Result<std::vector<RawPermutation>> raw_permutations(const DomainSpec& spec) {
+  std::vector<RawPermutation> raw;
+  if (spec.listed()) {
+    raw.reserve(spec.listed_raw_ids.size());
+    for (std::uint32_t id : spec.listed_raw_ids) raw.push_back(classify(spec, id));
+    return raw;
+  }
+  if (spec.raw_bits() > kMaxEnumeratedRawBits)
+    return make_error(spec.spec_path.string(), 0,
+                      "the raw features take " + std::to_string(spec.raw_bits()) + " bits, " +
+                          std::to_string(spec.raw_space()) + " raw IDs: past 2^" +
+                          std::to_string(kMaxEnumeratedRawBits) + " (" +
+                          std::to_string(std::uint64_t{1} << kMaxEnumeratedRawBits) +
+                          ") raw IDs a domain lists the combinations it builds in a variants file (spec key "
+                          "\"variants_file\", or build --variants FILE)");
+  raw.reserve(static_cast<std::size_t>(spec.raw_space()));
+  for (std::uint64_t id = 0; id < spec.raw_space(); ++id) raw.push_back(classify(spec, static_cast<std::uint32_t>(id)));
+  return raw;
+}
+
+// The optimised IDs to build: every one when enumerated, else those a listed raw ID maps to.
+std::vector<std::uint32_t> optimised_ids(const DomainSpec& spec, const std::vector<RawPermutation>& raw) {
+  std::vector<std::uint32_t> ids;
+  if (!spec.listed()) {
+    for (std::uint32_t id = 0; id < spec.optimised_count(); ++id) ids.push_back(id);
+    return ids;
+  }
+  if (!spec.collapsed) return ids;
+  for (const RawPermutation& r : raw)
+    if (!r.pruned) ids.push_back(r.optimised);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+template <class Permutation>
+std::optional<std::size_t> position_in(const std::vector<Permutation>& list, std::uint32_t id) {
+  if (id < list.size() && list[id].id == id) return id;  // enumerated: the ID is the position
+  auto it = std::lower_bound(list.begin(), list.end(), id,
+                             [](const Permutation& p, std::uint32_t wanted) { return p.id < wanted; });
+  if (it == list.end() || it->id != id) return std::nullopt;
+  return static_cast<std::size_t>(it - list.begin());
+}
+
 }  // namespace
+
+std::vector<std::string> raw_defines(const DomainSpec& spec, std::uint32_t raw_id) {
+  std::vector<std::string> defines;
+  for (const RawFeature& feature : spec.raw_features) {
+    std::uint32_t index = feature.index_in(raw_id);
+    if (!feature.valued() && index) defines.push_back(feature.define);
+    if (feature.valued() && index < feature.values.size())
+      defines.push_back(feature.define + "=" + feature.values[index]);
+  }
+  return defines;
+}
+
+std::optional<std::size_t> PermutationPlan::raw_position(std::uint32_t id) const { return position_in(raw, id); }
+std::optional<std::size_t> PermutationPlan::optimised_position(std::uint32_t id) const {
+  return position_in(optimised, id);
+}
+const RawPermutation* PermutationPlan::find_raw(std::uint32_t id) const {
+  std::optional<std::size_t> at = raw_position(id);
+  return at ? &raw[*at] : nullptr;
+}
+const OptimisedPermutation* PermutationPlan::find_optimised(std::uint32_t id) const {
+  std::optional<std::size_t> at = optimised_position(id);
+  return at ? &optimised[*at] : nullptr;
+}
 
 Result<PermutationPlan> expand(const DomainSpec& spec) {
   PermutationPlan plan;
-  for (std::uint32_t id = 0; id < spec.raw_count(); ++id) {
-    RawPermutation raw;
-    raw.id = id;
-    raw.defines = defines_for(spec, id);
-    raw.pruned_by = first_impossible_rule(spec, id);
-    raw.unvalued = first_unvalued_feature(spec, id);
-    raw.pruned = raw.pruned_by >= 0 || raw.unvalued >= 0;
-    raw.optimised = spec.collapsed ? apply_rules(spec, id) : id;
-    plan.raw.push_back(std::move(raw));
-  }
+  auto raw = raw_permutations(spec);
+  if (!raw) return std::move(raw).take_errors();
+  plan.raw = std::move(raw).value();
   Diagnostics errors;
-  auto optimised_names = spec.optimised_bit_names();
-  for (std::uint32_t id = 0; id < spec.optimised_count(); ++id) {
-    OptimisedPermutation optimised;
-    optimised.id = id;
-    std::uint32_t conflict = 0;
-    optimised.raw_equivalent = raw_features_for_optimised(spec, id, conflict);
-    optimised.defines = defines_for(spec, optimised.raw_equivalent);
-    if (conflict) {
-      std::string names;
-      for (const RawFeature& f : spec.raw_features)
-        if (f.mask() & conflict) names += (names.empty() ? "" : ", ") + f.name;
-      errors.push_back(make_error(spec.spec_path.string(), 0,
-                                  "optimised ID " + std::to_string(id) + " (" + describe_bits(optimised_names, id) +
-                                      ") matches variants that give " + names + " different values"));
-    } else if (plan.raw[optimised.raw_equivalent].pruned_by >= 0) {
-      const ImpossibleSet& rule =
-          spec.impossible[static_cast<std::size_t>(plan.raw[optimised.raw_equivalent].pruned_by)];
-      errors.push_back(make_error(spec.spec_path.string(), rule.when.line,
-                                  "optimised ID " + std::to_string(id) + " (" + describe_bits(optimised_names, id) +
-                                      ") is compiled with raw features " +
-                                      describe_raw(spec, optimised.raw_equivalent) + ", which the impossible rule \"" +
-                                      rule.when.text + "\" prunes"));
+  for (std::uint32_t id : optimised_ids(spec, plan.raw)) {
+    auto optimised = optimised_permutation(spec, id);
+    if (!optimised) {
+      if (errors.size() < kMaxSpecErrors) errors.push_back(optimised.errors().front());
+      continue;
     }
-    plan.optimised.push_back(std::move(optimised));
+    plan.optimised.push_back(std::move(optimised).value());
   }
-  if (spec.collapsed)
-    for (const RawPermutation& raw : plan.raw)
-      if (!raw.pruned) ++plan.optimised[raw.optimised].raw_mapped;
   if (!errors.empty()) return errors;
+  if (spec.collapsed)
+    for (const RawPermutation& r : plan.raw)
+      if (!r.pruned) ++plan.optimised[*plan.optimised_position(r.optimised)].raw_mapped;
   return plan;
 }
 
@@ -146,18 +215,27 @@ std::string raw_bit_legend(const DomainSpec& spec) {
 
 }  // namespace
 
-std::string format_lut(const DomainSpec& spec, const PermutationPlan& plan) {
-  std::ostringstream out;
-  auto optimised_names = spec.optimised_bit_names();
+namespace {
+
+// "Domain X: 128 raw IDs -> 32 optimised IDs", with the legend of the bits.
+void lut_heading(std::ostringstream& out, const DomainSpec& spec, const PermutationPlan& plan) {
+  out << "Domain " << spec.name << ": " << spec.raw_space() << " raw IDs";
+  if (spec.listed())
+    out << " (" << spec.raw_bits() << " bits), " << plan.raw.size() << " listed in " << spec.variants_path.string();
   if (spec.collapsed)
-    out << "Domain " << spec.name << ": " << spec.raw_count() << " raw IDs -> " << spec.optimised_count()
-        << " optimised IDs\n\nraw bits:       " << raw_bit_legend(spec) << "\noptimised bits: ";
+    out << " -> " << spec.optimised_count() << " optimised IDs" << (spec.listed() ? ", " : "")
+        << (spec.listed() ? std::to_string(plan.optimised.size()) + " built" : "");
   else
-    out << "Domain " << spec.name << ": " << spec.raw_count()
-        << " raw IDs, not collapsed (no \"optimised\" section): every compiled raw ID is its own permutation\n\n"
-           "raw bits:       "
-        << raw_bit_legend(spec);
+    out << ", not collapsed (no \"optimised\" section): every compiled raw ID is its own permutation";
+  out << "\n\nraw bits:       " << raw_bit_legend(spec);
+  if (!spec.collapsed) return;
+  auto optimised_names = spec.optimised_bit_names();
+  out << "\noptimised bits: ";
   for (std::size_t i = 0; i < optimised_names.size(); ++i) out << (i ? ", " : "") << i << "=" << optimised_names[i];
+}
+
+// Every raw ID, 16 to a row.
+void lut_grid(std::ostringstream& out, const DomainSpec& spec, const PermutationPlan& plan) {
   out << "\n\nRow = raw ID / 16, column = raw ID % 16; each cell is the "
       << (spec.collapsed ? "optimised ID" : "permutation (the raw ID itself)") << ", '--' = pruned.\n\n      ";
   for (int c = 0; c < 16; ++c) {
@@ -166,13 +244,13 @@ std::string format_lut(const DomainSpec& spec, const PermutationPlan& plan) {
     out << cell;
   }
   out << '\n';
-  for (std::uint32_t row = 0; row * 16 < spec.raw_count(); ++row) {
-    char label[16];
-    std::snprintf(label, sizeof label, "%4u: ", row * 16);
+  for (std::size_t row = 0; row * 16 < plan.raw.size(); ++row) {
+    char label[32];
+    std::snprintf(label, sizeof label, "%4zu: ", row * 16);
     out << label;
-    for (std::uint32_t c = 0; c < 16 && row * 16 + c < spec.raw_count(); ++c) {
+    for (std::size_t c = 0; c < 16 && row * 16 + c < plan.raw.size(); ++c) {
       const RawPermutation& raw = plan.raw[row * 16 + c];
-      char cell[8];
+      char cell[16];
       if (raw.pruned)
         std::snprintf(cell, sizeof cell, "  --");
       else
@@ -181,14 +259,43 @@ std::string format_lut(const DomainSpec& spec, const PermutationPlan& plan) {
     }
     out << '\n';
   }
+}
+
+// A listed domain's table: one row per listed raw ID (a grid of 2^32 cells would mean nothing).
+void lut_rows(std::ostringstream& out, const DomainSpec& spec, const PermutationPlan& plan) {
+  out << "\n\nOne row per listed raw ID (IDs not listed are not built).\n\n"
+      << (spec.collapsed ? "      raw ID  optimised ID  features\n" : "      raw ID  features\n");
+  for (const RawPermutation& raw : plan.raw) {
+    char head[48];
+    if (spec.collapsed)
+      std::snprintf(head, sizeof head, "%12u  %12u  ", raw.id, raw.optimised);
+    else
+      std::snprintf(head, sizeof head, "%12u  ", raw.id);
+    out << head << describe_raw(spec, raw.id) << '\n';
+  }
+}
+
+std::string joined_defines(const std::vector<std::string>& defines) {
+  std::string text;
+  for (const std::string& d : defines) text += (text.empty() ? "" : " ") + d;
+  return text.empty() ? "(no defines)" : text;
+}
+
+}  // namespace
+
+std::string format_lut(const DomainSpec& spec, const PermutationPlan& plan) {
+  std::ostringstream out;
+  lut_heading(out, spec, plan);
+  if (spec.listed())
+    lut_rows(out, spec, plan);
+  else
+    lut_grid(out, spec, plan);
   if (!spec.collapsed) return out.str();
   out << "\noptimised ID  raw IDs mapped  compiled with\n";
   for (const OptimisedPermutation& o : plan.optimised) {
     char line[64];
     std::snprintf(line, sizeof line, "%12u  %14u  ", o.id, o.raw_mapped);
-    std::string defines;
-    for (const std::string& d : o.defines) defines += (defines.empty() ? "" : " ") + d;
-    out << line << (defines.empty() ? "(no defines)" : defines) << '\n';
+    out << line << joined_defines(o.defines) << '\n';
   }
   return out.str();
 }
@@ -198,7 +305,10 @@ std::string format_list(const DomainSpec& spec, const PermutationPlan& plan) {
   std::size_t pruned = 0;
   for (const RawPermutation& raw : plan.raw) pruned += raw.pruned;
   out << "raw permutations: " << plan.raw.size() << " (" << pruned << " pruned, " << plan.raw.size() - pruned
-      << " compiled)\n";
+      << " compiled";
+  if (spec.listed())
+    out << "; the ones " << spec.variants_path.string() << " lists, of " << spec.raw_space() << " raw IDs";
+  out << ")\n";
   for (const RawPermutation& raw : plan.raw) {
     char head[64];
     if (spec.collapsed)
@@ -206,18 +316,14 @@ std::string format_list(const DomainSpec& spec, const PermutationPlan& plan) {
                     raw.pruned ? "pruned  " : "compiled");
     else
       std::snprintf(head, sizeof head, "  raw %4u  %s  ", raw.id, raw.pruned ? "pruned  " : "compiled");
-    std::string defines;
-    for (const std::string& d : raw.defines) defines += (defines.empty() ? "" : " ") + d;
-    out << head << (defines.empty() ? "(no defines)" : defines) << '\n';
+    out << head << joined_defines(raw_defines(spec, raw.id)) << '\n';
   }
   if (!spec.collapsed) return out.str() + "optimised permutations: none (not collapsed)\n";
   out << "optimised permutations: " << plan.optimised.size() << '\n';
   for (const OptimisedPermutation& o : plan.optimised) {
     char head[64];
     std::snprintf(head, sizeof head, "  optimised %3u  same source as raw %4u  ", o.id, o.raw_equivalent);
-    std::string defines;
-    for (const std::string& d : o.defines) defines += (defines.empty() ? "" : " ") + d;
-    out << head << (defines.empty() ? "(no defines)" : defines) << '\n';
+    out << head << joined_defines(o.defines) << '\n';
   }
   return out.str();
 }
@@ -225,7 +331,8 @@ std::string format_list(const DomainSpec& spec, const PermutationPlan& plan) {
 std::string format_explanation(const DomainSpec& spec, const PermutationPlan& plan, std::uint32_t raw_id) {
   std::ostringstream out;
   auto optimised_names = spec.optimised_bit_names();
-  const RawPermutation& raw = plan.raw[raw_id];
+  const RawPermutation* held = plan.find_raw(raw_id);
+  const RawPermutation raw = held ? *held : classify(spec, raw_id);
   out << "raw ID " << raw_id << " = " << describe_raw(spec, raw_id) << "\n";
   for (const RawFeature& f : spec.raw_features) {
     std::uint32_t index = f.index_in(raw_id);
@@ -255,9 +362,12 @@ std::string format_explanation(const DomainSpec& spec, const PermutationPlan& pl
     out << "\n";
     return out.str();
   }
-  out << "\ncompiled with: ";
-  for (const std::string& d : raw.defines) out << d << ' ';
-  if (raw.defines.empty()) out << "(no defines)";
+  const std::vector<std::string> defines = raw_defines(spec, raw_id);
+  if (!held)
+    out << "\nnot built: " << spec.variants_path.string() << " does not list it; the lookups say \"none\" for it.\n";
+  out << (held ? "\ncompiled with: " : "would be compiled with: ");
+  for (const std::string& d : defines) out << d << ' ';
+  if (defines.empty()) out << "(no defines)";
   if (!spec.collapsed) {
     out << "\n\nnot collapsed: raw ID " << raw_id << " is its own permutation\n";
     return out.str();
@@ -268,9 +378,14 @@ std::string format_explanation(const DomainSpec& spec, const PermutationPlan& pl
     out << "  bit " << bit.bit << "  " << (value ? "[x] " : "[ ] ") << bit.name << "  because " << (value ? "" : "not ")
         << "(" << bit.when.expression.to_string() << ")\n";
   }
-  const OptimisedPermutation& o = plan.optimised[raw.optimised];
-  out << "\n-> optimised ID " << raw.optimised << " = " << describe_bits(optimised_names, raw.optimised)
-      << "\n   compiled with: ";
+  out << "\n-> optimised ID " << raw.optimised << " = " << describe_bits(optimised_names, raw.optimised);
+  const OptimisedPermutation* built = plan.find_optimised(raw.optimised);
+  if (!built) {
+    out << "\n   not built: no listed raw ID maps to it\n";
+    return out.str();
+  }
+  const OptimisedPermutation& o = *built;
+  out << "\n   compiled with: ";
   for (const std::string& d : o.defines) out << d << ' ';
   if (o.defines.empty()) out << "(no defines)";
   out << "\n   (" << o.raw_mapped << (o.raw_mapped == 1 ? " raw ID uses" : " raw IDs share") << " this shader)\n";
