@@ -13,6 +13,8 @@
 // The K-machine projection is the slowest shard plus the merge. Prints a markdown table and the
 // targets met or missed; --json FILE also writes the figures. Exits 1 when a step fails or the
 // merge differs, so --quick (small domains, 2 shards) is a smoke test.
+// --variants-lines L1,L2 also builds a 32-feature domain (2^32 raw IDs) from variants files of
+// L1, L2... distinct random combinations, to show that time and memory follow the lines listed.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -40,8 +42,9 @@ struct Options {
   int shards = 8;
   int jobs = 2;
   fs::path shadergen = SHADERGEN_EXE;
-  fs::path work;  // empty: a fresh folder under the system temporary folder, removed at the end
-  fs::path json;  // empty: none
+  fs::path work;                    // empty: a fresh folder under the system temporary folder, removed at the end
+  fs::path json;                    // empty: none
+  std::vector<int> variants_lines;  // 32-bit domains built from variants files of these many lines
 };
 
 std::vector<int> int_list(const std::string& text) {
@@ -55,14 +58,17 @@ std::vector<int> int_list(const std::string& text) {
 const char* kUsage =
     "usage: shadergen_scale_bench [--quick] [--features 14,16,18,20] [--shard-features 16] [--shards 8]\n"
     "                             [--jobs 2] [--shadergen EXE] [--work DIR] [--json FILE]\n"
-    "  --quick: --features 8,10 --shard-features 10 --shards 2 (a smoke run of a few seconds)\n";
+    "                             [--variants-lines 2500,10000]\n"
+    "  --quick: --features 8,10 --shard-features 10 --shards 2 --variants-lines 50 (a smoke run of a few\n"
+    "           seconds)\n"
+    "  --variants-lines: also build a 32-feature domain from variants files of that many lines\n";
 
 std::optional<Options> parse_args(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     std::string arg = argv[i];
     if (arg == "--quick") {
-      o.features = {8, 10}, o.shard_features = 10, o.shards = 2;
+      o.features = {8, 10}, o.shard_features = 10, o.shards = 2, o.variants_lines = {50};
       continue;
     }
     if (i + 1 >= argc) return std::nullopt;
@@ -81,11 +87,14 @@ std::optional<Options> parse_args(int argc, char** argv) {
       o.work = value;
     else if (arg == "--json")
       o.json = value;
+    else if (arg == "--variants-lines")
+      o.variants_lines = int_list(value);
     else
       return std::nullopt;
   }
   bool sane = o.shards >= 1 && o.jobs >= 1 && o.shard_features >= 2 && !o.features.empty();
   for (int n : o.features) sane = sane && n >= 2 && n <= 32;
+  for (int lines : o.variants_lines) sane = sane && lines >= 1;
   if (!sane) return std::nullopt;
   return o;
 }
@@ -117,6 +126,28 @@ fs::path write_domain(const fs::path& dir, int n) {
   }
   frag << "  color = c;\n}\n";
   return dir / (name + ".json");
+}
+
+// `lines` distinct combinations of the 32 features, none with both F00 and F01 (the impossible
+// rule), drawn by a fixed generator so that every run lists the same ones.
+fs::path write_variants(const fs::path& dir, int lines) {
+  const fs::path path = dir / ("listed" + std::to_string(lines) + ".variants");
+  std::ofstream out(path);
+  out << "# shadergen_scale_bench: " << lines << " distinct combinations of 32 features\n";
+  std::vector<std::uint32_t> seen;
+  std::uint64_t state = 0x9e3779b97f4a7c15ull;
+  while (static_cast<int>(seen.size()) < lines) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    auto id = static_cast<std::uint32_t>(state >> 32) & static_cast<std::uint32_t>(state >> 16);  // about 8 of 32 on
+    if ((id & 3u) == 3u || std::find(seen.begin(), seen.end(), id) != seen.end()) continue;
+    seen.push_back(id);
+    std::string text;
+    for (int bit = 0; bit < 32; ++bit)
+      if (id & (1u << bit))
+        text += (text.empty() ? "F" : " | F") + std::string(bit < 10 ? "0" : "") + std::to_string(bit);
+    out << (text.empty() ? "(none)" : text) << "\n";
+  }
+  return path;
 }
 
 struct Step {
@@ -171,6 +202,27 @@ void print_domains(const std::vector<DomainRow>& rows, std::ostream& out) {
         << fixed(row.build.rss_mib, 0) << " | "
         << fixed(row.build.seconds * 1000.0 / static_cast<double>(std::max(1L, row.build.sources)), 3) << " | "
         << fixed(row.build.preprocess_s) << " |\n";
+  }
+}
+
+struct ListedRow {
+  int lines = 0;
+  Step build;
+};
+
+void print_listed(const std::vector<ListedRow>& rows, std::ostream& out) {
+  out << "\n32 features (4,294,967,296 raw IDs), built from a variants file:\n\n"
+         "| lines listed | distinct sources | wall (s) | CPU (s) | peak RSS (MiB) | s per 1,000 sources |\n"
+         "|---|---|---|---|---|---|\n";
+  for (const ListedRow& row : rows) {
+    out << "| " << row.lines << " | ";
+    if (!row.build.ok) {
+      out << "failed: " << first_line(row.build.failure) << " | | | | |\n";
+      continue;
+    }
+    out << row.build.sources << " | " << fixed(row.build.seconds) << " | " << fixed(row.build.cpu_seconds) << " | "
+        << fixed(row.build.rss_mib, 0) << " | "
+        << fixed(row.build.seconds * 1000.0 / static_cast<double>(std::max(1L, row.build.sources)), 3) << " |\n";
   }
 }
 
@@ -304,6 +356,20 @@ int main(int argc, char** argv) {
   } else {
     std::cout << "\nno shard run: the " << o.shard_features << "-feature domain did not build\n";
     failed = true;
+  }
+  std::vector<ListedRow> listed;
+  if (!o.variants_lines.empty()) {
+    const fs::path dir = work / "scale32";
+    const fs::path spec = write_domain(dir, 32);
+    for (int lines : o.variants_lines) {
+      std::cerr << "shadergen_scale_bench: 32 features, " << lines << " listed\n";
+      ListedRow row{lines, measured({o.shadergen.string(), "build", spec.string(), "--variants",
+                                     write_variants(dir, lines).string(), "--out", (dir / "out").string(), "--no-cache",
+                                     "-j", std::to_string(o.jobs), "--stats"})};
+      failed = failed || !row.build.ok;
+      listed.push_back(row);
+    }
+    print_listed(listed, std::cout);
   }
   if (!o.json.empty()) write_json(o.json, rows, shards, o.shard_features);
   if (own_work) fs::remove_all(work);
