@@ -98,10 +98,36 @@ Result<OptimisedPermutation> optimised_permutation(const DomainSpec& spec, std::
   return optimised;
 }
 
+std::uint64_t text_length(const std::vector<const Rule*>& rules) {
+  std::uint64_t length = 0;
+  for (const Rule* rule : rules) length += rule->text.size() + 1;
+  return length;
+}
+
+// The work expansion would do, against kMaxExpansionWork: raw IDs times the characters of the
+// rules evaluated for each, plus optimised IDs (at most) times the variants' characters.
+Status check_expansion_work(const DomainSpec& spec) {
+  std::vector<const Rule*> per_raw, per_optimised;
+  for (const ImpossibleSet& set : spec.impossible) per_raw.push_back(&set.when);
+  for (const OptimisedBit& bit : spec.optimised_bits) per_raw.push_back(&bit.when);
+  for (const OptimisedVariant& variant : spec.variants) per_optimised.push_back(&variant.when);
+  const std::uint64_t raw_ids = spec.listed() ? spec.listed_raw_ids.size() : spec.raw_space();
+  const std::uint64_t optimised_ids =
+      spec.listed() ? std::min<std::uint64_t>(raw_ids, spec.optimised_count()) : spec.optimised_count();
+  const std::uint64_t work = raw_ids * text_length(per_raw) + optimised_ids * text_length(per_optimised);
+  if (work <= kMaxExpansionWork) return Ok{};
+  return make_error(spec.spec_path.string(), 0,
+                    "expanding the domain would evaluate its rules for " + std::to_string(raw_ids) + " raw IDs and " +
+                        std::to_string(optimised_ids) + " optimised IDs, " + std::to_string(work) +
+                        " rule characters in all; the limit is " + std::to_string(kMaxExpansionWork) +
+                        ": shorten the impossible, optimised-bit and variant rules, or build fewer raw IDs");
+}
+
 // The raw IDs to expand: all of them, or the listed ones.
 Result<std::vector<RawPermutation>> raw_permutations(const DomainSpec& spec) {
   std::vector<RawPermutation> raw;
   if (spec.listed()) {
+    if (Status ok = check_expansion_work(spec); !ok) return std::move(ok).take_errors();
     raw.reserve(spec.listed_raw_ids.size());
     for (std::uint32_t id : spec.listed_raw_ids) raw.push_back(classify(spec, id));
     return raw;
@@ -114,6 +140,7 @@ Result<std::vector<RawPermutation>> raw_permutations(const DomainSpec& spec) {
                           std::to_string(std::uint64_t{1} << kMaxEnumeratedRawBits) +
                           ") raw IDs a domain lists the combinations it builds in a variants file (spec key "
                           "\"variants_file\", or build --variants FILE)");
+  if (Status ok = check_expansion_work(spec); !ok) return std::move(ok).take_errors();
   raw.reserve(static_cast<std::size_t>(spec.raw_space()));
   for (std::uint64_t id = 0; id < spec.raw_space(); ++id) raw.push_back(classify(spec, static_cast<std::uint32_t>(id)));
   return raw;
