@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cache/remote_defaults.h"
 #include "shadergen/build_summary.h"
 #include "shadergen/diagnostic.h"
 
@@ -54,8 +55,8 @@ struct BuildOptions {
   std::string remote_cache_secret;
   // The waiting time the remote cache's requests may cost this build together; once spent, the
   // rest of the build does not use it. Each request also waits at most remote_cache_request_limit.
-  std::chrono::milliseconds remote_cache_budget{10000};
-  std::chrono::milliseconds remote_cache_request_limit{5000};
+  std::chrono::milliseconds remote_cache_budget = kDefaultRemoteCacheBudget;
+  std::chrono::milliseconds remote_cache_request_limit = kDefaultRemoteCacheRequestLimit;
   // Set: compile only this shard's distinct sources (after pruning, collapse and dedup) and
   // store each on the remote cache; nothing is written under out_dir (which may be empty).
   // The build fails, naming how many, unless every source of the shard is on the server.
