@@ -40,15 +40,9 @@
 #include "cache/cache.h"
 #include "cache/http_client.h"
 #include "cache/remote_defaults.h"
+#include "cache/remote_stats.h"
 
 namespace shadergen {
-
-struct RemoteCacheStats {
-  std::uint32_t fetched = 0;   // verified entries taken from the server
-  std::uint32_t missed = 0;    // GETs answered 404
-  std::uint32_t uploaded = 0;  // PUTs answered 2xx
-  std::uint32_t failed = 0;    // requests without a usable answer, and rejected entries
-};
 
 struct RemoteCacheSettings {
   std::string url;  // is_remote_cache_url(); a trailing '/' is dropped

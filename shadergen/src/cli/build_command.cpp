@@ -8,6 +8,7 @@
 #include <fstream>
 #include <optional>
 
+#include "cli/build_stats.h"
 #include "cli/print_errors.h"
 #include "shadergen/build.h"
 
@@ -36,9 +37,9 @@ std::optional<std::string> remote_cache_secret(const BuildArgs& a, std::ostream&
 
 // "; remote: 13 fetched, 0 uploaded, 0 failed" inside the summary's parentheses, with a remote cache.
 std::string remote_counts(const BuildSummary& s) {
-  if (!s.remote_cache) return {};
-  return "; remote: " + std::to_string(s.remote_fetched) + " fetched, " + std::to_string(s.remote_uploaded) +
-         " uploaded, " + std::to_string(s.remote_failed) + " failed";
+  if (!s.remote) return {};
+  return "; remote: " + std::to_string(s.remote->fetched) + " fetched, " + std::to_string(s.remote->uploaded) +
+         " uploaded, " + std::to_string(s.remote->failed) + " failed";
 }
 
 // A time in seconds as the help text writes it: "10", "2.5".
