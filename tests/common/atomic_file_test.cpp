@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "scratch_dir.h"
+#include <testsupport/scratch_dir.h>
 
 namespace {
 namespace fs = std::filesystem;

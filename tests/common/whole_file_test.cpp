@@ -9,7 +9,7 @@
 #include <system_error>
 #include <vector>
 
-#include "scratch_dir.h"
+#include <testsupport/scratch_dir.h>
 
 namespace {
 namespace fs = std::filesystem;

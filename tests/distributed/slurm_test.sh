@@ -200,7 +200,7 @@ job_done() { [ -z "$(squeue -h -j "$1" 2>/dev/null)" ]; }
 wait_for 30 job_done "$job" || fail "the first test job $job did not finish"
 grep -q "hello from $job" "$work/hello-$job.out" 2>/dev/null || fail "the first test job $job printed nothing"
 
-# --- nginx: the WebDAV remote cache (the configuration of common/testsupport's NginxServer).
+# --- nginx: the WebDAV remote cache (the configuration of tests/support's NginxServer).
 nginx_port=$(free_port)
 n=$work/nginx
 cat >"$n/nginx.conf" <<EOF

@@ -3,7 +3,7 @@
 // machine without the memory). Whatever fails first, the process must exit 1 with one line that
 // names the stage, never abort or die on a signal, and must write no output.
 #include <testsupport/child_process.h>
-#include "sanitizer.h"
+#include <testsupport/sanitizer.h>
 #include "tilelight_testing/test_support.h"
 
 #include <gtest/gtest.h>

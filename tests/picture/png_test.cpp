@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
-#include "scratch_dir.h"
+#include <testsupport/scratch_dir.h>
 
 #include <fstream>
 #include <limits>

@@ -14,6 +14,7 @@
 #include "base/sha256.h"
 #include "cache/input_cache.h"
 #include "cache/source_key.h"
+#include "cli/build_stats.h"
 #include "shadergen/build.h"
 #include "test_helpers.h"
 

@@ -3,7 +3,7 @@
 // tests link only the generated code (as a consumer does), not shadergen's own SHA-256, so this
 // is the independent check that every `hash` and `vertex_hash` is the digest of its words.
 //
-// Header-only; its child-process runner is common::testsupport's, which every test links.
+// Header-only; its child-process runner is tests::support's, which every test links.
 #pragma once
 
 #include <gtest/gtest.h>

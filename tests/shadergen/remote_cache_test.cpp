@@ -2,6 +2,7 @@
 // and when it stops asking. The real client and a real server are in remote_server_test.cpp.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <map>
 #include <mutex>
 #include <set>
@@ -10,6 +11,7 @@
 #include "base/untrusted_text.h"
 #include "cache/remote_cache.h"
 #include "cache/signed_entry.h"
+#include "cache/tiered_cache.h"
 
 namespace shadergen {
 namespace {
@@ -286,6 +288,46 @@ TEST(RemoteCache, ServerTextIsPrintable) {
   EXPECT_EQ(printable("ok\x1b[31mred\n\tend\\"), "ok\\x1b[31mred\\n\\tend\\\\");
   EXPECT_EQ(printable("caf\xc3\xa9"), "caf\\xc3\\xa9");
   EXPECT_EQ(printable(std::string(10, 'a'), 4), "aaaa ... (6 more bytes)");
+}
+
+// The local cache in front of the remote one (tiered_cache.h): a local hit is offered to the
+// server once, and remembered so a later build does not ask again; a remote hit is not kept
+// locally by the lookup; a server set aside is asked nothing, and blamed with one warning.
+TEST(TieredCache, OffersLocalHitsOnceAndSetsADistrustedServerAside) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "shadergen_tiered_cache_test";
+  std::filesystem::remove_all(dir);
+  const ContentCache local(dir);
+  ASSERT_TRUE(local.store(kKey, sample_blob()));
+  Fixture f;
+  {
+    TieredCache tiers(&local, f.cache.get());
+    auto hit = tiers.load(kKey, {});
+    ASSERT_TRUE(hit);
+    EXPECT_FALSE(hit->remote);
+    EXPECT_EQ(f.http->objects.count(f.entry_url(kKey)), 1u) << "offered: the server lacked it";
+    tiers.remember_server_keys();
+  }
+  f.http->requests.clear();
+  TieredCache tiers(&local, f.cache.get());
+  ASSERT_TRUE(tiers.load(kKey, {}));
+  EXPECT_TRUE(f.http->requests.empty()) << "the server is known to hold it";
+
+  f.cache->store(kOtherKey, sample_blob());
+  auto remote = tiers.load(kOtherKey, {});
+  ASSERT_TRUE(remote);
+  EXPECT_TRUE(remote->remote);
+  EXPECT_FALSE(local.load(kOtherKey)) << "only kept() entries reach the local cache, through the caller";
+
+  f.http->requests.clear();
+  tiers.set_aside_remote();
+  EXPECT_FALSE(tiers.remote_in_use());
+  EXPECT_FALSE(tiers.load(kOtherKey, {}));
+  tiers.upload(kOtherKey, sample_blob());
+  EXPECT_TRUE(f.http->requests.empty()) << "a server set aside is asked nothing";
+  tiers.distrust_remote("the entries fail together");
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_NE(f.warnings[0].find("the entries fail together"), std::string::npos) << f.warnings[0];
+  std::filesystem::remove_all(dir);
 }
 
 TEST(RemoteCache, UrlsWithQueryOrFragmentAreRefused) {

@@ -50,15 +50,15 @@ TEST(RemoteCacheServer, SecondMachineCompilesNothingAndWritesTheSameBytes) {
   RemoteBuild first = build_toy(dir, "first", server.url());
   ASSERT_TRUE(first.summary) << first.errors;
   EXPECT_EQ(first.summary->compiled, 13u);
-  EXPECT_EQ(first.summary->remote_uploaded, 13u);
+  EXPECT_EQ(first.summary->remote->uploaded, 13u);
   EXPECT_EQ(stored_objects(server).size(), 13u);
 
   RemoteBuild second = build_toy(dir, "second", server.url());
   ASSERT_TRUE(second.summary) << second.errors;
   EXPECT_EQ(second.summary->compiled, 0u);
-  EXPECT_EQ(second.summary->remote_fetched, 13u);
-  EXPECT_EQ(second.summary->remote_uploaded, 0u);
-  EXPECT_EQ(second.summary->remote_failed, 0u);
+  EXPECT_EQ(second.summary->remote->fetched, 13u);
+  EXPECT_EQ(second.summary->remote->uploaded, 0u);
+  EXPECT_EQ(second.summary->remote->failed, 0u);
   EXPECT_TRUE(first.warnings.empty() && second.warnings.empty());
   EXPECT_EQ(second.output, first.output);
   EXPECT_EQ(second.output, reference_output(dir));
@@ -68,7 +68,7 @@ TEST(RemoteCacheServer, SecondMachineCompilesNothingAndWritesTheSameBytes) {
   RemoteBuild third = build_toy(dir, "second", server.url());
   ASSERT_TRUE(third.summary) << third.errors;
   EXPECT_EQ(third.summary->compiled, 0u);
-  EXPECT_EQ(third.summary->remote_fetched, 0u);
+  EXPECT_EQ(third.summary->remote->fetched, 0u);
   EXPECT_TRUE(third.warnings.empty()) << "a warm local cache sends no request";
 }
 
@@ -81,8 +81,8 @@ TEST(RemoteCacheServer, ServerKilledMidBuildDegradesToLocal) {
   });
   ASSERT_TRUE(killed.summary) << killed.errors;
   EXPECT_EQ(killed.summary->compiled, 13u);
-  EXPECT_EQ(killed.summary->remote_uploaded, 3u) << "the three sources done before the kill";
-  EXPECT_EQ(killed.summary->remote_failed, 1u) << "one failed request, then no more";
+  EXPECT_EQ(killed.summary->remote->uploaded, 3u) << "the three sources done before the kill";
+  EXPECT_EQ(killed.summary->remote->failed, 1u) << "one failed request, then no more";
   ASSERT_EQ(killed.warnings.size(), 1u);
   EXPECT_EQ(killed.warnings[0].rfind("warning: remote cache " + server.url() + ": GET ", 0), 0u) << killed.warnings[0];
   EXPECT_TRUE(killed.warnings[0].ends_with(kTail)) << killed.warnings[0];
@@ -96,8 +96,8 @@ TEST(RemoteCacheServer, ServerErrorsDegradeToLocal) {
   RemoteBuild result = build_toy(dir, "errors", server.url());
   ASSERT_TRUE(result.summary) << result.errors;
   EXPECT_EQ(result.summary->compiled, 13u);
-  EXPECT_EQ(result.summary->remote_failed, 1u);
-  EXPECT_EQ(result.summary->remote_uploaded, 0u);
+  EXPECT_EQ(result.summary->remote->failed, 1u);
+  EXPECT_EQ(result.summary->remote->uploaded, 0u);
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_EQ(result.warnings[0].rfind("warning: remote cache " + server.url() + ": GET ", 0), 0u) << result.warnings[0];
   EXPECT_TRUE(result.warnings[0].ends_with(": HTTP 500" + kTail)) << result.warnings[0];
@@ -131,9 +131,9 @@ TEST(RemoteCacheServer, DamagedObjectIsRecompiledAndReplaced) {
     RemoteBuild result = build_toy(dir, "reader" + std::to_string(run++), server.url());
     ASSERT_TRUE(result.summary) << what << ": " << result.errors;
     EXPECT_EQ(result.summary->compiled, 1u) << what;
-    EXPECT_EQ(result.summary->remote_fetched, 12u) << what;
-    EXPECT_EQ(result.summary->remote_failed, 1u) << what;
-    EXPECT_EQ(result.summary->remote_uploaded, 1u) << what;
+    EXPECT_EQ(result.summary->remote->fetched, 12u) << what;
+    EXPECT_EQ(result.summary->remote->failed, 1u) << what;
+    EXPECT_EQ(result.summary->remote->uploaded, 1u) << what;
     EXPECT_EQ(result.warnings,
               std::vector<std::string>{"warning: remote cache " + server.url() + ": " + key.substr(0, 2) + "/" + key +
                                        " is not a valid entry (truncated, corrupted, foreign or "
@@ -151,7 +151,7 @@ TEST(RemoteCacheServer, ReadOnlyNeverUploads) {
   RemoteBuild empty = build_toy(dir, "developer1", server.url(), true);
   ASSERT_TRUE(empty.summary) << empty.errors;
   EXPECT_EQ(empty.summary->compiled, 13u);
-  EXPECT_EQ(empty.summary->remote_uploaded, 0u);
+  EXPECT_EQ(empty.summary->remote->uploaded, 0u);
   EXPECT_TRUE(stored_objects(server).empty());
   EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"PUT "), 0u);
 
@@ -159,7 +159,7 @@ TEST(RemoteCacheServer, ReadOnlyNeverUploads) {
   RemoteBuild served = build_toy(dir, "developer2", server.url(), true);
   ASSERT_TRUE(served.summary) << served.errors;
   EXPECT_EQ(served.summary->compiled, 0u);
-  EXPECT_EQ(served.summary->remote_fetched, 13u);
+  EXPECT_EQ(served.summary->remote->fetched, 13u);
   EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"PUT "), 13u) << "only CI's uploads";
   EXPECT_TRUE(empty.warnings.empty() && served.warnings.empty());
   EXPECT_EQ(served.output, reference_output(dir));
@@ -172,7 +172,7 @@ TEST(RemoteCacheServer, UnreachableUrlDegradesToLocal) {
   RemoteBuild result = build_toy(dir, "offline", url);
   ASSERT_TRUE(result.summary) << result.errors;
   EXPECT_EQ(result.summary->compiled, 13u);
-  EXPECT_EQ(result.summary->remote_failed, 1u);
+  EXPECT_EQ(result.summary->remote->failed, 1u);
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_EQ(result.warnings[0].rfind("warning: remote cache " + url + ": GET ", 0), 0u) << result.warnings[0];
   EXPECT_NE(result.warnings[0].find("Couldn't connect to server"), std::string::npos) << result.warnings[0];
@@ -246,14 +246,14 @@ TEST(RemoteCacheServer, ApacheModDavFillsAndServes) {
   RemoteBuild first = build_toy(dir, "first", server.url());
   ASSERT_TRUE(first.summary) << first.errors;
   EXPECT_TRUE(first.warnings.empty()) << first.warnings.front();
-  EXPECT_EQ(first.summary->remote_uploaded, 13u);
+  EXPECT_EQ(first.summary->remote->uploaded, 13u);
   EXPECT_EQ(sgtest::files_under(server.data_dir()).size(), 13u);
   EXPECT_GE(sgtest::count_of(sgtest::read_file(server.access_log()), "MKCOL "), 1u);
 
   RemoteBuild second = build_toy(dir, "second", server.url());
   ASSERT_TRUE(second.summary) << second.errors;
   EXPECT_EQ(second.summary->compiled, 0u);
-  EXPECT_EQ(second.summary->remote_fetched, 13u);
+  EXPECT_EQ(second.summary->remote->fetched, 13u);
   EXPECT_TRUE(second.warnings.empty());
   EXPECT_EQ(second.output, reference_output(dir));
 }
@@ -272,7 +272,7 @@ TEST(RemoteCacheServer, SignedEntriesNeedTheSecret) {
 
   RemoteBuild developer = build_toy_with(dir, "developer", server.url(), with_secret("team secret"));
   ASSERT_TRUE(developer.summary) << developer.errors;
-  EXPECT_EQ(developer.summary->remote_fetched, 13u);
+  EXPECT_EQ(developer.summary->remote->fetched, 13u);
   EXPECT_TRUE(developer.warnings.empty());
   EXPECT_EQ(developer.output, expected);
 
@@ -281,7 +281,7 @@ TEST(RemoteCacheServer, SignedEntriesNeedTheSecret) {
     options.remote_cache_read_only = true;
   });
   ASSERT_TRUE(outsider.summary) << outsider.errors;
-  EXPECT_EQ(outsider.summary->remote_fetched, 0u);
+  EXPECT_EQ(outsider.summary->remote->fetched, 0u);
   EXPECT_EQ(outsider.summary->compiled, 13u);
   ASSERT_EQ(outsider.warnings.size(), 1u);
   EXPECT_NE(outsider.warnings[0].find("is not signed with this build's secret"), std::string::npos)
@@ -291,7 +291,7 @@ TEST(RemoteCacheServer, SignedEntriesNeedTheSecret) {
   // A reader without the secret takes the signed entries unchecked (its own trust decision).
   RemoteBuild unchecked = build_toy(dir, "unchecked", server.url(), true);
   ASSERT_TRUE(unchecked.summary) << unchecked.errors;
-  EXPECT_EQ(unchecked.summary->remote_fetched, 13u);
+  EXPECT_EQ(unchecked.summary->remote->fetched, 13u);
   EXPECT_EQ(unchecked.output, expected);
 
   // Entries written without the secret (someone who can write the server) are refused.
@@ -299,7 +299,7 @@ TEST(RemoteCacheServer, SignedEntriesNeedTheSecret) {
   ASSERT_TRUE(build_toy(dir, "unsigned writer", server.url()).summary);
   RemoteBuild refused = build_toy_with(dir, "refused", server.url(), with_secret("team secret"));
   ASSERT_TRUE(refused.summary) << refused.errors;
-  EXPECT_EQ(refused.summary->remote_fetched, 0u);
+  EXPECT_EQ(refused.summary->remote->fetched, 0u);
   EXPECT_EQ(refused.warnings.size(), 1u);
   EXPECT_EQ(refused.output, expected);
 }
@@ -314,7 +314,7 @@ TEST(RemoteCacheServer, WarmAgentFillsAnEmptyServer) {
   RemoteBuild filling = build_toy(dir, "agent", server.url());
   ASSERT_TRUE(filling.summary) << filling.errors;
   EXPECT_EQ(filling.summary->compiled, 0u);
-  EXPECT_EQ(filling.summary->remote_uploaded, 13u);
+  EXPECT_EQ(filling.summary->remote->uploaded, 13u);
   EXPECT_EQ(stored_objects(server).size(), 13u);
   EXPECT_TRUE(filling.warnings.empty());
 
@@ -329,7 +329,7 @@ TEST(RemoteCacheServer, WarmAgentFillsAnEmptyServer) {
 
   RemoteBuild other = build_toy(dir, "other machine", server.url(), true);
   ASSERT_TRUE(other.summary) << other.errors;
-  EXPECT_EQ(other.summary->remote_fetched, 13u);
+  EXPECT_EQ(other.summary->remote->fetched, 13u);
   EXPECT_EQ(other.output, reference_output(dir));
 }
 
@@ -355,7 +355,7 @@ TEST(RemoteCacheServer, SignedServerSharesTheInputSet) {
   RemoteBuild unsigned_reader = build_toy(dir, "no secret", server.url(), true);
   ASSERT_TRUE(unsigned_reader.summary) << unsigned_reader.errors;
   EXPECT_FALSE(unsigned_reader.summary->inputs_reused) << "without the secret the input set is not trusted";
-  EXPECT_EQ(unsigned_reader.summary->remote_fetched, 13u);
+  EXPECT_EQ(unsigned_reader.summary->remote->fetched, 13u);
 }
 
 }  // namespace

@@ -116,7 +116,7 @@ TEST(ShardedBuild, ShardsThenMergeWriteTheBytesOfALocalBuild) {
   ShardRun merged = merge(dir, server.url(), 3);
   ASSERT_TRUE(merged.summary) << joined(merged.errors);
   EXPECT_EQ(merged.summary->compiled, 0u);
-  EXPECT_EQ(merged.summary->remote_fetched, kToySources);
+  EXPECT_EQ(merged.summary->remote->fetched, kToySources);
   EXPECT_TRUE(merged.warnings.empty()) << joined(merged.warnings);
   EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
 

@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "shadergen/build_summary.h"
+#include "base/phase_clock.h"
+#include "cache/remote_defaults.h"
+#include "cache/remote_stats.h"
 #include "shadergen/diagnostic.h"
 
 namespace shadergen {
@@ -57,8 +59,8 @@ struct BuildOptions {
   std::string remote_cache_secret;
   // The waiting time the remote cache's requests may cost this build together; once spent, the
   // rest of the build does not use it. Each request also waits at most remote_cache_request_limit.
-  std::chrono::milliseconds remote_cache_budget{10000};
-  std::chrono::milliseconds remote_cache_request_limit{5000};
+  std::chrono::milliseconds remote_cache_budget = kDefaultRemoteCacheBudget;
+  std::chrono::milliseconds remote_cache_request_limit = kDefaultRemoteCacheRequestLimit;
   // Set: compile only this shard's distinct sources (after pruning, collapse and dedup) and
   // store each on the remote cache; nothing is written under out_dir (which may be empty).
   // The build fails, naming how many, unless every source of the shard is on the server.
@@ -73,6 +75,34 @@ struct BuildOptions {
   std::function<void(const std::string&)> log;
   // Polled between jobs; when it returns true the build stops and fails, output untouched.
   std::function<bool()> cancelled;
+};
+
+// What a build did and how long each phase took. The CLI prints it (`--stats` too: cli/build_stats.h).
+struct BuildSummary {
+  std::uint32_t raw = 0;     // raw permutations in the domain
+  std::uint32_t pruned = 0;  // of which impossible
+  std::uint32_t optimised = 0;
+  std::uint32_t companions = 0;
+  std::uint32_t unique_sources = 0;  // distinct preprocessed texts
+  std::uint32_t compiled = 0;        // of which compiled now (cache misses)
+  std::uint32_t cache_hits = 0;
+  std::uint32_t unique_blobs = 0;  // distinct SPIR-V blobs written
+  std::uint32_t optimiser_fallbacks = 0;
+  std::uint32_t permutations = 0;  // compile jobs: unpruned raw + optimised + companions
+  std::uint32_t recompiled = 0;    // of which compiled now (their preprocessed source missed)
+  std::uint32_t reused = 0;        // of which taken from the cache
+  bool inputs_reused = false;      // every input unchanged: preprocessing was skipped
+  bool output_changed = false;     // false when every output file already had these bytes
+  // With a remote cache only: what it did (its `fetched` entries are among cache_hits).
+  std::optional<RemoteCacheStats> remote;
+  // A shard (`--shard I/N`): its place and what became of its sources.
+  bool sharded = false;
+  std::uint32_t shard_index = 0, shard_count = 0;
+  std::uint32_t shard_sources = 0;    // distinct sources this shard owns
+  std::uint32_t shard_on_server = 0;  // of which the server held already (verified, or offered from the local cache)
+  std::uint32_t shard_uploaded = 0;   // of which compiled (or taken from the local cache) and uploaded now
+  double seconds = 0.0;
+  std::vector<PhaseTime> phases;  // in order; their sum is close to `seconds`
 };
 
 // Runs the whole build. On failure nothing under out_dir (or the depfile) has changed.

@@ -5,9 +5,13 @@
 #include <string>
 #include <vector>
 
-#include "shadergen/build_summary.h"
-
 namespace shadergen {
+
+// Wall time of one phase of a build ("parse spec", "preprocess", "compile or load", ...).
+struct PhaseTime {
+  std::string name;
+  double ms = 0.0;
+};
 
 // Each lap() records the time since the previous lap (or construction) under a name.
 class PhaseClock {

@@ -11,6 +11,10 @@
 
 namespace shadergen {
 
+// The client's own limits when nobody sets them (HttpTimeouts, below): their one definition.
+inline constexpr std::chrono::milliseconds kDefaultHttpConnectTimeout{2000};
+inline constexpr std::chrono::milliseconds kDefaultHttpTotalTimeout{10000};
+
 // A completed exchange: any status the server sent, 404 and 500 included.
 struct HttpResponse {
   long status = 0;
@@ -23,7 +27,7 @@ struct HttpRequest {
   std::string_view body;  // PUT only
   // The whole exchange, connection included, may take at most this long (the client's own
   // limits still apply): the remote cache shortens it as its time budget runs out.
-  std::chrono::milliseconds timeout{10000};
+  std::chrono::milliseconds timeout = kDefaultHttpTotalTimeout;
 };
 
 // Thread-safe: the remote cache calls it from every compile thread at once. A request that got
@@ -37,8 +41,8 @@ class HttpClient {
 // Every request is bounded: a server that accepts the connection and then stalls costs at most
 // `total` per request, one that does not answer the connection at most `connect`.
 struct HttpTimeouts {
-  std::chrono::milliseconds connect{2000};
-  std::chrono::milliseconds total{10000};
+  std::chrono::milliseconds connect = kDefaultHttpConnectTimeout;
+  std::chrono::milliseconds total = kDefaultHttpTotalTimeout;
 };
 
 // libcurl, with connections kept alive between requests. Credentials come from the URL or,

@@ -39,15 +39,10 @@
 
 #include "cache/cache.h"
 #include "cache/http_client.h"
+#include "cache/remote_defaults.h"
+#include "cache/remote_stats.h"
 
 namespace shadergen {
-
-struct RemoteCacheStats {
-  std::uint32_t fetched = 0;   // verified entries taken from the server
-  std::uint32_t missed = 0;    // GETs answered 404
-  std::uint32_t uploaded = 0;  // PUTs answered 2xx
-  std::uint32_t failed = 0;    // requests without a usable answer, and rejected entries
-};
 
 struct RemoteCacheSettings {
   std::string url;  // is_remote_cache_url(); a trailing '/' is dropped
@@ -55,8 +50,8 @@ struct RemoteCacheSettings {
   // Not empty: uploads are signed with it, and only entries signed with it are accepted.
   std::string secret;
   // The waiting time all requests of one build may cost together, and each one at most.
-  std::chrono::milliseconds budget{10000};
-  std::chrono::milliseconds request_limit{5000};
+  std::chrono::milliseconds budget = kDefaultRemoteCacheBudget;
+  std::chrono::milliseconds request_limit = kDefaultRemoteCacheRequestLimit;
   // A shard or a merge (build --shard, --require-remote-hits) lives on the network: no budget,
   // and a request that gets no answer or a 5xx is sent again, up to kNetworkedRetries more
   // times, after 1, 2 and 4 s. Each attempt still waits at most request_limit.

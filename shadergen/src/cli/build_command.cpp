@@ -8,6 +8,7 @@
 #include <fstream>
 #include <optional>
 
+#include "cli/build_stats.h"
 #include "cli/print_errors.h"
 #include "shadergen/build.h"
 
@@ -36,9 +37,20 @@ std::optional<std::string> remote_cache_secret(const BuildArgs& a, std::ostream&
 
 // "; remote: 13 fetched, 0 uploaded, 0 failed" inside the summary's parentheses, with a remote cache.
 std::string remote_counts(const BuildSummary& s) {
-  if (!s.remote_cache) return {};
-  return "; remote: " + std::to_string(s.remote_fetched) + " fetched, " + std::to_string(s.remote_uploaded) +
-         " uploaded, " + std::to_string(s.remote_failed) + " failed";
+  if (!s.remote) return {};
+  return "; remote: " + std::to_string(s.remote->fetched) + " fetched, " + std::to_string(s.remote->uploaded) +
+         " uploaded, " + std::to_string(s.remote->failed) + " failed";
+}
+
+// A time in seconds as the help text writes it: "10", "2.5".
+std::string seconds_number(std::chrono::milliseconds ms) {
+  std::string text = std::to_string(ms.count() / 1000);
+  if (long long rest = ms.count() % 1000) {
+    std::string fraction = std::to_string(1000 + rest).substr(1);  // three digits
+    while (fraction.back() == '0') fraction.pop_back();
+    text += "." + fraction;
+  }
+  return text;
 }
 
 // Everything but the secret, the log and the cancellation: what the options say.
@@ -172,7 +184,9 @@ CLI::App* add_build_command(CLI::App& app, BuildArgs& args) {
   build_cmd
       ->add_option("--remote-cache-budget", args.remote_cache_budget,
                    "Seconds the remote cache's requests may keep a build waiting in all before it is turned off "
-                   "for the rest of the build (default 10; each request waits at most 5)")
+                   "for the rest of the build (default " +
+                       seconds_number(kDefaultRemoteCacheBudget) + "; each request waits at most " +
+                       seconds_number(kDefaultRemoteCacheRequestLimit) + ")")
       ->check(CLI::Range(0.0, 3600.0));
   build_cmd->add_option("--shard", args.shard,
                         "I/N: compile only shard I (0-based) of N of the domain's distinct sources and store them on "

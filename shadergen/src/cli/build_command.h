@@ -4,10 +4,13 @@
 #include <CLI/CLI.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include "cache/remote_defaults.h"
 
 namespace shadergen {
 
@@ -20,8 +23,9 @@ struct BuildArgs {
   std::string remote_cache;
   bool remote_cache_readonly = false;
   std::string remote_cache_secret_file;
-  double remote_cache_budget = 10.0;  // seconds
-  std::string shard;                  // "I/N", or empty
+  // Seconds.
+  double remote_cache_budget = std::chrono::duration<double>(kDefaultRemoteCacheBudget).count();
+  std::string shard;  // "I/N", or empty
   bool require_remote_hits = false;
   std::uint32_t shards = 0;
 };

@@ -13,6 +13,7 @@
 #include "cache/input_cache.h"
 #include "cache/remote_cache.h"
 #include "cache/source_key.h"
+#include "cache/tiered_cache.h"
 #include "compile/compile_domain.h"
 #include "compile/entry_check.h"
 #include "compile/error_grouping.h"
@@ -173,7 +174,7 @@ class DomainCompiler {
   // checked again, so the outcome is what a build without it would give. Only when that passes
   // was the server to blame, and warned about; otherwise the domain's own error stands.
   Status recompile_remote_hits(const Status& failed, PhaseClock& clock) {
-    remote_distrusted_ = true;
+    tiers_.set_aside_remote();
     std::vector<bool> compiled(d_.sources.size());
     for (std::size_t i = 0; i < d_.sources.size(); ++i) {
       SourceRecord& record = d_.sources[i];
@@ -188,7 +189,7 @@ class DomainCompiler {
       if (compiled[i]) d_.sources[i].cache_hit = false;
     clock.lap("compile again");
     Status checked = check_blobs(clock);
-    if (checked) options_.remote->distrust(failed.errors().front().message);
+    if (checked) tiers_.distrust_remote(failed.errors().front().message);
     return checked;
   }
 
@@ -200,26 +201,9 @@ class DomainCompiler {
       if (!record.remote_hit) return;
       const Blob& blob = d_.blobs[static_cast<std::size_t>(record.blob)];
       store_local(record.key, CachedBlob{blob.words, blob.fell_back, blob.fallback_reason});
-      note_server_has(record.key);
+      tiers_.kept(record.key);
     });
-    if (options_.cache && options_.remote && server_keys_changed_)
-      options_.cache->remember_keys_on_server(options_.remote->shown_url(), server_keys_);
-  }
-
-  // What the local cache knows the server holds, read on first use.
-  bool server_has(const std::string& key) {
-    std::lock_guard lock(server_keys_mutex_);
-    if (!server_keys_loaded_ && options_.cache)
-      server_keys_ = options_.cache->keys_on_server(options_.remote->shown_url());
-    server_keys_loaded_ = true;
-    return server_keys_.count(key) > 0;
-  }
-
-  void note_server_has(const std::string& key) {
-    if (!server_has(key)) {
-      std::lock_guard lock(server_keys_mutex_);
-      server_keys_changed_ = server_keys_.insert(key).second || server_keys_changed_;
-    }
+    tiers_.remember_server_keys();
   }
 
   Status cancelled_error() const { return make_error("build interrupted"); }
@@ -277,7 +261,7 @@ class DomainCompiler {
     // Like the content cache: failing to remember only costs time later.
     if (Status stored = options_.inputs->store(options_.input_key, set); !stored)
       log("warning: " + stored.errors().front().to_string());
-    if (options_.remote && !remote_distrusted_)
+    if (tiers_.remote_in_use())
       options_.remote->store_input_set(options_.input_key, encode_input_set(options_.input_key, set));
   }
 
@@ -312,21 +296,16 @@ class DomainCompiler {
     return Ok{};
   }
 
-  // Locally, then remotely (a local hit is offered to the server, which may lack it). A remote
-  // entry is used only if its SPIR-V validates for this build's target and has an entry point of
-  // its stage (entry_check.h); the build then reflects it and checks the layout with the rest,
-  // and keeps it locally only once all of that passed (keep_remote_hits).
+  // Locally, then remotely (tiered_cache.h). A remote entry is used only if its SPIR-V
+  // validates for this build's target and has an entry point of its stage (entry_check.h); the
+  // build then reflects it and checks the layout with the rest, and keeps it locally only once
+  // all of that passed (keep_remote_hits).
   std::optional<CachedBlob> load_cached(SourceRecord& record) {
-    std::optional<CachedBlob> hit;
-    if (options_.cache) hit = options_.cache->load(record.key);
-    if (hit && options_.remote && !options_.remote->read_only() && !server_has(record.key) &&
-        options_.remote->offer(record.key, *hit))
-      note_server_has(record.key);
-    if (!hit && options_.remote && !remote_distrusted_ &&
-        (hit = options_.remote->load(record.key, fit_check(d_.jobs[record.first_job].stage))))
-      record.remote_hit = true;
+    auto hit = tiers_.load(record.key, fit_check(d_.jobs[record.first_job].stage));
+    record.remote_hit = hit && hit->remote;
     record.cache_hit = hit.has_value();
-    return hit;
+    if (!hit) return std::nullopt;
+    return std::move(hit->blob);
   }
 
   // Remote entries are validated once per distinct blob and stage: many sources share a blob.
@@ -382,8 +361,7 @@ class DomainCompiler {
   Result<CachedBlob> compile_one(SourceRecord& record) {
     if (auto hit = load_cached(record)) return std::move(*hit);
     auto blob = compile_fresh(record);
-    if (blob && options_.remote && !remote_distrusted_ && options_.remote->store(record.key, *blob))
-      note_server_has(record.key);
+    if (blob) tiers_.upload(record.key, *blob);
     return blob;
   }
 
@@ -639,13 +617,10 @@ class DomainCompiler {
   const CompileOptions& options_;
   CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
   std::optional<std::vector<InputRead>> reads_;          // what preprocessing read; nullopt: inconsistent
-  bool remote_distrusted_ = false;                       // its entries failed the checks together
+  TieredCache tiers_{options_.cache, options_.remote};   // the local and remote caches' policy
   std::optional<std::string> remote_input_set_;          // the bytes of the input set the server gave
   std::mutex checked_mutex_;                             // guards checked_
   std::map<std::string, std::string> checked_;           // blob hash + stage -> unfit_reason()
-  std::mutex server_keys_mutex_;                         // guards the three below
-  std::set<std::string> server_keys_;                    // keys the remote cache is known to hold
-  bool server_keys_loaded_ = false, server_keys_changed_ = false;
 };
 
 }  // namespace

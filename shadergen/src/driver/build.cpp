@@ -135,10 +135,7 @@ BuildSummary summarise(const CompiledDomain& d) {
   s.inputs_reused = d.inputs_reused;
   s.unique_blobs = static_cast<std::uint32_t>(d.blobs.size());
   for (const Blob& b : d.blobs) s.optimiser_fallbacks += b.fell_back;
-  if (d.remote) {
-    s.remote_cache = true;
-    s.remote_fetched = d.remote->fetched, s.remote_uploaded = d.remote->uploaded, s.remote_failed = d.remote->failed;
-  }
+  s.remote = d.remote;
   return s;
 }
 

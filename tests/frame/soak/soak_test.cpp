@@ -15,7 +15,7 @@
 // a read-back image at this size (128x72 RGBA32F, 144 KiB) or a per-frame copy of the G-buffer
 // would fail it. Smaller leaks are LeakSanitizer's job (the sanitizer build).
 #include <testsupport/child_process.h>
-#include "sanitizer.h"
+#include <testsupport/sanitizer.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -5,8 +5,12 @@
 # The areas, lowest first, are shadergen/CMakeLists.txt's libraries. A file's area is the
 # folder under src/ it is in; a public header's area is the lowest area that could define it
 # (below). Every quoted include must name an area ("spec/json.h") or a public header
-# ("shadergen/domain.h"), and that area must be the file's own or one below it. Prints one
-# line per offending include and fails when there is any.
+# ("shadergen/domain.h"), and that area must be the file's own or one below it. An include in
+# angle brackets is checked the same way when it names a project header (<cache/cache.h>,
+# <shadergen/build.h>: its first folder is an area or "shadergen"); any other (<vector>,
+# <curl/curl.h>) is another library's. Prints one line per offending include and fails when
+# there is any. (The build enforces the same order: shadergen/CMakeLists.txt gives each area's
+# headers an include root that only the areas above it see.)
 cmake_minimum_required(VERSION 3.25)
 if(NOT ROOT)
   message(FATAL_ERROR "usage: cmake -DROOT=<shadergen folder> -P include_layers.cmake")
@@ -48,10 +52,27 @@ foreach(file IN LISTS files)
     math(EXPR failures "${failures} + 1")
     continue()
   endif()
-  file(STRINGS "${file}" includes REGEX "^#include \"")
+  file(STRINGS "${file}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<]")
   foreach(line IN LISTS includes)
-    string(REGEX MATCH "^#include \"([^\"]+)\"" _ "${line}")
-    set(included "${CMAKE_MATCH_1}")
+    if(line MATCHES "^[ \t]*#[ \t]*include[ \t]*\"([^\"]+)\"")
+      set(included "${CMAKE_MATCH_1}")
+      set(shown "\"${included}\"")
+    elseif(line MATCHES "^[ \t]*#[ \t]*include[ \t]*<([^>]+)>")
+      set(included "${CMAKE_MATCH_1}")
+      set(shown "<${included}>")
+      # Another library's header: not ours to place.
+      if(NOT included MATCHES "^([a-z_]+)/")
+        continue()
+      endif()
+      list(FIND areas "${CMAKE_MATCH_1}" named_area)
+      if(named_area LESS 0 AND NOT CMAKE_MATCH_1 STREQUAL "shadergen")
+        continue()
+      endif()
+    else()
+      message("${file}: error: cannot read the include in: ${line}")
+      math(EXPR failures "${failures} + 1")
+      continue()
+    endif()
     if(included MATCHES "^shadergen/([a-z_0-9]+)\\.h$")
       set(to "${public_area_${CMAKE_MATCH_1}}")
     elseif(included MATCHES "^([a-z_]+)/[a-z_0-9]+\\.h$")
@@ -61,10 +82,10 @@ foreach(file IN LISTS files)
     endif()
     list(FIND areas "${to}" to_rank)
     if(to_rank LESS 0)
-      message("${file}: error: includes \"${included}\", which names no area (${areas})")
+      message("${file}: error: includes ${shown}, which names no area (${areas})")
       math(EXPR failures "${failures} + 1")
     elseif(to_rank GREATER own_rank)
-      message("${file}: error: includes \"${included}\" (area ${to}) from area ${own}, which is below it")
+      message("${file}: error: includes ${shown} (area ${to}) from area ${own}, which is below it")
       math(EXPR failures "${failures} + 1")
     endif()
   endforeach()

@@ -1,6 +1,6 @@
 #include "tilelight_testing/test_support.h"
 
-#include "scratch_dir.h"
+#include <testsupport/scratch_dir.h>
 
 #include <cstdlib>
 #include <string_view>

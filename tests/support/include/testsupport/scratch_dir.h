@@ -1,7 +1,7 @@
 // A fresh, empty folder for the running GoogleTest test: <root>/<suite>.<test>, emptied first,
 // so a test sees only what it wrote and leaves its output to look at after the run.
 //
-// Header-only: each test executable that uses it adds tests/support to its include path.
+// Header-only (tests::support, which every test links), so the test itself needs GoogleTest.
 #pragma once
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-#include <cstdio>
+#include "cli/build_stats.h"
 
-#include "shadergen/build_summary.h"
+#include <cstdio>
 
 namespace shadergen {
 

@@ -1,0 +1,2 @@
+// The cache-area header the base-area fixture wrongly includes.
+#pragma once
