@@ -257,7 +257,7 @@ Json permutation_timings(const CompiledDomain& d) {
                               {"cache_hit", source.cache_hit},
                               {"preprocess_ms", job.preprocess_ms},
                               {"compile_ms", source.compile_ms},
-                              {"spirv_bytes", blob.words.size() * 4}});
+                              {"spirv_bytes", blob.word_count * 4}});
     if (blob.fell_back) entry["optimiser_fallback"] = blob.fallback_reason;
   }
   return out;
