@@ -1,6 +1,7 @@
 #include "shadergen/build.h"
 
 #include <chrono>
+#include <fstream>
 #include <memory>
 #include <optional>
 
@@ -59,11 +60,27 @@ Status check_names(const BuildOptions& options, const std::string& cpp_name, con
   return Ok{};
 }
 
-// The blobs and the generated source are files in the spill already; the rest is small.
+// An output written by `write` straight to a file in the spill, staged from there.
+template <class Write>
+Status spill_output(BlobSpill& spill, StagedOutput& staged, const std::string& name, const Write& write) {
+  auto file = spill.scratch_file(name);
+  if (!file) return std::move(file).take_errors();
+  std::ofstream out(*file, std::ios::binary | std::ios::trunc);
+  if (!out) return make_error(file->string(), 0, "cannot write");
+  write(out);
+  out.close();
+  if (!out) return make_error(file->string(), 0, "write failed (a full disk?)");
+  staged.add_file(name, *file);
+  return Ok{};
+}
+
+// Every output that grows with the domain is a file in the spill (the blobs since they were
+// made); only the header is held in memory.
 Result<StagedOutput> outputs_for(const BuildOptions& options, const CompiledDomain& domain, BlobSpill& spill,
                                  const std::string& cpp_name, const std::string& ns, double seconds) {
   StagedOutput staged(options.out_dir);
-  staged.add("manifest.json", write_manifest(domain));
+  Status s = spill_output(spill, staged, "manifest.json", [&](std::ostream& out) { write_manifest(domain, out); });
+  if (!s) return std::move(s).take_errors();
   for (const Blob& blob : domain.blobs) staged.add_file(blob_relative_path(blob), spill.path_of(blob.hash));
   staged.add(cpp_name + ".h", generated_header(domain, ns));
   auto source = spill.scratch_file(cpp_name + ".cpp");
@@ -71,7 +88,10 @@ Result<StagedOutput> outputs_for(const BuildOptions& options, const CompiledDoma
   if (Status written = write_generated_source(domain, spill, cpp_name + ".h", ns, *source); !written)
     return std::move(written).take_errors();
   staged.add_file(cpp_name + ".cpp", *source);
-  if (options.write_stats) staged.add("stats.json", write_stats(domain, seconds));
+  if (options.write_stats) {
+    s = spill_output(spill, staged, "stats.json", [&](std::ostream& out) { write_stats(domain, seconds, out); });
+    if (!s) return std::move(s).take_errors();
+  }
   return staged;
 }
 
