@@ -1,5 +1,7 @@
 #include "compile/blob_spill.h"
 
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 #include "base/file_io.h"
@@ -28,14 +30,16 @@ Status BlobSpill::put(const std::string& hash, std::span<const std::uint32_t> wo
     if (!stored_.insert(hash).second) return Ok{};
     if (Status s = create_folder(); !s) return s;
   }
-  // Not synced here: the output's staging syncs the files it links in.
-  std::string_view bytes(reinterpret_cast<const char*>(words.data()), words.size_bytes());
-  Status written = write_file_atomic(path_of(hash), bytes, false);
-  if (!written) {
-    std::lock_guard lock(mutex_);
-    stored_.erase(hash);
-  }
-  return written;
+  // Written in place, not through a temporary: no one else reads this folder, and a failed write
+  // fails the build. Not synced here: the output's staging syncs the files it links in.
+  const fs::path path = path_of(hash);
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) return make_error(path.string(), 0, std::string("cannot write: ") + std::strerror(errno));
+  bool written = std::fwrite(words.data(), sizeof(std::uint32_t), words.size(), file) == words.size();
+  int error = written ? 0 : errno;
+  if (std::fclose(file) != 0 && written) written = false, error = errno;
+  if (written) return Ok{};
+  return make_error(path.string(), 0, std::string("write failed: ") + std::strerror(error));
 }
 
 Result<std::vector<std::uint32_t>> BlobSpill::get(const std::string& hash) const {

@@ -281,27 +281,32 @@ class DomainCompiler {
       options_.remote->store_input_set(options_.input_key, encode_input_set(options_.input_key, set));
   }
 
-  // What is kept of a job's preprocessing: the text's cache key, not the text (a compile
-  // preprocesses again), so that memory does not grow with the texts of every permutation.
-  struct PreprocessedKey {
-    std::string key;
-    std::vector<std::filesystem::path> includes;
-    std::vector<InputRead> reads;
-  };
-
+  // What is kept of each job's preprocessing is the text's cache key, not the text (a compile
+  // preprocesses again); the includes and the files read go straight into sets shared by all
+  // jobs (merge_reads()' rule: a file read differently by two jobs makes the reads
+  // inconsistent). Memory then grows by a key per permutation, not by its text and reads.
   Status preprocess_all() {
-    std::vector<Result<PreprocessedKey>> results(d_.jobs.size(), Result<PreprocessedKey>(PreprocessedKey{}));
+    std::vector<Result<std::string>> keys(d_.jobs.size(), Result<std::string>(std::string()));
+    std::mutex shared_mutex;
+    std::set<std::filesystem::path> includes;
+    std::map<std::filesystem::path, InputRead> reads;
+    bool consistent = true;
     parallel_for(
         d_.jobs.size(), options_.jobs,
         [&](std::size_t i) {
           auto start = Clock::now();
           auto preprocessed = preprocess(source_of(d_.spec, d_.jobs[i]));
-          if (preprocessed)
-            results[i] =
-                PreprocessedKey{cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(preprocessed->text)),
-                                std::move(preprocessed->includes), std::move(preprocessed->reads)};
-          else
-            results[i] = std::move(preprocessed).take_errors();
+          if (preprocessed) {
+            keys[i] = cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(preprocessed->text));
+            std::lock_guard lock(shared_mutex);
+            includes.insert(preprocessed->includes.begin(), preprocessed->includes.end());
+            for (InputRead& read : preprocessed->reads) {
+              auto [it, fresh] = reads.try_emplace(read.path, std::move(read));
+              if (!fresh && (it->second.found != read.found || it->second.digest != read.digest)) consistent = false;
+            }
+          } else {
+            keys[i] = std::move(preprocessed).take_errors();
+          }
           d_.jobs[i].preprocess_ms = milliseconds_since(start);
         },
         options_.cancelled);
@@ -309,20 +314,22 @@ class DomainCompiler {
     std::vector<JobFailure> failures;
     std::map<std::string, int> by_key;
     std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
-    std::vector<std::vector<InputRead>> reads;
+    dependencies.insert(includes.begin(), includes.end());
     for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
       dependencies.insert(d_.jobs[i].path.lexically_normal());
-      if (!results[i]) {
-        failures.push_back({i, results[i].errors(), {}});
+      if (!keys[i]) {
+        failures.push_back({i, keys[i].errors(), {}});
         continue;
       }
-      for (const auto& include : results[i]->includes) dependencies.insert(include);
-      assign_source(i, results[i]->key, by_key);
-      reads.push_back(std::move(results[i]->reads));
+      assign_source(i, *keys[i], by_key);
     }
     d_.dependencies.assign(dependencies.begin(), dependencies.end());
     if (!failures.empty()) return group_failures(d_.jobs, failures, options_.verbose);
-    reads_ = merge_reads(reads);
+    reads_.reset();
+    if (consistent) {
+      reads_.emplace();
+      for (auto& [path, read] : reads) reads_->push_back(std::move(read));
+    }
     return Ok{};
   }
 
@@ -436,6 +443,7 @@ class DomainCompiler {
     if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)), options_.verbose);
     if (!spill_errors_.empty()) return spill_errors_;
     store_blobs(results);
+    distinct_index_.clear();
     return Ok{};
   }
 
@@ -600,8 +608,8 @@ class DomainCompiler {
   }
 
   // Distinct sources can still give equal SPIR-V (a define that changes no code path that
-  // survives optimisation); those share one blob.
-  // The blobs in the order of their first source, as the generated code lists them.
+  // survives optimisation); those share one blob. The blobs are in the order of their first
+  // source, whichever worker made them first.
   void store_blobs(std::vector<Result<SourceBlob>>& results) {
     std::vector<int> blob_of(distinct_.size(), -1);
     blob_distinct_.clear();
@@ -611,7 +619,7 @@ class DomainCompiler {
       if (blob < 0) {
         blob = static_cast<int>(d_.blobs.size());
         DistinctBlob& distinct = distinct_[compiled.distinct];
-        d_.blobs.push_back(Blob{distinct.word_count, distinct.hash,
+        d_.blobs.push_back(Blob{distinct.word_count, std::move(distinct.hash),
                                 std::move(distinct.reflection).value_or(ReflectionInfo{}), compiled.fell_back,
                                 std::move(compiled.fallback_reason)});
         blob_distinct_.push_back(compiled.distinct);
@@ -631,8 +639,8 @@ class DomainCompiler {
   }
 
   // After reflection, which reads the names: the blobs lose their debug instructions. Blobs
-  // that differed only in those become one; every job and source follows its blob.
-  // The stripping itself happened as each blob was made (spill()).
+  // that differed only in those become one; every job and source follows its blob. The words
+  // were stripped as each blob was made (spill()); this renumbers the blobs and reports errors.
   Status strip_blobs() {
     std::vector<Blob> stripped;
     std::vector<int> moved(d_.blobs.size(), -1);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <unordered_map>
 
 #include "compile/blob_spill.h"
 #include "output/cpp_text.h"
@@ -316,19 +317,36 @@ class SourceWriter {
   }
 
   // All define lists in one pool; each permutation refers to a slice.
+  // The pool is one string and the end of each define in it, the lists are keyed by one string
+  // each (every define's length, then its text): a copy of every list as strings took about a
+  // kilobyte per permutation.
   std::size_t pool_define_list(const std::vector<std::string>& defines) {
-    auto [it, fresh] = define_slices_.try_emplace(defines, defines_pool_.size());
-    if (fresh) defines_pool_.insert(defines_pool_.end(), defines.begin(), defines.end());
+    std::string key;
+    for (const std::string& define : defines) {
+      const auto size = static_cast<std::uint32_t>(define.size());
+      key.append(reinterpret_cast<const char*>(&size), sizeof size).append(define);
+    }
+    auto [it, fresh] = define_slices_.try_emplace(std::move(key), pool_ends_.size());
+    if (fresh)
+      for (const std::string& define : defines) {
+        pool_text_ += define;
+        pool_ends_.push_back(pool_text_.size());
+      }
     return it->second;
+  }
+
+  std::string_view pooled_define(std::size_t i) const {
+    const std::size_t start = i == 0 ? 0 : pool_ends_[i - 1];
+    return std::string_view(pool_text_).substr(start, pool_ends_[i] - start);
   }
 
   void names_and_defines() {
     for (const RawPermutation& raw : d_.plan.raw) pool_define_list(raw.defines);
     for (const OptimisedPermutation& o : d_.plan.optimised) pool_define_list(o.defines);
     for (const CompanionSpec& c : d_.spec.companions) pool_define_list(c.defines);
-    out_ << "constexpr std::array<std::string_view, " << defines_pool_.size() << "> kDefinePool{{";
-    for (std::size_t i = 0; i < defines_pool_.size(); ++i)
-      out_ << (i % 6 ? " " : "\n    ") << literal(defines_pool_[i]) << ",";
+    out_ << "constexpr std::array<std::string_view, " << pool_ends_.size() << "> kDefinePool{{";
+    for (std::size_t i = 0; i < pool_ends_.size(); ++i)
+      out_ << (i % 6 ? " " : "\n    ") << literal(pooled_define(i)) << ",";
     out_ << "\n}};\n\nconstexpr std::array<std::string_view, " << d_.spec.raw_features.size() << "> kRawFeatureNames{{";
     for (const RawFeature& f : d_.spec.raw_features) out_ << literal(f.name) << ", ";
     out_ << "}};\nconstexpr std::array<std::string_view, " << d_.spec.optimised_bits.size() << "> kOptimisedBitNames{{";
@@ -387,8 +405,9 @@ class SourceWriter {
   std::array<char, 1 << 16> buffer_{};
   std::ofstream out_;
   std::vector<std::size_t> word_offset_;
-  std::vector<std::string> defines_pool_;
-  std::map<std::vector<std::string>, std::size_t> define_slices_;
+  std::string pool_text_;                                       // every pooled define, back to back
+  std::vector<std::size_t> pool_ends_;                          // where each ends in pool_text_
+  std::unordered_map<std::string, std::size_t> define_slices_;  // a list's key -> its first define
 };
 
 }  // namespace
