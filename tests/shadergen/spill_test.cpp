@@ -8,6 +8,7 @@
 #include <set>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "output/output_dir.h"
 #include "shadergen/build.h"
@@ -139,6 +140,22 @@ TEST(Spill, UnchangedFilesAreHardLinkedFromThePreviousOutput) {
   EXPECT_EQ(times_after, times_before);
   EXPECT_EQ(inodes_after, inodes_before);
   EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{"out"}));
+}
+
+// A spill folder of a killed build (its process is gone) is cleared at the next commit into the
+// same output; one of a live process (this one) is not: that build may still be running.
+TEST(Spill, ASpillFolderOfAKilledBuildIsClearedAtTheNextCommit) {
+  sgtest::TempDir dir("spill-leftover");
+  const fs::path dead = dir / ".out.spill.tmp-99999999-0";  // above any pid_max
+  const fs::path live = dir / (".out.spill.tmp-" + std::to_string(::getpid()) + "-999999");
+  sgtest::write_file(dead / "blob.spv", "words");
+  sgtest::write_file(live / "blob.spv", "words");
+  shadergen::StagedOutput staged(dir / "out");
+  staged.add("a.txt", "a");
+  auto changed = staged.commit();
+  ASSERT_TRUE(changed.ok());
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_TRUE(fs::exists(live / "blob.spv"));
 }
 
 // StagedOutput's file-backed entries: compared by streaming, so the same bytes are "unchanged".

@@ -229,6 +229,8 @@ class SourceWriter {
       text += "\n    // " + b.hash;
       auto words = spill_.get(b.hash);
       if (!words) return std::move(words).take_errors();
+      if (words->size() != b.word_count)
+        return make_error(spill_.path_of(b.hash).string(), 0, "changed while the build ran");
       append_hex_words(text, *words);
       offset += b.word_count;
       if (text.size() >= (1u << 20)) {
@@ -316,10 +318,9 @@ class SourceWriter {
     out_ << "}};\n\n";
   }
 
-  // All define lists in one pool; each permutation refers to a slice.
-  // The pool is one string and the end of each define in it, the lists are keyed by one string
-  // each (every define's length, then its text): a copy of every list as strings took about a
-  // kilobyte per permutation.
+  // All define lists in one pool; each permutation refers to a slice. The pool is one string and
+  // the end of each define in it, and each list is keyed by one string (every define's length,
+  // then its text): a copy of every list as strings took about a kilobyte per permutation.
   std::size_t pool_define_list(const std::vector<std::string>& defines) {
     std::string key;
     for (const std::string& define : defines) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -92,6 +93,19 @@ class ParentLock {
  private:
   int fd_ = -1;
 };
+
+// A spill folder belongs to a build that may still run (it is not under this lock until its
+// commit): it is a leftover only when the process named in it ("<pid>-<n>") no longer exists.
+bool owner_is_gone(const std::string& pid_and_count) {
+  const auto dash = pid_and_count.find('-');
+  if (dash == 0 || dash == std::string::npos) return false;
+  long pid = 0;
+  for (std::size_t i = 0; i < dash; ++i) {
+    if (pid_and_count[i] < '0' || pid_and_count[i] > '9' || pid > 100000000) return false;
+    pid = pid * 10 + (pid_and_count[i] - '0');
+  }
+  return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
 
 }  // namespace
 
@@ -191,11 +205,14 @@ void StagedOutput::clear_leftovers() const {
   const fs::path parent = out_dir_.parent_path().empty() ? fs::path(".") : out_dir_.parent_path();
   const std::string staging_prefix = sibling_prefix(out_dir_, "staging");
   const std::string old_prefix = sibling_prefix(out_dir_, "old");
+  const std::string spill_prefix = sibling_prefix(out_dir_, "spill");
   std::error_code ec;
   std::vector<fs::path> leftovers;
   for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    if (starts_with(name, staging_prefix) || starts_with(name, old_prefix)) leftovers.push_back(it->path());
+    if (starts_with(name, staging_prefix) || starts_with(name, old_prefix) ||
+        (starts_with(name, spill_prefix) && owner_is_gone(name.substr(spill_prefix.size()))))
+      leftovers.push_back(it->path());
   }
   for (const fs::path& path : leftovers) {
     // Killed between the two renames of swap_in(): the set-aside folder is the previous

@@ -42,6 +42,7 @@ class StagedOutput {
   // builds into the same output take turns; the second finds the folder unchanged. Under
   // that lock any staging or set-aside folder of this output is a leftover of a killed
   // build: it is removed, or put back as the output if the kill came between the renames.
+  // A spill folder (spill_folder_beside()) is removed only when its process is gone.
   Result<bool> commit(const std::function<bool()>& cancelled = {});
 
  private:
