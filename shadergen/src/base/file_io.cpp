@@ -50,4 +50,32 @@ bool file_has_bytes(const std::filesystem::path& path, std::string_view bytes) {
   return same;
 }
 
+bool files_equal(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code ec;
+  auto size = std::filesystem::file_size(a, ec);
+  if (ec || size != std::filesystem::file_size(b, ec) || ec) return false;
+  std::FILE* first = std::fopen(a.c_str(), "rb");
+  if (!first) return false;
+  std::FILE* second = std::fopen(b.c_str(), "rb");
+  if (!second) {
+    std::fclose(first);
+    return false;
+  }
+  static constexpr std::size_t kBlock = 1 << 16;
+  std::string blocks(2 * kBlock, '\0');
+  std::size_t offset = 0;
+  bool same = true;
+  while (same) {
+    std::size_t got = std::fread(blocks.data(), 1, kBlock, first);
+    std::size_t other = std::fread(blocks.data() + kBlock, 1, kBlock, second);
+    same = got == other && std::memcmp(blocks.data(), blocks.data() + kBlock, got) == 0;
+    offset += got;
+    if (got == 0) break;
+  }
+  same = same && !std::ferror(first) && !std::ferror(second) && offset == size;
+  std::fclose(first);
+  std::fclose(second);
+  return same;
+}
+
 }  // namespace shadergen

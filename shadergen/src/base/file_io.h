@@ -22,4 +22,7 @@ Status write_file_atomic(const std::filesystem::path& path, std::string_view byt
 // True when `path` exists and holds exactly `bytes`.
 bool file_has_bytes(const std::filesystem::path& path, std::string_view bytes);
 
+// True when both files exist and hold the same bytes; compared in blocks.
+bool files_equal(const std::filesystem::path& a, const std::filesystem::path& b);
+
 }  // namespace shadergen

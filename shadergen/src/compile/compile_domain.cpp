@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <deque>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "cache/remote_cache.h"
 #include "cache/source_key.h"
 #include "cache/tiered_cache.h"
+#include "compile/blob_spill.h"
 #include "compile/compile_domain.h"
 #include "compile/entry_check.h"
 #include "compile/error_grouping.h"
@@ -200,7 +202,13 @@ class DomainCompiler {
       const SourceRecord& record = d_.sources[s];
       if (!record.remote_hit) return;
       const Blob& blob = d_.blobs[static_cast<std::size_t>(record.blob)];
-      store_local(record.key, CachedBlob{blob.words, blob.fell_back, blob.fallback_reason});
+      // Before strip_blobs(): the blob's hash is that of the words as the server gave them.
+      auto words = options_.spill->get(blob.hash);
+      if (!words) {
+        log("warning: " + words.errors().front().to_string());
+        return;
+      }
+      store_local(record.key, CachedBlob{std::move(words).value(), blob.fell_back, blob.fallback_reason});
       tiers_.kept(record.key);
     });
     tiers_.remember_server_keys();
@@ -265,13 +273,32 @@ class DomainCompiler {
       options_.remote->store_input_set(options_.input_key, encode_input_set(options_.input_key, set));
   }
 
+  // What is kept of each job's preprocessing is the text's cache key, not the text (a compile
+  // preprocesses again); the includes and the files read go straight into sets shared by all
+  // jobs (merge_reads()' rule: a file read differently by two jobs makes the reads
+  // inconsistent). Memory then grows by a key per permutation, not by its text and reads.
   Status preprocess_all() {
-    std::vector<Result<Preprocessed>> results(d_.jobs.size(), Result<Preprocessed>(Preprocessed{}));
+    std::vector<Result<std::string>> keys(d_.jobs.size(), Result<std::string>(std::string()));
+    std::mutex shared_mutex;
+    std::set<std::filesystem::path> includes;
+    std::map<std::filesystem::path, InputRead> reads;
+    bool consistent = true;
     parallel_for(
         d_.jobs.size(), options_.jobs,
         [&](std::size_t i) {
           auto start = Clock::now();
-          results[i] = preprocess(source_of(d_.spec, d_.jobs[i]));
+          auto preprocessed = preprocess(source_of(d_.spec, d_.jobs[i]));
+          if (preprocessed) {
+            keys[i] = cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(preprocessed->text));
+            std::lock_guard lock(shared_mutex);
+            includes.insert(preprocessed->includes.begin(), preprocessed->includes.end());
+            for (InputRead& read : preprocessed->reads) {
+              auto [it, fresh] = reads.try_emplace(read.path, std::move(read));
+              if (!fresh && (it->second.found != read.found || it->second.digest != read.digest)) consistent = false;
+            }
+          } else {
+            keys[i] = std::move(preprocessed).take_errors();
+          }
           d_.jobs[i].preprocess_ms = milliseconds_since(start);
         },
         options_.cancelled);
@@ -279,20 +306,22 @@ class DomainCompiler {
     std::vector<JobFailure> failures;
     std::map<std::string, int> by_key;
     std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
-    std::vector<std::vector<InputRead>> reads;
+    dependencies.insert(includes.begin(), includes.end());
     for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
       dependencies.insert(d_.jobs[i].path.lexically_normal());
-      if (!results[i]) {
-        failures.push_back({i, results[i].errors(), {}});
+      if (!keys[i]) {
+        failures.push_back({i, keys[i].errors(), {}});
         continue;
       }
-      for (const auto& include : results[i]->includes) dependencies.insert(include);
-      assign_source(i, cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(results[i]->text)), by_key);
-      reads.push_back(std::move(results[i]->reads));
+      assign_source(i, *keys[i], by_key);
     }
     d_.dependencies.assign(dependencies.begin(), dependencies.end());
     if (!failures.empty()) return group_failures(d_.jobs, failures, options_.verbose);
-    reads_ = merge_reads(reads);
+    reads_.reset();
+    if (consistent) {
+      reads_.emplace();
+      for (auto& [path, read] : reads) reads_->push_back(std::move(read));
+    }
     return Ok{};
   }
 
@@ -366,7 +395,10 @@ class DomainCompiler {
   }
 
   Status compile_sources() {
-    std::vector<Result<CachedBlob>> results(d_.sources.size(), Result<CachedBlob>(CachedBlob{}));
+    distinct_.clear();
+    distinct_index_.clear();
+    spill_errors_.clear();
+    std::vector<Result<SourceBlob>> results(d_.sources.size(), Result<SourceBlob>(SourceBlob{}));
     std::vector<char> missing(d_.sources.size(), 0);
     std::atomic<std::size_t> done{0};
     std::mutex log_mutex;
@@ -374,12 +406,14 @@ class DomainCompiler {
     parallel_for(
         total, options_.jobs,
         [&](std::size_t i) {
-          if (!options_.require_remote_hits)
-            results[i] = compile_one(d_.sources[i]);
-          else if (auto hit = load_cached(d_.sources[i]))
-            results[i] = std::move(*hit);
-          else
+          if (!options_.require_remote_hits) {
+            auto blob = compile_one(d_.sources[i]);
+            results[i] = blob ? spill(i, std::move(blob).value()) : Result<SourceBlob>(std::move(blob).take_errors());
+          } else if (auto hit = load_cached(d_.sources[i])) {
+            results[i] = spill(i, std::move(*hit));
+          } else {
             missing[i] = 1;
+          }
           std::size_t finished = ++done;
           report_progress(finished, total, i, log_mutex);
         },
@@ -393,8 +427,74 @@ class DomainCompiler {
       if (!result) failures.push_back({j, result.errors(), {}});
     }
     if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)), options_.verbose);
+    if (!spill_errors_.empty()) return spill_errors_;
     store_blobs(results);
+    distinct_index_.clear();
     return Ok{};
+  }
+
+  // What a distinct blob leaves in memory once its words are in the spill: reflected (the
+  // build's checks need that) and, with strip_debug, stripped, as soon as it is made.
+  struct DistinctBlob {
+    std::string hash;  // of the words as compiled or loaded
+    std::size_t word_count = 0;
+    std::optional<ReflectionInfo> reflection;  // nullopt: `errors` says why
+    std::string stripped_hash;                 // strip_debug: of the words written for the output
+    std::size_t stripped_word_count = 0;
+    Diagnostics errors;        // of reflection
+    Diagnostics strip_errors;  // of strip_debug
+  };
+  // A source's blob: the distinct blob and what the source's compile said about it.
+  struct SourceBlob {
+    std::size_t distinct = 0;
+    bool fell_back = false;
+    std::string fallback_reason;
+  };
+
+  // Writes the words of source `s`'s blob to the spill (once per distinct blob) and keeps the
+  // rest. The words a remote hit came with are kept there too: keep_remote_hits() reads them.
+  SourceBlob spill(std::size_t s, CachedBlob blob) {
+    SourceBlob out{0, blob.fell_back, std::move(blob.fallback_reason)};
+    std::string hash = sha256_hex(blob.words);
+    DistinctBlob* fresh = nullptr;
+    {
+      std::lock_guard lock(distinct_mutex_);
+      auto [it, added] = distinct_index_.try_emplace(hash, distinct_.size());
+      if (added) fresh = &distinct_.emplace_back();
+      out.distinct = it->second;
+    }
+    const bool strip = d_.spec.strip_debug;
+    if (d_.sources[s].remote_hit && strip) note_spill(options_.spill->put(hash, blob.words));
+    if (!fresh) return out;
+    DistinctBlob& distinct = *fresh;
+    distinct.hash = hash;
+    distinct.word_count = blob.words.size();
+    auto info = reflect(blob.words, d_.jobs[d_.sources[s].first_job].stage);
+    if (!info) {
+      distinct.errors = std::move(info).take_errors();
+      return out;
+    }
+    distinct.reflection = std::move(info).value();
+    if (!strip) {
+      note_spill(options_.spill->put(hash, blob.words));
+      return out;
+    }
+    // After reflection, which reads the names; the caches keep the blobs with them.
+    auto stripped = strip_debug_info(blob.words, d_.spec.target_env);
+    if (!stripped) {
+      distinct.strip_errors = std::move(stripped).take_errors();
+      return out;
+    }
+    distinct.stripped_hash = sha256_hex(*stripped);
+    distinct.stripped_word_count = stripped->size();
+    note_spill(options_.spill->put(distinct.stripped_hash, *stripped));
+    return out;
+  }
+
+  void note_spill(Status status) {
+    if (status) return;
+    std::lock_guard lock(distinct_mutex_);
+    if (spill_errors_.empty()) spill_errors_ = std::move(status).take_errors();
   }
 
   // The merge (require_remote_hits): every distinct source must have come from a cache.
@@ -494,55 +594,55 @@ class DomainCompiler {
   }
 
   // Distinct sources can still give equal SPIR-V (a define that changes no code path that
-  // survives optimisation); those share one blob.
-  void store_blobs(std::vector<Result<CachedBlob>>& results) {
-    std::map<std::string, int> by_hash;
+  // survives optimisation); those share one blob. The blobs are in the order of their first
+  // source, whichever worker made them first.
+  void store_blobs(std::vector<Result<SourceBlob>>& results) {
+    std::vector<int> blob_of(distinct_.size(), -1);
+    blob_distinct_.clear();
     for (std::size_t s = 0; s < d_.sources.size(); ++s) {
-      CachedBlob& compiled = results[s].value();
-      std::string hash = sha256_hex(compiled.words);
-      auto [it, fresh] = by_hash.try_emplace(hash, static_cast<int>(d_.blobs.size()));
-      if (fresh)
-        d_.blobs.push_back(
-            Blob{std::move(compiled.words), hash, {}, compiled.fell_back, std::move(compiled.fallback_reason)});
-      d_.sources[s].blob = it->second;
+      SourceBlob& compiled = results[s].value();
+      int& blob = blob_of[compiled.distinct];
+      if (blob < 0) {
+        blob = static_cast<int>(d_.blobs.size());
+        DistinctBlob& distinct = distinct_[compiled.distinct];
+        d_.blobs.push_back(Blob{distinct.word_count, std::move(distinct.hash),
+                                std::move(distinct.reflection).value_or(ReflectionInfo{}), compiled.fell_back,
+                                std::move(compiled.fallback_reason)});
+        blob_distinct_.push_back(compiled.distinct);
+      }
+      d_.sources[s].blob = blob;
     }
     for (CompileJob& job : d_.jobs) job.blob = d_.sources[static_cast<std::size_t>(job.source)].blob;
   }
 
+  // Reflection happened as each blob was made (spill()); this reports its errors, blob by blob.
   Status reflect_blobs() {
     Diagnostics errors;
-    std::vector<Stage> stages(d_.blobs.size(), Stage::fragment);
-    for (const CompileJob& job : d_.jobs) stages[static_cast<std::size_t>(job.blob)] = job.stage;
-    for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
-      auto info = reflect(d_.blobs[b].words, stages[b]);
-      if (!info) {
-        for (Diagnostic error : info.errors()) errors.push_back(std::move(error));
-        continue;
-      }
-      d_.blobs[b].reflection = std::move(info).value();
-    }
+    for (std::size_t distinct : blob_distinct_)
+      for (Diagnostic& error : distinct_[distinct].errors) errors.push_back(error);
     if (!errors.empty()) return errors;
     return Ok{};
   }
 
   // After reflection, which reads the names: the blobs lose their debug instructions. Blobs
-  // that differed only in those become one; every job and source follows its blob.
+  // that differed only in those become one; every job and source follows its blob. The words
+  // were stripped as each blob was made (spill()); this renumbers the blobs and reports errors.
   Status strip_blobs() {
     std::vector<Blob> stripped;
     std::vector<int> moved(d_.blobs.size(), -1);
     std::map<std::string, int> by_hash;
     Diagnostics errors;
     for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
-      auto words = strip_debug_info(d_.blobs[b].words, d_.spec.target_env);
-      if (!words) {
-        for (Diagnostic error : words.errors()) errors.push_back(std::move(error));
+      const DistinctBlob& distinct = distinct_[blob_distinct_[b]];
+      if (!distinct.strip_errors.empty()) {
+        for (const Diagnostic& error : distinct.strip_errors) errors.push_back(error);
         continue;
       }
-      std::string hash = sha256_hex(*words);
+      const std::string& hash = distinct.stripped_hash;
       auto [it, fresh] = by_hash.try_emplace(hash, static_cast<int>(stripped.size()));
       if (fresh) {
         stripped.push_back(std::move(d_.blobs[b]));
-        stripped.back().words = std::move(words).value();
+        stripped.back().word_count = distinct.stripped_word_count;
         stripped.back().hash = hash;
       }
       moved[b] = it->second;
@@ -621,6 +721,11 @@ class DomainCompiler {
   std::optional<std::string> remote_input_set_;          // the bytes of the input set the server gave
   std::mutex checked_mutex_;                             // guards checked_
   std::map<std::string, std::string> checked_;           // blob hash + stage -> unfit_reason()
+  std::mutex distinct_mutex_;                            // guards the three below
+  std::deque<DistinctBlob> distinct_;                    // stable addresses while workers fill them
+  std::map<std::string, std::size_t> distinct_index_;    // hash of the words -> distinct_
+  Diagnostics spill_errors_;                             // the first failure to write a blob
+  std::vector<std::size_t> blob_distinct_;               // d_.blobs -> distinct_, before strip_blobs()
 };
 
 }  // namespace

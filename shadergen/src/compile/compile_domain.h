@@ -16,6 +16,7 @@
 
 namespace shadergen {
 
+class BlobSpill;
 class ContentCache;
 class InputCache;
 class RemoteCache;
@@ -35,6 +36,9 @@ struct CompileOptions {
   // The merge: nothing is compiled; a source in neither cache fails the build (needs `remote`).
   bool require_remote_hits = false;
   std::uint32_t shards = 0;  // the merge names the shards that owned missing sources; 0: not
+  // Where each distinct blob's words are written as soon as they are made (and, with strip_debug,
+  // stripped); the domain's Blobs keep only their hash, size and reflection. Needed unless `shard`.
+  BlobSpill* spill = nullptr;
 };
 
 // Preprocesses, deduplicates, compiles (or loads from the cache), optimises, validates and

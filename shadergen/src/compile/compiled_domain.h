@@ -17,9 +17,10 @@
 
 namespace shadergen {
 
-// One distinct SPIR-V blob; permutations with equal words share it.
+// One distinct SPIR-V blob; permutations with equal words share it. Its words are not kept in
+// memory: they are in the build's BlobSpill (blob_spill.h), under `hash`.
 struct Blob {
-  std::vector<std::uint32_t> words;
+  std::size_t word_count = 0;
   std::string hash;  // SHA-256 of the words, hex
   ReflectionInfo reflection;
   bool fell_back = false;

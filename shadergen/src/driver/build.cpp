@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <memory>
+#include <optional>
 
 #include "base/file_io.h"
 #include "base/phase_clock.h"
@@ -10,6 +12,7 @@
 #include "cache/cache.h"
 #include "cache/input_cache.h"
 #include "cache/remote_cache.h"
+#include "compile/blob_spill.h"
 #include "compile/compile_domain.h"
 #include "compile/toolchain.h"
 #include "output/codegen.h"
@@ -59,18 +62,38 @@ Status check_names(const BuildOptions& options, const std::string& cpp_name, con
   return Ok{};
 }
 
-StagedOutput outputs_for(const BuildOptions& options, const CompiledDomain& domain, const std::string& cpp_name,
-                         const std::string& ns, double seconds) {
+// An output written by `write` straight to a file in the spill, staged from there.
+template <class Write>
+Status spill_output(BlobSpill& spill, StagedOutput& staged, const std::string& name, const Write& write) {
+  auto file = spill.scratch_file(name);
+  if (!file) return std::move(file).take_errors();
+  std::ofstream out(*file, std::ios::binary | std::ios::trunc);
+  if (!out) return make_error(file->string(), 0, "cannot write");
+  write(out);
+  out.close();
+  if (!out) return make_error(file->string(), 0, "write failed (a full disk?)");
+  staged.add_file(name, *file);
+  return Ok{};
+}
+
+// Every output that grows with the domain is a file in the spill (the blobs since they were
+// made); only the header is held in memory.
+Result<StagedOutput> outputs_for(const BuildOptions& options, const CompiledDomain& domain, BlobSpill& spill,
+                                 const std::string& cpp_name, const std::string& ns, double seconds) {
   StagedOutput staged(options.out_dir);
-  staged.add("manifest.json", write_manifest(domain));
-  for (const Blob& blob : domain.blobs) {
-    const auto* bytes = reinterpret_cast<const char*>(blob.words.data());
-    staged.add(blob_relative_path(blob), std::string(bytes, blob.words.size() * sizeof(std::uint32_t)));
+  Status s = spill_output(spill, staged, "manifest.json", [&](std::ostream& out) { write_manifest(domain, out); });
+  if (!s) return std::move(s).take_errors();
+  for (const Blob& blob : domain.blobs) staged.add_file(blob_relative_path(blob), spill.path_of(blob.hash));
+  staged.add(cpp_name + ".h", generated_header(domain, ns));
+  auto source = spill.scratch_file(cpp_name + ".cpp");
+  if (!source) return std::move(source).take_errors();
+  if (Status written = write_generated_source(domain, spill, cpp_name + ".h", ns, *source); !written)
+    return std::move(written).take_errors();
+  staged.add_file(cpp_name + ".cpp", *source);
+  if (options.write_stats) {
+    s = spill_output(spill, staged, "stats.json", [&](std::ostream& out) { write_stats(domain, seconds, out); });
+    if (!s) return std::move(s).take_errors();
   }
-  GeneratedCpp cpp = generate_cpp(domain, cpp_name + ".h", ns);
-  staged.add(cpp_name + ".h", std::move(cpp.header));
-  staged.add(cpp_name + ".cpp", std::move(cpp.source));
-  if (options.write_stats) staged.add("stats.json", write_stats(domain, seconds));
   return staged;
 }
 
@@ -227,6 +250,9 @@ Result<BuildSummary> build(const BuildOptions& given) {
   if (options.shard) compile_options.shard = ShardPlace{options.shard->index, options.shard->count};
   compile_options.require_remote_hits = options.require_remote_hits;
   compile_options.shards = options.shards;
+  // Every blob's words go here as they are made, beside the output; removed on every return.
+  std::optional<BlobSpill> spill;
+  if (!options.shard) compile_options.spill = &spill.emplace(spill_folder_beside(options.out_dir));
   if (inputs.enabled()) {
     compile_options.inputs = &inputs;
     compile_options.input_key = input_set_key(current_cache_key_parts(), options.spec_path, loaded->digest,
@@ -247,9 +273,10 @@ Result<BuildSummary> build(const BuildOptions& given) {
       options.log("warning: optimiser fallback for blob " + blob.hash.substr(0, 16) + ": " +
                   printable(blob.fallback_reason));
   if (options.cancelled && options.cancelled()) return make_error("build interrupted");
-  StagedOutput staged = outputs_for(options, *domain, cpp_name, ns, seconds);
+  auto staged = outputs_for(options, *domain, *spill, cpp_name, ns, seconds);
+  if (!staged) return std::move(staged).take_errors();
   clock.lap("manifest and codegen");
-  auto changed = staged.commit(options.cancelled);
+  auto changed = staged->commit(options.cancelled);
   if (!changed) return std::move(changed).take_errors();
   clock.lap("output compare or write");
   if (!options.depfile.empty()) {

@@ -1,11 +1,15 @@
 #include "output/codegen.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <sstream>
+#include <unordered_map>
 
+#include "compile/blob_spill.h"
 #include "output/cpp_text.h"
 #include "spec/defines.h"
 
@@ -223,20 +227,22 @@ std::string kind_enum(DescriptorKind kind) {
   return "shadergen::DescriptorKind::" + std::string(descriptor_kind_name(kind));
 }
 
-// Emits the arrays of the source and remembers where each blob's data starts.
+// Emits the arrays of the source, straight into its file, and remembers where each blob's data
+// starts. Nothing grows with the domain but what the permutations' lines need: each blob's words
+// are read back from the spill one at a time.
 class SourceWriter {
  public:
-  explicit SourceWriter(const CompiledDomain& d) : d_(d) {}
+  SourceWriter(const CompiledDomain& d, const BlobSpill& spill) : d_(d), spill_(spill) {}
 
-  std::string run(const std::string& header_name, const std::string& ns) {
+  Status run(const std::string& header_name, const std::string& ns, const std::filesystem::path& file) {
+    out_.rdbuf()->pubsetbuf(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    out_.open(file, std::ios::binary | std::ios::trunc);
+    if (!out_) return make_error(file.string(), 0, "cannot write the generated source");
     out_ << banner(d_) << "#include " << literal(header_name) << "\n\n"
          << (tables_in_header(d_) ? "" : "#include <algorithm>\n#include <cstddef>\n")
          << "#include <span>\n#include <string_view>\n\n"
          << open_namespace(ns) << "namespace {\n\n";
-    // The words are most of the bytes: they go straight into one string, not through the stream.
-    std::string text = out_.str();
-    out_.str({});
-    words(text);
+    if (Status s = words(); !s) return s;
     reflections();
     names_and_defines();
     source_tables();
@@ -245,25 +251,37 @@ class SourceWriter {
     out_ << "}  // namespace\n\nconst shadergen::Registry& registry() { return kRegistry; }\n\n";
     source_lookups();
     out_ << close_namespace(ns);
-    text += out_.str();
-    return text;
+    out_.close();
+    if (!out_) return make_error(file.string(), 0, "write failed (a full disk?)");
+    return Ok{};
   }
 
  private:
-  void words(std::string& text) {
+  // The words are most of the bytes: formatted into a string a blob at a time, not through the
+  // stream, and written out in blocks.
+  Status words() {
     std::size_t total = 0;
-    for (const Blob& b : d_.blobs) total += b.words.size();
-    text.reserve(text.size() + total * 14 + d_.blobs.size() * 96 + 128);
-    text += "// " + std::to_string(d_.blobs.size()) + " distinct SPIR-V blobs, stored once each.\n";
+    for (const Blob& b : d_.blobs) total += b.word_count;
+    std::string text = "// " + std::to_string(d_.blobs.size()) + " distinct SPIR-V blobs, stored once each.\n";
     text += "constexpr std::uint32_t kWords[" + std::to_string(total) + "] = {";
     std::size_t offset = 0;
     for (const Blob& b : d_.blobs) {
       word_offset_.push_back(offset);
       text += "\n    // " + b.hash;
-      append_hex_words(text, b.words);
-      offset += b.words.size();
+      auto words = spill_.get(b.hash);
+      if (!words) return std::move(words).take_errors();
+      if (words->size() != b.word_count)
+        return make_error(spill_.path_of(b.hash).string(), 0, "changed while the build ran");
+      append_hex_words(text, *words);
+      offset += b.word_count;
+      if (text.size() >= (1u << 20)) {
+        out_.write(text.data(), static_cast<std::streamsize>(text.size()));
+        text.clear();
+      }
     }
     text += "\n};\n\n";
+    out_.write(text.data(), static_cast<std::streamsize>(text.size()));
+    return Ok{};
   }
 
   // "\n    0x0000abcdu, 0x...u," eight to a line, formatted by hand: per-word printf and
@@ -341,20 +359,36 @@ class SourceWriter {
     out_ << "}};\n\n";
   }
 
-  // All define lists in one pool; each permutation refers to a slice.
+  // All define lists in one pool; each permutation refers to a slice. The pool is one string and
+  // the end of each define in it, and each list is keyed by one string (every define's length,
+  // then its text): a copy of every list as strings took about a kilobyte per permutation.
   std::size_t pool_define_list(const std::vector<std::string>& defines) {
-    auto [it, fresh] = define_slices_.try_emplace(defines, defines_pool_.size());
-    if (fresh) defines_pool_.insert(defines_pool_.end(), defines.begin(), defines.end());
+    std::string key;
+    for (const std::string& define : defines) {
+      const auto size = static_cast<std::uint32_t>(define.size());
+      key.append(reinterpret_cast<const char*>(&size), sizeof size).append(define);
+    }
+    auto [it, fresh] = define_slices_.try_emplace(std::move(key), pool_ends_.size());
+    if (fresh)
+      for (const std::string& define : defines) {
+        pool_text_ += define;
+        pool_ends_.push_back(pool_text_.size());
+      }
     return it->second;
+  }
+
+  std::string_view pooled_define(std::size_t i) const {
+    const std::size_t start = i == 0 ? 0 : pool_ends_[i - 1];
+    return std::string_view(pool_text_).substr(start, pool_ends_[i] - start);
   }
 
   void names_and_defines() {
     for (const RawPermutation& raw : d_.plan.raw) pool_define_list(raw_defines(d_.spec, raw.id));
     for (const OptimisedPermutation& o : d_.plan.optimised) pool_define_list(o.defines);
     for (const CompanionSpec& c : d_.spec.companions) pool_define_list(c.defines);
-    out_ << "constexpr std::array<std::string_view, " << defines_pool_.size() << "> kDefinePool{{";
-    for (std::size_t i = 0; i < defines_pool_.size(); ++i)
-      out_ << (i % 6 ? " " : "\n    ") << literal(defines_pool_[i]) << ",";
+    out_ << "constexpr std::array<std::string_view, " << pool_ends_.size() << "> kDefinePool{{";
+    for (std::size_t i = 0; i < pool_ends_.size(); ++i)
+      out_ << (i % 6 ? " " : "\n    ") << literal(pooled_define(i)) << ",";
     out_ << "\n}};\n\nconstexpr std::array<std::string_view, " << d_.spec.raw_features.size() << "> kRawFeatureNames{{";
     for (const RawFeature& f : d_.spec.raw_features) out_ << literal(f.name) << ", ";
     out_ << "}};\nconstexpr std::array<std::string_view, " << d_.spec.optimised_bits.size() << "> kOptimisedBitNames{{";
@@ -371,11 +405,11 @@ class SourceWriter {
       << defines.size() << "), ";
     if (!blob) return p.str() + (pruned ? "true" : "false") + ", {}, \"\", {}}";
     std::size_t index = static_cast<std::size_t>(blob - d_.blobs.data());
-    p << "false, std::span<const std::uint32_t>(kWords + " << word_offset_[index] << ", " << blob->words.size() << "), "
+    p << "false, std::span<const std::uint32_t>(kWords + " << word_offset_[index] << ", " << blob->word_count << "), "
       << literal(blob->hash) << ", kReflections[" << index << "]";
     if (vertex) {
       std::size_t v = static_cast<std::size_t>(vertex - d_.blobs.data());
-      p << ", std::span<const std::uint32_t>(kWords + " << word_offset_[v] << ", " << vertex->words.size() << "), "
+      p << ", std::span<const std::uint32_t>(kWords + " << word_offset_[v] << ", " << vertex->word_count << "), "
         << literal(vertex->hash) << ", &kReflections[" << v << "]";
     }
     p << "}";
@@ -489,10 +523,13 @@ class SourceWriter {
   }
 
   const CompiledDomain& d_;
-  std::ostringstream out_;
+  const BlobSpill& spill_;
+  std::array<char, 1 << 16> buffer_{};
+  std::ofstream out_;
   std::vector<std::size_t> word_offset_;
-  std::vector<std::string> defines_pool_;
-  std::map<std::vector<std::string>, std::size_t> define_slices_;
+  std::string pool_text_;                                       // every pooled define, back to back
+  std::vector<std::size_t> pool_ends_;                          // where each ends in pool_text_
+  std::unordered_map<std::string, std::size_t> define_slices_;  // a list's key -> its first define
 };
 
 }  // namespace
@@ -508,8 +545,11 @@ bool is_valid_namespace(const std::string& name) {
   }
 }
 
-GeneratedCpp generate_cpp(const CompiledDomain& domain, const std::string& header_name, const std::string& ns) {
-  return {header_text(domain, ns), SourceWriter(domain).run(header_name, ns)};
+std::string generated_header(const CompiledDomain& domain, const std::string& ns) { return header_text(domain, ns); }
+
+Status write_generated_source(const CompiledDomain& domain, const BlobSpill& spill, const std::string& header_name,
+                              const std::string& ns, const std::filesystem::path& file) {
+  return SourceWriter(domain, spill).run(header_name, ns, file);
 }
 
 }  // namespace shadergen

@@ -3,21 +3,25 @@
 // header stays cheap; identical blobs are stored once.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 #include "compile/compiled_domain.h"
+#include "shadergen/diagnostic.h"
 
 namespace shadergen {
 
-struct GeneratedCpp {
-  std::string header;
-  std::string source;
-};
+class BlobSpill;
 
-// `header_name` is the file name the source includes ("split_second.h"); `cpp_namespace` may
-// be qualified ("game::shaders"). Precondition: both are valid (see is_valid_namespace).
-GeneratedCpp generate_cpp(const CompiledDomain& domain, const std::string& header_name,
-                          const std::string& cpp_namespace);
+// The generated header. `cpp_namespace` may be qualified ("game::shaders"). Precondition: it is
+// valid (see is_valid_namespace).
+std::string generated_header(const CompiledDomain& domain, const std::string& cpp_namespace);
+
+// Writes the generated source to `file`, reading each blob's words from `spill` (the build's,
+// which holds them all) one at a time. `header_name` is the file name the source includes
+// ("split_second.h"). Errors name `file` or the spill's file that could not be read.
+Status write_generated_source(const CompiledDomain& domain, const BlobSpill& spill, const std::string& header_name,
+                              const std::string& cpp_namespace, const std::filesystem::path& file);
 
 bool is_valid_namespace(const std::string& name);
 

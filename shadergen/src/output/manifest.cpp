@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <ostream>
+#include <sstream>
 
 #include "spec/stages.h"
 
@@ -14,12 +16,6 @@ std::string blob_relative_path(const Blob& blob) { return "spirv/" + blob.hash.s
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-// Two-space indentation, keys in insertion order, "\n" line ends and a final newline. UTF-8 is
-// written as it is. The spec reader accepts only UTF-8; should a byte that is not UTF-8 reach
-// here from elsewhere (an optimiser's message), it becomes U+FFFD: the output stays valid JSON
-// and writing never throws.
-std::string dump(const Json& document) { return document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; }
 
 Json stage_list(std::uint32_t stages) {
   Json names = Json::array();
@@ -84,29 +80,22 @@ void add_features(Json& manifest, const DomainSpec& spec) {
     optimised.push_back(Json{{"name", b.name}, {"bit", b.bit}, {"when", b.when.text}});
 }
 
-Json raw_json(const CompiledDomain& d) {
-  Json out = Json::array();
-  for (const RawPermutation& raw : d.plan.raw) {
-    Json& entry =
-        out.emplace_back(Json{{"id", raw.id}, {"defines", raw_defines(d.spec, raw.id)}, {"pruned", raw.pruned}});
-    if (d.spec.collapsed) entry["optimised"] = raw.optimised;
-    add_blob_fields(entry, raw.pruned ? nullptr : d.raw_blob(raw.id), d.spec);
-    add_vertex_half(entry, raw.pruned ? nullptr : d.raw_vertex_blob(raw.id));
-  }
-  return out;
+Json raw_entry(const CompiledDomain& d, const RawPermutation& raw) {
+  Json entry{{"id", raw.id}, {"defines", raw_defines(d.spec, raw.id)}, {"pruned", raw.pruned}};
+  if (d.spec.collapsed) entry["optimised"] = raw.optimised;
+  add_blob_fields(entry, raw.pruned ? nullptr : d.raw_blob(raw.id), d.spec);
+  add_vertex_half(entry, raw.pruned ? nullptr : d.raw_vertex_blob(raw.id));
+  return entry;
 }
 
-Json optimised_json(const CompiledDomain& d) {
-  Json out = Json::array();
-  for (const OptimisedPermutation& optimised : d.plan.optimised) {
-    Json& entry = out.emplace_back(Json{{"id", optimised.id},
-                                        {"defines", optimised.defines},
-                                        {"raw_equivalent", optimised.raw_equivalent},
-                                        {"raw_mapped", optimised.raw_mapped}});
-    add_blob_fields(entry, d.optimised_blob(optimised.id), d.spec);
-    add_vertex_half(entry, d.optimised_vertex_blob(optimised.id));
-  }
-  return out;
+Json optimised_entry(const CompiledDomain& d, const OptimisedPermutation& optimised) {
+  Json entry{{"id", optimised.id},
+             {"defines", optimised.defines},
+             {"raw_equivalent", optimised.raw_equivalent},
+             {"raw_mapped", optimised.raw_mapped}};
+  add_blob_fields(entry, d.optimised_blob(optimised.id), d.spec);
+  add_vertex_half(entry, d.optimised_vertex_blob(optimised.id));
+  return entry;
 }
 
 Json companions_json(const CompiledDomain& d) {
@@ -170,25 +159,85 @@ Json specialization_constants_json(const ReflectionInfo& r) {
   return out;
 }
 
-// Every distinct blob with its own reflection: what a permutation needs when it has a
-// pipeline layout of its own, its work-group size and its specialization constants.
-Json blobs_json(const CompiledDomain& d) {
+// A distinct blob with its own reflection: what a permutation needs when it has a pipeline
+// layout of its own, its work-group size and its specialization constants.
+Json blob_entry(const Blob& blob, Stage stage) {
+  const ReflectionInfo& r = blob.reflection;
+  Json entry{{"spirv", blob_relative_path(blob)},     {"stage", stage_name(stage)},
+             {"bindings", bindings_json(r.bindings)}, {"push_constant_size", r.push_constant_size},
+             {"inputs", variables_json(r.inputs)},    {"outputs", variables_json(r.outputs)}};
+  if (has_workgroup(stage)) add_workgroup(entry, r);
+  entry["specialization_constants"] = specialization_constants_json(r);
+  return entry;
+}
+
+std::vector<Stage> blob_stages(const CompiledDomain& d) {
   std::vector<Stage> stages(d.blobs.size(), Stage::fragment);
   for (const CompileJob& job : d.jobs) stages[static_cast<std::size_t>(job.blob)] = job.stage;
-  Json out = Json::array();
-  for (std::size_t i = 0; i < d.blobs.size(); ++i) {
-    const ReflectionInfo& r = d.blobs[i].reflection;
-    Json& entry = out.emplace_back(Json{{"spirv", blob_relative_path(d.blobs[i])},
-                                        {"stage", stage_name(stages[i])},
-                                        {"bindings", bindings_json(r.bindings)},
-                                        {"push_constant_size", r.push_constant_size},
-                                        {"inputs", variables_json(r.inputs)},
-                                        {"outputs", variables_json(r.outputs)}});
-    if (has_workgroup(stages[i])) add_workgroup(entry, r);
-    entry["specialization_constants"] = specialization_constants_json(r);
-  }
-  return out;
+  return stages;
 }
+
+// Writes a JSON object exactly as dump(2) does, a member at a time, and the members that are
+// long arrays an element at a time: a Json tree of every permutation at once took more memory
+// than the rest of the build.
+//
+// Two-space indentation, keys in insertion order, "\n" line ends and a final newline. UTF-8 is
+// written as it is. The spec reader accepts only UTF-8; should a byte that is not UTF-8 reach
+// here from elsewhere (an optimiser's message), it becomes U+FFFD: the output stays valid JSON
+// and writing never throws.
+class ObjectWriter {
+ public:
+  explicit ObjectWriter(std::ostream& out) : out_(out) { out_ << '{'; }
+
+  void member(const std::string& key, const Json& value) {
+    open(key);
+    write_indented(value, 2);
+  }
+
+  // `element(i)` gives the array's element i.
+  template <class Element>
+  void array(const std::string& key, std::size_t count, const Element& element) {
+    open(key);
+    if (count == 0) {
+      out_ << "[]";
+      return;
+    }
+    out_ << "[\n";
+    for (std::size_t i = 0; i < count; ++i) {
+      out_ << "    ";
+      write_indented(element(i), 4);
+      out_ << (i + 1 < count ? ",\n" : "\n");
+    }
+    out_ << "  ]";
+  }
+
+  void finish() { out_ << (empty_ ? "}\n" : "\n}\n"); }
+
+ private:
+  void open(const std::string& key) {
+    out_ << (empty_ ? "\n  " : ",\n  ") << Json(key).dump(-1, ' ', false, Json::error_handler_t::replace) << ": ";
+    empty_ = false;
+  }
+
+  // `value` dumped on its own, every line after the first indented by `indent` more spaces.
+  void write_indented(const Json& value, std::size_t indent) {
+    const std::string text = value.dump(2, ' ', false, Json::error_handler_t::replace);
+    const std::string pad(indent, ' ');
+    for (std::size_t start = 0;;) {
+      std::size_t newline = text.find('\n', start);
+      if (newline == std::string::npos) {
+        out_.write(text.data() + start, static_cast<std::streamsize>(text.size() - start));
+        return;
+      }
+      out_.write(text.data() + start, static_cast<std::streamsize>(newline + 1 - start));
+      out_ << pad;
+      start = newline + 1;
+    }
+  }
+
+  std::ostream& out_;
+  bool empty_ = true;
+};
 
 Json layout_json(const MergedLayout& layout) {
   Json push_constants = Json::array();
@@ -199,7 +248,7 @@ Json layout_json(const MergedLayout& layout) {
 
 }  // namespace
 
-std::string write_manifest(const CompiledDomain& d) {
+void write_manifest(const CompiledDomain& d, std::ostream& out) {
   Json m = Json::object();
   m["format"] = 1;
   m["generator"] = "shadergen " SHADERGEN_VERSION;
@@ -221,12 +270,22 @@ std::string write_manifest(const CompiledDomain& d) {
   // The fixed defines every shader was compiled with (spec, --define, CMake DEFINES), in order.
   m["defines"] = d.spec.defines;
   add_features(m, d.spec);
-  m["raw"] = raw_json(d);
-  m["optimised"] = optimised_json(d);
-  m["companions"] = companions_json(d);
-  m["pipeline_layout"] = layout_json(d.layout);
-  m["blobs"] = blobs_json(d);
-  return dump(m);
+  ObjectWriter writer(out);
+  for (const auto& [key, value] : m.items()) writer.member(key, value);
+  writer.array("raw", d.plan.raw.size(), [&](std::size_t i) { return raw_entry(d, d.plan.raw[i]); });
+  writer.array("optimised", d.plan.optimised.size(),
+               [&](std::size_t i) { return optimised_entry(d, d.plan.optimised[i]); });
+  writer.member("companions", companions_json(d));
+  writer.member("pipeline_layout", layout_json(d.layout));
+  const std::vector<Stage> stages = blob_stages(d);
+  writer.array("blobs", d.blobs.size(), [&](std::size_t i) { return blob_entry(d.blobs[i], stages[i]); });
+  writer.finish();
+}
+
+std::string write_manifest(const CompiledDomain& d) {
+  std::ostringstream out;
+  write_manifest(d, out);
+  return std::move(out).str();
 }
 
 namespace {
@@ -252,27 +311,23 @@ Json remote_counts(const RemoteCacheStats& remote) {
       {"fetched", remote.fetched}, {"missed", remote.missed}, {"uploaded", remote.uploaded}, {"failed", remote.failed}};
 }
 
-Json permutation_timings(const CompiledDomain& d) {
-  Json out = Json::array();
-  for (const CompileJob& job : d.jobs) {
-    const SourceRecord& source = d.sources[static_cast<std::size_t>(job.source)];
-    const Blob& blob = d.blobs[static_cast<std::size_t>(job.blob)];
-    Json& entry =
-        out.emplace_back(Json{{"permutation", job.label()},
-                              {"source", job.source},
-                              {"compiled_here", source.first_job == static_cast<std::size_t>(&job - d.jobs.data())},
-                              {"cache_hit", source.cache_hit},
-                              {"preprocess_ms", job.preprocess_ms},
-                              {"compile_ms", source.compile_ms},
-                              {"spirv_bytes", blob.words.size() * 4}});
-    if (blob.fell_back) entry["optimiser_fallback"] = blob.fallback_reason;
-  }
-  return out;
+Json permutation_timing(const CompiledDomain& d, const CompileJob& job) {
+  const SourceRecord& source = d.sources[static_cast<std::size_t>(job.source)];
+  const Blob& blob = d.blobs[static_cast<std::size_t>(job.blob)];
+  Json entry{{"permutation", job.label()},
+             {"source", job.source},
+             {"compiled_here", source.first_job == static_cast<std::size_t>(&job - d.jobs.data())},
+             {"cache_hit", source.cache_hit},
+             {"preprocess_ms", job.preprocess_ms},
+             {"compile_ms", source.compile_ms},
+             {"spirv_bytes", blob.word_count * 4}};
+  if (blob.fell_back) entry["optimiser_fallback"] = blob.fallback_reason;
+  return entry;
 }
 
 }  // namespace
 
-std::string write_stats(const CompiledDomain& d, double seconds) {
+void write_stats(const CompiledDomain& d, double seconds, std::ostream& out) {
   std::uint32_t recompiled = 0;
   for (const CompileJob& job : d.jobs) recompiled += !d.sources[static_cast<std::size_t>(job.source)].cache_hit;
   Json s = Json::object();
@@ -284,8 +339,16 @@ std::string write_stats(const CompiledDomain& d, double seconds) {
   Json& phases = s["phases_ms"] = Json::object();
   for (const PhaseTime& phase : d.phases) phases[phase.name] = phase.ms;
   s["seconds"] = seconds;
-  s["permutations"] = permutation_timings(d);
-  return dump(s);
+  ObjectWriter writer(out);
+  for (const auto& [key, value] : s.items()) writer.member(key, value);
+  writer.array("permutations", d.jobs.size(), [&](std::size_t i) { return permutation_timing(d, d.jobs[i]); });
+  writer.finish();
+}
+
+std::string write_stats(const CompiledDomain& d, double seconds) {
+  std::ostringstream out;
+  write_stats(d, seconds, out);
+  return std::move(out).str();
 }
 
 namespace {

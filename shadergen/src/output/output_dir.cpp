@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -93,28 +94,71 @@ class ParentLock {
   int fd_ = -1;
 };
 
+// A spill folder belongs to a build that may still run (it is not under this lock until its
+// commit): it is a leftover only when the process named in it ("<pid>-<n>") no longer exists.
+bool owner_is_gone(const std::string& pid_and_count) {
+  const auto dash = pid_and_count.find('-');
+  if (dash == 0 || dash == std::string::npos) return false;
+  long pid = 0;
+  for (std::size_t i = 0; i < dash; ++i) {
+    if (pid_and_count[i] < '0' || pid_and_count[i] > '9' || pid > 100000000) return false;
+    pid = pid * 10 + (pid_and_count[i] - '0');
+  }
+  return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
+
 }  // namespace
+
+fs::path spill_folder_beside(const fs::path& out_dir) { return sibling(out_dir, "spill"); }
+
+bool StagedOutput::holds(const fs::path& path, const Entry& entry) const {
+  return entry.file.empty() ? file_has_bytes(path, entry.bytes) : files_equal(path, entry.file);
+}
 
 bool StagedOutput::unchanged() const {
   std::error_code ec;
   if (!fs::is_directory(out_dir_, ec)) return false;
   std::set<std::string> present = existing_files(out_dir_);
   if (present.size() != files_.size()) return false;
-  for (const auto& [relative, bytes] : files_)
-    if (!present.count(relative) || !file_has_bytes(out_dir_ / relative, bytes)) return false;
+  for (const auto& [relative, entry] : files_)
+    if (!present.count(relative) || !holds(out_dir_ / relative, entry)) return false;
   return true;
 }
 
+namespace {
+
+// A file-backed entry's bytes as a staged file: linked when the file system allows, copied
+// otherwise, then synced like write_file_atomic() syncs what it writes.
+Status link_in(const fs::path& from, const fs::path& target) {
+  std::error_code ec;
+  fs::create_hard_link(from, target, ec);
+  if (ec) {
+    ec.clear();
+    fs::copy_file(from, target, fs::copy_options::overwrite_existing, ec);
+    if (ec) return make_error(target.string(), 0, "cannot write: " + ec.message());
+  }
+  int fd = ::open(target.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return make_error(target.string(), 0, std::string("cannot write: ") + std::strerror(errno));
+  int synced = ::fsync(fd);
+  int error = errno;
+  ::close(fd);
+  if (synced != 0 && error != EINVAL)
+    return make_error(target.string(), 0, std::string("write failed: ") + std::strerror(error));
+  return Ok{};
+}
+
+}  // namespace
+
 Status StagedOutput::stage(const fs::path& staging) const {
   std::error_code ec;
-  std::vector<const std::pair<const std::string, std::string>*> to_write;
+  std::vector<const std::pair<const std::string, Entry>*> to_write;
   for (const auto& file : files_) {
-    const auto& [relative, bytes] = file;
+    const auto& [relative, entry] = file;
     fs::path target = staging / relative;
     fs::create_directories(target.parent_path(), ec);
     if (ec) return make_error((out_dir_ / relative).parent_path().string(), 0, "cannot create folder: " + ec.message());
     fs::path previous = out_dir_ / relative;
-    if (file_has_bytes(previous, bytes)) {
+    if (holds(previous, entry)) {
       fs::create_hard_link(previous, target, ec);
       if (!ec) continue;  // otherwise fall through and write a copy
       ec.clear();
@@ -127,7 +171,9 @@ Status StagedOutput::stage(const fs::path& staging) const {
   constexpr unsigned kWriters = 8;
   std::vector<Status> written(to_write.size(), Status(Ok{}));
   parallel_for(to_write.size(), kWriters, [&](std::size_t i) {
-    written[i] = write_file_atomic(staging / to_write[i]->first, to_write[i]->second);
+    const auto& [relative, entry] = *to_write[i];
+    written[i] = entry.file.empty() ? write_file_atomic(staging / relative, entry.bytes)
+                                    : link_in(entry.file, staging / relative);
   });
   for (std::size_t i = 0; i < written.size(); ++i)
     if (!written[i]) return renamed(std::move(written[i]), out_dir_ / to_write[i]->first);
@@ -159,11 +205,14 @@ void StagedOutput::clear_leftovers() const {
   const fs::path parent = out_dir_.parent_path().empty() ? fs::path(".") : out_dir_.parent_path();
   const std::string staging_prefix = sibling_prefix(out_dir_, "staging");
   const std::string old_prefix = sibling_prefix(out_dir_, "old");
+  const std::string spill_prefix = sibling_prefix(out_dir_, "spill");
   std::error_code ec;
   std::vector<fs::path> leftovers;
   for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    if (starts_with(name, staging_prefix) || starts_with(name, old_prefix)) leftovers.push_back(it->path());
+    if (starts_with(name, staging_prefix) || starts_with(name, old_prefix) ||
+        (starts_with(name, spill_prefix) && owner_is_gone(name.substr(spill_prefix.size()))))
+      leftovers.push_back(it->path());
   }
   for (const fs::path& path : leftovers) {
     // Killed between the two renames of swap_in(): the set-aside folder is the previous

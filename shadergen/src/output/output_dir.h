@@ -21,7 +21,14 @@ class StagedOutput {
   explicit StagedOutput(std::filesystem::path out_dir) : out_dir_(std::move(out_dir)) {}
 
   // `relative` uses '/' separators and stays inside the folder.
-  void add(const std::string& relative, std::string bytes) { files_[relative] = std::move(bytes); }
+  void add(const std::string& relative, std::string bytes) { files_[relative] = Entry{std::move(bytes), {}}; }
+  // A file whose bytes are already on disk, in `file`: compared by streaming and linked (or, on
+  // another file system, copied) into the staging folder, so they are never held in memory.
+  // `file` should be on the output's file system (a folder beside it: spill_folder_beside())
+  // and must stay unchanged until commit() returns.
+  void add_file(const std::string& relative, std::filesystem::path file) {
+    files_[relative] = Entry{{}, std::move(file)};
+  }
 
   // True when the folder already holds exactly these files with exactly these bytes.
   bool unchanged() const;
@@ -35,6 +42,7 @@ class StagedOutput {
   // builds into the same output take turns; the second finds the folder unchanged. Under
   // that lock any staging or set-aside folder of this output is a leftover of a killed
   // build: it is removed, or put back as the output if the kill came between the renames.
+  // A spill folder (spill_folder_beside()) is removed only when its process is gone.
   Result<bool> commit(const std::function<bool()>& cancelled = {});
 
  private:
@@ -42,8 +50,19 @@ class StagedOutput {
   void clear_leftovers() const;
   Status swap_in(const std::filesystem::path& staging);
 
+  struct Entry {
+    std::string bytes;
+    std::filesystem::path file;  // when not empty, holds the bytes instead
+  };
+  bool holds(const std::filesystem::path& path, const Entry& entry) const;
+
   std::filesystem::path out_dir_;
-  std::map<std::string, std::string> files_;
+  std::map<std::string, Entry> files_;
 };
+
+// A new folder name beside `out_dir` for a build's files before they are staged (BlobSpill).
+// It is not one of the staging or set-aside names that a commit clears as leftovers: a
+// concurrent build's spill folder stays untouched.
+std::filesystem::path spill_folder_beside(const std::filesystem::path& out_dir);
 
 }  // namespace shadergen

@@ -1,0 +1,63 @@
+#include "compile/blob_spill.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "base/file_io.h"
+
+namespace shadergen {
+namespace fs = std::filesystem;
+
+BlobSpill::~BlobSpill() {
+  std::error_code ec;
+  if (created_) fs::remove_all(folder_, ec);
+}
+
+Status BlobSpill::create_folder() {
+  if (created_) return Ok{};
+  std::error_code ec;
+  if (!folder_.parent_path().empty()) fs::create_directories(folder_.parent_path(), ec);
+  if (!ec) fs::create_directory(folder_, ec);
+  if (ec) return make_error(folder_.string(), 0, "cannot create the folder for the build's SPIR-V: " + ec.message());
+  created_ = true;
+  return Ok{};
+}
+
+Status BlobSpill::put(const std::string& hash, std::span<const std::uint32_t> words) {
+  {
+    std::lock_guard lock(mutex_);
+    if (!stored_.insert(hash).second) return Ok{};
+    if (Status s = create_folder(); !s) return s;
+  }
+  // Written in place, not through a temporary: no one else reads this folder, and a failed write
+  // fails the build. Not synced here: the output's staging syncs the files it links in.
+  const fs::path path = path_of(hash);
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) return make_error(path.string(), 0, std::string("cannot write: ") + std::strerror(errno));
+  bool written = std::fwrite(words.data(), sizeof(std::uint32_t), words.size(), file) == words.size();
+  int error = written ? 0 : errno;
+  if (std::fclose(file) != 0 && written) written = false, error = errno;
+  if (written) return Ok{};
+  return make_error(path.string(), 0, std::string("write failed: ") + std::strerror(error));
+}
+
+Result<std::vector<std::uint32_t>> BlobSpill::get(const std::string& hash) const {
+  auto bytes = read_file(path_of(hash));
+  if (!bytes) return std::move(bytes).take_errors();
+  if (bytes->size() % sizeof(std::uint32_t) != 0)
+    return make_error(path_of(hash).string(), 0, "not a whole number of SPIR-V words");
+  std::vector<std::uint32_t> words(bytes->size() / sizeof(std::uint32_t));
+  if (!words.empty()) std::memcpy(words.data(), bytes->data(), bytes->size());
+  return words;
+}
+
+fs::path BlobSpill::path_of(const std::string& hash) const { return folder_ / (hash + ".spv"); }
+
+Result<fs::path> BlobSpill::scratch_file(const std::string& name) {
+  std::lock_guard lock(mutex_);
+  if (Status s = create_folder(); !s) return std::move(s).take_errors();
+  return folder_ / name;
+}
+
+}  // namespace shadergen
