@@ -16,10 +16,15 @@ BlobSpill::~BlobSpill() {
 
 Status BlobSpill::create_folder() {
   if (created_) return Ok{};
+  // Worded as the output's staging words them: the user named the output, not the spill.
   std::error_code ec;
-  if (!folder_.parent_path().empty()) fs::create_directories(folder_.parent_path(), ec);
-  if (!ec) fs::create_directory(folder_, ec);
-  if (ec) return make_error(folder_.string(), 0, "cannot create the folder for the build's SPIR-V: " + ec.message());
+  const fs::path parent = folder_.parent_path();
+  const std::string named = (output_.empty() ? folder_ : output_).string();
+  if (!parent.empty()) fs::create_directories(parent, ec);
+  if (ec) return make_error(named, 0, "cannot create its parent folder " + parent.string() + ": " + ec.message());
+  fs::create_directory(folder_, ec);
+  if (ec)
+    return make_error(named, 0, "cannot create a spill folder beside it (" + folder_.string() + "): " + ec.message());
   created_ = true;
   return Ok{};
 }
@@ -34,12 +39,12 @@ Status BlobSpill::put(const std::string& hash, std::span<const std::uint32_t> wo
   // fails the build. Not synced here: the output's staging syncs the files it links in.
   const fs::path path = path_of(hash);
   std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file) return make_error(path.string(), 0, std::string("cannot write: ") + std::strerror(errno));
+  if (!file) return make_error(shown(path).string(), 0, std::string("cannot write: ") + std::strerror(errno));
   bool written = std::fwrite(words.data(), sizeof(std::uint32_t), words.size(), file) == words.size();
   int error = written ? 0 : errno;
   if (std::fclose(file) != 0 && written) written = false, error = errno;
   if (written) return Ok{};
-  return make_error(path.string(), 0, std::string("write failed: ") + std::strerror(error));
+  return make_error(shown(path).string(), 0, "write failed: " + write_failure(error));
 }
 
 Result<std::vector<std::uint32_t>> BlobSpill::get(const std::string& hash) const {
@@ -53,6 +58,16 @@ Result<std::vector<std::uint32_t>> BlobSpill::get(const std::string& hash) const
 }
 
 fs::path BlobSpill::path_of(const std::string& hash) const { return folder_ / (hash + ".spv"); }
+
+fs::path BlobSpill::shown(const fs::path& file) const {
+  if (output_.empty()) return file;
+  if (file.extension() == ".spv") return output_ / "spirv" / (file.stem().string().substr(0, 16) + ".spv");
+  return output_ / file.filename();
+}
+
+std::string BlobSpill::write_failure(int error) {
+  return error != 0 ? std::strerror(error) : "the write did not complete (a full disk?)";
+}
 
 Result<fs::path> BlobSpill::scratch_file(const std::string& name) {
   std::lock_guard lock(mutex_);

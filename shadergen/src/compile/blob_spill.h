@@ -22,7 +22,10 @@ namespace shadergen {
 
 class BlobSpill {
  public:
-  explicit BlobSpill(std::filesystem::path folder) : folder_(std::move(folder)) {}
+  // `output` is the folder the user named, which the spill sits beside: errors name it and the
+  // output file a spill file becomes, never the spill's own name (empty: the spill's paths).
+  explicit BlobSpill(std::filesystem::path folder, std::filesystem::path output = {})
+      : folder_(std::move(folder)), output_(std::move(output)) {}
   ~BlobSpill();
   BlobSpill(const BlobSpill&) = delete;
   BlobSpill& operator=(const BlobSpill&) = delete;
@@ -39,11 +42,17 @@ class BlobSpill {
   Result<std::filesystem::path> scratch_file(const std::string& name);
 
   const std::filesystem::path& folder() const { return folder_; }
+  // The output path the user knows for spill file `file`, for messages: a blob as
+  // <output>/spirv/<its file>, any other file as <output>/<its name>.
+  std::filesystem::path shown(const std::filesystem::path& file) const;
+  // errno's text after a failed write, or a guess when errno says nothing.
+  static std::string write_failure(int error);
 
  private:
   Status create_folder();  // callers hold mutex_
 
   std::filesystem::path folder_;
+  std::filesystem::path output_;
   mutable std::mutex mutex_;
   bool created_ = false;
   std::set<std::string> stored_;  // hashes put() has written or is writing

@@ -1,7 +1,9 @@
 #include "shadergen/build.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <optional>
@@ -68,10 +70,11 @@ Status spill_output(BlobSpill& spill, StagedOutput& staged, const std::string& n
   auto file = spill.scratch_file(name);
   if (!file) return std::move(file).take_errors();
   std::ofstream out(*file, std::ios::binary | std::ios::trunc);
-  if (!out) return make_error(file->string(), 0, "cannot write");
+  if (!out) return make_error(spill.shown(*file).string(), 0, std::string("cannot write: ") + std::strerror(errno));
+  errno = 0;
   write(out);
   out.close();
-  if (!out) return make_error(file->string(), 0, "write failed (a full disk?)");
+  if (!out) return make_error(spill.shown(*file).string(), 0, "write failed: " + BlobSpill::write_failure(errno));
   staged.add_file(name, *file);
   return Ok{};
 }
@@ -252,7 +255,7 @@ Result<BuildSummary> build(const BuildOptions& given) {
   compile_options.shards = options.shards;
   // Every blob's words go here as they are made, beside the output; removed on every return.
   std::optional<BlobSpill> spill;
-  if (!options.shard) compile_options.spill = &spill.emplace(spill_folder_beside(options.out_dir));
+  if (!options.shard) compile_options.spill = &spill.emplace(spill_folder_beside(options.out_dir), options.out_dir);
   if (inputs.enabled()) {
     compile_options.inputs = &inputs;
     compile_options.input_key = input_set_key(current_cache_key_parts(), options.spec_path, loaded->digest,

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -237,7 +239,8 @@ class SourceWriter {
   Status run(const std::string& header_name, const std::string& ns, const std::filesystem::path& file) {
     out_.rdbuf()->pubsetbuf(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
     out_.open(file, std::ios::binary | std::ios::trunc);
-    if (!out_) return make_error(file.string(), 0, "cannot write the generated source");
+    if (!out_) return make_error(spill_.shown(file).string(), 0, std::string("cannot write: ") + std::strerror(errno));
+    errno = 0;
     out_ << banner(d_) << "#include " << literal(header_name) << "\n\n"
          << (tables_in_header(d_) ? "" : "#include <algorithm>\n#include <cstddef>\n")
          << "#include <span>\n#include <string_view>\n\n"
@@ -252,7 +255,7 @@ class SourceWriter {
     source_lookups();
     out_ << close_namespace(ns);
     out_.close();
-    if (!out_) return make_error(file.string(), 0, "write failed (a full disk?)");
+    if (!out_) return make_error(spill_.shown(file).string(), 0, "write failed: " + BlobSpill::write_failure(errno));
     return Ok{};
   }
 
