@@ -131,7 +131,7 @@ fs::path write_domain(const fs::path& dir, int n) {
 // `lines` distinct combinations of the 32 features, none with both F00 and F01 (the impossible
 // rule), drawn by a fixed generator so that every run lists the same ones.
 fs::path write_variants(const fs::path& dir, int lines) {
-  const fs::path path = dir / ("listed" + std::to_string(lines) + ".variants");
+  fs::path path = dir / ("listed" + std::to_string(lines) + ".variants");
   std::ofstream out(path);
   out << "# shadergen_scale_bench: " << lines << " distinct combinations of 32 features\n";
   std::vector<std::uint32_t> seen;
