@@ -18,6 +18,13 @@ namespace {
 
 namespace fs = sgtest::fs;
 
+// The toy fixture built into `out` with no cache: every blob is compiled, so every one is spilled.
+shadergen::BuildOptions cold_toy_build_into(const fs::path& out) {
+  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), out, {});
+  options.use_cache = false;
+  return options;
+}
+
 std::string first_error(const shadergen::Result<shadergen::BuildSummary>& r) {
   return r.ok() ? std::string() : r.errors().front().to_string();
 }
@@ -49,8 +56,7 @@ std::map<std::string, ino_t> inodes(const fs::path& dir) {
 
 TEST(Spill, NothingIsLeftBesideTheOutputAfterASuccessfulBuild) {
   sgtest::TempDir dir("spill-success");
-  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), dir / "out", {});
-  options.use_cache = false;
+  shadergen::BuildOptions options = cold_toy_build_into(dir / "out");
   auto summary = shadergen::build(options);
   ASSERT_TRUE(summary.ok()) << first_error(summary);
   EXPECT_EQ(names_in(dir.path()), (std::set<std::string>{"out"}));
@@ -80,8 +86,7 @@ TEST(Spill, ColdSerialAndWarmBuildsWriteTheSameBytes) {
 TEST(Spill, NothingIsLeftBesideTheOutputAfterAFailedBuild) {
   sgtest::TempDir dir("spill-failure");
   sgtest::write_file(dir / "out", "not a folder");
-  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), dir / "out", {});
-  options.use_cache = false;
+  shadergen::BuildOptions options = cold_toy_build_into(dir / "out");
   auto summary = shadergen::build(options);
   ASSERT_FALSE(summary.ok());
   EXPECT_TRUE(sgtest::contains(first_error(summary), "not a folder")) << first_error(summary);
@@ -97,8 +102,7 @@ TEST(Spill, NothingIsLeftBesideTheOutputAfterACancelledBuild) {
   ASSERT_TRUE(first.ok()) << first_error(first);
   auto bytes_before = sgtest::snapshot(dir / "out");
   auto times_before = sgtest::mtimes(dir / "out");
-  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), dir / "out", {});
-  options.use_cache = false;
+  shadergen::BuildOptions options = cold_toy_build_into(dir / "out");
   options.cpp_namespace = "other_namespace";  // the output would change if it were written
   bool saw_spill = false;
   const fs::path out = dir / "out";
@@ -117,8 +121,7 @@ TEST(Spill, NothingIsLeftBesideTheOutputAfterACancelledBuild) {
 // same inode, same timestamp.
 TEST(Spill, UnchangedFilesAreHardLinkedFromThePreviousOutput) {
   sgtest::TempDir dir("spill-links");
-  shadergen::BuildOptions options = sgtest::build_options(sgtest::toy_spec(), dir / "out", {});
-  options.use_cache = false;
+  shadergen::BuildOptions options = cold_toy_build_into(dir / "out");
   auto first = shadergen::build(options);
   ASSERT_TRUE(first.ok()) << first_error(first);
   auto times_before = sgtest::mtimes(dir / "out");
