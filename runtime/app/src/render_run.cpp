@@ -121,8 +121,8 @@ struct ReadBack {
 ReadBack read_back(const TileRenderer& renderer, Baselines baselines) {
   ReadBack frames;
   frames.classified = renderer.read_classified();
-  if (baselines != Baselines::dynamic) frames.naive = renderer.read_naive();
-  if (baselines != Baselines::naive) frames.dynamic = renderer.read_dynamic();
+  if (runs_naive(baselines)) frames.naive = renderer.read_naive();
+  if (runs_dynamic(baselines)) frames.dynamic = renderer.read_dynamic();
   frames.raw_ids = renderer.raw_tile_ids();
   return frames;
 }

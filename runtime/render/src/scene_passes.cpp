@@ -147,4 +147,9 @@ void ScenePasses::record_gbuffer(VkCommandBuffer cmd, const RenderTargets& targe
   vkCmdEndRenderPass(cmd);
 }
 
+// Until the classified G-buffer writes data of its own, the plain pass draws the same pipelines.
+void ScenePasses::record_gbuffer_plain(VkCommandBuffer cmd, const RenderTargets& targets) const {
+  record_gbuffer(cmd, targets);
+}
+
 }  // namespace tilelight

@@ -24,6 +24,9 @@ class ScenePasses {
   // Shadow map pass, then the G-buffer pass (geometry, then sky at the far plane).
   void record_shadow_map(VkCommandBuffer cmd, const RenderTargets& targets) const;
   void record_gbuffer(VkCommandBuffer cmd, const RenderTargets& targets) const;
+  // The baselines' plain G-buffer: what lighting reads and nothing else (no classification data),
+  // into the same targets, bit-identical in every target lighting reads.
+  void record_gbuffer_plain(VkCommandBuffer cmd, const RenderTargets& targets) const;
 
  private:
   struct MeshBuffers {

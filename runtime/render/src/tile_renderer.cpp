@@ -248,8 +248,8 @@ struct TileRenderer::Impl {
     return compute_passes ? compute_passes->class_count() : light_passes->class_count();
   }
 
-  bool runs_naive() const { return options.baselines != Baselines::dynamic; }
-  bool runs_dynamic() const { return options.baselines != Baselines::naive; }
+  bool runs_naive() const { return tilelight::runs_naive(options.baselines); }
+  bool runs_dynamic() const { return tilelight::runs_dynamic(options.baselines); }
 
   const Buffer& tile_indices() const { return gpu_build ? gpu_build->indices() : cpu_indices; }
   const Buffer& tile_draws() const { return gpu_build ? gpu_build->draws() : cpu_draws; }

@@ -46,9 +46,19 @@ enum class LightPass { raster, compute };
 constexpr const char* to_string(LightPass pass) { return pass == LightPass::compute ? "compute" : "raster"; }
 
 // The full-screen passes the classified frame is measured against: naive (the uber-shader with
-// every feature, on every pixel) and dynamic (every feature compiled in, each taken only where
-// the pixel needs it: per-pixel branching).
-enum class Baselines { naive, dynamic, both };
+// every feature, on every sample of every pixel), dynamic (every feature compiled in, each taken
+// only where the pixel needs it: per-pixel branching) and floor (reads the G-buffer and writes
+// the output with no lighting, in the naive pass's shape: what any full-frame light pass costs
+// at least). `both` is naive and dynamic, `all` the three, `none` no baseline at all. The
+// baselines run on the plain G-buffer (no classification data), drawn only when one runs.
+enum class Baselines { none, naive, dynamic, both, floor, all };
+
+constexpr bool runs_naive(Baselines b) { return b == Baselines::naive || b == Baselines::both || b == Baselines::all; }
+constexpr bool runs_dynamic(Baselines b) {
+  return b == Baselines::dynamic || b == Baselines::both || b == Baselines::all;
+}
+constexpr bool runs_floor(Baselines b) { return b == Baselines::floor || b == Baselines::all; }
+constexpr bool runs_any_baseline(Baselines b) { return b != Baselines::none; }
 
 struct RendererOptions {
   std::uint32_t width = 1280;
@@ -68,11 +78,19 @@ struct RendererOptions {
 };
 
 struct FrameTimings {  // milliseconds
-  double shadow_map = 0, gbuffer = 0, classification = 0;
+  double shadow_map = 0;
+  double gbuffer = 0;        // the classified path's G-buffer (with its classification data)
+  double gbuffer_plain = 0;  // the baselines' plain G-buffer; 0 when no baseline ran
+  double classification = 0;
   double index_build_cpu = 0;  // host clock, CPU path only
   double index_build_gpu = 0;  // GPU timestamps, GPU path only
   double tiled_light = 0, naive_light = 0;
   double dynamic_light = 0;  // the per-pixel-branching pass; 0 when it did not run (RendererOptions::baselines)
+  double floor_light = 0;    // the floor pass; 0 when it did not run
+  // Whole frames: shadow map + G-buffer + [classification + index build] + light pass. The
+  // classified frame is end to end (first to last GPU timestamp), so the CPU path's wait for the
+  // host's index build is in it; a baseline frame is the sum of its passes. 0 where it did not run.
+  double frame_classified = 0, frame_naive = 0, frame_dynamic = 0;
 };
 
 // The raster tile pass draws primitives (coalesced rectangles, as triangle pairs or points); the
