@@ -62,25 +62,25 @@ TEST_F(Classification, GpuMatchesCpuReferenceWithPartialTiles) {
   expect_matches_reference(*renderer);
 }
 
-// The classifier trusts the materials' MSAA-edge bit instead of comparing samples
-// (gbuffer.glsl). That is sound only if every pixel whose samples differ in any stored value
-// carries the bit on some sample; check it on every pixel of real frames. The converse need not
-// hold (a mesh's inner edges give partial fragments with equal values), which costs only time.
+// The classifier trusts the fragment tags instead of comparing samples (gbuffer.glsl): it
+// compares values only where a tag carries the shared bit. That is sound only if every pixel
+// whose samples differ in any stored value has differing tags or the shared bit; check it on
+// every pixel of real frames. The converse need not hold (a mesh's inner edges give fragments of
+// different triangles with equal values), which costs only time.
 struct EdgeBitCount {
   std::size_t differing = 0, flagged = 0, missed = 0;
   std::string first_missed;
 };
 
 EdgeBitCount count_edge_bits(const GBufferSamples& g) {
-  const auto edge_bit = [](const float* sample) {  // gbuffer.glsl: the depth's MSAA-edge or face bit
-    return (std::bit_cast<std::uint32_t>(sample[12]) & 5u) != 0;
-  };
+  const auto tag = [](const float* sample) { return std::bit_cast<std::uint32_t>(sample[13]); };
+  const auto shared = [&](const float* sample) { return (tag(sample) & 0x80000000u) != 0; };  // gbuffer.glsl
   EdgeBitCount count;
   for (std::uint32_t y = 0; y < g.height; ++y) {
     for (std::uint32_t x = 0; x < g.width; ++x) {
-      bool differ = false, bit = edge_bit(g.at(x, y, 0));
+      bool differ = false, bit = shared(g.at(x, y, 0));
       for (std::uint32_t s = 1; s < g.samples; ++s) {
-        bit = bit || edge_bit(g.at(x, y, s));
+        bit = bit || shared(g.at(x, y, s)) || tag(g.at(x, y, s)) != tag(g.at(x, y, 0));
         for (int i = 0; i < 13; ++i) differ = differ || !(g.at(x, y, 0)[i] == g.at(x, y, s)[i]);
       }
       count.differing += differ;
@@ -91,12 +91,12 @@ EdgeBitCount count_edge_bits(const GBufferSamples& g) {
   return count;
 }
 
-TEST_F(Classification, EdgeBitsCoverEveryPixelWithDifferingSamples) {
+TEST_F(Classification, FragmentTagsCoverEveryPixelWithDifferingSamples) {
   std::size_t differing = 0;
   for (const char* camera : {"default", "low", "shadow"}) {
     const EdgeBitCount count = count_edge_bits(TileRendererTestSeam::read_gbuffer(*render(camera, 320, 180)));
     EXPECT_EQ(count.missed, 0u) << camera << ": " << count.first_missed
-                                << " has differing samples but no MSAA-edge bit";
+                                << " has differing samples but equal tags without the shared bit";
     differing += count.differing;
   }
   EXPECT_GT(differing, 0u) << "no frame has an MSAA edge: the check proves nothing";
@@ -104,9 +104,9 @@ TEST_F(Classification, EdgeBitsCoverEveryPixelWithDifferingSamples) {
 
 // Only real discontinuities are MSAA edges: the two triangles of one flat face (the ground's one
 // quad here, seen from above so that its diagonal crosses the view and no horizon does) store the
-// same values where they share a pixel (gbuffer.frag's face plane), so no tile of the frame is
-// an edge. The same frame with the face plane switched off (material.w = 0) has its diagonal
-// classified as an edge: the check can fail.
+// same values where they share a pixel (gbuffer.frag: the face's depth plane and normal), so no
+// tile of the frame is an edge. The same frame with flat faces switched off (material.w = 0)
+// has its diagonal classified as an edge: the check can fail.
 std::uint32_t edge_tiles_over_ground(const Context& context, float flat_faces) {
   Scene scene = make_demo_scene();
   scene.batches = {scene.batches.front()};  // the ground alone
@@ -133,7 +133,7 @@ TEST_F(Classification, AFlatFacesInnerDiagonalIsNoMsaaEdge) {
   EXPECT_GT(edge_tiles_over_ground(context(), 0.0f), 0u) << "the diagonal is not in view: the check proves nothing";
 }
 
-// The classifier reads the depth alone (gbuffer.glsl): the sky is depth 1.0, and the sun-facing
+// The classifier reads the surface depth (gbuffer.glsl): the sky is depth 1.0, and the sun-facing
 // bit is the material's N.L > 0 on the normal as RT1 stores it. Check both on every sample of
 // real frames against what the other targets hold.
 struct DepthBitCount {
@@ -150,8 +150,8 @@ DepthBitCount count_depth_bits(const GBufferSamples& g, const glm::vec4& sun) {
         const bool sky = v[12] == 1.0f;
         const bool sky_motion = std::nearbyint(v[7] * 255.0f) == 0.0f;
         const float n_dot_l = v[4] * sun.x + v[5] * sun.y + v[6] * sun.z;  // precise_dot()'s order
-        const bool bit = (std::bit_cast<std::uint32_t>(v[12]) & 2u) != 0;
-        bool wrong = sky != sky_motion || (sky && (std::bit_cast<std::uint32_t>(v[12]) & 7u) != 0);
+        const bool bit = (std::bit_cast<std::uint32_t>(v[12]) & 1u) != 0;
+        bool wrong = sky != sky_motion;
         if (!sky) wrong = wrong || (bit != (n_dot_l > 0.0f) && std::fabs(n_dot_l) > 1e-6f);
         count.sky += sky;
         count.facing += !sky && bit;

@@ -13,9 +13,10 @@
 // completely: SOLID only if every tap of every such sample is occluded, none if every tap is
 // lit, SOFT (full PCF, right for any sample) otherwise.
 //
-// Per sample the pass reads the depth alone, which says whether the sample is sky, faces the sun
-// (the lighting's own decision, made by the material) or marks an MSAA edge (gbuffer.glsl), and
-// where it lies. Everything that depends on position is decided per TILE, from bounds, because
+// Per sample the pass reads the fragment tag, which says whether the pixel's samples may differ
+// (an MSAA edge, gbuffer.glsl), and per pixel sample 0's surface depth, which says whether it is
+// sky, faces the sun (the lighting's own decision, made by the material) and where it lies; an
+// edge pixel's other samples add their depths too. Everything that depends on position is decided per TILE, from bounds, because
 // the lighting computes it with a projective map of (pixel centre, depth):
 //   (x, y, d) -> h = inv_view_proj * (x, y, d, 1) -> world = h.xyz / h.w -> sun map texel P,
 //   receiver depth r, view depth v,
@@ -180,32 +181,36 @@ const uint GATHER_PIXELS = GATHER_ROWS * TILE_SIZE;
 // loop runs as long as its busiest lane plus one masked pass. So
 //   - the pixels of GATHER_ROWS rows are unrolled, with constant bounds (coordinates clamped to
 //     the frame: a repeated pixel adds nothing new), and no per-pixel loop runs out;
-//   - every sample's edge bit (one depth fetch) is read without a branch per sample;
+//   - every sample's fragment tag (one R32UI fetch) is read without a branch per sample;
 //   - the other samples of the edge pixels are added afterwards, in a loop over a bit mask of
 //     them, instead of a branch per pixel that paid their fetches for every pixel; the loop
-//     runs once per edge pixel of the busiest of the eight tiles (about 3 % of pixels are
-//     edge pixels).
+//     runs once per edge pixel of the busiest of the eight tiles (a few % of pixels are edge
+//     pixels).
 void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, inout DepthPlane plane,
                  uint rows, bool whole_tile)
 {
     float depth[GATHER_PIXELS];  // sample 0: corners fit the plane, sun-facing ones get offsets
     uint needs_offset = 0u;      // bit k: pixel k = j * TILE_SIZE + i, that is (i, rows + j)
-    uint edge_pixels = 0u;  // bit k: some sample of pixel k has the MSAA-edge bit
-    uint face_pixels = 0u;  // ... the face bit
+    uint edge_pixels = 0u;    // bit k: the samples of pixel k come from different fragments
+    uint shared_pixels = 0u;  // ... carry the shared bit (a flat face's partial fragments)
     [[unroll]] for (uint k = 0u; k < GATHER_PIXELS; ++k) {
         ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
         GDepthSample first = gbuffer_load_depth(pixel, 0);
-        uint edge = uint(first.msaa_edge);
-        uint face = uint(first.face_edge);
+        uint edge = 0u;
+        uint shared_face = 0u;
+#ifndef GBUFFER_SINGLE_SAMPLED
+        uint first_tag = gbuffer_load_tag(pixel, 0);
+        shared_face = uint(gbuffer_tag_is_shared(first_tag));
         [[unroll]] for (int s = 1; s < GBUFFER_SAMPLES; ++s) {
-            GDepthSample other = gbuffer_load_depth(pixel, s);
-            edge |= uint(other.msaa_edge);
-            face |= uint(other.face_edge);
+            uint tag = gbuffer_load_tag(pixel, s);
+            edge |= uint(gbuffer_tags_differ(tag, first_tag));
+            shared_face |= uint(gbuffer_tag_is_shared(tag));
         }
+#endif
         depth[k] = first.depth;
         needs_offset |= uint(add_sample_flags(tile, first)) << k;
         edge_pixels |= edge << k;
-        face_pixels |= face << k;
+        shared_pixels |= shared_face << k;
     }
     if (whole_tile) {
         plane = depth_plane_from_corners(depth[0], depth[TILE_SIZE - 1], depth[GATHER_PIXELS - TILE_SIZE],
@@ -217,15 +222,15 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
             add_sun_offset(tile, plane, pixel - first_pixel, depth[k]);
         }
     }
-    // Samples 1.. of the pixels with an edge or face bit (the G-buffer always has 2 or more),
-    // one (pixel, sample) pair per pass, so that the pass the loop always runs once more
-    // (masked) costs one sample's fetches, not a pixel's. The tile is an MSAA edge tile where
-    // some pixel's samples may differ (gbuffer_pixel_is_edge(), the lighting's own test): a
-    // pixel with the MSAA-edge bit; or one with the face bit whose samples differ from sample
-    // 0 in their depth, which this loop reads anyway, or, where every depth agrees (a flat
-    // face's inner diagonal, which is no edge), in a colour target, which the loop after it
-    // checks, only in tiles without an edge so far and only until one pixel's colours differ.
-    uint pending = edge_pixels | face_pixels;
+    // Samples 1.. of the pixels whose tags differ or carry the shared bit (the G-buffer always
+    // has 2 or more), one (pixel, sample) pair per pass, so that the pass the loop always runs
+    // once more (masked) costs one sample's fetches, not a pixel's. The tile is an MSAA edge
+    // tile where some pixel's samples may differ: a pixel whose tags differ; or one with the
+    // shared bit whose samples differ from sample 0 in their surface depth, which this loop
+    // reads anyway, or, where every depth agrees (a flat face's inner diagonal, which is no
+    // edge), in a colour target, which the loop after it checks, only in tiles without an edge
+    // so far and only until one pixel's values differ.
+    uint pending = edge_pixels | shared_pixels;
     bool depths_differ = false;
     int s = 1;
     while (pending != 0u) {
@@ -241,12 +246,12 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
         s = pixel_done ? 1 : s + 1;
     }
     bool samples_differ = edge_pixels != 0u || depths_differ;
-    uint colours_pending = samples_differ ? 0u : face_pixels;
-    while (colours_pending != 0u) {
-        uint k = uint(findLSB(colours_pending));
+    uint values_pending = samples_differ ? 0u : shared_pixels;
+    while (values_pending != 0u) {
+        uint k = uint(findLSB(values_pending));
         ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
-        samples_differ = !gbuffer_colours_all_equal(pixel, GBUFFER_SAMPLES);
-        colours_pending = samples_differ ? 0u : colours_pending & (colours_pending - 1u);
+        samples_differ = !gbuffer_samples_equal(pixel, GBUFFER_SAMPLES);
+        values_pending = samples_differ ? 0u : values_pending & (values_pending - 1u);
     }
     if (samples_differ) {
         tile.flags |= TILE_FLAG_EDGE;

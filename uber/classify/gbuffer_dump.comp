@@ -2,9 +2,10 @@
 // gbuffer_dump.comp -- copies every sample of the G-buffer into a buffer, as stored, so the CPU
 // reference classifier and tests can read it (multisampled images cannot be copied to the host
 // directly; the single-sampled build reads its one sample the same way). Layout per pixel: for
-// each sample, rt0, rt1, rt2, then vec4(depth, 0, 0, 0): 16 floats per sample, pixels row-major.
+// each sample, rt0, rt1, rt2, then vec4(rt3 surface depth, fragment tag as float bits, 0, 0):
+// 16 floats per sample, pixels row-major. The single-sampled G-buffer has no tags: 0 there.
 #extension GL_GOOGLE_include_directive : require
-#include "lighting_params.glsl"
+#include "gbuffer.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -26,6 +27,11 @@ void main()
         dump.texels[at + 0u] = gbuffer_fetch(gbuffer_albedo_spec, pixel, s);
         dump.texels[at + 1u] = gbuffer_fetch(gbuffer_normal_motion, pixel, s);
         dump.texels[at + 2u] = gbuffer_fetch(gbuffer_prelit_power, pixel, s);
-        dump.texels[at + 3u] = vec4(gbuffer_fetch(gbuffer_depth, pixel, s).r, 0.0, 0.0, 0.0);
+#ifdef GBUFFER_SINGLE_SAMPLED
+        uint tag = 0u;
+#else
+        uint tag = gbuffer_load_tag(pixel, s);
+#endif
+        dump.texels[at + 3u] = vec4(gbuffer_fetch(gbuffer_surface_depth, pixel, s).r, uintBitsToFloat(tag), 0.0, 0.0);
     }
 }

@@ -7,7 +7,7 @@
 #include "gbuffer.glsl"
 
 layout(set = 0, binding = 0, std430) readonly buffer Samples {
-    vec4 texels[]; // per pixel, per sample: rt0, rt1, rt2, vec4(depth, 0, 0, 0)
+    vec4 texels[]; // per pixel, per sample: rt0, rt1, rt2, vec4(rt3, tag bits, 0, 0)
 } source;
 
 layout(push_constant) uniform UploadPush {
@@ -18,6 +18,10 @@ layout(push_constant) uniform UploadPush {
 layout(location = 0) out vec4 out_rt0;
 layout(location = 1) out vec4 out_rt1;
 layout(location = 2) out vec4 out_rt2;
+layout(location = 3) out float out_rt3;
+#ifndef GBUFFER_SINGLE_SAMPLED
+layout(location = 4) out uint out_tag;
+#endif
 
 uint sample_texel(uvec2 pixel, uint sample_index, uint target)
 {
@@ -25,16 +29,18 @@ uint sample_texel(uvec2 pixel, uint sample_index, uint target)
 }
 
 // The upload stands in for the material shaders, so it must keep their promises (gbuffer.glsl):
-// a pixel whose samples differ carries the MSAA-edge bit on some sample -- a test's edits may make
-// samples differ that the scene wrote alike; such a pixel gets the bit on every sample -- and a
-// geometry sample's sun-facing bit is that of its stored normal, its depth below the sky's.
-// Samples that keep the promises already are written exactly as given.
+// samples with equal tags and no shared bit are equal -- a test's edits may make samples differ
+// that the scene wrote alike; such a pixel gets the shared bit on every sample, so that readers
+// compare its values -- and a geometry sample's sun-facing bit is that of its stored normal, its
+// depth below the sky's. Samples that keep the promises already are written exactly as given.
 bool pixel_samples_differ(uvec2 pixel)
 {
     for (uint s = 1u; s < push.size.z; ++s) {
         for (uint target = 0u; target < 4u; ++target) {
-            if (any(notEqual(source.texels[sample_texel(pixel, 0u, target)],
-                             source.texels[sample_texel(pixel, s, target)]))) {
+            vec4 first = source.texels[sample_texel(pixel, 0u, target)];
+            vec4 other = source.texels[sample_texel(pixel, s, target)];
+            if (target == 3u ? floatBitsToUint(first.x) != floatBitsToUint(other.x)
+                             : any(notEqual(floatBitsToUint(first), floatBitsToUint(other)))) {
                 return true;
             }
         }
@@ -42,14 +48,20 @@ bool pixel_samples_differ(uvec2 pixel)
     return false;
 }
 
-bool pixel_has_edge_bit(uvec2 pixel)
+uint given_tag(uvec2 pixel, uint sample_index)
 {
-    for (uint s = 0u; s < push.size.z; ++s) {
-        if (gbuffer_decode_msaa_edge_bit(source.texels[sample_texel(pixel, s, 3u)].x)) {
-            return true;
-        }
+    return floatBitsToUint(source.texels[sample_texel(pixel, sample_index, 3u)].y);
+}
+
+// True when the given tags already tell the pixel's samples apart or ask for a comparison.
+bool tags_mark_pixel(uvec2 pixel)
+{
+    uint first = given_tag(pixel, 0u);
+    bool marked = gbuffer_tag_is_shared(first);
+    for (uint s = 1u; s < push.size.z; ++s) {
+        marked = marked || gbuffer_tags_differ(given_tag(pixel, s), first) || gbuffer_tag_is_shared(given_tag(pixel, s));
     }
-    return false;
+    return marked;
 }
 
 void main()
@@ -59,12 +71,15 @@ void main()
     float depth = source.texels[at + 3u].x;
     vec4 rt1 = source.texels[at + 1u];
     if (depth != GBUFFER_SKY_DEPTH) {
-        bool edge = gbuffer_decode_msaa_edge_bit(depth) || (!pixel_has_edge_bit(pixel) && pixel_samples_differ(pixel));
         rt1.xyz = gbuffer_stored_normal(rt1.xyz);
-        depth = gbuffer_encode_depth(depth, edge, gbuffer_faces_sun(rt1.xyz, push.sun_direction.xyz), false);
+        depth = gbuffer_encode_depth(depth, gbuffer_faces_sun(rt1.xyz, push.sun_direction.xyz));
     }
     out_rt0 = source.texels[at + 0u];
     out_rt1 = rt1;
     out_rt2 = source.texels[at + 2u];
-    gl_FragDepth = depth;
+    out_rt3 = depth;
+#ifndef GBUFFER_SINGLE_SAMPLED
+    uint tag = given_tag(pixel, uint(gl_SampleID));
+    out_tag = !tags_mark_pixel(pixel) && pixel_samples_differ(pixel) ? tag | GBUFFER_SHARED_TAG_BIT : tag;
+#endif
 }

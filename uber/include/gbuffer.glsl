@@ -10,59 +10,57 @@
 //   RT0     RGBA8 unorm  albedo.r  albedo.g  albedo.b  specular amount
 //   RT1     RGBA16F      normal.x  normal.y  normal.z  motion byte / 255
 //   RT2     RGBA16F      prelit.r  prelit.g  prelit.b  specular power
-//   depth   D32 (0..1), multisampled like the colour targets; exactly 1.0 is
-//           sky, geometry lies below it; the lowest mantissa bit is the
-//           MSAA-edge bit, the next one the sun-facing bit
+//   RT3     R32F         surface depth (0..1): exactly 1.0 is sky, geometry lies
+//                        below it; its lowest mantissa bit is the sun-facing bit
+//   RT4     R32UI        fragment tag (classified G-buffer, 2+ samples only)
+//   depth   D32          the hardware depth test's own, interpolated per sample;
+//                        no shader reads it
 //
-// Motion byte: bits 0..6 are the motion ID (0 = sky), bit 7 is unused.
+// RT0..RT3 are what lighting reads; the baselines' "plain" G-buffer writes them
+// and nothing else, bit for bit as the classified G-buffer does (one material
+// shader, compiled with and without GBUFFER_FRAGMENT_TAGS). RT4 is the classified
+// path's only extra: classification reads it to find the pixels whose samples
+// may differ. Motion byte: bits 0..6 are the motion ID (0 = sky), bit 7 unused.
 //
-// The depth alone classifies a sample: whether it is sky, faces the sun or
-// marks an MSAA edge, and where it lies. The classifier reads nothing else
-// (gbuffer_load_depth()), except the colour targets of the pixels whose samples
-// carry the face bit and agree in depth (see "MSAA-edge bit" below): an RGBA16F
-// RT1 texel is the costliest fetch on a CPU driver (lavapipe), and the
-// classifier read one for every pixel for these two decisions, a third of its
-// time (docs/results.md h).
+// Surface depth (RT3): colour targets are written once per fragment (per pixel,
+// not per sample), so every sample a fragment covers stores the same RT3 value,
+// the fragment's depth at the pixel centre; a pixel covered by one fragment has
+// bit-identical samples in every target lighting reads, which is what lets the
+// lighting shade sample 0 alone there. The hardware depth stays interpolated per
+// sample and no shader writes gl_FragDepth, so early and hierarchical depth
+// testing stay on. A mesh with flat faces (gbuffer.frag) stores the depth of its
+// face's plane, whose coefficients both triangles of the face receive from data
+// they share exactly, so the two store equal values along their shared diagonal.
 //
-// Sky: the sky pass draws at the far plane, depth 1.0 (and motion ID 0), where
-// the depth was cleared; gbuffer_encode_depth() keeps every material depth
-// below 1.0, so `depth == 1.0` is the sky test of every reader.
+// Sky: the sky pass draws at the far plane and stores surface depth 1.0 (and
+// motion ID 0); gbuffer_encode_depth() keeps every material depth below 1.0, so
+// `depth == 1.0` is the sky test of every reader.
 //
 // Sun-facing bit: the one "faces the sun" decision of the lighting (SUN_LIGHT)
 // is made once, by the material shader, on the normal exactly as RT1 stores it
-// (gbuffer_stored_normal()), and kept in the depth; the lighting and the
-// classifier both read the bit, so they cannot disagree. It makes the G-buffer
-// depend on the direction of the one sun, which the frame knows before the
-// G-buffer pass (scene_params.glsl).
+// (gbuffer_stored_normal()), and kept in the surface depth; the lighting and
+// the classifier both read the bit, so they cannot disagree. It makes the
+// G-buffer depend on the direction of the one sun, which the frame knows before
+// the G-buffer pass (scene_params.glsl).
 //
-// MSAA-edge bit: Split/Second keeps a per-sample edge bit in the motion byte;
-// here it is the lowest mantissa bit of the stored depth (one unit in the last
-// place, 6e-8 of the depth or less). A material shader sets it in every sample
-// it writes when its fragment covers only part of the pixel
-// (gbuffer_fragment_is_partial). It moved to the depth because the classifier
-// reads it from every sample of every pixel: a D32 texel is half the bytes of
-// an RGBA16F one and takes the cheaper fetch path on a CPU driver (lavapipe),
-// and the classifier reads sample 0's depth anyway.
-// The bit marks a pixel whose samples MAY differ: because each fragment stores
-// one depth in all its samples (below), two fragments that both cover the whole
-// pixel win the depth test on the same samples, so a pixel whose samples differ
-// always keeps a sample from a partial fragment. The converse does not hold:
-// the two triangles of one flat face both cover part of the pixels along their
-// shared diagonal, and store equal values there (gbuffer.frag computes them
-// from the face's plane). So a pixel is an MSAA edge (gbuffer_pixel_is_edge(),
-// the classifier's test) only where the bit is set AND some sample differs from
-// sample 0 in some target; only such pixels are read beyond their depths, and
-// only pixels with the bit are compared at all.
+// Fragment tag (RT4): which fragment wrote the sample. Bits 0..30 name the
+// triangle: its instance's first triangle plus gl_PrimitiveID, unique in the
+// frame (scene_passes.cpp checks the count), or GBUFFER_SKY_TAG for the sky.
+// Two samples with the same such tag come from the same fragment (one fragment
+// per triangle per pixel), so they are equal in every target. A partial
+// fragment of a flat face (one covering only some of its pixel's samples)
+// writes GBUFFER_SHARED_TAG_BIT | its instance instead: two triangles of one
+// face, or coplanar faces of one instance, may then store equal values, and only
+// a comparison of the stored values can tell (gbuffer_samples_equal()).
+// So a pixel may differ between its samples (is an MSAA edge) exactly when its
+// samples' tags differ, or carry the shared bit and some stored value differs;
+// two full fragments that interleave by depth within one pixel (intersecting
+// surfaces) have different tags, which the former gl_FragDepth-based bits
+// could only rule out by giving up early depth testing.
 //
-// Per-pixel depth: a non-edge pixel must have bit-identical samples, because
-// the lighting shades only sample 0 of it. Colour targets are written once per
-// pixel, but hardware depth is interpolated per sample, so a sloped surface
-// would give every sample a different depth. Scene material shaders therefore
-// write `gl_FragDepth = gbuffer_encode_depth(gl_FragCoord.z, partial, faces_sun)`
-// (the pixel-centre depth with its bits), which stores one depth for all covered
-// samples of the pixel; the edge-bit argument above rests on it too. The sky
-// pass writes no bits: it lies at depth 1.0, whose low bits are 0 (and the
-// decoders ignore the bits of the sky depth).
+// The plain G-buffer has no tags: a reader that needs the decision there (the
+// dynamic baseline) compares every sample's stored values instead
+// (gbuffer_pixel_samples_differ()), which is exact and costs more.
 //
 // Define GBUFFER_ENCODE_ONLY before including this file in a material
 // (fragment) shader: it then declares no descriptors (the lighting bindings
@@ -78,17 +76,15 @@
 // Motion byte layout.
 const uint GBUFFER_MOTION_ID_MASK = 0x7Fu; // motion IDs 0..127
 const uint GBUFFER_SKY_MOTION_ID  = 0u;
-// The MSAA-edge bit: the lowest mantissa bit of the stored depth.
-const uint GBUFFER_DEPTH_EDGE_BIT = 1u;
-// The sun-facing bit: the next mantissa bit.
-const uint GBUFFER_DEPTH_SUN_BIT = 2u;
-// The face bit: the third, set instead of the MSAA-edge bit by a partial fragment that stored
-// its flat face's canonical values (gbuffer.frag).
-const uint GBUFFER_DEPTH_FACE_BIT = 4u;
-const uint GBUFFER_DEPTH_BITS = GBUFFER_DEPTH_EDGE_BIT | GBUFFER_DEPTH_SUN_BIT | GBUFFER_DEPTH_FACE_BIT;
+// The sun-facing bit: the lowest mantissa bit of the surface depth.
+const uint GBUFFER_DEPTH_SUN_BIT = 1u;
 // The depth of the sky (the far plane), and the largest a material stores.
 const float GBUFFER_SKY_DEPTH = 1.0;
 const float GBUFFER_MAX_GEOMETRY_DEPTH = 0.99999994; // the float below 1.0
+// Fragment tags (RT4).
+const uint GBUFFER_SKY_TAG = 0x7FFFFFFFu;        // no triangle has this index
+const uint GBUFFER_SHARED_TAG_BIT = 0x80000000u; // a flat face's partial fragment: compare values
+const uint GBUFFER_MAX_TRIANGLE_TAG = 0x7FFFFFFEu;
 
 // One decoded G-buffer sample: everything the lighting needs, and nothing about
 // how it is stored.
@@ -97,22 +93,18 @@ struct GSample {
     float spec_amount;
     vec3  normal;      // as stored (signed, normalised by the material shader)
     uint  motion_id;   // 0..127
-    bool  msaa_edge;   // the depth's MSAA-edge bit (classification only)
-    bool  face_edge;   // the depth's face bit (classification only)
-    bool  faces_sun;   // the depth's sun-facing bit
+    bool  faces_sun;   // the surface depth's sun-facing bit
     bool  is_sky;      // depth 1.0: colour is prelit, no lighting at all
     vec3  prelit;
     float spec_power;
-    float depth;       // depth as stored, 0..1 (its bits included)
+    float depth;       // surface depth as stored, 0..1 (its bit included)
 };
 
-// What the depth alone says about a sample (gbuffer_decode_depth()).
+// What the surface depth alone says about a sample (gbuffer_decode_depth()).
 struct GDepthSample {
-    float depth;       // as stored, bits included
+    float depth;       // as stored, bit included
     bool  is_sky;
     bool  faces_sun;
-    bool  msaa_edge;
-    bool  face_edge;
 };
 
 // ---------------------------------------------------------------------------
@@ -126,17 +118,16 @@ float gbuffer_pack_motion_byte(uint motion_id)
     return float(motion_id & GBUFFER_MOTION_ID_MASK) / 255.0;
 }
 
-// The depth a material fragment stores: `depth` (0..1) kept below the sky's
-// 1.0, with its three lowest mantissa bits replaced by the MSAA-edge,
-// sun-facing and face bits. Depths below the smallest normal float are raised
-// to it first, so the bits never land in a denormal that a driver running with
-// denormals-are-zero (llvmpipe) would flush.
-float gbuffer_encode_depth(float depth, bool msaa_edge, bool faces_sun, bool face_edge)
+// The surface depth a material fragment stores: `depth` (0..1) kept below the
+// sky's 1.0, with its lowest mantissa bit replaced by the sun-facing bit.
+// Depths below the smallest normal float are raised to it first, so the bit
+// never lands in a denormal that a driver running with denormals-are-zero
+// (llvmpipe) would flush.
+float gbuffer_encode_depth(float depth, bool faces_sun)
 {
     uint bits = floatBitsToUint(clamp(depth, 1.17549435e-38, GBUFFER_MAX_GEOMETRY_DEPTH));
-    bits &= ~GBUFFER_DEPTH_BITS;
-    return uintBitsToFloat(bits | (msaa_edge ? GBUFFER_DEPTH_EDGE_BIT : 0u) | (faces_sun ? GBUFFER_DEPTH_SUN_BIT : 0u) |
-                           (face_edge ? GBUFFER_DEPTH_FACE_BIT : 0u));
+    bits &= ~GBUFFER_DEPTH_SUN_BIT;
+    return uintBitsToFloat(bits | (faces_sun ? GBUFFER_DEPTH_SUN_BIT : 0u));
 }
 
 // The normal as RT1 (16F) stores it: rounded to half precision here, so that
@@ -181,12 +172,19 @@ vec4 gbuffer_encode_rt2(vec3 prelit, float spec_power)
     return vec4(prelit, spec_power);
 }
 
+// The tag of a fragment of triangle `triangle` (the frame-wide index), or with
+// `shared_face` of a partial fragment of a flat face of instance `instance`.
+uint gbuffer_encode_tag(uint triangle, bool shared_face, uint instance)
+{
+    return shared_face ? GBUFFER_SHARED_TAG_BIT | instance : min(triangle, GBUFFER_MAX_TRIANGLE_TAG);
+}
+
 #ifdef GBUFFER_ENCODE_ONLY
 // Samples per pixel of the G-buffer being written; the runtime specialises it.
 layout(constant_id = 0) const uint GBUFFER_SAMPLES = 1u;
 
-// True when this fragment covers only some of its pixel's samples: the value of
-// the MSAA-edge bit for every sample it writes. Fragment stage only.
+// True when this fragment covers only some of its pixel's samples. Fragment
+// stage only.
 bool gbuffer_fragment_is_partial()
 {
     uint all_samples = (1u << GBUFFER_SAMPLES) - 1u;
@@ -202,19 +200,12 @@ uint gbuffer_unpack_motion_byte(float stored)
     return uint(clamp(round(stored * 255.0), 0.0, 255.0));
 }
 
-bool gbuffer_decode_msaa_edge_bit(float depth)
-{
-    return (floatBitsToUint(depth) & GBUFFER_DEPTH_EDGE_BIT) != 0u;
-}
-
 GDepthSample gbuffer_decode_depth(float depth)
 {
     GDepthSample d;
     d.depth = depth;
     d.is_sky = depth == GBUFFER_SKY_DEPTH;
     d.faces_sun = !d.is_sky && (floatBitsToUint(depth) & GBUFFER_DEPTH_SUN_BIT) != 0u;
-    d.msaa_edge = !d.is_sky && gbuffer_decode_msaa_edge_bit(depth);
-    d.face_edge = !d.is_sky && (floatBitsToUint(depth) & GBUFFER_DEPTH_FACE_BIT) != 0u;
     return d;
 }
 
@@ -226,14 +217,24 @@ GSample gbuffer_decode(vec4 rt0, vec4 rt1, vec4 rt2, float depth)
     g.normal      = rt1.xyz;
     g.motion_id   = gbuffer_unpack_motion_byte(rt1.a) & GBUFFER_MOTION_ID_MASK;
     GDepthSample d = gbuffer_decode_depth(depth);
-    g.msaa_edge   = d.msaa_edge;
-    g.face_edge   = d.face_edge;
     g.faces_sun   = d.faces_sun;
     g.is_sky      = d.is_sky;
     g.prelit      = rt2.rgb;
     g.spec_power  = rt2.a;
     g.depth       = depth;
     return g;
+}
+
+// Whether two samples' tags say they come from different fragments (then they
+// may differ), and whether a tag asks for a comparison of values.
+bool gbuffer_tags_differ(uint a, uint b)
+{
+    return a != b;
+}
+
+bool gbuffer_tag_is_shared(uint tag)
+{
+    return (tag & GBUFFER_SHARED_TAG_BIT) != 0u;
 }
 
 // ---------------------------------------------------------------------------
@@ -253,56 +254,48 @@ GSample gbuffer_load(ivec2 pixel, int sample_index)
     return gbuffer_decode(gbuffer_fetch(gbuffer_albedo_spec, pixel, sample_index),
                           gbuffer_fetch(gbuffer_normal_motion, pixel, sample_index),
                           gbuffer_fetch(gbuffer_prelit_power, pixel, sample_index),
-                          gbuffer_fetch(gbuffer_depth, pixel, sample_index).r);
+                          gbuffer_fetch(gbuffer_surface_depth, pixel, sample_index).r);
 }
 
-// The depth target alone (classification).
+// The surface depth alone (classification).
 GDepthSample gbuffer_load_depth(ivec2 pixel, int sample_index)
 {
-    return gbuffer_decode_depth(gbuffer_fetch(gbuffer_depth, pixel, sample_index).r);
+    return gbuffer_decode_depth(gbuffer_fetch(gbuffer_surface_depth, pixel, sample_index).r);
 }
 
 // True when samples 1 .. samples - 1 of `pixel` store what its sample 0 stores, bit for bit, in
-// every colour target: sample 0's three texels are read once. `samples` is the G-buffer's count
-// (a constant where the caller has one, so that the loop unrolls).
-bool gbuffer_colours_all_equal(ivec2 pixel, int samples)
+// every target lighting reads: sample 0's texels are read once. `samples` is the G-buffer's
+// count (a constant where the caller has one, so that the loop unrolls).
+bool gbuffer_samples_equal(ivec2 pixel, int samples)
 {
     uvec4 rt0 = floatBitsToUint(gbuffer_fetch(gbuffer_albedo_spec, pixel, 0));
     uvec4 rt1 = floatBitsToUint(gbuffer_fetch(gbuffer_normal_motion, pixel, 0));
     uvec4 rt2 = floatBitsToUint(gbuffer_fetch(gbuffer_prelit_power, pixel, 0));
+    uint rt3 = floatBitsToUint(gbuffer_fetch(gbuffer_surface_depth, pixel, 0).r);
     bool equal_all = true;
     for (int s = 1; s < samples; ++s) {
-        equal_all = equal_all && all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_albedo_spec, pixel, s)), rt0)) &&
+        equal_all = equal_all && floatBitsToUint(gbuffer_fetch(gbuffer_surface_depth, pixel, s).r) == rt3 &&
+                    all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_albedo_spec, pixel, s)), rt0)) &&
                     all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_normal_motion, pixel, s)), rt1)) &&
                     all(equal(floatBitsToUint(gbuffer_fetch(gbuffer_prelit_power, pixel, s)), rt2));
     }
     return equal_all;
 }
 
-// True when the samples of `pixel` may differ: some sample carries the MSAA-edge bit, or some
-// carries the face bit and some sample differs from sample 0 in some target (two triangles of
-// one flat face store equal values, gbuffer.frag: their inner diagonal is no edge). False means
-// the samples are bit-identical, so sample 0 alone shades the pixel (see above).
-bool gbuffer_pixel_is_edge(ivec2 pixel)
+// True when the samples of `pixel` differ in some target lighting reads: the plain G-buffer's
+// test (it has no tags), exact. False means the samples are bit-identical, so sample 0 alone
+// shades the pixel.
+bool gbuffer_pixel_samples_differ(ivec2 pixel)
 {
-    bool partial = false, face = false;
-    for (int s = 0; s < gbuffer_sample_count(); ++s) {
-        GDepthSample d = gbuffer_load_depth(pixel, s);
-        partial = partial || d.msaa_edge;
-        face = face || d.face_edge;
-    }
-    if (partial || !face) {
-        return partial;
-    }
-    uint first_depth = floatBitsToUint(gbuffer_fetch(gbuffer_depth, pixel, 0).r);
-    for (int s = 1; s < gbuffer_sample_count(); ++s) {
-        if (floatBitsToUint(gbuffer_fetch(gbuffer_depth, pixel, s).r) != first_depth) {
-            return true;
-        }
-    }
-    return !gbuffer_colours_all_equal(pixel, gbuffer_sample_count());
+    return !gbuffer_samples_equal(pixel, gbuffer_sample_count());
 }
 
+#ifndef GBUFFER_SINGLE_SAMPLED
+uint gbuffer_load_tag(ivec2 pixel, int sample_index)
+{
+    return gbuffer_fetch(gbuffer_fragment_tags, pixel, sample_index).r;
+}
+#endif
 
 #endif // GBUFFER_ENCODE_ONLY
 

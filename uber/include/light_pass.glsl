@@ -23,7 +23,8 @@
 // every feature compiled in, as in the naive pass, but each taken only where this pixel needs
 // it, decided per pixel with the same tests the tile classifier applies per tile: no sun term
 // and no shadow lookups where the pixel does not face the sun, every sample shaded only where
-// the pixel's samples may differ (its MSAA-edge bits). Sky, fade and scattering already branch
+// the pixel's samples differ (it runs on the plain G-buffer, which has no classification data:
+// it compares the samples' stored values). Sky, fade and scattering already branch
 // per pixel inside their functions. Skipped work is exactly the identity there (the same
 // contract the permutations rely on), so the result equals the naive pass.
 
@@ -121,7 +122,7 @@ vec3 shade_pixel(ivec2 pixel)
 {
     vec3 colour = shade_sample(pixel, 0);
 #ifdef MSAA_EDGE
-    if (!PER_PIXEL_BRANCHES || gbuffer_pixel_is_edge(pixel)) {
+    if (!PER_PIXEL_BRANCHES || gbuffer_pixel_samples_differ(pixel)) {
         colour = add_other_samples(pixel, colour);
     }
 #endif

@@ -32,7 +32,7 @@ layout(set = 0, binding = 0, std140) uniform LightingParams {
 layout(set = 0, binding = 1) uniform sampler2D gbuffer_albedo_spec;   // RT0
 layout(set = 0, binding = 2) uniform sampler2D gbuffer_normal_motion; // RT1
 layout(set = 0, binding = 3) uniform sampler2D gbuffer_prelit_power;  // RT2
-layout(set = 0, binding = 4) uniform sampler2D gbuffer_depth;
+layout(set = 0, binding = 4) uniform sampler2D gbuffer_surface_depth; // RT3
 // The one sample of `pixel`; `sample_index` is 0 by the caller's loop bounds.
 #define gbuffer_fetch(target, pixel, sample_index) texelFetch(target, pixel, 0)
 #define gbuffer_samples() 1
@@ -40,7 +40,10 @@ layout(set = 0, binding = 4) uniform sampler2D gbuffer_depth;
 layout(set = 0, binding = 1) uniform sampler2DMS gbuffer_albedo_spec;   // RT0
 layout(set = 0, binding = 2) uniform sampler2DMS gbuffer_normal_motion; // RT1
 layout(set = 0, binding = 3) uniform sampler2DMS gbuffer_prelit_power;  // RT2
-layout(set = 0, binding = 4) uniform sampler2DMS gbuffer_depth;
+layout(set = 0, binding = 4) uniform sampler2DMS gbuffer_surface_depth; // RT3
+// RT4, the fragment tags: the classified G-buffer's, read by classification only (a single-
+// sampled G-buffer has none: no pixel of it can differ between samples).
+layout(set = 0, binding = 6) uniform usampler2DMS gbuffer_fragment_tags;
 #define gbuffer_fetch(target, pixel, sample_index) texelFetch(target, pixel, sample_index)
 #define gbuffer_samples() textureSamples(gbuffer_normal_motion)
 #endif

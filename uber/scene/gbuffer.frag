@@ -1,6 +1,8 @@
 #version 450
 // gbuffer.frag -- the material shader: writes the Table 4.1 G-buffer through gbuffer.glsl,
-// with prelit (ambient) lighting already applied, as in Split/Second.
+// with prelit (ambient) lighting already applied, as in Split/Second. Compiled twice: plain (the
+// baselines' G-buffer: RT0..RT3, what lighting reads) and with GBUFFER_FRAGMENT_TAGS (the
+// classified path's: the same RT0..RT3 plus RT4, the fragment tag classification reads).
 #extension GL_GOOGLE_include_directive : require
 #define GBUFFER_ENCODE_ONLY
 #include "gbuffer.glsl"
@@ -11,8 +13,11 @@ layout(location = 1) in vec3 in_normal;
 layout(location = 2) flat in vec4 in_albedo_spec;
 layout(location = 3) flat in vec4 in_material;
 layout(location = 4) flat in vec4 in_face_normal; // w: 1 on a flat-faced mesh (scene.vert)
-layout(location = 5) flat in vec3 in_face_point;
+layout(location = 5) flat in vec3 in_face_depth;  // the face's depth plane over gl_FragCoord.xy
 layout(location = 6) in vec2 in_uv;
+#ifdef GBUFFER_FRAGMENT_TAGS
+layout(location = 7) flat in uvec2 in_tag_base;   // x: the instance's first triangle, y: the instance
+#endif
 
 // The mesh's base colour texture (sRGB, so read in linear light), or 1x1 white for meshes
 // without one: the albedo is then multiplied by exactly 1.
@@ -21,6 +26,10 @@ layout(set = 1, binding = 0) uniform sampler2D base_colour_texture;
 layout(location = 0) out vec4 out_rt0;
 layout(location = 1) out vec4 out_rt1;
 layout(location = 2) out vec4 out_rt2;
+layout(location = 3) out float out_rt3;
+#ifdef GBUFFER_FRAGMENT_TAGS
+layout(location = 4) out uint out_tag;
+#endif
 
 // A world-space checkerboard so shadows and fog read clearly in the pictures.
 float checker(vec3 p, float scale)
@@ -32,54 +41,31 @@ float checker(vec3 p, float scale)
     return ((cell.x + cell.y + cell.z) & 1) == 0 ? 1.0 : 0.72;
 }
 
-// The surface point of this pixel's centre, its normal and its depth, where two triangles of one
-// flat face both cover part of the pixel: computed from the face's plane and the view ray
-// through the pixel centre -- inputs both triangles share exactly -- instead of each triangle's
-// own interpolation, which differs in the last bits. Both fragments then store the same
-// values, the pixel's samples are equal and classification does not see an MSAA edge in a
-// face's inner diagonal (gbuffer.glsl, "MSAA-edge bit").
-struct Surface {
-    vec3 world_pos;
-    vec3 normal;
-    float depth;
-};
-
 // Relative: 64 units in the last place of a float depth.
 const float FACE_PLANE_DEPTH_TOLERANCE = 64.0 / 8388608.0;
 
-Surface face_plane_surface()
+// The depth this fragment stores: on a flat face the face plane's depth at the pixel centre,
+// from coefficients every triangle of the face receives alike (scene.vert), so two triangles
+// sharing a pixel store the same value; elsewhere, and where the plane and the rasteriser part
+// ways (a face seen edge-on, whose plane is ill-conditioned), the rasteriser's.
+float surface_depth(bool flat_face)
 {
-    vec2 ndc = gl_FragCoord.xy * scene.viewport.zw * 2.0 - 1.0;
-    vec4 far_point = scene.inv_view_proj * vec4(ndc, 1.0, 1.0);
-    vec3 origin = scene.camera_pos.xyz;
-    vec3 ray = far_point.xyz / far_point.w - origin;
-    vec3 n = in_face_normal.xyz;
-    float t = dot(n, in_face_point - origin) / dot(n, ray);
-    vec3 world_pos = origin + t * ray;
-    vec4 clip = scene.view_proj * vec4(world_pos, 1.0);
-    return Surface(world_pos, normalize(n), clip.z / clip.w);
+    if (!flat_face) {
+        return gl_FragCoord.z;
+    }
+    float plane = in_face_depth.x * gl_FragCoord.x + in_face_depth.y * gl_FragCoord.y + in_face_depth.z;
+    return abs(plane - gl_FragCoord.z) <= FACE_PLANE_DEPTH_TOLERANCE * gl_FragCoord.z ? plane : gl_FragCoord.z;
 }
 
 void main()
 {
-    bool partial = gbuffer_fragment_is_partial();
-    bool on_face_plane = false;
-    Surface surface = Surface(in_world_pos, normalize(in_normal), gl_FragCoord.z);
-    if (partial && in_face_normal.w > 0.5) {
-        // The plane's depth at the pixel centre is the rasteriser's, up to rounding; where the
-        // two part ways (a face seen edge-on, whose ray meets its plane ill-conditioned) keep
-        // the rasteriser's values: the pixel then stays an edge, which is always safe.
-        Surface on_plane = face_plane_surface();
-        if (abs(on_plane.depth - gl_FragCoord.z) <= FACE_PLANE_DEPTH_TOLERANCE * gl_FragCoord.z) {
-            surface = on_plane;
-            on_face_plane = true;
-        }
-    }
-    vec3 normal = surface.normal;
+    bool flat_face = in_face_normal.w > 0.5;
+    // A flat face's normal is the face's own, which its triangles share exactly.
+    vec3 normal = normalize(flat_face ? in_face_normal.xyz : in_normal);
     if (!gl_FrontFacing) {
         normal = -normal; // thin geometry seen from behind
     }
-    vec3 albedo = in_albedo_spec.rgb * texture(base_colour_texture, in_uv).rgb * checker(surface.world_pos, in_material.z);
+    vec3 albedo = in_albedo_spec.rgb * texture(base_colour_texture, in_uv).rgb * checker(in_world_pos, in_material.z);
     float hemisphere = normal.y * 0.5 + 0.5;
     vec3 ambient = mix(scene.ambient_ground.rgb, scene.ambient_sky.rgb, hemisphere);
     uint motion_id = uint(in_material.y);
@@ -89,12 +75,10 @@ void main()
     out_rt0 = gbuffer_encode_rt0(albedo, in_albedo_spec.a);
     out_rt1 = gbuffer_encode_rt1(stored_normal, motion_id);
     out_rt2 = gbuffer_encode_rt2(albedo * ambient, in_material.x);
-    // One depth per pixel: every covered sample stores the pixel-centre depth, so a pixel
-    // inside one surface has bit-identical samples; its two lowest bits are the MSAA-edge and
-    // sun-facing bits (see gbuffer.glsl).
-    // A partial fragment marks its samples: with the face bit where it stored its face's
-    // canonical values (the pixel is an edge only if the samples then differ), else with the
-    // MSAA-edge bit (an edge).
-    gl_FragDepth = gbuffer_encode_depth(surface.depth, partial && !on_face_plane,
-                                        gbuffer_faces_sun(stored_normal, scene.sun_direction.xyz), on_face_plane);
+    out_rt3 = gbuffer_encode_depth(surface_depth(flat_face),
+                                   gbuffer_faces_sun(stored_normal, scene.sun_direction.xyz));
+#ifdef GBUFFER_FRAGMENT_TAGS
+    out_tag = gbuffer_encode_tag(in_tag_base.x + uint(gl_PrimitiveID), flat_face && gbuffer_fragment_is_partial(),
+                                 in_tag_base.y);
+#endif
 }

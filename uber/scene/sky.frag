@@ -10,6 +10,10 @@
 layout(location = 0) out vec4 out_rt0;
 layout(location = 1) out vec4 out_rt1;
 layout(location = 2) out vec4 out_rt2;
+layout(location = 3) out float out_rt3;
+#ifdef GBUFFER_FRAGMENT_TAGS
+layout(location = 4) out uint out_tag;
+#endif
 
 void main()
 {
@@ -22,10 +26,14 @@ void main()
     colour += vec3(1.0, 0.9, 0.7) * (pow(sun, 512.0) * 4.0 + pow(sun, 16.0) * 0.15);
 
     out_rt0 = gbuffer_encode_rt0(vec3(0.0), 0.0);
-    // No MSAA-edge bit: every sky fragment of a pixel stores the same values (they depend on the
-    // pixel centre only, at depth 1), so sky samples alone never make a pixel's samples differ,
-    // and a partially covering geometry fragment marks its own samples. The driver may split the
-    // full-screen triangle, and marking its seams would make sky tiles MSAA edges for nothing.
     out_rt1 = gbuffer_encode_sky_rt1();
     out_rt2 = gbuffer_encode_rt2(colour, 0.0);
+    out_rt3 = GBUFFER_SKY_DEPTH;
+#ifdef GBUFFER_FRAGMENT_TAGS
+    // One tag for all sky: every sky fragment of a pixel stores the same values (they depend on
+    // the pixel centre only), so sky samples alone never make a pixel's samples differ. The
+    // driver may split the full-screen triangle, and tagging its parts apart would make sky
+    // tiles MSAA edges for nothing.
+    out_tag = GBUFFER_SKY_TAG;
+#endif
 }

@@ -40,8 +40,7 @@ GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& target
   const shadergen::Registry& shaders = shaders_for(targets.samples());
   desc.vertex_spirv = companion_spirv(shaders, "sky_vertex");  // a full-screen triangle
   desc.fragment_spirv = companion_spirv(shaders, "gbuffer_upload");
-  desc.depth_write = true;
-  desc.depth_compare = VK_COMPARE_OP_ALWAYS;
+  desc.depth_test = false;  // no shader reads the depth target; the surface depth is RT3
   pipeline_ = create_graphics_pipeline(context, desc);
 }
 

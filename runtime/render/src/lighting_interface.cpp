@@ -2,9 +2,11 @@
 
 #include "descriptors.h"
 #include "pipelines.h"
+#include "shader_registry.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
 
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -14,6 +16,20 @@ namespace {
 // Binding numbers of lighting_params.glsl; the registry's reflection must agree (checked).
 constexpr std::uint32_t kParamsBinding = 0;
 constexpr std::array<std::uint32_t, 5> kImageBindings{1, 2, 3, 4, 5};
+constexpr std::uint32_t kFragmentTagsBinding = 6;  // classification only, multisampled G-buffer
+
+// Set 0 of the light pass (the registry's merged layout) plus what the classifier alone reads
+// from it (the fragment tags), from the classifier's own reflection.
+std::vector<VkDescriptorSetLayoutBinding> set0_bindings(const shadergen::Registry& registry) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings = layout_bindings_for_set(registry.pipeline_layout, 0);
+  const shadergen::Permutation& classifier = companion_shader(registry, "classify_tiles");
+  for (const VkDescriptorSetLayoutBinding& b : layout_bindings_for_set(classifier.reflection.bindings, 0)) {
+    const bool known = std::any_of(bindings.begin(), bindings.end(),
+                                   [&](const VkDescriptorSetLayoutBinding& have) { return have.binding == b.binding; });
+    if (!known) bindings.push_back(b);
+  }
+  return bindings;
+}
 
 }  // namespace
 
@@ -28,10 +44,11 @@ LightingInterface::LightingInterface(const Context& context, const LightingParam
 
   // Every stage that could read set 0: the merged layout names the fragment stage; the
   // compute passes share the same set, so widen the stage mask.
-  std::vector<VkDescriptorSetLayoutBinding> bindings = layout_bindings_for_set(registry.pipeline_layout, 0);
-  if (bindings.size() != 1 + kImageBindings.size()) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings = set0_bindings(registry);
+  const std::size_t expected = 1 + kImageBindings.size() + (targets.has_fragment_tags() ? 1 : 0);
+  if (bindings.size() != expected) {
     throw Error("the shader registry's set 0 has " + std::to_string(bindings.size()) +
-                " bindings; the runtime expects the 6 of lighting_params.glsl");
+                " bindings; the runtime expects the " + std::to_string(expected) + " of lighting_params.glsl");
   }
   for (VkDescriptorSetLayoutBinding& b : bindings) b.stageFlags |= VK_SHADER_STAGE_COMPUTE_BIT;
   set0_layout_ = create_descriptor_set_layout(context, bindings, "lighting set 0 layout");
@@ -53,10 +70,14 @@ LightingInterface::LightingInterface(const Context& context, const LightingParam
 
   set0_ = allocate_descriptor_set(context, pool, set0_layout_.get(), "lighting set 0");
   write_buffer_descriptor(context, set0_, kParamsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
-  const std::array<const Image*, 5> images{&targets.rt0(), &targets.rt1(), &targets.rt2(), &targets.depth(),
+  const std::array<const Image*, 5> images{&targets.rt0(), &targets.rt1(), &targets.rt2(), &targets.rt3(),
                                            &targets.shadow_map()};
   for (std::size_t i = 0; i < images.size(); ++i) {
     write_image_descriptor(context, set0_, kImageBindings[i], sampler_.handle(), images[i]->view(),
+                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  }
+  if (targets.has_fragment_tags()) {
+    write_image_descriptor(context, set0_, kFragmentTagsBinding, sampler_.handle(), targets.fragment_tags().view(),
                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   }
 }

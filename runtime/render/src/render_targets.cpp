@@ -6,6 +6,7 @@
 
 #include <array>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace tilelight {
@@ -14,12 +15,13 @@ namespace {
 constexpr VkPipelineStageFlags kShaderReadStages =
     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
-VkAttachmentDescription attachment(VkFormat format, VkSampleCountFlagBits samples, VkImageLayout final_layout) {
+VkAttachmentDescription attachment(VkFormat format, VkSampleCountFlagBits samples, VkImageLayout final_layout,
+                                   VkAttachmentStoreOp store = VK_ATTACHMENT_STORE_OP_STORE) {
   VkAttachmentDescription a{};
   a.format = format;
   a.samples = samples;
   a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  a.storeOp = store;
   a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // every frame overwrites the whole target
@@ -99,9 +101,11 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   rt0_ = gbuffer_image(context, extent, kGBufferRt0Format, samples, "G-buffer RT0 (albedo, specular)");
   rt1_ = gbuffer_image(context, extent, kGBufferRt1Format, samples, "G-buffer RT1 (normal, motion ID)");
   rt2_ = gbuffer_image(context, extent, kGBufferRt2Format, samples, "G-buffer RT2 (prelit, power)");
-  depth_ =
-      Image(context, {extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                      samples, VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth"});
+  rt3_ = gbuffer_image(context, extent, kGBufferRt3Format, samples, "G-buffer RT3 (surface depth)");
+  if (has_fragment_tags()) tags_ = gbuffer_image(context, extent, kGBufferTagFormat, samples, "G-buffer RT4 (tags)");
+  // Only the depth test reads it, within the pass: nothing samples it, nothing keeps it.
+  depth_ = Image(context, {extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, samples,
+                           VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth"});
   shadow_map_ = Image(context, {{shadow_map_size, shadow_map_size},
                                 kDepthFormat,
                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
@@ -119,11 +123,7 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   dynamic_ = light_target("light target (dynamic)");
 
   const VkImageLayout read_only = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  const std::array<VkAttachmentDescription, 4> gbuffer_attachments{
-      attachment(kGBufferRt0Format, samples, read_only), attachment(kGBufferRt1Format, samples, read_only),
-      attachment(kGBufferRt2Format, samples, read_only), attachment(kDepthFormat, samples, read_only)};
-  gbuffer_pass_ = create_render_pass(context, gbuffer_attachments, true, kShaderReadStages, VK_ACCESS_SHADER_READ_BIT,
-                                     "G-buffer pass");
+  create_gbuffer_passes(context);
   const std::array<VkAttachmentDescription, 1> shadow_attachments{
       attachment(kDepthFormat, VK_SAMPLE_COUNT_1_BIT, read_only)};
   shadow_pass_ =
@@ -134,8 +134,6 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   light_pass_ = create_render_pass(context, light_attachments, false, VK_PIPELINE_STAGE_TRANSFER_BIT,
                                    VK_ACCESS_TRANSFER_READ_BIT, "light pass");
 
-  const std::array<VkImageView, 4> gbuffer_views{rt0_.view(), rt1_.view(), rt2_.view(), depth_.view()};
-  gbuffer_framebuffer_ = create_framebuffer(context, gbuffer_pass_.get(), gbuffer_views, extent, "G-buffer");
   const std::array<VkImageView, 1> shadow_views{shadow_map_.view()};
   shadow_framebuffer_ = create_framebuffer(context, shadow_pass_.get(), shadow_views, shadow_extent(), "shadow map");
   auto light_framebuffer = [&](const Image& target, const char* name) {
@@ -147,28 +145,57 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   dynamic_framebuffer_ = light_framebuffer(dynamic_, "light target (dynamic)");
 }
 
-GraphicsPipelineDesc RenderTargets::gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name) const {
+// RT0..RT3 (+ RT4 when tagged) and the depth, whose contents end with the pass: every pass that
+// reads the G-buffer reads the colour targets.
+void RenderTargets::create_gbuffer_passes(const Context& context) {
+  const VkImageLayout read_only = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  auto create = [&](bool tagged, std::string_view name) {
+    std::vector<VkAttachmentDescription> attachments{
+        attachment(kGBufferRt0Format, samples_, read_only), attachment(kGBufferRt1Format, samples_, read_only),
+        attachment(kGBufferRt2Format, samples_, read_only), attachment(kGBufferRt3Format, samples_, read_only)};
+    std::vector<VkImageView> views{rt0_.view(), rt1_.view(), rt2_.view(), rt3_.view()};
+    if (tagged) {
+      attachments.push_back(attachment(kGBufferTagFormat, samples_, read_only));
+      views.push_back(tags_.view());
+    }
+    attachments.push_back(attachment(kDepthFormat, samples_, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                                     VK_ATTACHMENT_STORE_OP_DONT_CARE));
+    views.push_back(depth_.view());
+    UniqueRenderPass pass =
+        create_render_pass(context, attachments, true, kShaderReadStages, VK_ACCESS_SHADER_READ_BIT, name);
+    UniqueFramebuffer framebuffer = create_framebuffer(context, pass.get(), views, extent_, name);
+    return std::pair{std::move(pass), std::move(framebuffer)};
+  };
+  std::tie(plain_gbuffer_pass_, plain_gbuffer_framebuffer_) = create(false, "G-buffer pass (plain)");
+  if (has_fragment_tags()) std::tie(gbuffer_pass_, gbuffer_framebuffer_) = create(true, "G-buffer pass (tagged)");
+}
+
+GraphicsPipelineDesc RenderTargets::gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name,
+                                                          bool tagged) const {
   GraphicsPipelineDesc desc;
   desc.layout = layout;
-  desc.render_pass = gbuffer_pass();
+  desc.render_pass = gbuffer_pass(tagged);
   desc.samples = samples_;
   desc.fragment_constants.set(0, static_cast<std::uint32_t>(samples_));  // GBUFFER_SAMPLES
-  desc.color_attachments = 3;
+  desc.color_attachments = gbuffer_colour_targets(tagged);
   desc.depth_test = true;
   desc.name = std::move(name);
   return desc;
 }
 
-void RenderTargets::begin_gbuffer_pass(VkCommandBuffer cmd) const {
-  // RT1 cleared to motion ID 0 reads as sky; the sky pass (or the upload) overwrites every
-  // pixel anyway, so the colour clear values only matter for debugging.
-  std::array<VkClearValue, 4> clears{};
-  clears[3].depthStencil = {1.0f, 0};
+void RenderTargets::begin_gbuffer_pass(VkCommandBuffer cmd, bool tagged) const {
+  // RT1 cleared to motion ID 0 and RT3 to 1.0 read as sky; the sky pass (or the upload)
+  // overwrites every pixel anyway, so the colour clear values only matter for debugging.
+  const bool with_tags = tagged && has_fragment_tags();
+  const std::uint32_t colours = gbuffer_colour_targets(tagged);
+  std::array<VkClearValue, 6> clears{};
+  clears[3].color.float32[0] = 1.0f;
+  clears[colours].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = gbuffer_pass_.get();
-  begin.framebuffer = gbuffer_framebuffer_.get();
+  begin.renderPass = gbuffer_pass(tagged);
+  begin.framebuffer = with_tags ? gbuffer_framebuffer_.get() : plain_gbuffer_framebuffer_.get();
   begin.renderArea = {{0, 0}, extent_};
-  begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
+  begin.clearValueCount = colours + 1;
   begin.pClearValues = clears.data();
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   set_viewport_and_scissor(cmd, extent_);

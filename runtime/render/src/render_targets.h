@@ -1,7 +1,10 @@
 #pragma once
 // The images one frame renders into, with their render passes and framebuffers:
-// the multisampled G-buffer (Table 4.1), the sun shadow map and the two light targets
-// (classified, naive and dynamic), which the frame reads back for comparison and the PNGs.
+// the multisampled G-buffer (Table 4.1, uber/include/gbuffer.glsl), the sun shadow map and the
+// light targets (classified, naive and dynamic), which the frame reads back for comparison and
+// the PNGs. The G-buffer has two render passes over the same images: the classified path's,
+// which also writes the fragment tags (RT4, with 2 or more samples), and the baselines' plain
+// one, which writes what lighting reads and nothing else.
 
 #include "pipelines.h"
 #include "tilelight/vulkan/image.h"
@@ -19,6 +22,8 @@ class Context;
 inline constexpr VkFormat kGBufferRt0Format = VK_FORMAT_R8G8B8A8_UNORM;
 inline constexpr VkFormat kGBufferRt1Format = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kGBufferRt2Format = VK_FORMAT_R16G16B16A16_SFLOAT;
+inline constexpr VkFormat kGBufferRt3Format = VK_FORMAT_R32_SFLOAT;  // surface depth + sun bit
+inline constexpr VkFormat kGBufferTagFormat = VK_FORMAT_R32_UINT;    // RT4: fragment tags
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kLightFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
@@ -41,38 +46,48 @@ class RenderTargets {
   const Image& rt0() const { return rt0_; }
   const Image& rt1() const { return rt1_; }
   const Image& rt2() const { return rt2_; }
-  const Image& depth() const { return depth_; }
+  const Image& rt3() const { return rt3_; }
+  // RT4; precondition: has_fragment_tags() (2 or more samples).
+  const Image& fragment_tags() const { return tags_; }
+  bool has_fragment_tags() const { return samples_ != VK_SAMPLE_COUNT_1_BIT; }
   const Image& shadow_map() const { return shadow_map_; }
   const Image& classified() const { return classified_; }
   const Image& naive() const { return naive_; }
   const Image& dynamic() const { return dynamic_; }
 
-  VkRenderPass gbuffer_pass() const { return gbuffer_pass_.get(); }
+  // The classified G-buffer's render pass (`tagged`), or the plain one's; the same with one sample.
+  VkRenderPass gbuffer_pass(bool tagged = true) const {
+    return tagged && has_fragment_tags() ? gbuffer_pass_.get() : plain_gbuffer_pass_.get();
+  }
   VkRenderPass shadow_pass() const { return shadow_pass_.get(); }
   VkRenderPass light_pass() const { return light_pass_.get(); }
-  VkFramebuffer gbuffer_framebuffer() const { return gbuffer_framebuffer_.get(); }
   VkFramebuffer shadow_framebuffer() const { return shadow_framebuffer_.get(); }
   VkFramebuffer classified_framebuffer() const { return classified_framebuffer_.get(); }
   VkFramebuffer naive_framebuffer() const { return naive_framebuffer_.get(); }
   VkFramebuffer dynamic_framebuffer() const { return dynamic_framebuffer_.get(); }
   VkExtent2D shadow_extent() const { return {shadow_map_size_, shadow_map_size_}; }
 
-  // Begins the G-buffer render pass (every target cleared; depth to 1) and sets the viewport.
-  void begin_gbuffer_pass(VkCommandBuffer cmd) const;
+  // Begins the classified (`tagged`) or plain G-buffer render pass (every target cleared; depth
+  // to 1) and sets the viewport.
+  void begin_gbuffer_pass(VkCommandBuffer cmd, bool tagged = true) const;
 
-  // What every pipeline writing the G-buffer shares: this render pass and sample count, the
-  // three colour targets, the depth test, and GBUFFER_SAMPLES (fragment specialization
-  // constant 0, see gbuffer.glsl) for the MSAA-edge bit. Callers add shaders and depth state.
-  GraphicsPipelineDesc gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name) const;
+  // What every pipeline writing the G-buffer shares: that render pass and sample count, its
+  // colour targets, the depth test, and GBUFFER_SAMPLES (fragment specialization constant 0,
+  // see gbuffer.glsl) for the fragment tags. Callers add shaders and depth state.
+  GraphicsPipelineDesc gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name, bool tagged = true) const;
+  // The colour attachments of that render pass: RT0..RT3, and RT4 when tagged.
+  std::uint32_t gbuffer_colour_targets(bool tagged) const { return tagged && has_fragment_tags() ? 5 : 4; }
 
  private:
+  void create_gbuffer_passes(const Context& context);
+
   VkExtent2D extent_;
   VkSampleCountFlagBits samples_;
   std::uint32_t shadow_map_size_;
-  Image rt0_, rt1_, rt2_, depth_, shadow_map_, classified_, naive_, dynamic_;
-  UniqueRenderPass gbuffer_pass_, shadow_pass_, light_pass_;
-  UniqueFramebuffer gbuffer_framebuffer_, shadow_framebuffer_, classified_framebuffer_, naive_framebuffer_,
-      dynamic_framebuffer_;
+  Image rt0_, rt1_, rt2_, rt3_, tags_, depth_, shadow_map_, classified_, naive_, dynamic_;
+  UniqueRenderPass gbuffer_pass_, plain_gbuffer_pass_, shadow_pass_, light_pass_;
+  UniqueFramebuffer gbuffer_framebuffer_, plain_gbuffer_framebuffer_, shadow_framebuffer_, classified_framebuffer_,
+      naive_framebuffer_, dynamic_framebuffer_;
 };
 
 }  // namespace tilelight

@@ -10,6 +10,10 @@
 
 #include <vector>
 
+namespace shadergen {
+struct Registry;
+}
+
 namespace tilelight {
 
 class CommandPool;
@@ -21,7 +25,8 @@ class ScenePasses {
   ScenePasses(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
               VkDescriptorPool pool, const CommandPool& upload_pool);
 
-  // Shadow map pass, then the G-buffer pass (geometry, then sky at the far plane).
+  // Shadow map pass, then the classified path's G-buffer pass (geometry, then sky at the far
+  // plane), with the fragment tags where the targets have them.
   void record_shadow_map(VkCommandBuffer cmd, const RenderTargets& targets) const;
   void record_gbuffer(VkCommandBuffer cmd, const RenderTargets& targets) const;
   // The baselines' plain G-buffer: what lighting reads and nothing else (no classification data),
@@ -29,6 +34,14 @@ class ScenePasses {
   void record_gbuffer_plain(VkCommandBuffer cmd, const RenderTargets& targets) const;
 
  private:
+  struct GBufferPipelines {
+    UniquePipeline materials, sky;
+  };
+  GBufferPipelines create_gbuffer_pipelines(const Context& context, const shadergen::Registry& shaders,
+                                            const RenderTargets& targets, bool tagged) const;
+  void record_gbuffer_with(VkCommandBuffer cmd, const RenderTargets& targets, const GBufferPipelines& pipelines,
+                           bool tagged) const;
+
   struct MeshBuffers {
     Buffer vertices;
     Buffer indices;
@@ -42,11 +55,13 @@ class ScenePasses {
   std::vector<MeshBuffers> meshes_;
   std::vector<MeshBatch> batches_;
   Buffer instances_;
+  Buffer instance_triangles_;  // per instance: its first triangle (fragment tags)
   Buffer params_;
   UniqueDescriptorSetLayout set_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
-  UniquePipeline gbuffer_pipeline_, sky_pipeline_, shadow_pipeline_;
+  GBufferPipelines plain_, tagged_;  // tagged_: only with 2 or more samples
+  UniquePipeline shadow_pipeline_;
 };
 
 }  // namespace tilelight

@@ -36,13 +36,17 @@ const shadergen::Registry& compute_shaders_for(VkSampleCountFlagBits gbuffer_sam
                                                   : split_second_compute::registry();
 }
 
-std::span<const std::uint32_t> companion_spirv(const shadergen::Registry& registry, std::string_view name) {
+const shadergen::Permutation& companion_shader(const shadergen::Registry& registry, std::string_view name) {
   const shadergen::CompanionShader* shader = registry.companion(name);
   if (shader == nullptr) {
     throw Error("the shader registry " + std::string(registry.name) + " has no companion shader '" + std::string(name) +
                 "'");
   }
-  return shader->shader.spirv;
+  return shader->shader;
+}
+
+std::span<const std::uint32_t> companion_spirv(const shadergen::Registry& registry, std::string_view name) {
+  return companion_shader(registry, name).spirv;
 }
 
 }  // namespace tilelight

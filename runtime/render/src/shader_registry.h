@@ -26,7 +26,10 @@ const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples);
 // those of shaders_for() (static_asserted).
 const shadergen::Registry& compute_shaders_for(VkSampleCountFlagBits gbuffer_samples);
 
-// The SPIR-V of companion `name` in `registry`; throws tilelight::Error if it has none by that name.
+// The companion shader `name` of `registry` (its SPIR-V and reflection); throws tilelight::Error
+// naming both when there is none.
+const shadergen::Permutation& companion_shader(const shadergen::Registry& registry, std::string_view name);
+// Its SPIR-V.
 std::span<const std::uint32_t> companion_spirv(const shadergen::Registry& registry, std::string_view name);
 
 }  // namespace tilelight

@@ -202,6 +202,7 @@ void Context::create_device() {
   enable.features.depthClamp = supported.features.depthClamp;
   enable.features.fragmentStoresAndAtomics = supported.features.fragmentStoresAndAtomics;
   enable.features.largePoints = supported.features.largePoints;
+  enable.features.geometryShader = supported.features.geometryShader;
 
   features_.draw_indirect_count = enable12.drawIndirectCount == VK_TRUE;
   features_.host_query_reset = enable12.hostQueryReset == VK_TRUE;
@@ -210,6 +211,7 @@ void Context::create_device() {
   features_.depth_clamp = enable.features.depthClamp == VK_TRUE;
   features_.fragment_stores_and_atomics = enable.features.fragmentStoresAndAtomics == VK_TRUE;
   features_.large_points = enable.features.largePoints == VK_TRUE;
+  features_.geometry_shader = enable.features.geometryShader == VK_TRUE;
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

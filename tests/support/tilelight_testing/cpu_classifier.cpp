@@ -42,8 +42,12 @@ struct Flags {
   }
 };
 
-// What a G-buffer sample stores: rt0[4], rt1[4], rt2[4], depth (GBufferSamples pads to 16).
+// What lighting reads of a G-buffer sample: rt0[4], rt1[4], rt2[4], rt3 (surface depth); the
+// fragment tag's bits follow (GBufferSamples pads to 16).
 constexpr std::size_t kStoredFloats = 13;
+constexpr std::size_t kTagFloat = 13;
+// gbuffer.glsl: GBUFFER_SHARED_TAG_BIT.
+constexpr std::uint32_t kSharedTagBit = 0x80000000u;
 
 // Whether two samples store the same bits in their first `count` floats. Bits, not values: the
 // classifier's question is whether the samples differ at all (a float compare would call -0 and
@@ -55,15 +59,13 @@ bool same_bits(const float* a, const float* b, std::size_t count) {
 }
 
 struct Sample {
-  const float* v;  // rt0[4], rt1[4], rt2[4], depth
-  // gbuffer.glsl: the sky lies at depth 1.0, every material depth below it.
+  const float* v;  // rt0[4], rt1[4], rt2[4], rt3, tag bits
+  // gbuffer.glsl: the sky lies at surface depth 1.0, every material depth below it.
   bool is_sky() const { return v[12] == 1.0f; }
-  // gbuffer.glsl: the lowest mantissa bit of the stored depth (none on the sky).
-  bool edge_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 1u) != 0; }
-  // gbuffer.glsl: the next mantissa bit, set by the material where the stored normal faces the sun.
-  bool sun_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 2u) != 0; }
-  // gbuffer.glsl: the third, set by a partial fragment that stored its flat face's canonical values.
-  bool face_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 4u) != 0; }
+  // gbuffer.glsl: the lowest mantissa bit of the surface depth, set by the material where the
+  // stored normal faces the sun.
+  bool sun_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 1u) != 0; }
+  std::uint32_t tag() const { return std::bit_cast<std::uint32_t>(v[kTagFloat]); }
 };
 
 glm::vec4 multiply(const glm::mat4& m, const glm::vec4& v) {
@@ -189,18 +191,19 @@ class SampleClassifier {
 };
 
 Flags classify_pixel(const SampleClassifier& classifier, const GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
-  // gbuffer_pixel_is_edge(): the MSAA-edge bit of any sample (gbuffer.glsl: materials set it on
-  // partial coverage) makes an edge; the face bit (partial coverage by a flat face's canonical
-  // values) only where some sample differs from sample 0, bit for bit, in some target.
-  bool edge = false, face = false;
+  // classify_tiles.comp: samples whose fragment tags differ make an edge (gbuffer.glsl: they come
+  // from different fragments); the shared bit (partial fragments of flat faces, which may store
+  // equal values) only where some sample differs from sample 0, bit for bit, in some target.
+  const std::uint32_t first_tag = Sample{g.at(x, y, 0)}.tag();
+  bool edge = false, shared = false;
   for (std::uint32_t s = 0; s < g.samples; ++s) {
-    edge = edge || Sample{g.at(x, y, s)}.edge_bit();
-    face = face || Sample{g.at(x, y, s)}.face_bit();
+    edge = edge || Sample{g.at(x, y, s)}.tag() != first_tag;
+    shared = shared || (Sample{g.at(x, y, s)}.tag() & kSharedTagBit) != 0;
   }
-  for (std::uint32_t s = 1; face && !edge && s < g.samples; ++s) {
+  for (std::uint32_t s = 1; shared && !edge && s < g.samples; ++s) {
     edge = !same_bits(g.at(x, y, s), g.at(x, y, 0), kStoredFloats);
   }
-  const bool partial = edge || face;
+  const bool partial = edge || shared;
   Flags f;
   f.add(kEdge, edge, false);
   const std::uint32_t classified = partial ? g.samples : 1;

@@ -112,8 +112,8 @@ struct FrameResult {
 
 // Every G-buffer sample as stored (see uber/include/gbuffer.glsl).
 struct GBufferSamples {
-  // Per sample: rt0.rgba, rt1.rgba, rt2.rgba, depth, 0, 0, 0 (uber/classify/gbuffer_dump.comp
-  // writes them as four vec4s).
+  // Per sample: rt0.rgba, rt1.rgba, rt2.rgba, rt3 (surface depth), the fragment tag's bits (0
+  // with one sample), 0, 0 (uber/classify/gbuffer_dump.comp writes them as four vec4s).
   static constexpr std::size_t kFloatsPerSample = 16;
 
   std::uint32_t width = 0, height = 0, samples = 0;

@@ -41,7 +41,8 @@ struct EnabledFeatures {
   bool sample_rate_shading = false;
   bool depth_clamp = false;  // shadow-map rendering
   bool fragment_stores_and_atomics = false;
-  bool large_points = false;  // point sprites wider than 1 pixel: the tile pass's points
+  bool large_points = false;     // point sprites wider than 1 pixel: the tile pass's points
+  bool geometry_shader = false;  // gl_PrimitiveID in fragment shaders: the G-buffer's fragment tags
 };
 
 class Context {
