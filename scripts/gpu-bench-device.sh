@@ -105,7 +105,7 @@ if [ -n "${VK_DRIVER_FILES:-}" ]; then export VK_DRIVER_FILES; fi
 limited() {
   seconds=$1
   shift
-  if command -v timeout >/dev/null; then timeout "$seconds" "$@"; else "$@"; fi
+  if command -v timeout >/dev/null; then timeout -k 10 "$seconds" "$@"; else "$@"; fi
 }
 
 # Copies each line of stdin to stdout with a timestamp.
