@@ -5,7 +5,8 @@
 #   1. extracts the Vulkan loader's .debs (pack/debs/root) into / and runs ldconfig, and
 #      vulkaninfo's (pack/debs/tools: vulkan-tools and the X11/Wayland client libraries) into the
 #      work folder, not into /, whose own libraries they could replace,
-#   2. puts the pack's libraries (pack/lib), then the tools' ones, on LD_LIBRARY_PATH,
+#   2. puts the pack's libraries (pack/lib), then the tools' ones, on LD_LIBRARY_PATH, and the
+#      pack's C++ runtime (pack/lib/toolchain) too if the machine's own cannot start the binaries,
 #   3. runs `vulkaninfo --summary` and `tilelight --list-devices` (cheap first checks),
 #   4. runs tilelight_sweep's baselines comparison (--baselines all, both index builds, both
 #      light-pass kinds, six cameras) once per MSAA mode and frame size, each under what is left
@@ -20,8 +21,10 @@
 # Settings (environment; defaults are the GPU run's):
 #   OUT                     output folder (required; the device tool sets it)
 #   GPU_BENCH_WORK          scratch folder                                   [${TMPDIR:-/tmp}/gpu-bench-work]
-#   GPU_BENCH_LOADER        debs: extract pack/debs/*.deb into / (needs root); system: use the
-#                           loader installed here (lavapipe runs)            [debs]
+#   GPU_BENCH_LOADER        debs: extract pack/debs/root/*.deb into / (needs root); system: use
+#                           the loader installed here (lavapipe runs)        [debs]
+#   GPU_BENCH_DEB_ROOT      where the loader's .debs go (another folder: a trial run; the
+#                           loader is then found through LD_LIBRARY_PATH)    [/]
 #   GPU_BENCH_TILELIGHT, GPU_BENCH_SWEEP   the binaries                      [pack/bin/...]
 #   GPU_BENCH_DEVICE        tilelight --device                               [auto]
 #   GPU_BENCH_SIZES         frame sizes, space-separated                     [1920x1080 3840x2160]
@@ -46,6 +49,7 @@ light_passes=${GPU_BENCH_LIGHT_PASSES:-compute,raster}
 frames=${GPU_BENCH_FRAMES:-20}
 budget=${GPU_BENCH_BUDGET_S:-270}
 work=${GPU_BENCH_WORK:-${TMPDIR:-/tmp}/gpu-bench-work}
+deb_root=${GPU_BENCH_DEB_ROOT:-/}
 
 log() { printf '%s gpu-bench: %s\n' "$(date -u +%H:%M:%S)" "$*"; }
 fail() {
@@ -77,10 +81,15 @@ case "$loader" in
     set -- "$pack"/debs/root/*.deb
     [ -e "$1" ] || fail "no .deb in $pack/debs/root (scripts/gpu-bench.sh --pack downloads them)"
     command -v dpkg >/dev/null || fail "dpkg is missing: it extracts the Vulkan loader's .debs"
-    [ -w / ] || fail "the loader's .debs extract into /, which is not writable here (run as root)"
-    log "extracting $# .deb(s) into /: the Vulkan loader and GL dispatch"
-    for deb in "$@"; do dpkg -x "$deb" /; done
-    ldconfig
+    mkdir -p "$deb_root"
+    [ -w "$deb_root" ] || fail "the loader's .debs extract into $deb_root, which is not writable here (run as root)"
+    log "extracting $# .deb(s) into $deb_root: the Vulkan loader and GL dispatch"
+    for deb in "$@"; do dpkg -x "$deb" "$deb_root"; done
+    if [ "$deb_root" = / ]; then
+      ldconfig
+    else  # a trial run away from /: the loader is found through LD_LIBRARY_PATH instead
+      LD_LIBRARY_PATH=$deb_root/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+    fi
     for deb in "$pack"/debs/tools/*.deb; do
       if [ -e "$deb" ]; then dpkg -x "$deb" "$work/tools"; fi
     done
@@ -100,6 +109,15 @@ if [ -d "$pack/lib" ]; then LD_LIBRARY_PATH=$pack/lib${LD_LIBRARY_PATH:+:$LD_LIB
 XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-/tmp}
 export LD_LIBRARY_PATH PATH XDG_RUNTIME_DIR
 if [ -n "${VK_DRIVER_FILES:-}" ]; then export VK_DRIVER_FILES; fi
+# The C++ runtime (lib/toolchain: libstdc++, libgcc_s) only where the machine's own cannot start
+# the binaries: the NVIDIA driver, loaded into the same process, may need the machine's newer one.
+if ! "$tilelight" --help >/dev/null 2>&1; then
+  if [ -d "$pack/lib/toolchain" ]; then
+    LD_LIBRARY_PATH=$LD_LIBRARY_PATH:$pack/lib/toolchain
+    log "this machine's C++ runtime does not start the binaries: using the pack's (lib/toolchain)"
+  fi
+  "$tilelight" --help >/dev/null || fail "$tilelight does not start here (the loader's message is above)"
+fi
 
 # A command under a time limit where coreutils' timeout exists (it is not guaranteed there).
 limited() {

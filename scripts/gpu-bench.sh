@@ -29,15 +29,17 @@ about 5 minutes. Everything is prepared here.
                  bin/       both binaries, stripped
                  lib/       every shared library ldd lists for them that is not the base system
                             (libc, libm, ld-linux, libpthread, libdl, librt stay; libvulkan
-                            comes from the .debs)
+                            comes from the .debs); the C++ runtime (libstdc++, libgcc_s) in
+                            lib/toolchain, used there only if the machine's own is too old
                  debs/root  $root_debs
                  debs/tools $tool_debs
                             (apt-get download, amd64, after an apt-get update into
                             \${GPU_BENCH_APT_LISTS:-/tmp/amd64}; skipped when all are there)
                  run.sh     the device-side script (scripts/gpu-bench-device.sh)
                  COMMIT     the commit packed
-            3. runs $pack_dir/run.sh here on lavapipe with tiny sizes (the pack's own binaries and
-               libraries, the loader installed here), so the device run is not its first run,
+            3. runs $pack_dir/run.sh here on lavapipe with tiny sizes, as on the device but for the
+               .debs going into a scratch root instead of / (its own binaries, libraries,
+               loader and vulkaninfo), so the device run is not its first run,
             4. prints the pack's size (limit: ${limit_mib} MiB with the working tree) and the
                device tool's call.
   --quick   the same device-side script on lavapipe against the test build (build/tests, the
@@ -160,22 +162,24 @@ build_release() {
   nice cmake --build --preset release --target tilelight tilelight_sweep
 }
 
-# Copies into $pack_dir/lib every library ldd lists for the packed binaries, but the base system's
-# and the loader (libvulkan comes from the .debs, with the rest of the loader).
+# Copies into $pack_dir/lib every library ldd lists for the packed binaries, but the base
+# system's and the loader (libvulkan comes from the .debs, with the rest of the loader). The C++
+# runtime goes into lib/toolchain, which run.sh uses only if the machine's own is too old.
 copy_libraries() {
-  mkdir -p "$pack_dir/lib"
+  mkdir -p "$pack_dir/lib/toolchain"
   if ldd "$pack_dir"/bin/* | grep -q 'not found'; then
     ldd "$pack_dir"/bin/* >&2
     fail "a library of the binaries is not found here (above)"
   fi
   ldd "$pack_dir"/bin/* | awk '$2 == "=>" && $3 ~ /^\// { print $3 }' | sort -u | while IFS= read -r lib; do
-    case $(basename "$lib") in
-      libc.so.* | libm.so.* | ld-linux*.so.* | libpthread.so.* | libdl.so.* | librt.so.* | libvulkan.so.*) ;;
-      *)
-        cp -L "$lib" "$pack_dir/lib/"
-        strip --strip-unneeded "$pack_dir/lib/$(basename "$lib")"
-        ;;
+    name=$(basename "$lib")
+    case $name in
+      libc.so.* | libm.so.* | ld-linux*.so.* | libpthread.so.* | libdl.so.* | librt.so.* | libvulkan.so.*) continue ;;
+      libstdc++.so.* | libgcc_s.so.*) into=$pack_dir/lib/toolchain ;;
+      *) into=$pack_dir/lib ;;
     esac
+    cp -L "$lib" "$into/"
+    strip --strip-unneeded "$into/$name"
   done
 }
 
@@ -222,11 +226,18 @@ pack() {
   if [ -n "$(git status --porcelain 2>/dev/null)" ]; then commit="$commit (with uncommitted changes)"; fi
   echo "$commit" >"$pack_dir/COMMIT"
 
-  echo "gpu-bench: checking $pack_dir/run.sh on lavapipe (the pack's binaries and libraries, this machine's loader)"
-  lavapipe_run "$pack_dir/run.sh" build/gpu-pack-check
+  # The device's path as far as it can be walked here: the .debs extracted (into a scratch root,
+  # not into /), vulkaninfo and the loader from them, lavapipe as the driver.
+  lvp_icd=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json
+  [ -e "$lvp_icd" ] || fail "no $lvp_icd: the pack's check runs on lavapipe (mesa-vulkan-drivers)"
+  echo "gpu-bench: checking $pack_dir/run.sh on lavapipe (the pack's binaries, libraries and .debs)"
+  lavapipe_run "$pack_dir/run.sh" build/gpu-pack-check GPU_BENCH_LOADER=debs \
+    GPU_BENCH_DEB_ROOT="$(pwd)/build/gpu-pack-check/root" VK_DRIVER_FILES="$lvp_icd"
+  grep -q "vulkaninfo --summary: .*llvmpipe" build/gpu-pack-check/out/gpu-bench.log ||
+    fail "vulkaninfo from the pack's .debs did not run (build/gpu-pack-check/out/gpu-bench.log)"
 
-  pack_kib=$(du -sk "$pack_dir" | cut -f1)
-  tree_kib=$(git ls-files -z | xargs -0 du -ck 2>/dev/null | tail -n 1 | cut -f1)
+  pack_kib=$(du -sk --apparent-size "$pack_dir" | cut -f1)
+  tree_kib=$(git ls-files -z | xargs -0 du -ck --apparent-size 2>/dev/null | tail -n 1 | cut -f1)
   total_kib=$((pack_kib + tree_kib))
   echo
   echo "gpu-bench: $pack_dir/ is $((pack_kib / 1024)) MiB ($pack_kib KiB); with the tracked files $((total_kib / 1024)) MiB of the ${limit_mib} MiB the device tool carries"
