@@ -58,6 +58,7 @@ fail() {
 }
 
 [ -n "${OUT:-}" ] || fail "OUT is not set: name the output folder (the device tool sets it)"
+[ "$work" != / ] || fail "GPU_BENCH_WORK=/: the work folder is emptied first"
 # Every line goes to the console and to $OUT/gpu-bench.log: the script runs itself again behind
 # tee (POSIX sh has no process substitution) and exits with that run's status.
 if [ -z "${GPU_BENCH_TEED:-}" ]; then

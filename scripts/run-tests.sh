@@ -1,6 +1,7 @@
 #!/bin/sh
-# Every test: install what is missing, build with tests, run the whole CTest suite; then the
-# same suite again in a sanitizer build.
+# Every test: install what is missing, build with tests, run the whole CTest suite and the GPU
+# benchmark's smoke run on lavapipe (scripts/gpu-bench.sh --quick); then the same suite again in
+# a sanitizer build.
 #   scripts/run-tests.sh          the suite, twice (what the README asks for)
 #   scripts/run-tests.sh --lint   and scripts/lint.sh (clang-format, clang-tidy) on the test
 #                                 build, right after it is built; a finding makes the script fail
