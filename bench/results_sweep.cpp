@@ -3,7 +3,8 @@
 // and writes a bar chart; DIR/results.json holds every number. Progress goes to stderr.
 //
 //   tilelight_sweep [--frames N] [--out DIR] [--sizes 720p,1080p,1440p] [--cameras default,...]
-//                   [--msaa auto,1] [--only ID,...] [--device ...] [--quick] [--update-doc docs/results.md]
+//                   [--msaa auto,1] [--path cpu,gpu] [--baselines both|all] [--only ID,...] [--device ...]
+//                   [--quick] [--update-doc docs/results.md]
 
 #include "sweep/doc_update.h"
 #include "sweep/measurement.h"
@@ -29,6 +30,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <tuple>
 
 namespace {
 
@@ -69,12 +71,13 @@ void update_document(const std::filesystem::path& path, const std::map<std::stri
 // returns the tables by comparison id, and the run line as "run" (the document's sections).
 std::map<std::string, std::string> report_comparisons(const SweepPlan& plan,
                                                       const std::vector<Measurement>& measurements,
-                                                      const std::string& run_line, app::OutputFiles& files) {
+                                                      const std::string& run_line, const std::string& device_name,
+                                                      app::OutputFiles& files) {
   std::map<std::string, std::string> sections{{"run", run_line}};
   std::cout << run_line;
   for (const Comparison& c : plan.comparisons) {
     const std::vector<const Measurement*> rows = rows_of(c, measurements);
-    sections[c.id] = markdown_table(c, rows);
+    sections[c.id] = markdown_table(c, rows, device_name);
     std::cout << "\n### " << c.title << "\n\n" << sections[c.id];
     const Rgba8Canvas chart = plot::draw_bar_chart(comparison_chart(c, rows));
     files.stage(c.id + ".png", encode_png(chart.width, chart.height, chart.pixels));
@@ -82,24 +85,27 @@ std::map<std::string, std::string> report_comparisons(const SweepPlan& plan,
   return sections;
 }
 
-// Round-robin within each frame size (the sizes in the order they first appear): every renderer
-// of a group is alive at once, and a group of 1440p or 4K renderers at every MSAA mode and camera
-// is as much memory as should be held together.
-std::vector<Measurement> measure_by_size(const Context& context, const Scene& scene,
-                                         const std::vector<RendererOptions>& configurations, std::uint32_t frames) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> sizes;
+// Round-robin within each frame size and MSAA mode (in the order they first appear): every
+// renderer of a group is alive at once, and a group of 4K renderers at every camera, light-pass
+// kind and index build is as much GPU memory as should be held together (24 at 3840x2160 with
+// 2x MSAA in scripts/gpu-bench.sh's run).
+std::vector<Measurement> measure_in_groups(const Context& context, const Scene& scene,
+                                           const std::vector<RendererOptions>& configurations, std::uint32_t frames) {
+  using Group = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;  // width, height, msaa
+  std::vector<Group> groups;
   for (const RendererOptions& o : configurations) {
-    if (std::find(sizes.begin(), sizes.end(), std::pair(o.width, o.height)) == sizes.end()) {
-      sizes.emplace_back(o.width, o.height);
-    }
+    const Group g{o.width, o.height, o.msaa};
+    if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
   }
   std::vector<Measurement> measurements;
-  for (const auto& [width, height] : sizes) {
+  for (const Group& g : groups) {
     std::vector<RendererOptions> group;
     for (const RendererOptions& o : configurations) {
-      if (o.width == width && o.height == height) group.push_back(o);
+      if (Group{o.width, o.height, o.msaa} == g) group.push_back(o);
     }
-    std::cerr << fmt::format("{}x{}: {} configuration(s)\n", width, height, group.size());
+    const auto& [width, height, msaa] = g;
+    std::cerr << fmt::format("{}x{}, msaa {}: {} configuration(s)\n", width, height,
+                             msaa == 0 ? std::string("auto") : std::to_string(msaa), group.size());
     for (Measurement& m : measure_round_robin(context, scene, group, frames, std::cerr)) {
       measurements.push_back(std::move(m));
     }
@@ -128,16 +134,18 @@ int run_sweep(const SweepOptions& options) {
   if (!options.update_doc.empty()) {
     (void)replace_marked_sections(read_document(options.update_doc), empty_sections(plan), options.update_doc);
   }
-  const std::vector<Measurement> measurements = measure_by_size(context, scene, plan.configurations, options.frames);
+  const std::vector<Measurement> measurements = measure_in_groups(context, scene, plan.configurations, options.frames);
 
   const char* threads = std::getenv("LP_NUM_THREADS");
   const std::string run_line = fmt::format(
       "Device: {}, {}x MSAA where no row says otherwise, median of {} frame(s) after 1 warm-up frame "
-      "(configurations of one frame size measured round-robin), LP_NUM_THREADS={}, scene {} ({} triangles)\n",
+      "(configurations of one frame size and MSAA mode measured round-robin), LP_NUM_THREADS={}, scene {} ({} "
+      "triangles)\n",
       context.device_name(), measurements.front().msaa_samples, options.frames,
       threads != nullptr ? threads : "(default)", scene.source.empty() ? "procedural" : scene.source,
       scene.triangle_count());
-  const std::map<std::string, std::string> sections = report_comparisons(plan, measurements, run_line, files);
+  const std::map<std::string, std::string> sections =
+      report_comparisons(plan, measurements, run_line, context.device_name(), files);
   const SweepRun run{
       context.device_name(), threads != nullptr ? threads : "", &options, &plan, &measurements, scene.source,
       scene.triangle_count()};

@@ -1,6 +1,7 @@
 #!/bin/sh
-# Every test: install what is missing, build with tests, run the whole CTest suite; then the
-# same suite again in a sanitizer build.
+# Every test: install what is missing, build with tests, run the whole CTest suite and the GPU
+# benchmark's smoke run on lavapipe (scripts/gpu-bench.sh --quick); then the same suite again in
+# a sanitizer build.
 #   scripts/run-tests.sh          the suite, twice (what the README asks for)
 #   scripts/run-tests.sh --lint   and scripts/lint.sh (clang-format, clang-tidy) on the test
 #                                 build, right after it is built; a finding makes the script fail
@@ -44,6 +45,11 @@ if [ "$lint" = 1 ]; then
 fi
 
 ctest --preset tests
+
+# The GPU benchmark's procedure (scripts/gpu-bench.sh, docs/gpu-bench.md) on lavapipe with the
+# test build's binaries: the device-side script, its tables and JSON, in about 20 s. The GPU run
+# itself happens on a lent machine, where nothing can be fixed; this keeps the script from rotting.
+./scripts/gpu-bench.sh --quick
 
 # AddressSanitizer + UndefinedBehaviorSanitizer on every target (cmake/Sanitizers.cmake), the
 # shadergen runs at build time and the lavapipe tests included. The sanitizer options and the

@@ -1,6 +1,7 @@
 #include "measurement.h"
 
 #include <fmt/format.h>
+#include <median/median.h>
 
 #include <split_second_shaders.h>
 
@@ -26,7 +27,8 @@ Measurement finish(const Run& run, const RendererOptions& options, std::uint32_t
   m.key = configuration_key(options);
   m.options = options;
   m.frames = frames;
-  m.timings = app::median_timings(run.timings);
+  m.timings = all_medians(run.timings);
+  m.frame_timings = run.timings;
   m.msaa_samples = run.renderer->msaa_samples();
   m.pipelines = run.renderer->pipeline_count();
   m.tiles = run.renderer->grid().tile_count();
@@ -55,11 +57,39 @@ double Measurement::speedup_over_dynamic() const {
   return classified > 0 ? timings.dynamic_light / classified : 0.0;
 }
 
+const char* to_string(Baselines baselines) {
+  switch (baselines) {
+    case Baselines::none: return "none";
+    case Baselines::naive: return "naive";
+    case Baselines::dynamic: return "dynamic";
+    case Baselines::both: return "both";
+    case Baselines::floor: return "floor";
+    case Baselines::all: return "all";
+  }
+  return "?";
+}
+
+app::MedianTimings all_medians(const std::vector<FrameTimings>& frames) {
+  app::MedianTimings m = app::median_timings(frames);
+  for (double FrameTimings::*field :
+       {&FrameTimings::gbuffer_plain, &FrameTimings::floor_light, &FrameTimings::frame_classified,
+        &FrameTimings::frame_naive, &FrameTimings::frame_dynamic}) {
+    std::vector<double> values;
+    values.reserve(frames.size());
+    for (const FrameTimings& f : frames) values.push_back(f.*field);
+    m.*field = median::of(values);
+  }
+  return m;
+}
+
 std::string configuration_key(const RendererOptions& o) {
-  return fmt::format("{}x{} tile {} {} {} {} {} camera {} msaa {} {}", o.width, o.height, o.tile_size,
-                     o.path == IndexPath::gpu ? "gpu" : "cpu", o.raw_permutations ? "raw" : "optimised",
-                     o.coalesce ? "coalesced" : "uncoalesced", o.primitive ? to_string(*o.primitive) : "auto", o.camera,
-                     o.msaa == 0 ? std::string("auto") : std::to_string(o.msaa), to_string(o.light_pass));
+  std::string key =
+      fmt::format("{}x{} tile {} {} {} {} {} camera {} msaa {} {}", o.width, o.height, o.tile_size,
+                  o.path == IndexPath::gpu ? "gpu" : "cpu", o.raw_permutations ? "raw" : "optimised",
+                  o.coalesce ? "coalesced" : "uncoalesced", o.primitive ? to_string(*o.primitive) : "auto", o.camera,
+                  o.msaa == 0 ? std::string("auto") : std::to_string(o.msaa), to_string(o.light_pass));
+  if (o.baselines != Baselines::both) key += fmt::format(" baselines {}", to_string(o.baselines));
+  return key;
 }
 
 std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,

@@ -2,6 +2,7 @@
 // One configuration of the renderer measured: medians of every stage over the timed frames,
 // the primitive counts, and whether the classified frame still equals the naive one.
 
+#include "tilelight/app/frame_ratios.h"
 #include "tilelight/app/report.h"
 #include "tilelight/render/tile_renderer.h"
 #include "tilelight/scene/scene.h"
@@ -23,10 +24,11 @@ struct Measurement {
   std::uint32_t tiles = 0;
   TilePrimitive primitive = TilePrimitive::triangles;  // what the tile pass drew (auto resolved)
   std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0, rectangles = 0;
-  std::uint32_t sky_tiles = 0;  // tiles with the SKY property: cheap for every method
-  app::MedianTimings timings;
-  app::Equivalence equivalence;          // classified vs naive
-  app::Equivalence dynamic_equivalence;  // dynamic vs naive
+  std::uint32_t sky_tiles = 0;              // tiles with the SKY property: cheap for every method
+  app::MedianTimings timings;               // per field, the median over frame_timings
+  std::vector<FrameTimings> frame_timings;  // every timed frame, in order
+  app::Equivalence equivalence;             // classified vs naive
+  app::Equivalence dynamic_equivalence;     // dynamic vs naive
 
   // The index build of whichever path ran (the other one is 0).
   double index_build() const { return timings.index_build_cpu + timings.index_build_gpu; }
@@ -36,11 +38,23 @@ struct Measurement {
   double speedup() const;
   // dynamic light / classified_light(): the speed-up over per-pixel branching.
   double speedup_over_dynamic() const;
+  // The classified frame over the baselines, frame by frame (frame_ratios.h): what the
+  // whole-frame table reports, robust to drift between frames.
+  app::FrameRatios ratios() const { return app::frame_ratios(frame_timings); }
 };
 
-// "1280x720 tile 4 cpu optimised coalesced auto camera default msaa auto": names a configuration
-// in keys and progress lines; the word after "coalesced" is the primitive asked for (auto, points
-// or triangles).
+// "none", "naive", "dynamic", "both", "floor", "all" (as tilelight's --baseline spells them).
+const char* to_string(Baselines baselines);
+
+// Medians of every field of `frames` (precondition: not empty). app::median_timings() takes the
+// stages; the whole frames, the plain G-buffer and the floor are taken here as well, so the sweep
+// reports them whichever fields that function covers.
+app::MedianTimings all_medians(const std::vector<FrameTimings>& frames);
+
+// "1280x720 tile 4 cpu optimised coalesced auto camera default msaa auto raster": names a
+// configuration in keys and progress lines; the word after "coalesced" is the primitive asked for
+// (auto, points or triangles). Baselines other than the default `both` end it ("... baselines
+// all"), so the keys of every existing configuration stay as they were.
 std::string configuration_key(const RendererOptions& options);
 
 // Makes one renderer per configuration and renders one untimed warm-up frame with each, then

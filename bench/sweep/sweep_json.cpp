@@ -1,5 +1,7 @@
 #include "sweep_json.h"
 
+#include "gbuffer_bound.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -21,10 +23,30 @@ Json timings_json(const app::MedianTimings& t) {
   j["tiled_light"] = round3(t.tiled_light);
   j["naive_light"] = round3(t.naive_light);
   j["dynamic_light"] = round3(t.dynamic_light);
+  j["gbuffer_plain"] = round3(t.gbuffer_plain);
+  j["floor_light"] = round3(t.floor_light);
+  j["frame_classified"] = round3(t.frame_classified);
+  j["frame_naive"] = round3(t.frame_naive);
+  j["frame_dynamic"] = round3(t.frame_dynamic);
   return j;
 }
 
-Json measurement_json(const Measurement& m) {
+double round2(double value) { return std::round(value * 100.0) / 100.0; }
+
+Json ratio_json(const std::optional<app::RatioStats>& r) {
+  if (!r) return nullptr;
+  return {{"median", round2(r->median)}, {"min", round2(r->min)}, {"max", round2(r->max)}};
+}
+
+// Baseline over classified, frame by frame (frame_ratios.h); null where the baseline did not run.
+Json ratios_json(const app::FrameRatios& r) {
+  return {{"light_vs_naive", ratio_json(r.light_vs_naive)},
+          {"light_vs_dynamic", ratio_json(r.light_vs_dynamic)},
+          {"whole_frame_vs_naive", ratio_json(r.whole_frame_vs_naive)},
+          {"whole_frame_vs_dynamic", ratio_json(r.whole_frame_vs_dynamic)}};
+}
+
+Json measurement_json(const Measurement& m, std::optional<double> bandwidth) {
   const RendererOptions& o = m.options;
   Json j;
   j["key"] = m.key;
@@ -42,10 +64,19 @@ Json measurement_json(const Measurement& m) {
   j["primitive"] = to_string(m.primitive);
   j["primitives"] = {
       {"uncoalesced", m.primitives_uncoalesced}, {"drawn", m.primitives_coalesced}, {"rectangles", m.rectangles}};
+  j["baselines"] = to_string(o.baselines);
   j["timings_ms"] = timings_json(m.timings);
+  Json frames = Json::array();
+  for (const FrameTimings& f : m.frame_timings) frames.push_back(timings_json(f));
+  j["frame_timings_ms"] = frames;
   j["classified_light_ms"] = round3(m.classified_light());
-  j["speedup"] = std::round(m.speedup() * 100.0) / 100.0;
-  j["speedup_over_dynamic"] = std::round(m.speedup_over_dynamic() * 100.0) / 100.0;
+  j["speedup"] = round2(m.speedup());
+  j["speedup_over_dynamic"] = round2(m.speedup_over_dynamic());
+  j["frame_ratios"] = ratios_json(m.ratios());
+  const std::uint64_t bytes = gbuffer_bytes(o.width, o.height, m.msaa_samples);
+  j["gbuffer_bytes"] = bytes;
+  const std::optional<double> bound = gbuffer_read_bound_ms(bytes, bandwidth);
+  j["gbuffer_read_bound_ms"] = bound ? Json(std::round(*bound * 1e4) / 1e4) : Json(nullptr);
   j["equivalence"] = {{"pixels_different", m.equivalence.pixels_different},
                       {"max_abs_difference", m.equivalence.max_abs_difference}};
   j["dynamic_equivalence"] = {{"pixels_different", m.dynamic_equivalence.pixels_different},
@@ -58,6 +89,8 @@ Json measurement_json(const Measurement& m) {
 std::string results_json(const SweepRun& run) {
   Json j;
   j["device"] = run.device;
+  const std::optional<double> bandwidth = memory_bandwidth(run.device);
+  j["memory_bandwidth_bytes_per_s"] = bandwidth ? Json(*bandwidth) : Json(nullptr);
   j["frames"] = run.options->frames;
   j["warmup_frames"] = 1;
   j["schedule"] = "round-robin";  // timed frame f of every configuration before frame f + 1 of any
@@ -69,7 +102,7 @@ std::string results_json(const SweepRun& run) {
   j["sizes"] = sizes;
   j["lavapipe_threads"] = run.lavapipe_threads.empty() ? Json(nullptr) : Json(run.lavapipe_threads);
   Json configurations = Json::array();
-  for (const Measurement& m : *run.measurements) configurations.push_back(measurement_json(m));
+  for (const Measurement& m : *run.measurements) configurations.push_back(measurement_json(m, bandwidth));
   j["configurations"] = configurations;
   Json comparisons = Json::array();
   for (const Comparison& c : run.plan->comparisons) {

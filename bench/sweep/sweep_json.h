@@ -20,12 +20,18 @@ struct SweepRun {
   std::uint64_t scene_triangles = 0;
 };
 
-// {"device", "frames", "warmup_frames", "schedule", "camera", "scene" (null: procedural),
-//  "scene_triangles", "sizes", "lavapipe_threads",
+// {"device", "memory_bandwidth_bytes_per_s" (null: unknown, gbuffer_bound.h), "frames",
+//  "warmup_frames", "schedule", "camera", "scene" (null: procedural), "scene_triangles", "sizes",
+//  "lavapipe_threads",
 //  "configurations": [{key, width, height, msaa_samples, tile_size, path, permutations,
-//                      coalesce, pipelines, tiles, rectangles {uncoalesced, coalesced},
-//                      timings_ms {...}, classified_light_ms, speedup, equivalence {...}}],
-//  "comparisons": [{id, title, image, configurations: [key...]}]}; milliseconds to 3 decimals.
+//                      coalesce, pipelines, tiles, rectangles {uncoalesced, coalesced}, baselines,
+//                      timings_ms {...medians}, frame_timings_ms [{...} per frame],
+//                      classified_light_ms, speedup, speedup_over_dynamic,
+//                      frame_ratios {light_vs_naive, light_vs_dynamic, whole_frame_vs_naive,
+//                                    whole_frame_vs_dynamic: {median, min, max} or null},
+//                      gbuffer_bytes, gbuffer_read_bound_ms (null: unknown), equivalence {...}}],
+//  "comparisons": [{id, title, image, configurations: [key...]}]}; milliseconds to 3 decimals,
+//  ratios to 2.
 std::string results_json(const SweepRun& run);
 
 }  // namespace tilelight::sweep

@@ -57,9 +57,18 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
       ->delimiter(',')
       ->check(CLI::IsMember({"auto", "1", "2", "4", "8", "16"}))
       ->capture_default_str();
-  std::string path = "cpu";
-  cli.add_option("--path", path, "index build of the baseline comparison: cpu (host patching) or gpu (compute)")
+  std::vector<std::string> paths{"cpu"};
+  cli.add_option("--path", paths,
+                 "index builds of the baseline comparison: cpu (host patching), gpu (compute); each view measured "
+                 "with each")
+      ->delimiter(',')
       ->check(CLI::IsMember({"cpu", "gpu"}))
+      ->capture_default_str();
+  std::string baselines = "both";
+  cli.add_option("--baselines", baselines,
+                 "full-frame passes of the baseline comparison: both (naive, dynamic) or all (and the floor pass; "
+                 "its table adds the whole frames and per-frame ratios)")
+      ->check(CLI::IsMember({"both", "all"}))
       ->capture_default_str();
   cli.add_option("--light-passes", options.light_passes,
                  "light-pass kinds of the baseline comparison: raster, compute (each view measured with each)")
@@ -92,7 +101,9 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
   }
   options.sizes.clear();
   for (const std::string& s : sizes) options.sizes.push_back(parse_frame_size(s));
-  options.gpu_path = path == "gpu";
+  options.paths.clear();
+  for (const std::string& p : paths) options.paths.push_back(p == "gpu" ? IndexPath::gpu : IndexPath::cpu);
+  options.baselines = baselines == "all" ? Baselines::all : Baselines::both;
   options.msaa.clear();
   for (const std::string& m : msaa)
     options.msaa.push_back(m == "auto" ? 0u : static_cast<std::uint32_t>(std::stoul(m)));

@@ -1,6 +1,8 @@
 #pragma once
 // The command line of tilelight_sweep: how many frames, which sizes, which device, where to.
 
+#include "tilelight/render/tile_renderer.h"
+
 #include <cstdint>
 #include <optional>
 #include <ostream>
@@ -24,7 +26,11 @@ struct SweepOptions {
   // of these cameras and G-buffer sample counts (0 = auto, as tilelight --msaa auto).
   std::vector<std::string> cameras;
   std::vector<std::uint32_t> msaa;
-  bool gpu_path = false;  // the index build of the baseline comparison: false = CPU patching
+  // The index builds of the baseline comparison (tilelight --path), each a row per view.
+  std::vector<IndexPath> paths{IndexPath::cpu};
+  // The full-frame passes every frame of the baseline comparison runs: both (naive, dynamic) or
+  // all (the floor pass too); with `all` its table shows the whole frames and the floor as well.
+  Baselines baselines = Baselines::both;
   // The light-pass kinds of the baseline comparison (tilelight --light-pass), each a row per view.
   std::vector<std::string> light_passes{"raster", "compute"};
   // The comparisons to run, by id (sweep_plan.h); empty = all.

@@ -68,21 +68,24 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
                        });
   b.compare<bool>(Facet::stages, "stages", "Per-stage cost, naive vs classified" + at, {true},
                   [](RendererOptions&, const bool&) {});
-  // Every light-pass kind, MSAA mode, size and camera: rows grouped by pass kind, MSAA mode, then size.
+  // Every light-pass kind, MSAA mode, size, index build and camera: rows grouped in that order.
   struct View {
     std::uint32_t msaa;
     FrameSize size;
     std::string camera;
     IndexPath path;
     LightPass light_pass;
+    Baselines baselines;
   };
   std::vector<View> views;
   for (const std::string& pass : options.light_passes) {
     for (std::uint32_t msaa : options.msaa) {
       for (const FrameSize& size : options.sizes) {
-        for (const std::string& camera : options.cameras) {
-          views.push_back({msaa, size, camera, options.gpu_path ? IndexPath::gpu : IndexPath::cpu,
-                           pass == "compute" ? LightPass::compute : LightPass::raster});
+        for (IndexPath path : options.paths) {
+          for (const std::string& camera : options.cameras) {
+            views.push_back({msaa, size, camera, path, pass == "compute" ? LightPass::compute : LightPass::raster,
+                             options.baselines});
+          }
         }
       }
     }
@@ -95,6 +98,7 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
                     o.camera = v.camera;
                     o.path = v.path;
                     o.light_pass = v.light_pass;
+                    o.baselines = v.baselines;
                   });
   return b.take();
 }
@@ -110,7 +114,9 @@ std::string row_label(Facet facet, const Measurement& m) {
     case Facet::resolution:
     case Facet::stages: return fmt::format("{}x{}", o.width, o.height);
     case Facet::baselines:
-      return fmt::format("{} {}x {}x{} {}", to_string(o.light_pass), m.msaa_samples, o.width, o.height, o.camera);
+      // The index build only where it is not the default, so a CPU-only run keeps its labels.
+      return fmt::format("{} {}x {}x{} {}{}", to_string(o.light_pass), m.msaa_samples, o.width, o.height, o.camera,
+                         o.path == IndexPath::gpu ? " (GPU build)" : "");
   }
   return m.key;
 }

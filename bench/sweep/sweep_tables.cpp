@@ -1,5 +1,7 @@
 #include "sweep_tables.h"
 
+#include "gbuffer_bound.h"
+
 #include <fmt/format.h>
 #include <median/median.h>
 
@@ -45,6 +47,7 @@ std::string stages_table(const Measurement& m) {
 }
 
 std::string min_median_max(const std::vector<double>& values) {
+  if (values.empty()) return "-";
   return fmt::format("{:.2f}x / {:.2f}x / {:.2f}x", *std::min_element(values.begin(), values.end()), median::of(values),
                      *std::max_element(values.begin(), values.end()));
 }
@@ -83,11 +86,104 @@ std::string baselines_table(const std::vector<const Measurement*>& rows) {
   return out;
 }
 
+// A time that was not measured reads 0 (a pass that did not run, a field the renderer does not
+// fill): "-" rather than a figure that looks like a very fast pass.
+std::string ms_or_dash(double value) { return value > 0 ? ms(value) : "-"; }
+
+std::string ratio_or_dash(const std::optional<app::RatioStats>& ratio) {
+  return ratio ? fmt::format("{:.2f}x", ratio->median) : "-";
+}
+
+std::string index_build_name(const RendererOptions& o) { return o.path == IndexPath::gpu ? "GPU" : "CPU"; }
+
+// The per-frame-ratio medians of one row group (light pass, MSAA, size, index build) over its
+// cameras, and the G-buffer bytes every row of it reads.
+struct RatioGroup {
+  std::string name;
+  std::size_t cameras = 0;
+  std::uint64_t gbuffer_bytes = 0;
+  std::vector<double> light_naive, light_dynamic, frame_naive, frame_dynamic;
+
+  void add(const app::FrameRatios& r) {
+    ++cameras;
+    for (const auto& [ratio, into] : {std::pair{&r.light_vs_naive, &light_naive},
+                                      {&r.light_vs_dynamic, &light_dynamic},
+                                      {&r.whole_frame_vs_naive, &frame_naive},
+                                      {&r.whole_frame_vs_dynamic, &frame_dynamic}}) {
+      if (*ratio) into->push_back((*ratio)->median);
+    }
+  }
+};
+
+// The device's name is on the run line above the table.
+std::string bound_heading(std::optional<double> bytes_per_second) {
+  if (!bytes_per_second) return "limit (bandwidth unknown)";
+  return fmt::format("limit at {:.2f} TB/s", *bytes_per_second / 1e12);
+}
+
+std::string bound_cell(std::uint64_t bytes, std::optional<double> bytes_per_second) {
+  const std::optional<double> bound = gbuffer_read_bound_ms(bytes, bytes_per_second);
+  return bound ? ms(*bound) : "unknown";
+}
+
+// Classified vs naive, dynamic and floor per row, light path and whole frame, with the
+// per-frame ratios; then per group the spread over the cameras beside the G-buffer-read limit.
+std::string whole_frame_table(const std::vector<const Measurement*>& rows, std::string_view device_name) {
+  std::string out =
+      "| light pass | MSAA | size | index build | camera | classified light | naive light | dynamic light | "
+      "floor light | classified frame | naive frame | dynamic frame | light vs naive | light vs dynamic | "
+      "frame vs naive | frame vs dynamic | pixels differ (classified, dynamic) |\n"
+      "|---|---:|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::vector<RatioGroup> groups;
+  for (const Measurement* m : rows) {
+    const RendererOptions& o = m->options;
+    const app::MedianTimings& t = m->timings;
+    const app::FrameRatios r = m->ratios();
+    out +=
+        fmt::format("| {} | {}x | {}x{} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}, {} |\n",
+                    to_string(o.light_pass), m->msaa_samples, o.width, o.height, index_build_name(o), o.camera,
+                    ms_or_dash(m->classified_light()), ms_or_dash(t.naive_light), ms_or_dash(t.dynamic_light),
+                    ms_or_dash(t.floor_light), ms_or_dash(t.frame_classified), ms_or_dash(t.frame_naive),
+                    ms_or_dash(t.frame_dynamic), ratio_or_dash(r.light_vs_naive), ratio_or_dash(r.light_vs_dynamic),
+                    ratio_or_dash(r.whole_frame_vs_naive), ratio_or_dash(r.whole_frame_vs_dynamic),
+                    m->equivalence.pixels_different, m->dynamic_equivalence.pixels_different);
+    const std::string group = fmt::format("{}, {}x MSAA, {}x{}, {} index build", to_string(o.light_pass),
+                                          m->msaa_samples, o.width, o.height, index_build_name(o));
+    if (groups.empty() || groups.back().name != group) {
+      groups.push_back({group, 0, gbuffer_bytes(o.width, o.height, m->msaa_samples), {}, {}, {}, {}});
+    }
+    groups.back().add(r);
+  }
+  const std::optional<double> bandwidth = memory_bandwidth(device_name);
+  out += fmt::format(
+      "\nRatios are per frame (the baseline's time over the classified one in the same frame, median over the "
+      "frames); light: classification + index build + tiled light against the baseline's light pass; frame: the "
+      "classified frame end to end against the baseline's whole frame. \"-\": not measured.\n\n"
+      "Over the cameras, min / median / max of those medians. A full-frame light pass reads the whole G-buffer "
+      "(pixels x samples x {} bytes) at least once: that read at the device's peak memory bandwidth is the "
+      "least any light pass can take.\n\n"
+      "| light pass, MSAA, size | cameras | light vs naive | light vs dynamic | frame vs naive | frame vs dynamic | "
+      "G-buffer read | {} |\n|---|---:|---|---|---|---|---:|---:|\n",
+      kGBufferBytesPerSample, bound_heading(bandwidth));
+  for (const RatioGroup& g : groups) {
+    out += fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} MB | {} |\n", g.name, g.cameras,
+                       min_median_max(g.light_naive), min_median_max(g.light_dynamic), min_median_max(g.frame_naive),
+                       min_median_max(g.frame_dynamic), static_cast<double>(g.gbuffer_bytes) / 1e6,
+                       bound_cell(g.gbuffer_bytes, bandwidth));
+  }
+  return out;
+}
+
 }  // namespace
 
-std::string markdown_table(const Comparison& comparison, const std::vector<const Measurement*>& rows) {
+std::string markdown_table(const Comparison& comparison, const std::vector<const Measurement*>& rows,
+                           std::string_view device_name) {
   if (comparison.facet == Facet::stages && !rows.empty()) return stages_table(*rows.front());
-  if (comparison.facet == Facet::baselines && !rows.empty()) return baselines_table(rows);
+  if (comparison.facet == Facet::baselines && !rows.empty()) {
+    // The whole-frame layout where the floor ran too; the light-path one, as before, otherwise.
+    if (rows.front()->options.baselines == Baselines::all) return whole_frame_table(rows, device_name);
+    return baselines_table(rows);
+  }
   return configurations_table(comparison, rows);
 }
 
