@@ -9,9 +9,11 @@
 
 namespace tilelight::sweep {
 
-// Bytes per G-buffer sample, as runtime/render/src/render_targets.h allocates them: RT0 RGBA8
-// (4), RT1 RGBA16F (8), RT2 RGBA16F (8), depth D32 (4). That header is private to the renderer;
-// tests/bench checks the sum, and a change of format there must change it here.
+// Bytes per G-buffer sample that lighting reads, as runtime/render/src/render_targets.h
+// allocates them: RT0 RGBA8 (4), RT1 RGBA16F (8), RT2 RGBA16F (8), RT3 R32F surface depth (4).
+// The hardware depth and the classified path's fragment tags are not read by any light pass.
+// That header is private to the renderer; tests/bench checks the sum, and a change of format
+// there must change it here.
 inline constexpr std::uint64_t kGBufferBytesPerSample = 4 + 8 + 8 + 4;
 
 // G-buffer bytes a light pass reads once per frame: pixels x samples x kGBufferBytesPerSample.

@@ -104,7 +104,7 @@ TEST(WholeFrameTable, BothBaselinesKeepTheLightPathTable) {
 }
 
 TEST(GBufferBound, BytesBandwidthAndLimit) {
-  EXPECT_EQ(kGBufferBytesPerSample, 24u);  // RT0 RGBA8, RT1 and RT2 RGBA16F, depth D32
+  EXPECT_EQ(kGBufferBytesPerSample, 24u);  // RT0 RGBA8, RT1 and RT2 RGBA16F, RT3 R32F
   EXPECT_EQ(gbuffer_bytes(3840, 2160, 2), 398131200u);
   EXPECT_EQ(gbuffer_bytes(1920, 1080, 1), 49766400u);
   EXPECT_EQ(memory_bandwidth("NVIDIA H100 80GB HBM3"), 3.35e12);
