@@ -295,6 +295,18 @@ uint gbuffer_load_tag(ivec2 pixel, int sample_index)
 {
     return gbuffer_fetch(gbuffer_fragment_tags, pixel, sample_index).r;
 }
+
+// False only when every sample of `pixel` comes from one fragment (equal tags, no shared bit):
+// then they are bit-identical. The classified G-buffer's cheap test (one R32UI texel a sample).
+bool gbuffer_tags_say_samples_may_differ(ivec2 pixel)
+{
+    uint first = gbuffer_load_tag(pixel, 0);
+    bool may_differ = gbuffer_tag_is_shared(first);
+    for (int s = 1; s < gbuffer_sample_count(); ++s) {
+        may_differ = may_differ || gbuffer_tags_differ(gbuffer_load_tag(pixel, s), first);
+    }
+    return may_differ;
+}
 #endif
 
 #endif // GBUFFER_ENCODE_ONLY

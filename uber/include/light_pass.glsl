@@ -100,20 +100,48 @@ vec3 shade_sample(ivec2 pixel, int sample_index)
     return shade_geometry(g, pixel);
 }
 
-// The average of every sample, as a running mean, given sample 0's colour. A component equal to
-// the mean so far is kept as it is (a select, no arithmetic), so a pixel whose samples all shade
-// alike averages to exactly its sample-0 colour for any sample count, Inf included; a plain sum
-// would not (v + v + v rounds, Inf - Inf is NaN). That is what lets a non-edge tile shade sample
-// 0 alone. (With one sample per pixel there is nothing to add: the loop runs no pass.)
+// Whether the bound G-buffer is the classified path's, with fragment tags (RT4): the tile passes
+// set it (specialization constant 2); the baselines run on the plain G-buffer, which has none.
+layout(constant_id = 2) const bool TAGGED_GBUFFER = false;
+
+// One step of the running mean of a pixel's samples: `mean` of samples 0 .. s - 1, and sample
+// s's colour. A component equal to the mean so far is kept as it is (a select, no arithmetic),
+// so a pixel whose samples all shade alike averages to exactly its sample-0 colour for any
+// sample count, Inf included; a plain sum would not (v + v + v rounds, Inf - Inf is NaN). That
+// is what lets a pixel whose samples are equal shade sample 0 alone. Every pass that averages
+// samples goes through here, in sample order, so they round alike.
+vec3 add_sample_to_mean(vec3 mean, vec3 colour, int s)
+{
+    return mix(mean + (colour - mean) / float(s + 1), mean, equal(colour, mean));
+}
+
+// The average of every sample, given sample 0's colour. (With one sample per pixel there is
+// nothing to add: the loop runs no pass.)
 vec3 add_other_samples(ivec2 pixel, vec3 sample0_colour)
 {
     int samples = gbuffer_sample_count();
     vec3 mean = sample0_colour;
     for (int s = 1; s < samples; ++s) {
-        vec3 colour = shade_sample(pixel, s);
-        mean = mix(mean + (colour - mean) / float(s + 1), mean, equal(colour, mean));
+        mean = add_sample_to_mean(mean, shade_sample(pixel, s), s);
     }
     return mean;
+}
+
+// Whether `pixel` needs its other samples shaded (MSAA_EDGE): the dynamic pass compares the
+// samples' stored values (the plain G-buffer has no tags); a tile pass asks the fragment tags,
+// which say "equal" only for samples of one fragment; the naive pass shades every sample of
+// every pixel. Skipping equal samples changes nothing (add_sample_to_mean()).
+bool pixel_needs_other_samples(ivec2 pixel)
+{
+    if (PER_PIXEL_BRANCHES) {
+        return gbuffer_pixel_samples_differ(pixel);
+    }
+#ifndef GBUFFER_SINGLE_SAMPLED
+    if (TAGGED_GBUFFER) {
+        return gbuffer_tags_say_samples_may_differ(pixel);
+    }
+#endif
+    return true;
 }
 
 // The lit colour of `pixel`: sample 0 shaded, and with MSAA_EDGE every other sample averaged in
@@ -122,7 +150,7 @@ vec3 shade_pixel(ivec2 pixel)
 {
     vec3 colour = shade_sample(pixel, 0);
 #ifdef MSAA_EDGE
-    if (!PER_PIXEL_BRANCHES || gbuffer_pixel_samples_differ(pixel)) {
+    if (pixel_needs_other_samples(pixel)) {
         colour = add_other_samples(pixel, colour);
     }
 #endif

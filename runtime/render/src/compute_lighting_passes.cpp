@@ -19,6 +19,8 @@ constexpr std::uint32_t kWorkgroupSize = 64;     // LIGHT_GROUP_SIZE
 constexpr std::uint32_t kFullFrameSide = 8;      // FULL_FRAME_GROUP_SIDE
 constexpr std::uint32_t kTileSizeConstant = 0;   // constant_id of TILE_SIZE
 constexpr std::uint32_t kFullFrameConstant = 1;  // constant_id of FULL_FRAME
+constexpr std::uint32_t kTaggedConstant = 2;     // TAGGED_GBUFFER (light_pass.glsl)
+constexpr std::uint32_t kSamplesConstant = 8;    // LIGHT_GBUFFER_SAMPLES
 constexpr std::uint32_t kTargetSet = 1;
 constexpr std::uint32_t kTargetBinding = 0;     // light_target
 constexpr std::uint32_t kTileListsBinding = 1;  // tile_lists.glsl's default
@@ -43,12 +45,17 @@ void check_set0_matches(const shadergen::Registry& compute, const shadergen::Reg
   }
 }
 
+// The tile pass (not `full_frame`) reads the classified G-buffer, whose fragment tags exist with
+// 2 or more samples; the baselines read the plain one.
 UniquePipeline create_light_pipeline(const Context& context, VkPipelineLayout layout,
-                                     std::span<const std::uint32_t> spirv, std::uint32_t tile_size, bool full_frame,
-                                     const std::string& name) {
-  return create_compute_pipeline(context, layout, spirv,
-                                 SpecConstants{}.set(kTileSizeConstant, tile_size).set(kFullFrameConstant, full_frame),
-                                 name);
+                                     std::span<const std::uint32_t> spirv, const RenderTargets& targets,
+                                     std::uint32_t tile_size, bool full_frame, const std::string& name) {
+  const SpecConstants constants = SpecConstants{}
+                                      .set(kTileSizeConstant, tile_size)
+                                      .set(kFullFrameConstant, full_frame)
+                                      .set(kTaggedConstant, !full_frame && targets.has_fragment_tags())
+                                      .set(kSamplesConstant, static_cast<std::uint32_t>(targets.samples()));
+  return create_compute_pipeline(context, layout, spirv, constants, name);
 }
 
 void to_general(VkCommandBuffer cmd, const Image& target, Scope dst) {
@@ -100,20 +107,20 @@ ComputeLightingPasses::ComputeLightingPasses(const Context& context, const TileG
   const std::uint32_t tile = grid.tile_size;
   if (permutations == PermutationSet::optimised) {
     for (const shadergen::Permutation& p : registry.optimised) {
-      pipelines_.push_back(create_light_pipeline(context, layout_.get(), p.spirv, tile, false,
+      pipelines_.push_back(create_light_pipeline(context, layout_.get(), p.spirv, targets, tile, false,
                                                  "compute lighting optimised " + std::to_string(p.id)));
     }
   } else {
     for (const shadergen::Permutation& p : registry.raw) {
       pipelines_.push_back(p.pruned ? UniquePipeline{}
-                                    : create_light_pipeline(context, layout_.get(), p.spirv, tile, false,
+                                    : create_light_pipeline(context, layout_.get(), p.spirv, targets, tile, false,
                                                             "compute lighting raw " + std::to_string(p.id)));
     }
   }
-  naive_pipeline_ = create_light_pipeline(context, layout_.get(), registry.optimised[kNaiveOptimisedId].spirv, tile,
-                                          true, "compute lighting naive (optimised 31)");
-  dynamic_pipeline_ = create_light_pipeline(context, layout_.get(), companion_spirv(registry, "lighting_dynamic"), tile,
-                                            true, "compute lighting dynamic (per-pixel branches)");
+  naive_pipeline_ = create_light_pipeline(context, layout_.get(), registry.optimised[kNaiveOptimisedId].spirv, targets,
+                                          tile, true, "compute lighting naive (optimised 31)");
+  dynamic_pipeline_ = create_light_pipeline(context, layout_.get(), companion_spirv(registry, "lighting_dynamic"),
+                                            targets, tile, true, "compute lighting dynamic (per-pixel branches)");
 }
 
 std::uint32_t ComputeLightingPasses::pipeline_count() const {

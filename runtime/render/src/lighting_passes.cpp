@@ -13,17 +13,21 @@ namespace tilelight {
 namespace {
 
 constexpr std::uint32_t kNaiveOptimisedId = 31;  // every feature: the full uber-shader
+constexpr std::uint32_t kTaggedConstant = 2;     // TAGGED_GBUFFER (light_pass.glsl)
 constexpr VkDeviceSize kDrawRecordBytes = sizeof(VkDrawIndexedIndirectCommand);
 constexpr std::uint32_t kCornerBinding = 0;  // tile.vert: the corner grid, per vertex
 constexpr std::uint32_t kGridBinding = 1;    // tile_point.vert: the grid's shape, per instance
 
+// `tile_pass`: the classified path's pass, which reads the classified G-buffer (fragment tags,
+// with 2 or more samples); the baselines read the plain one.
 UniquePipeline create_light_pipeline(const Context& context, const RenderTargets& targets,
                                      const LightingInterface& lighting, std::span<const std::uint32_t> fragment,
-                                     TilePrimitive primitive, std::string name) {
+                                     TilePrimitive primitive, bool tile_pass, std::string name) {
   GraphicsPipelineDesc desc;
   desc.layout = lighting.lighting_layout();
   desc.render_pass = targets.light_pass();
   desc.fragment_spirv = fragment;
+  desc.fragment_constants.set(kTaggedConstant, tile_pass && targets.has_fragment_tags());
   if (primitive == TilePrimitive::points) {
     // tile_point.vert computes each point from its index; binding 1 holds the grid's shape.
     desc.vertex_spirv = companion_spirv(lighting.shaders(), "tile_point");
@@ -68,21 +72,21 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
   const shadergen::Registry& registry = lighting.shaders();
   if (permutations == PermutationSet::optimised) {
     for (const shadergen::Permutation& p : registry.optimised) {
-      pipelines_.push_back(create_light_pipeline(context, targets, lighting, p.spirv, primitive,
+      pipelines_.push_back(create_light_pipeline(context, targets, lighting, p.spirv, primitive, true,
                                                  "lighting optimised " + std::to_string(p.id)));
     }
   } else {
     for (const shadergen::Permutation& p : registry.raw) {
       pipelines_.push_back(p.pruned ? UniquePipeline{}
-                                    : create_light_pipeline(context, targets, lighting, p.spirv, primitive,
+                                    : create_light_pipeline(context, targets, lighting, p.spirv, primitive, true,
                                                             "lighting raw " + std::to_string(p.id)));
     }
   }
   // The whole frame is not a square: two triangles, whose one diagonal costs little.
   naive_pipeline_ = create_light_pipeline(context, targets, lighting, registry.optimised[kNaiveOptimisedId].spirv,
-                                          TilePrimitive::triangles, "lighting naive (optimised 31)");
+                                          TilePrimitive::triangles, false, "lighting naive (optimised 31)");
   dynamic_pipeline_ = create_light_pipeline(context, targets, lighting, companion_spirv(registry, "lighting_dynamic"),
-                                            TilePrimitive::triangles, "lighting dynamic (per-pixel branches)");
+                                            TilePrimitive::triangles, false, "lighting dynamic (per-pixel branches)");
 }
 
 std::uint32_t LightingPasses::pipeline_count() const {
