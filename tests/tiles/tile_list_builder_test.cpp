@@ -95,13 +95,26 @@ TEST(TileListBuilder, EveryTileOnceInItsClassListWithItsDispatch) {
   }
 }
 
-TEST(TileListBuilder, WithinAClassTilesAreInRowMajorOrder) {
+// Morton order: each light workgroup's 4 tiles are a 2x2 square (8x8 pixels), 4 workgroups a
+// 4x4 one, and so on; a grid that is not square keeps the order of its tiles' Morton codes.
+TEST(TileListBuilder, WithinAClassTilesAreInMortonOrder) {
   const TileGrid grid = TileGrid::make(64, 64, 4);
   const Built b = build(grid, std::vector<std::uint8_t>(grid.tile_count(), 5), 4);
   ASSERT_EQ(b.lists[kTileListMaxClasses + 5], 256u);
-  EXPECT_EQ(b.lists[kTileListHeaderWords + 0], pack_tile(0, 0));
-  EXPECT_EQ(b.lists[kTileListHeaderWords + 1], pack_tile(1, 0));
-  EXPECT_EQ(b.lists[kTileListHeaderWords + 16], pack_tile(0, 1));
+  const std::uint32_t* list = b.lists.data() + kTileListHeaderWords;
+  const std::vector<std::uint32_t> first_eight(list, list + 8);
+  EXPECT_EQ(first_eight,
+            (std::vector<std::uint32_t>{pack_tile(0, 0), pack_tile(1, 0), pack_tile(0, 1), pack_tile(1, 1),
+                                        pack_tile(2, 0), pack_tile(3, 0), pack_tile(2, 1), pack_tile(3, 1)}));
+  EXPECT_EQ(list[16], pack_tile(4, 0));
+  EXPECT_EQ(list[255], pack_tile(15, 15));
+  const TileGrid wide = TileGrid::make(24, 8, 4);  // 6x2 tiles
+  const Built w = build(wide, std::vector<std::uint8_t>(wide.tile_count(), 5), 4);
+  const std::uint32_t* wide_list = w.lists.data() + kTileListHeaderWords;
+  EXPECT_EQ(std::vector<std::uint32_t>(wide_list, wide_list + 12),
+            (std::vector<std::uint32_t>{pack_tile(0, 0), pack_tile(1, 0), pack_tile(0, 1), pack_tile(1, 1),
+                                        pack_tile(2, 0), pack_tile(3, 0), pack_tile(2, 1), pack_tile(3, 1),
+                                        pack_tile(4, 0), pack_tile(5, 0), pack_tile(4, 1), pack_tile(5, 1)}));
   EXPECT_EQ(b.dispatches[5].x, 64u);
   EXPECT_EQ(b.dispatches[4].x, 0u) << "a class without tiles dispatches nothing";
 }

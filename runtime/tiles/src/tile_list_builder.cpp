@@ -6,12 +6,43 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace tilelight {
 namespace {
 
 constexpr std::uint8_t kInvalidClass = 0xFF;          // classes are < 128
 constexpr std::uint32_t kMaxTileCoordinate = 0xFFFF;  // 16 bits each in pack_tile()
+
+// Bit i of `v` to bit 2i: one coordinate's half of a Morton code.
+std::uint64_t spread_bits(std::uint32_t v) {
+  std::uint64_t x = v;
+  x = (x | (x << 16)) & 0x0000FFFF0000FFFFull;
+  x = (x | (x << 8)) & 0x00FF00FF00FF00FFull;
+  x = (x | (x << 4)) & 0x0F0F0F0F0F0F0F0Full;
+  x = (x | (x << 2)) & 0x3333333333333333ull;
+  x = (x | (x << 1)) & 0x5555555555555555ull;
+  return x;
+}
+
+// Every tile of the grid, packed, in Morton (Z) order: the order each class's list is filled in,
+// so that the few tiles one light workgroup shades (4 at tile size 4) are, where the class
+// covers the region, one 2x2 square of tiles (8x8 pixels), and a run of workgroups one larger
+// square, rather than a strip of a row.
+std::vector<std::uint32_t> morton_order(const TileGrid& grid) {
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+  keyed.reserve(grid.tile_count());
+  for (std::uint32_t y = 0; y < grid.tiles_y; ++y) {
+    for (std::uint32_t x = 0; x < grid.tiles_x; ++x)
+      keyed.emplace_back(spread_bits(x) | (spread_bits(y) << 1), pack_tile(x, y));
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::uint32_t> order;
+  order.reserve(keyed.size());
+  for (const auto& [key, tile] : keyed) order.push_back(tile);
+  return order;
+}
 
 }  // namespace
 
@@ -46,6 +77,7 @@ TileListBuilder::TileListBuilder(const TileGrid& grid, std::span<const std::uint
     }
     if (pruned.empty() || !pruned[raw]) map_[raw] = lut[raw];
   }
+  order_ = morton_order(grid);
 }
 
 std::uint8_t TileListBuilder::class_of(std::uint8_t raw, std::uint32_t tile_x, std::uint32_t tile_y) const {
@@ -94,11 +126,10 @@ TileListStats TileListBuilder::build(std::span<const std::uint8_t> blocked_raw_i
     first += count;
   }
   stats.tiles = first;
-  // Pass 2: fill, row-major.
-  for (std::uint32_t y = 0; y < grid_.tiles_y; ++y) {
-    for (std::uint32_t x = 0; x < grid_.tiles_x; ++x) {
-      lists[cursor[map_[blocked_raw_ids[grid_.blocked_offset(x, y)]]]++] = pack_tile(x, y);
-    }
+  // Pass 2: fill, in Morton order (morton_order()).
+  for (const std::uint32_t tile : order_) {
+    const std::uint32_t x = tile & kMaxTileCoordinate, y = tile >> 16;
+    lists[cursor[map_[blocked_raw_ids[grid_.blocked_offset(x, y)]]]++] = tile;
   }
   return stats;
 }

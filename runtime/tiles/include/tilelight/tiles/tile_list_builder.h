@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace tilelight {
 
@@ -63,6 +64,7 @@ class TileListBuilder {
   TileGrid grid_;
   std::uint32_t class_count_;
   std::uint32_t tiles_per_group_;
+  std::vector<std::uint32_t> order_;     // every tile, packed, in the order lists are filled (Morton)
   std::array<std::uint8_t, 256> map_{};  // raw byte -> class, kInvalidClass where impossible
 };
 
