@@ -38,7 +38,10 @@ CLI::Validator one_of(const OptionNames<T>& names) {
 template <typename T>
 CLI::Option* add_choice(CLI::App& cli, const std::string& flag, T& value, const OptionNames<T>& names,
                         const std::string& help) {
-  return cli.add_option(flag, value, help)->transform(one_of(names))->default_str(name_of(names, value));
+  return cli.add_option(flag, value, help)
+      ->transform(one_of(names))
+      ->type_name("TEXT")  // what is typed; CLI11 would name the variable's type
+      ->default_str(name_of(names, value));
 }
 
 void add_options(CLI::App& cli, Arguments& a) {
