@@ -347,6 +347,15 @@ struct TileRenderer::Impl {
     }
   }
 
+  // The G-buffer classification reads: the scene's, or the test's upload.
+  void record_classified_gbuffer(VkCommandBuffer cmd) const {
+    if (gbuffer_upload) {
+      gbuffer_upload->record(cmd, *targets);
+    } else {
+      scene_passes->record_gbuffer(cmd, *targets);
+    }
+  }
+
   void record_frame() {
     VkCommandBuffer cmd = frame_commands.get();
     check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", "frame (submit A)");
@@ -355,11 +364,7 @@ struct TileRenderer::Impl {
     frame_queries.write(cmd, "start");
     scene_passes->record_shadow_map(cmd, *targets);
     frame_queries.write(cmd, "shadow");
-    if (gbuffer_upload) {
-      gbuffer_upload->record(cmd, *targets);
-    } else {
-      scene_passes->record_gbuffer(cmd, *targets);
-    }
+    record_classified_gbuffer(cmd);
     frame_queries.write(cmd, "gbuffer");
     classification->record(cmd);
     frame_queries.write(cmd, "classified");
@@ -590,8 +595,14 @@ RgbaImage TileRenderer::read_dynamic() const {
 GBufferSamples TileRenderer::read_gbuffer() {
   Impl& impl = *impl_;
   impl.classification->enable_gbuffer_dump(impl.context, impl.descriptor_pool.get(), msaa_samples());
+  // Where a baseline ran, the targets hold its plain G-buffer, without the classification data
+  // the CPU reference needs: draw the classified one again first (the frame's, bit for bit).
   submit_and_wait(
-      impl.context, impl.pool, [&](VkCommandBuffer cmd) { impl.classification->record_gbuffer_dump(cmd); },
+      impl.context, impl.pool,
+      [&](VkCommandBuffer cmd) {
+        if (impl.runs_any_baseline()) impl.record_classified_gbuffer(cmd);
+        impl.classification->record_gbuffer_dump(cmd);
+      },
       "G-buffer dump", impl.options.timeout);
   GBufferSamples out;
   out.width = impl.grid.width;

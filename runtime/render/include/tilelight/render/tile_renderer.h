@@ -159,8 +159,9 @@ class TileRenderer {
   // of the test-only members below; production code has no way to reach them.
   friend class TileRendererTestSeam;
 
-  // What the CPU reference classifier needs: the last frame's G-buffer and shadow map, and the
-  // lighting parameters the shaders read.
+  // What the CPU reference classifier needs: the G-buffer the last frame classified (drawn
+  // again where the baselines' plain one replaced it), its shadow map, and the lighting
+  // parameters the shaders read.
   const LightingParamsBlock& lighting_params() const;
   GBufferSamples read_gbuffer();
   std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major
