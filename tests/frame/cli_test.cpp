@@ -87,6 +87,8 @@ TEST(TilelightCli, WritesTheFiveFilesAndTheReportFields) {
         "G-buffer, plain (baselines)", "G-buffer, classified"}) {
     EXPECT_NE(r.out.find(line), std::string::npos) << line << " in\n" << r.out;
   }
+  // The table leads with the whole frame, then its stages.
+  EXPECT_LT(r.out.find("\nwhole frame "), r.out.find("\nshadow map ")) << r.out;
   EXPECT_NE(r.out.find("; dynamic vs naive: 0 differ (max 0)"), std::string::npos) << r.out;
   // Nothing temporary left beside the results.
   for (const auto& entry : fs::directory_iterator(out)) {

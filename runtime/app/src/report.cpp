@@ -208,7 +208,8 @@ std::string run_lines(const RunDescription& run) {
          fmt::format("scene {} ({} triangles)\n", run.scene.empty() ? "procedural" : run.scene, run.scene_triangles);
 }
 
-// The stages, baselines first (each after the plain G-buffer), the classified frame last.
+// The whole frame, then its stages: a column per baseline (each on the plain G-buffer), the
+// classified frame last.
 std::string stage_rows(const FrameReport& r) {
   const MedianTimings& t = r.timings;
   const std::vector<Column> columns = baseline_columns(r.run.baselines);
@@ -227,6 +228,11 @@ std::string stage_rows(const FrameReport& r) {
   };
   auto same = [](double ms) { return [ms](const Column&) -> std::optional<double> { return ms; }; };
   auto nothing = [](const Column&) -> std::optional<double> { return std::nullopt; };
+  auto light = [&](const Column& c) -> std::optional<double> { return t.*c.light; };
+  auto frame = [&](const Column& c) -> std::optional<double> { return whole_frame_ms(t, c); };
+  // The whole frame first: a baseline's is the sum of its passes; the classified one is end to
+  // end (its host round trip included), so it may exceed the sum of its rows below.
+  row("whole frame", frame, t.frame_classified);
   row("shadow map", same(t.shadow_map), t.shadow_map);
   row("G-buffer, plain (baselines)", same(t.gbuffer_plain), std::nullopt);
   row("G-buffer, classified", nothing, t.gbuffer);
@@ -236,15 +242,8 @@ std::string stage_rows(const FrameReport& r) {
   } else {
     row("index build (GPU)", nothing, t.index_build_gpu);
   }
-  row(
-      "global light", [&](const Column& c) -> std::optional<double> { return t.*c.light; }, t.tiled_light);
-  row(
-      "light path", [&](const Column& c) -> std::optional<double> { return t.*c.light; }, classified_light_ms(t));
-  // The baselines' frame is the sum of its passes; the classified one end to end (its host
-  // round trip included), so it may exceed the sum of its rows.
-  row(
-      "whole frame", [&](const Column& c) -> std::optional<double> { return whole_frame_ms(t, c); },
-      t.frame_classified);
+  row("global light", light, t.tiled_light);
+  row("light path", light, classified_light_ms(t));
   return out;
 }
 
