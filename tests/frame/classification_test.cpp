@@ -23,6 +23,7 @@ class Classification : public VulkanTest {
  protected:
   std::unique_ptr<TileRenderer> render(const char* camera, std::uint32_t width, std::uint32_t height) {
     RendererOptions options;
+    options.light_pass = LightPass::raster;
     options.width = width;
     options.height = height;
     options.camera = camera;
@@ -118,6 +119,7 @@ std::uint32_t edge_tiles_over_ground(const Context& context, float flat_faces) {
   above.shadow_focus = above.target;
   scene.cameras.push_back(above);
   RendererOptions options;
+  options.light_pass = LightPass::raster;
   options.width = 320;
   options.height = 180;
   options.camera = "above";

@@ -15,6 +15,7 @@ class FrameFailure : public VulkanTest {};
 TEST_F(FrameFailure, ErrorBeforeTheHostSignalStillReleasesTheGpu) {
   const Scene scene = make_demo_scene();
   RendererOptions options;
+  options.light_pass = LightPass::raster;
   options.width = 96;
   options.height = 64;
   options.timeout = Seconds(20);

@@ -107,6 +107,7 @@ class GltfTexturedFrame : public VulkanTest, public ::testing::WithParamInterfac
 TEST_P(GltfTexturedFrame, EveryCoveredSampleStoresATexelOfTheBaseColourTexture) {
   const Scene scene = load_gltf_scene(kFixtures / GetParam());
   RendererOptions options;
+  options.light_pass = LightPass::raster;
   options.width = 256;
   options.height = 192;
   options.msaa = 4;

@@ -23,6 +23,7 @@ class IndexPaths : public VulkanTest {
 
   Rendered render(IndexPath path) {
     RendererOptions options;
+    options.light_pass = LightPass::raster;
     options.width = 200;
     options.height = 120;
     options.path = path;

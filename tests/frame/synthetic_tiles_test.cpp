@@ -117,6 +117,7 @@ class SyntheticTiles : public VulkanTest, public ::testing::WithParamInterface<I
 std::set<std::uint32_t> check_edited_frame(const Context& context, const Scene& scene, IndexPath path,
                                            const char* camera) {
   RendererOptions options;
+  options.light_pass = LightPass::raster;
   options.width = 320;
   options.height = 180;
   options.path = path;

@@ -44,6 +44,30 @@ TEST_F(VulkanTest, TimestampsInWriteOrder) {
   EXPECT_THROW(timings.elapsed_ms("start", "missing"), Error);
 }
 
+// Two pools, one queue: a span from the first pool's stamp to the second's, written later in the
+// same submission, is their tick difference, and within one pool it is what `ms` says.
+TEST_F(VulkanTest, SpanAcrossPoolsUsesTheOneClock) {
+  TimestampQueries first(context(), "first", 2), second(context(), "second", 2);
+  submit_and_wait(
+      context(), pool(),
+      [&](VkCommandBuffer cmd) {
+        first.reset(cmd);
+        second.reset(cmd);
+        first.write(cmd, "a");
+        first.write(cmd, "b");
+        second.write(cmd, "c");
+      },
+      "two pools", Seconds{30.0});
+  const std::vector<Timestamp> early = first.read();
+  const std::vector<Timestamp> late = second.read();
+  ASSERT_EQ(early.size(), 2u);
+  ASSERT_EQ(late.size(), 1u);
+  EXPECT_EQ(first.span_ms(early[0], early[1]), early[1].ms);
+  EXPECT_GE(late[0].ticks, early[1].ticks);
+  EXPECT_GE(second.span_ms(early[0], late[0]), first.span_ms(early[0], early[1]));
+  EXPECT_LT(second.span_ms(early[0], late[0]), 10'000.0);
+}
+
 TEST_F(VulkanTest, FullPoolIsAnError) {
   TimestampQueries timings(context(), "tiny", 1);
   UniqueCommandBuffer cmd = pool().allocate("timestamps");

@@ -144,6 +144,29 @@ bool pixel_needs_other_samples(ivec2 pixel)
     return true;
 }
 
+#ifdef FLOOR_PASS
+// FLOOR_PASS builds tilelight's "floor" baseline instead: what any full-frame light pass costs
+// at least. It reads what the naive pass reads (every sample of every pixel, every target,
+// through gbuffer_load()) and lights nothing: the pixel is the mean of its samples' prelit
+// colours. Every other field feeds a select that no stored G-buffer takes (depths lie in 0..1),
+// so the compiler cannot prove it dead and must keep each fetch, as the naive pass does.
+vec3 floor_sample(GSample g)
+{
+    bool impossible = g.depth > 2.0;
+    vec3 rest = g.albedo + g.normal + vec3(g.spec_amount + g.spec_power + float(g.motion_id));
+    return impossible ? rest : g.prelit;
+}
+
+vec3 shade_pixel(ivec2 pixel)
+{
+    int samples = gbuffer_sample_count();
+    vec3 sum = vec3(0.0);
+    for (int s = 0; s < samples; ++s) {
+        sum += floor_sample(gbuffer_load(pixel, s));
+    }
+    return sum / float(samples);
+}
+#else
 // The lit colour of `pixel`: sample 0 shaded, and with MSAA_EDGE every other sample averaged in
 // where the pixel's samples may differ.
 vec3 shade_pixel(ivec2 pixel)
@@ -156,5 +179,6 @@ vec3 shade_pixel(ivec2 pixel)
 #endif
     return colour;
 }
+#endif // FLOOR_PASS
 
 #endif // UBER_LIGHT_PASS_GLSL

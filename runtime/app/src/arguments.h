@@ -1,6 +1,10 @@
 #pragma once
 // What the tilelight command line asks for, as parsed (cli.cpp fills it; render_run.cpp acts
-// on it). Values are as typed: their meaning and checks live where they are used.
+// on it). The choices the renderer takes are parsed to its values once, by the CLI
+// (option_names.h); their defaults are RendererOptions' own, so there is one default for each.
+// Other values are as typed: their meaning and checks live where they are used.
+
+#include "tilelight/render/tile_renderer.h"
 
 #include <cstdint>
 #include <optional>
@@ -9,14 +13,15 @@
 namespace tilelight::app {
 
 struct Arguments {
-  std::uint32_t width = 1280, height = 720, frames = 1, tile_size = 4;
-  std::string msaa = "auto";
-  std::string path = "cpu";
-  std::string permutations = "optimised";
-  std::string camera = "default";
+  std::uint32_t width = RendererOptions{}.width, height = RendererOptions{}.height, frames = 1,
+                tile_size = RendererOptions{}.tile_size;
+  std::uint32_t msaa = RendererOptions{}.msaa;  // 0: auto
+  IndexPath path = RendererOptions{}.path;
+  bool raw_permutations = RendererOptions{}.raw_permutations;
+  std::string camera = RendererOptions{}.camera;
   std::string primitive = "auto";
-  std::string baseline = "both";
-  std::string light_pass = "compute";  // measured faster on lavapipe (docs/results.md g4), the pass for GPUs
+  Baselines baseline = RendererOptions{}.baselines;
+  LightPass light_pass = RendererOptions{}.light_pass;
   std::string device = "auto";
   std::string out = "tilelight-out";
   std::string scene;  // a glTF file; empty: the procedural scene

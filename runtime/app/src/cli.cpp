@@ -1,27 +1,58 @@
 #include "tilelight/app/cli.h"
 
 #include "arguments.h"
+#include "option_names.h"
 #include "render_run.h"
 #include "tilelight/app/failure.h"
 
 #include <command_line/command_line.h>
 #include <CLI/CLI.hpp>
 
+#include <string>
+
 namespace tilelight::app {
 namespace {
+
+// A CLI11 transform from the names in `names` to their values (as CLI11 then reads them into
+// the option's variable): anything else is a usage error naming the flag, "--flag: x not in
+// {a,b}", as CLI::IsMember words it.
+template <typename T>
+CLI::Validator one_of(const OptionNames<T>& names) {
+  std::string choices = "{";
+  for (const auto& [name, value] : names) choices += (choices.size() > 1 ? "," : "") + name;
+  choices += "}";
+  return CLI::Validator(
+      [&names, choices](std::string& input) {
+        for (const auto& [name, value] : names) {
+          if (input == name) {
+            input = std::to_string(static_cast<long long>(value));
+            return std::string();
+          }
+        }
+        return input + " not in " + choices;
+      },
+      choices);
+}
+
+// Adds --`flag`, parsed through `names` into `value`, whose initial value is the default shown.
+template <typename T>
+CLI::Option* add_choice(CLI::App& cli, const std::string& flag, T& value, const OptionNames<T>& names,
+                        const std::string& help) {
+  return cli.add_option(flag, value, help)
+      ->transform(one_of(names))
+      ->type_name("TEXT")  // what is typed; CLI11 would name the variable's type
+      ->default_str(name_of(names, value));
+}
 
 void add_options(CLI::App& cli, Arguments& a) {
   cli.add_option("--width", a.width, "frame width in pixels")->capture_default_str();
   cli.add_option("--height", a.height, "frame height in pixels")->capture_default_str();
-  cli.add_option("--msaa", a.msaa,
-                 "G-buffer samples: auto (2 where offered, else 4), 1 (no MSAA: single-sampled G-buffer), 2, 4, 8, 16")
-      ->capture_default_str();
-  cli.add_option("--path", a.path, "index build: cpu (host patches pre-recorded draws) or gpu (compute)")
-      ->check(CLI::IsMember({"cpu", "gpu"}))
-      ->capture_default_str();
-  cli.add_option("--permutations", a.permutations, "lighting shaders: optimised (32) or raw (96 of 128)")
-      ->check(CLI::IsMember({"optimised", "raw"}))
-      ->capture_default_str();
+  add_choice(cli, "--msaa", a.msaa, msaa_names(),
+             "G-buffer samples: auto (2 where offered, else 4), 1 (no MSAA: single-sampled G-buffer), 2, 4, 8, 16");
+  add_choice(cli, "--path", a.path, path_names(),
+             "index build: cpu (host patches pre-recorded draws) or gpu (compute)");
+  add_choice(cli, "--permutations", a.raw_permutations, permutation_names(),
+             "lighting shaders: optimised (32) or raw (96 of 128)");
   cli.add_option("--camera", a.camera, "camera: default, sky, shadow, low, street, closeup (--list-cameras)")
       ->capture_default_str();
   CLI::Option* scene =
@@ -41,16 +72,13 @@ void add_options(CLI::App& cli, Arguments& a) {
                  "rectangle), auto (points where the device draws them)")
       ->check(CLI::IsMember({"auto", "points", "triangles"}))
       ->capture_default_str();
-  cli.add_option("--baseline", a.baseline,
-                 "full-screen passes timed against the classified one: naive (every feature on every pixel), "
-                 "dynamic (one pass branching per pixel), both")
-      ->check(CLI::IsMember({"naive", "dynamic", "both"}))
-      ->capture_default_str();
-  cli.add_option("--light-pass", a.light_pass,
-                 "how the light passes run: raster (the tile pass draws each class's tiles) or compute (one "
-                 "indirect dispatch per class over its tile list); the baselines run as the same kind")
-      ->check(CLI::IsMember({"raster", "compute"}))
-      ->capture_default_str();
+  add_choice(cli, "--baseline", a.baseline, baseline_names(),
+             "full-frame passes timed against the classified frame, each after a plain G-buffer pass: naive (every "
+             "feature on every sample), dynamic (one pass branching per pixel), floor (reads the G-buffer, no "
+             "lighting: what any full-frame light pass costs at least), both (naive and dynamic), all, none");
+  add_choice(cli, "--light-pass", a.light_pass, light_pass_names(),
+             "how the light passes run: raster (the tile pass draws each class's tiles) or compute (one "
+             "indirect dispatch per class over its tile list); the baselines run as the same kind");
   cli.add_option("--device", a.device,
                  "Vulkan device: auto (a discrete GPU, else an integrated one, else lavapipe), an index or a "
                  "name substring (llvmpipe: lavapipe, the CPU driver)")

@@ -1,5 +1,6 @@
 #include "render_run.h"
 
+#include "tilelight/app/frame_ratios.h"
 #include "tilelight/app/output_files.h"
 #include "tilelight/app/process_stats.h"
 #include "tilelight/app/report.h"
@@ -22,20 +23,6 @@
 
 namespace tilelight::app {
 namespace {
-
-std::uint32_t parse_msaa(const std::string& text) {
-  if (text == "auto") return 0;
-  for (const char* valid : {"1", "2", "4", "8", "16"}) {
-    if (text == valid) return static_cast<std::uint32_t>(std::stoul(text));
-  }
-  throw OptionError("--msaa", "--msaa " + text + ": expected auto, 1, 2, 4, 8 or 16");
-}
-
-Baselines parse_baselines(const std::string& text) {
-  if (text == "naive") return Baselines::naive;
-  if (text == "dynamic") return Baselines::dynamic;
-  return Baselines::both;
-}
 
 // The light targets hold linear radiance; the PNGs get the usual display encoding (gamma 2.2
 // after clamping to 0..1), so they look as a renderer's output would.
@@ -62,27 +49,22 @@ RendererOptions renderer_options(const Arguments& a) {
   RendererOptions options;
   options.width = a.width;
   options.height = a.height;
-  options.msaa = parse_msaa(a.msaa);
+  options.msaa = a.msaa;
   options.tile_size = a.tile_size;
-  options.path = a.path == "gpu" ? IndexPath::gpu : IndexPath::cpu;
-  options.light_pass = a.light_pass == "compute" ? LightPass::compute : LightPass::raster;
-  options.raw_permutations = a.permutations == "raw";
+  options.path = a.path;
+  options.light_pass = a.light_pass;
+  options.raw_permutations = a.raw_permutations;
   options.coalesce = !a.no_coalesce;
   if (a.primitive != "auto") options.primitive = parse_tile_primitive(a.primitive);
   options.camera = a.camera;
-  options.baselines = parse_baselines(a.baseline);
+  options.baselines = a.baseline;
   options.timeout = Seconds(a.timeout_s);
   return options;
 }
 
 // Errors about a value name the flag that set it.
-std::unique_ptr<TileRenderer> make_renderer(const Context& context, const Scene& scene, const RendererOptions& options,
-                                            const Arguments& a) {
-  try {
-    (void)context.choose_msaa(options.msaa);
-  } catch (const Error& e) {
-    throw OptionError("--msaa", "--msaa " + a.msaa + ": " + e.what());
-  }
+std::unique_ptr<TileRenderer> make_renderer(const Context& context, const Scene& scene,
+                                            const RendererOptions& options) {
   try {
     return std::make_unique<TileRenderer>(context, scene, options);
   } catch (const OptionError& e) {
@@ -114,7 +96,7 @@ TimedFrames render_frames(TileRenderer& renderer, std::uint32_t frames, std::str
 
 struct ReadBack {
   RgbaImage classified;
-  std::optional<RgbaImage> naive, dynamic;  // the baselines that ran
+  std::optional<RgbaImage> naive, dynamic, floor;  // the baselines that ran
   std::vector<std::uint8_t> raw_ids;
 };
 
@@ -123,6 +105,7 @@ ReadBack read_back(const TileRenderer& renderer, Baselines baselines) {
   frames.classified = renderer.read_classified();
   if (runs_naive(baselines)) frames.naive = renderer.read_naive();
   if (runs_dynamic(baselines)) frames.dynamic = renderer.read_dynamic();
+  if (runs_floor(baselines)) frames.floor = renderer.read_floor();
   frames.raw_ids = renderer.raw_tile_ids();
   return frames;
 }
@@ -138,7 +121,7 @@ FrameReport make_report(const Arguments& a, const Context& context, const Scene&
                 a.tile_size,
                 a.frames,
                 a.path,
-                a.permutations,
+                a.raw_permutations,
                 a.camera,
                 !a.no_coalesce,
                 threads != nullptr ? threads : "",
@@ -154,7 +137,10 @@ FrameReport make_report(const Arguments& a, const Context& context, const Scene&
   report.rectangles = timed.last.stats.rectangles;
   report.timings = median_timings(timed.timings);
   report.frame_timings = timed.timings;
-  report.equivalence = compare_with_baselines(frames.classified, frames.naive, frames.dynamic);
+  report.ratios = frame_ratios(timed.timings);
+  if (frames.naive || frames.dynamic) {
+    report.equivalence = compare_with_baselines(frames.classified, frames.naive, frames.dynamic);
+  }
   report.process.rss_after_frames_mib = timed.rss_after_frames_mib;
   return report;
 }
@@ -164,7 +150,8 @@ void write_outputs(OutputFiles& files, FrameReport& report, const ReadBack& fram
   const RgbaImage shown = display_encoded(frames.classified);
   files.stage("frame_classified.png", encode_png(shown));
   for (const auto& [name, frame] :
-       {std::pair{"frame_naive.png", &frames.naive}, std::pair{"frame_dynamic.png", &frames.dynamic}}) {
+       {std::pair{"frame_naive.png", &frames.naive}, std::pair{"frame_dynamic.png", &frames.dynamic},
+        std::pair{"frame_floor.png", &frames.floor}}) {
     if (*frame) {
       files.stage(name, encode_png(display_encoded(**frame)));
     } else {
@@ -206,7 +193,7 @@ int render_run(const Arguments& a, std::ostream& out, std::string& stage) {
   stage = "preparing the output folder " + a.out;
   OutputFiles files(a.out);  // proves --out writable before the long part
   stage = fmt::format("creating the renderer ({}x{})", a.width, a.height);
-  const std::unique_ptr<TileRenderer> renderer = make_renderer(context, scene, options, a);
+  const std::unique_ptr<TileRenderer> renderer = make_renderer(context, scene, options);
 
   const TimedFrames timed = render_frames(*renderer, a.frames, stage);
   stage = "reading back the frames";
@@ -219,7 +206,8 @@ int render_run(const Arguments& a, std::ostream& out, std::string& stage) {
 
   out << timing_table(report);
   out << "wrote " << (files.folder() / "frame_classified.png").string() << (frames.naive ? ", frame_naive.png" : "")
-      << (frames.dynamic ? ", frame_dynamic.png" : "") << ", tile_classes.png, report.json\n";
+      << (frames.dynamic ? ", frame_dynamic.png" : "") << (frames.floor ? ", frame_floor.png" : "")
+      << ", tile_classes.png, report.json\n";
   return 0;
 }
 

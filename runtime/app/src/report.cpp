@@ -1,5 +1,6 @@
 #include "tilelight/app/report.h"
 
+#include "option_names.h"
 #include "tilelight/base/error.h"
 
 #include <median/median.h>
@@ -19,9 +20,10 @@ namespace {
 
 double round3(double value) { return std::round(value * 1000.0) / 1000.0; }
 
-// Every timed stage, by its report.json name, in the report's order.
-constexpr std::array<std::pair<const char*, double FrameTimings::*>, 8> kStages{{
+// Every timed stage and whole frame, by its report.json name, in the report's order.
+constexpr std::array<std::pair<const char*, double FrameTimings::*>, 13> kStages{{
     {"gbuffer", &FrameTimings::gbuffer},
+    {"gbuffer_plain", &FrameTimings::gbuffer_plain},
     {"shadow_map", &FrameTimings::shadow_map},
     {"classification", &FrameTimings::classification},
     {"index_build_cpu", &FrameTimings::index_build_cpu},
@@ -29,10 +31,26 @@ constexpr std::array<std::pair<const char*, double FrameTimings::*>, 8> kStages{
     {"tiled_light", &FrameTimings::tiled_light},
     {"naive_light", &FrameTimings::naive_light},
     {"dynamic_light", &FrameTimings::dynamic_light},
+    {"floor_light", &FrameTimings::floor_light},
+    {"frame_classified", &FrameTimings::frame_classified},
+    {"frame_naive", &FrameTimings::frame_naive},
+    {"frame_dynamic", &FrameTimings::frame_dynamic},
 }};
 
 nlohmann::ordered_json equivalence_json(const Equivalence& e) {
   return {{"max_abs_difference", e.max_abs_difference}, {"pixels_different", e.pixels_different}};
+}
+
+nlohmann::ordered_json ratio_json(const std::optional<RatioStats>& r) {
+  if (!r) return nullptr;
+  return {{"median", round3(r->median)}, {"min", round3(r->min)}, {"max", round3(r->max)}};
+}
+
+nlohmann::ordered_json ratios_json(const FrameRatios& r) {
+  return {{"whole_frame_vs_dynamic", ratio_json(r.whole_frame_vs_dynamic)},
+          {"whole_frame_vs_naive", ratio_json(r.whole_frame_vs_naive)},
+          {"light_vs_dynamic", ratio_json(r.light_vs_dynamic)},
+          {"light_vs_naive", ratio_json(r.light_vs_naive)}};
 }
 
 }  // namespace
@@ -52,20 +70,15 @@ std::vector<std::uint8_t> optimised_tile_ids(const std::vector<std::uint8_t>& ra
 }
 
 void count_tiles(FrameReport& report, const std::vector<std::uint8_t>& raw_ids) {
-  namespace bit = split_second::raw_bit;
-  const std::vector<std::pair<std::string, std::uint32_t>> properties{{"SKY", bit::SKY},
-                                                                      {"SUN_LIGHT", bit::SUN_LIGHT},
-                                                                      {"SOLID_SHADOW", bit::SHADOW_SOLID},
-                                                                      {"SOFT_SHADOW", bit::SHADOW_SOFT},
-                                                                      {"SHADOW_FADE", bit::SHADOW_FADE},
-                                                                      {"LIGHT_SCATTERING", bit::LIGHT_SCATTERING},
-                                                                      {"MSAA_EDGE", bit::MSAA_EDGE}};
   report.tiles = static_cast<std::uint32_t>(raw_ids.size());
   report.raw_property_tiles.clear();
-  for (const auto& [name, mask] : properties) {
+  // The generated registry's features: each a one-bit property, named as the shaders' define
+  // (SOLID_SHADOW, which the spec's feature SHADOW_SOLID switches on), as the docs name them.
+  for (const shadergen::Feature& feature : split_second::kFeatures) {
+    const std::uint32_t mask = ((1u << feature.width) - 1u) << feature.bit;
     const auto count =
-        std::count_if(raw_ids.begin(), raw_ids.end(), [mask = mask](std::uint8_t id) { return (id & mask) != 0; });
-    report.raw_property_tiles.emplace_back(name, static_cast<std::uint32_t>(count));
+        std::count_if(raw_ids.begin(), raw_ids.end(), [mask](std::uint8_t id) { return (id & mask) != 0; });
+    report.raw_property_tiles.emplace_back(std::string(feature.define), static_cast<std::uint32_t>(count));
   }
   report.optimised_tiles.assign(split_second::kOptimisedCount, 0);
   for (std::uint8_t id : optimised_tile_ids(raw_ids)) ++report.optimised_tiles[id];
@@ -116,16 +129,16 @@ std::string report_json(const FrameReport& r) {
   j["height"] = r.run.height;
   j["msaa_samples"] = r.run.msaa_samples;
   j["tile_size"] = r.run.tile_size;
-  j["path"] = r.run.path;
-  j["permutations"] = r.run.permutations;
+  j["path"] = name_of(path_names(), r.run.path);
+  j["permutations"] = name_of(permutation_names(), r.run.raw_permutations);
   j["camera"] = r.run.camera;
   // The --scene file's name, or null for the procedural scene; the triangles of either.
   j["scene"] = r.run.scene.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.run.scene);
   j["scene_triangles"] = r.run.scene_triangles;
   j["coalesce"] = r.run.coalesce;
   j["primitive"] = r.run.primitive;
-  j["baselines"] = r.run.baselines;
-  j["light_pass"] = r.run.light_pass;
+  j["baselines"] = name_of(baseline_names(), r.run.baselines);
+  j["light_pass"] = name_of(light_pass_names(), r.run.light_pass);
   j["frames"] = r.run.frames;
   j["lavapipe_threads"] =
       r.run.lavapipe_threads.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.run.lavapipe_threads);
@@ -147,63 +160,131 @@ std::string report_json(const FrameReport& r) {
   }
   j["timings_ms"] = timings;
   j["frame_timings_ms"] = frames;
+  // Baseline over classified, frame by frame (frame_ratios.h); null where the baseline did not run.
+  j["ratios"] = ratios_json(r.ratios);
   // `equivalence`: the classified frame against `reference`; `dynamic_equivalence`: the dynamic
-  // frame against the naive one (null unless both ran).
-  j["equivalence"] = equivalence_json(r.equivalence.classified);
-  j["equivalence"]["reference"] = r.equivalence.reference;
-  j["dynamic_equivalence"] =
-      r.equivalence.dynamic ? equivalence_json(*r.equivalence.dynamic) : nlohmann::ordered_json(nullptr);
+  // frame against the naive one (null unless both ran). Both null when neither ran.
+  j["equivalence"] = nullptr;
+  j["dynamic_equivalence"] = nullptr;
+  if (r.equivalence) {
+    j["equivalence"] = equivalence_json(r.equivalence->classified);
+    j["equivalence"]["reference"] = r.equivalence->reference;
+    if (r.equivalence->dynamic) j["dynamic_equivalence"] = equivalence_json(*r.equivalence->dynamic);
+  }
   j["process"] = {{"peak_rss_mib", std::round(r.process.peak_rss_mib * 10.0) / 10.0},
                   {"rss_after_frames_mib", std::round(r.process.rss_after_frames_mib * 10.0) / 10.0}};
   return j.dump(2) + "\n";
 }
 
-std::string timing_table(const FrameReport& r) {
+namespace {
+
+// One column per full-frame pass that ran, then the classified frame.
+struct Column {
+  const char* name;
+  double FrameTimings::*light;  // its light pass
+  double FrameTimings::*frame;  // its whole frame; null: the floor, which has none of its own
+};
+
+std::vector<Column> baseline_columns(Baselines b) {
+  std::vector<Column> columns;
+  if (runs_naive(b)) columns.push_back({"naive", &FrameTimings::naive_light, &FrameTimings::frame_naive});
+  if (runs_dynamic(b)) columns.push_back({"dynamic", &FrameTimings::dynamic_light, &FrameTimings::frame_dynamic});
+  if (runs_floor(b)) columns.push_back({"floor", &FrameTimings::floor_light, nullptr});
+  return columns;
+}
+
+// The median whole frame of a column; the floor's, which no report key holds, is the sum of its
+// passes' medians (what the floor pass would add to the plain frame).
+double whole_frame_ms(const MedianTimings& t, const Column& c) {
+  return c.frame ? t.*c.frame : t.shadow_map + t.gbuffer_plain + t.*c.light;
+}
+
+std::string run_lines(const RunDescription& run) {
+  std::string out = fmt::format(
+      "{}x{}, {}x MSAA, {}, {} light pass, path {}, {} permutations, camera {}, median of {} frame(s)\n", run.width,
+      run.height, run.msaa_samples, run.device, to_string(run.light_pass), name_of(path_names(), run.path),
+      name_of(permutation_names(), run.raw_permutations), run.camera, run.frames);
+  return out +
+         fmt::format("scene {} ({} triangles)\n", run.scene.empty() ? "procedural" : run.scene, run.scene_triangles);
+}
+
+// The whole frame, then its stages: a column per baseline (each on the plain G-buffer), the
+// classified frame last.
+std::string stage_rows(const FrameReport& r) {
   const MedianTimings& t = r.timings;
-  const bool naive = r.run.baselines != "dynamic";
-  const bool dynamic = r.run.baselines != "naive";
-  const double classified_light = t.classification + t.index_build_cpu + t.index_build_gpu + t.tiled_light;
-  auto cell = [](bool ran, double ms) { return ran ? fmt::format("{:.3f}", ms) : std::string("-"); };
-  std::string out;
-  out += fmt::format("{}x{}, {}x MSAA, {}, {} light pass, path {}, {} permutations, camera {}, median of {} frame(s)\n",
-                     r.run.width, r.run.height, r.run.msaa_samples, r.run.device, r.run.light_pass, r.run.path,
-                     r.run.permutations, r.run.camera, r.run.frames);
-  out +=
-      fmt::format("scene {} ({} triangles)\n", r.run.scene.empty() ? "procedural" : r.run.scene, r.run.scene_triangles);
-  out += fmt::format("{:<28}{:>12}{:>12}{:>14}\n", "stage (ms)", "naive", "dynamic", "classified");
-  auto row = [&](const char* name, bool in_baselines, double naive_ms, double dynamic_ms, double classified_ms) {
-    out += fmt::format("{:<28}{:>12}{:>12}{:>14.3f}\n", name, cell(naive && in_baselines, naive_ms),
-                       cell(dynamic && in_baselines, dynamic_ms), classified_ms);
+  const std::vector<Column> columns = baseline_columns(r.run.baselines);
+  const std::string none = "-";
+  std::string out = fmt::format("{:<28}", "stage (ms)");
+  for (const Column& c : columns) out += fmt::format("{:>12}", c.name);
+  out += fmt::format("{:>14}\n", "classified");
+  // `baseline`: the column's figure, or nullopt for "-"; `classified` likewise.
+  auto row = [&](const char* name, auto baseline, std::optional<double> classified) {
+    out += fmt::format("{:<28}", name);
+    for (const Column& c : columns) {
+      const std::optional<double> ms = baseline(c);
+      out += fmt::format("{:>12}", ms ? fmt::format("{:.3f}", *ms) : none);
+    }
+    out += fmt::format("{:>14}\n", classified ? fmt::format("{:.3f}", *classified) : none);
   };
-  row("shadow map", true, t.shadow_map, t.shadow_map, t.shadow_map);
-  row("G-buffer", true, t.gbuffer, t.gbuffer, t.gbuffer);
-  row("classification (GPU)", false, 0, 0, t.classification);
-  if (r.run.path == "cpu")
-    row("index build (CPU)", false, 0, 0, t.index_build_cpu);
-  else
-    row("index build (GPU)", false, 0, 0, t.index_build_gpu);
-  row("global light", true, t.naive_light, t.dynamic_light, t.tiled_light);
-  row("light total", true, t.naive_light, t.dynamic_light, classified_light);
-  auto speedup = [&](const char* baseline, double baseline_ms) {
-    const double ratio = classified_light > 0 ? baseline_ms / classified_light : 0.0;
-    out += fmt::format("speed-up of the light pass vs {}: {:.2f}x ({} / classification + index build + tiled light)\n",
-                       baseline, ratio, baseline);
-  };
-  if (naive) speedup("naive", t.naive_light);
-  if (dynamic) speedup("dynamic", t.dynamic_light);
-  if (r.run.light_pass == "compute") {
+  auto same = [](double ms) { return [ms](const Column&) -> std::optional<double> { return ms; }; };
+  auto nothing = [](const Column&) -> std::optional<double> { return std::nullopt; };
+  auto light = [&](const Column& c) -> std::optional<double> { return t.*c.light; };
+  auto frame = [&](const Column& c) -> std::optional<double> { return whole_frame_ms(t, c); };
+  // The whole frame first: a baseline's is the sum of its passes; the classified one is end to
+  // end (its host round trip included), so it may exceed the sum of its rows below.
+  row("whole frame", frame, t.frame_classified);
+  row("shadow map", same(t.shadow_map), t.shadow_map);
+  row("G-buffer, plain (baselines)", same(t.gbuffer_plain), std::nullopt);
+  row("G-buffer, classified", nothing, t.gbuffer);
+  row("classification (GPU)", nothing, t.classification);
+  if (r.run.path == IndexPath::cpu) {
+    row("index build (CPU)", nothing, t.index_build_cpu);
+  } else {
+    row("index build (GPU)", nothing, t.index_build_gpu);
+  }
+  row("global light", light, t.tiled_light);
+  row("light path", light, classified_light_ms(t));
+  return out;
+}
+
+std::string ratio_line(const char* what, const char* baseline, const std::optional<RatioStats>& r) {
+  if (!r) return "";
+  return fmt::format("{} vs {}: {:.2f}x median ({:.2f}x\u2013{:.2f}x over the frames)\n", what, baseline, r->median,
+                     r->min, r->max);
+}
+
+std::string speedup_lines(const FrameReport& r) {
+  const char* naive = "naive (every feature on every sample)";
+  const char* dynamic = "dynamic (per-pixel branching)";
+  return ratio_line("whole frame", dynamic, r.ratios.whole_frame_vs_dynamic) +
+         ratio_line("whole frame", naive, r.ratios.whole_frame_vs_naive) +
+         ratio_line("light path", dynamic, r.ratios.light_vs_dynamic) +
+         ratio_line("light path", naive, r.ratios.light_vs_naive);
+}
+
+std::string comparison_text(const FrameReport& r) {
+  if (!r.equivalence) return "; no comparison ran (neither the naive nor the dynamic pass ran)";
+  std::string out =
+      fmt::format("; classified vs {}: {} pixels differ (max {:.3g})", r.equivalence->reference,
+                  r.equivalence->classified.pixels_different, r.equivalence->classified.max_abs_difference);
+  if (r.equivalence->dynamic) {
+    out += fmt::format("; dynamic vs naive: {} differ (max {:.3g})", r.equivalence->dynamic->pixels_different,
+                       r.equivalence->dynamic->max_abs_difference);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string timing_table(const FrameReport& r) {
+  std::string out = run_lines(r.run) + stage_rows(r) + speedup_lines(r);
+  if (r.run.light_pass == LightPass::compute) {
     out += fmt::format("tiles {}, dispatched in {} workgroups", r.tiles, r.primitives_coalesced);
   } else {
     out += fmt::format("tiles {}, {} {} -> {} coalesced ({} rectangles)", r.tiles, r.run.primitive,
                        r.primitives_uncoalesced, r.primitives_coalesced, r.rectangles);
   }
-  out += fmt::format("; classified vs {}: {} pixels differ (max {:.3g})", r.equivalence.reference,
-                     r.equivalence.classified.pixels_different, r.equivalence.classified.max_abs_difference);
-  if (r.equivalence.dynamic) {
-    out += fmt::format("; dynamic vs naive: {} differ (max {:.3g})", r.equivalence.dynamic->pixels_different,
-                       r.equivalence.dynamic->max_abs_difference);
-  }
-  return out + "\n";
+  return out + comparison_text(r) + "\n";
 }
 
 }  // namespace tilelight::app

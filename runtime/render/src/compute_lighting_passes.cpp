@@ -78,7 +78,7 @@ std::uint32_t ComputeLightingPasses::tiles_per_workgroup(std::uint32_t tile_size
 
 ComputeLightingPasses::ComputeLightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
                                              const LightingInterface& lighting, PermutationSet permutations,
-                                             VkDescriptorPool pool, const Buffer& tile_lists)
+                                             VkDescriptorPool pool, const Buffer& tile_lists, const FloorTarget* floor)
     : lighting_(&lighting), extent_(targets.extent()) {
   const shadergen::Registry& registry = compute_shaders_for(targets.samples());
   check_set0_matches(registry, lighting.shaders());
@@ -121,6 +121,11 @@ ComputeLightingPasses::ComputeLightingPasses(const Context& context, const TileG
                                           tile, true, "compute lighting naive (optimised 31)");
   dynamic_pipeline_ = create_light_pipeline(context, layout_.get(), companion_spirv(registry, "lighting_dynamic"),
                                             targets, tile, true, "compute lighting dynamic (per-pixel branches)");
+  if (floor != nullptr) {
+    floor_set_ = target_set(floor->image(), "compute light set 1 (floor)");
+    floor_pipeline_ = create_light_pipeline(context, layout_.get(), companion_spirv(registry, "lighting_floor"),
+                                            targets, tile, true, "compute lighting floor (G-buffer read, no lighting)");
+  }
 }
 
 std::uint32_t ComputeLightingPasses::pipeline_count() const {
@@ -169,6 +174,10 @@ void ComputeLightingPasses::record_naive(VkCommandBuffer cmd, const RenderTarget
 
 void ComputeLightingPasses::record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const {
   record_full_frame(cmd, targets.dynamic(), dynamic_set_, dynamic_pipeline_.get());
+}
+
+void ComputeLightingPasses::record_floor(VkCommandBuffer cmd, const FloorTarget& floor) const {
+  record_full_frame(cmd, floor.image(), floor_set_, floor_pipeline_.get());
 }
 
 void ComputeLightingPasses::record_full_frame(VkCommandBuffer cmd, const Image& target, VkDescriptorSet target_set,

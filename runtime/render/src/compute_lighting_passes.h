@@ -6,11 +6,13 @@
 // class) and one vkCmdDispatchIndirect whose VkDispatchIndirectCommand, and the class's tile list
 // it shades, are written later each frame (by the host, or by the GPU-driven build). The naive
 // and dynamic passes are one full-frame dispatch each (8x8 pixels a workgroup) of optimised ID
-// 31 and of the per-pixel-branching build.
+// 31 and of the per-pixel-branching build; the floor pass (where it runs) one more, of the
+// floor build (no lighting), into its own target (floor_target.h).
 //
 // Every pass stores into its single-sampled light target as a storage image, in layout GENERAL
 // while it runs, and leaves the target in TRANSFER_SRC_OPTIMAL, as the raster passes do.
 
+#include "floor_target.h"
 #include "lighting_interface.h"
 #include "lighting_passes.h"
 #include "render_targets.h"
@@ -28,10 +30,11 @@ class Context;
 class ComputeLightingPasses {
  public:
   // `tile_lists`: the buffer of per-class tile lists (uber/include/tile_lists.glsl) the tile pass
-  // reads; it must outlive this object. `targets` must have storage light targets.
+  // reads; it must outlive this object. `targets` must have storage light targets. `floor`: the
+  // floor pass's target, or null where it does not run (no pipeline, no descriptor set).
   ComputeLightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
                         const LightingInterface& lighting, PermutationSet permutations, VkDescriptorPool pool,
-                        const Buffer& tile_lists);
+                        const Buffer& tile_lists, const FloorTarget* floor = nullptr);
 
   // 32 (optimised) or 128 (raw; the 32 pruned raw IDs have no pipeline and are never dispatched).
   std::uint32_t class_count() const { return static_cast<std::uint32_t>(pipelines_.size()); }
@@ -49,6 +52,8 @@ class ComputeLightingPasses {
   void record_tiled(VkCommandBuffer cmd, const RenderTargets& targets, const Buffer& dispatches) const;
   void record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const;
   void record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const;
+  // Precondition: constructed with this `floor`.
+  void record_floor(VkCommandBuffer cmd, const FloorTarget& floor) const;
 
  private:
   void bind(VkCommandBuffer cmd, VkDescriptorSet target_set) const;
@@ -60,8 +65,9 @@ class ComputeLightingPasses {
   UniqueDescriptorSetLayout target_set_layout_;  // set 1: the light target and the tile lists
   UniquePipelineLayout layout_;
   VkDescriptorSet classified_set_ = VK_NULL_HANDLE, naive_set_ = VK_NULL_HANDLE, dynamic_set_ = VK_NULL_HANDLE;
+  VkDescriptorSet floor_set_ = VK_NULL_HANDLE;
   std::vector<UniquePipeline> pipelines_;  // per draw class; empty for pruned raw IDs
-  UniquePipeline naive_pipeline_, dynamic_pipeline_;
+  UniquePipeline naive_pipeline_, dynamic_pipeline_, floor_pipeline_;
 };
 
 }  // namespace tilelight

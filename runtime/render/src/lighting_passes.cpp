@@ -46,7 +46,8 @@ UniquePipeline create_light_pipeline(const Context& context, const RenderTargets
 }  // namespace
 
 LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
-                               const LightingInterface& lighting, PermutationSet permutations, TilePrimitive primitive)
+                               const LightingInterface& lighting, PermutationSet permutations, TilePrimitive primitive,
+                               bool floor)
     : lighting_(&lighting),
       extent_(targets.extent()),
       viewport_{grid.tiles_x * grid.tile_size, grid.tiles_y * grid.tile_size} {
@@ -87,6 +88,11 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
                                           TilePrimitive::triangles, false, "lighting naive (optimised 31)");
   dynamic_pipeline_ = create_light_pipeline(context, targets, lighting, companion_spirv(registry, "lighting_dynamic"),
                                             TilePrimitive::triangles, false, "lighting dynamic (per-pixel branches)");
+  if (floor) {
+    floor_pipeline_ =
+        create_light_pipeline(context, targets, lighting, companion_spirv(registry, "lighting_floor"),
+                              TilePrimitive::triangles, false, "lighting floor (G-buffer read, no lighting)");
+  }
 }
 
 std::uint32_t LightingPasses::pipeline_count() const {
@@ -152,6 +158,10 @@ void LightingPasses::record_naive(VkCommandBuffer cmd, const RenderTargets& targ
 
 void LightingPasses::record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const {
   record_full_screen(cmd, targets, targets.dynamic_framebuffer(), dynamic_pipeline_.get());
+}
+
+void LightingPasses::record_floor(VkCommandBuffer cmd, const RenderTargets& targets, const FloorTarget& floor) const {
+  record_full_screen(cmd, targets, floor.framebuffer(), floor_pipeline_.get());
 }
 
 void LightingPasses::record_full_screen(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer,

@@ -8,6 +8,7 @@
 // uber-shader (companion lighting_dynamic: every feature, each taken where the pixel needs it)
 // the same way, the baseline that tile classification must beat on a real engine.
 
+#include "floor_target.h"
 #include "lighting_interface.h"
 #include "render_targets.h"
 #include "tilelight/tiles/tile_grid.h"
@@ -26,8 +27,10 @@ enum class PermutationSet { optimised, raw };
 
 class LightingPasses {
  public:
+  // `floor`: build the floor pass's pipeline (only a renderer that runs it pays for it).
   LightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
-                 const LightingInterface& lighting, PermutationSet permutations, TilePrimitive primitive);
+                 const LightingInterface& lighting, PermutationSet permutations, TilePrimitive primitive,
+                 bool floor = false);
 
   // 32 (optimised) or 128 (raw; the 32 pruned raw IDs have no pipeline and are never drawn).
   std::uint32_t class_count() const { return static_cast<std::uint32_t>(pipelines_.size()); }
@@ -40,6 +43,8 @@ class LightingPasses {
                     const Buffer& draws) const;
   void record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const;
   void record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const;
+  // Precondition: constructed with `floor`.
+  void record_floor(VkCommandBuffer cmd, const RenderTargets& targets, const FloorTarget& floor) const;
 
  private:
   void begin(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer) const;
@@ -51,7 +56,7 @@ class LightingPasses {
   Buffer grid_shape_;                      // tiles_x + 1 and the tile size: points
   Buffer full_screen_indices_;             // two triangles over the whole frame (naive and dynamic passes)
   std::vector<UniquePipeline> pipelines_;  // per draw class; empty for pruned raw IDs
-  UniquePipeline naive_pipeline_, dynamic_pipeline_;
+  UniquePipeline naive_pipeline_, dynamic_pipeline_, floor_pipeline_;
   VkExtent2D extent_{};    // the frame
   VkExtent2D viewport_{};  // whole tiles: >= the frame
 };

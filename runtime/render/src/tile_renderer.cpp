@@ -2,6 +2,7 @@
 
 #include "compute_lighting_passes.h"
 #include "descriptors.h"
+#include "floor_target.h"
 #include "gbuffer_upload.h"
 #include "gpu_index_build.h"
 #include "gpu_tile_lists.h"
@@ -12,6 +13,7 @@
 #include "tile_classification.h"
 #include "tilelight/tiles/tile_index_builder.h"
 #include "tilelight/tiles/tile_list_builder.h"
+#include "tilelight/vulkan/barriers.h"
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/commands.h"
 #include "tilelight/vulkan/error.h"
@@ -28,6 +30,7 @@
 #include <numeric>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace tilelight {
 
@@ -80,6 +83,16 @@ std::optional<std::string> points_unsupported(const Context& context, const Tile
   return std::nullopt;
 }
 
+// The renderer's one choice of the sample count (--msaa): a count the device lacks is an error
+// about that option.
+VkSampleCountFlagBits checked_msaa(const Context& context, std::uint32_t requested) {
+  try {
+    return context.choose_msaa(requested);
+  } catch (const Error& e) {
+    throw OptionError("msaa", "msaa " + std::to_string(requested) + ": " + e.what());
+  }
+}
+
 TilePrimitive choose_primitive(const Context& context, const TileGrid& grid, std::optional<TilePrimitive> asked) {
   const std::optional<std::string> why_not = points_unsupported(context, grid);
   if (!asked) return why_not ? TilePrimitive::triangles : TilePrimitive::points;
@@ -112,15 +125,45 @@ std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Regist
   return pruned;
 }
 
-// Descriptor sets one renderer allocates from its pool, at most 10: the scene's, lighting set 0,
+// Descriptor sets one renderer allocates from its pool, at most 11: the scene's, lighting set 0,
 // the tile-ID output, the G-buffer dump and upload (tests), the GPU index build, the GPU
-// tile-list build, and the compute light pass's three targets (classified, naive, dynamic).
+// tile-list build, and the compute light pass's four targets (classified, naive, dynamic, floor).
 // The base colour textures have a pool of their own (scene_textures.cpp).
 constexpr std::uint32_t kMaxDescriptorSets = 16;
 
 // How long a failing frame waits, at least, for the GPU to finish what it was given before it
 // releases the blocked tile pass (release_blocked_tile_pass()).
 constexpr Seconds kReleaseGrace{10.0};
+
+// Timestamps of submit B, by label (the baselines' depend on which ran).
+constexpr std::string_view kTileStart = "start", kTiled = "tiled", kGBufferPlain = "gbuffer_plain";
+constexpr std::string_view kNaive = "naive", kDynamic = "dynamic", kFloor = "floor";
+// Submit B writes at most: start, tiled, gbuffer_plain, naive, dynamic, floor.
+constexpr std::uint32_t kTileTimestamps = 6;
+
+// The plain G-buffer pass overwrites the targets the tile pass just read (fragment or compute
+// shader): the G-buffer render pass discards them (initial layout UNDEFINED) and its external
+// dependency orders it after those reads; this barrier states the write-after-read here as
+// well, so the order does not rest on how a render pass is declared elsewhere.
+void order_gbuffer_after_light_reads(VkCommandBuffer cmd) {
+  memory_barrier(cmd, {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0},
+                 {VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
+                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  0});
+}
+
+std::size_t index_of(const std::vector<Timestamp>& stamps, std::string_view label) {
+  for (std::size_t i = 0; i < stamps.size(); ++i) {
+    if (stamps[i].label == label) return i;
+  }
+  throw Error("no timestamp \"" + std::string(label) + "\" was written");
+}
+
+// A pass of submit B: from the stamp before its own (every pass there follows another).
+double pass_ms(const std::vector<Timestamp>& stamps, std::string_view label) {
+  const std::size_t end = index_of(stamps, label);
+  return end == 0 ? 0.0 : stamps[end].ms - stamps[end - 1].ms;
+}
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -145,6 +188,7 @@ struct TileRenderer::Impl {
   std::unique_ptr<GpuIndexBuild> gpu_build;               // raster, --path gpu
   std::unique_ptr<GpuTileLists> gpu_lists;                // compute, --path gpu
   std::unique_ptr<GBufferUpload> gbuffer_upload;          // replaces the scene's G-buffer when set
+  std::unique_ptr<FloorTarget> floor_target;              // Baselines::floor and all
 
   // The CPU path's draw list: one preallocated index buffer and one indirect record per class,
   // host-visible and coherent, written after the tile pass was submitted.
@@ -169,7 +213,7 @@ struct TileRenderer::Impl {
         options(opts),
         grid(checked_grid(ctx, opts)),
         primitive(choose_primitive(ctx, grid, opts.primitive)),
-        samples(ctx.choose_msaa(opts.msaa)),
+        samples(checked_msaa(ctx, opts.msaa)),
         pool(ctx, "tilelight frame") {
     const Camera& camera = scene.camera(opts.camera);
     descriptor_pool = create_descriptor_pool(ctx, kMaxDescriptorSets, "tilelight descriptors");
@@ -181,6 +225,7 @@ struct TileRenderer::Impl {
     classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());
     class_for_raw = draw_classes(lighting->shaders(), opts.raw_permutations);
     pruned = pruned_raw_ids(lighting->shaders());
+    if (runs_floor()) floor_target = std::make_unique<FloorTarget>(ctx, *targets);
     if (opts.light_pass == LightPass::compute) {
       create_compute_pass();
     } else {
@@ -188,7 +233,7 @@ struct TileRenderer::Impl {
     }
 
     frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
-    tile_queries = TimestampQueries(ctx, "tile pass timestamps", 4);
+    tile_queries = TimestampQueries(ctx, "tile pass timestamps", kTileTimestamps);
     timeline = TimelineSemaphore(ctx, "classification/patch timeline", 0);
     frame_done = Fence(ctx, "frame done");
     frame_commands = pool.allocate("frame (submit A)");
@@ -203,7 +248,8 @@ struct TileRenderer::Impl {
   void create_raster_pass() {
     const Context& ctx = context;
     const RendererOptions& opts = options;
-    light_passes = std::make_unique<LightingPasses>(ctx, grid, *targets, *lighting, permutation_set(), primitive);
+    light_passes =
+        std::make_unique<LightingPasses>(ctx, grid, *targets, *lighting, permutation_set(), primitive, runs_floor());
     const std::uint32_t classes = light_passes->class_count();
     if (opts.path == IndexPath::cpu) {
       cpu_builder = std::make_unique<TileIndexBuilder>(grid, class_for_raw, pruned, classes, primitive);
@@ -241,7 +287,7 @@ struct TileRenderer::Impl {
       lists = &gpu_lists->lists();
     }
     compute_passes = std::make_unique<ComputeLightingPasses>(ctx, grid, *targets, *lighting, permutation_set(),
-                                                             descriptor_pool.get(), *lists);
+                                                             descriptor_pool.get(), *lists, floor_target.get());
   }
 
   std::uint32_t class_count() const {
@@ -250,33 +296,64 @@ struct TileRenderer::Impl {
 
   bool runs_naive() const { return tilelight::runs_naive(options.baselines); }
   bool runs_dynamic() const { return tilelight::runs_dynamic(options.baselines); }
+  bool runs_floor() const { return tilelight::runs_floor(options.baselines); }
+  bool runs_any_baseline() const { return tilelight::runs_any_baseline(options.baselines); }
 
   const Buffer& tile_indices() const { return gpu_build ? gpu_build->indices() : cpu_indices; }
   const Buffer& tile_draws() const { return gpu_build ? gpu_build->draws() : cpu_draws; }
   const Buffer& tile_dispatches() const { return gpu_lists ? gpu_lists->dispatches() : cpu_dispatches; }
 
   // Recorded once, before any classification: the draws it holds are patched every frame.
+  // Recorded again when the G-buffer override is set (the plain pass becomes the upload).
   void record_tile_pass() {
     VkCommandBuffer cmd = tile_commands.get();
+    check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", "tile pass (submit B)");
     begin_commands(cmd, "tile pass", 0);
     tile_queries.reset(cmd);
     if (compute_passes) compute_passes->record_prepare(cmd, *targets);
-    tile_queries.write(cmd, "start");
+    tile_queries.write(cmd, std::string(kTileStart));
     if (compute_passes) {
       compute_passes->record_tiled(cmd, *targets, tile_dispatches());
     } else {
       light_passes->record_tiled(cmd, *targets, tile_indices(), tile_draws());
     }
-    tile_queries.write(cmd, "tiled");
+    tile_queries.write(cmd, std::string(kTiled));
+    if (runs_any_baseline()) record_baselines(cmd);
+    end_commands(cmd, "tile pass");
+  }
+
+  // The baselines' whole frame after the classified one: the plain G-buffer (what lighting
+  // reads, no classification data) into the same targets, then each baseline that runs.
+  void record_baselines(VkCommandBuffer cmd) {
+    order_gbuffer_after_light_reads(cmd);
+    if (gbuffer_upload) {
+      gbuffer_upload->record(cmd, *targets);  // the baselines must see the overridden G-buffer too
+    } else {
+      scene_passes->record_gbuffer_plain(cmd, *targets);
+    }
+    tile_queries.write(cmd, std::string(kGBufferPlain));
     if (runs_naive()) {
       compute_passes ? compute_passes->record_naive(cmd, *targets) : light_passes->record_naive(cmd, *targets);
-      tile_queries.write(cmd, "naive");
+      tile_queries.write(cmd, std::string(kNaive));
     }
     if (runs_dynamic()) {
       compute_passes ? compute_passes->record_dynamic(cmd, *targets) : light_passes->record_dynamic(cmd, *targets);
-      tile_queries.write(cmd, "dynamic");
+      tile_queries.write(cmd, std::string(kDynamic));
     }
-    end_commands(cmd, "tile pass");
+    if (runs_floor()) {
+      compute_passes ? compute_passes->record_floor(cmd, *floor_target)
+                     : light_passes->record_floor(cmd, *targets, *floor_target);
+      tile_queries.write(cmd, std::string(kFloor));
+    }
+  }
+
+  // The G-buffer classification reads: the scene's, or the test's upload.
+  void record_classified_gbuffer(VkCommandBuffer cmd) const {
+    if (gbuffer_upload) {
+      gbuffer_upload->record(cmd, *targets);
+    } else {
+      scene_passes->record_gbuffer(cmd, *targets);
+    }
   }
 
   void record_frame() {
@@ -287,11 +364,7 @@ struct TileRenderer::Impl {
     frame_queries.write(cmd, "start");
     scene_passes->record_shadow_map(cmd, *targets);
     frame_queries.write(cmd, "shadow");
-    if (gbuffer_upload) {
-      gbuffer_upload->record(cmd, *targets);
-    } else {
-      scene_passes->record_gbuffer(cmd, *targets);
-    }
+    record_classified_gbuffer(cmd);
     frame_queries.write(cmd, "gbuffer");
     classification->record(cmd);
     frame_queries.write(cmd, "classified");
@@ -437,16 +510,31 @@ struct TileRenderer::Impl {
   // One query-pool read per pool; stamps are in the order they were written.
   void read_timings(FrameTimings& t) const {
     const std::vector<Timestamp> frame_stamps = frame_queries.read();  // start shadow gbuffer classified [built]
-    const std::vector<Timestamp> tile_stamps = tile_queries.read();    // start tiled [naive] [dynamic]
+    const std::vector<Timestamp> tile_stamps = tile_queries.read();  // start tiled [gbuffer_plain naive dynamic floor]
     auto between = [](const std::vector<Timestamp>& stamps, std::size_t i) { return stamps[i + 1].ms - stamps[i].ms; };
     t.shadow_map = between(frame_stamps, 0);
     t.gbuffer = between(frame_stamps, 1);
     t.classification = between(frame_stamps, 2);
     if (gpu_build || gpu_lists) t.index_build_gpu = between(frame_stamps, 3);
-    t.tiled_light = between(tile_stamps, 0);
-    std::size_t next = 1;
-    if (runs_naive()) t.naive_light = between(tile_stamps, next++);
-    if (runs_dynamic()) t.dynamic_light = between(tile_stamps, next++);
+    t.tiled_light = pass_ms(tile_stamps, kTiled);
+    // End to end across both submissions: the CPU path's wait for the host is part of it.
+    t.frame_classified = tile_queries.span_ms(frame_stamps.front(), tile_stamps[index_of(tile_stamps, kTiled)]);
+    if (runs_any_baseline()) read_baseline_timings(tile_stamps, t);
+  }
+
+  // A baseline frame is the sum of its passes: the shadow map (shared), the plain G-buffer, its
+  // light pass.
+  void read_baseline_timings(const std::vector<Timestamp>& stamps, FrameTimings& t) const {
+    t.gbuffer_plain = pass_ms(stamps, kGBufferPlain);
+    if (runs_naive()) {
+      t.naive_light = pass_ms(stamps, kNaive);
+      t.frame_naive = t.shadow_map + t.gbuffer_plain + t.naive_light;
+    }
+    if (runs_dynamic()) {
+      t.dynamic_light = pass_ms(stamps, kDynamic);
+      t.frame_dynamic = t.shadow_map + t.gbuffer_plain + t.dynamic_light;
+    }
+    if (runs_floor()) t.floor_light = pass_ms(stamps, kFloor);
   }
 };
 
@@ -491,6 +579,12 @@ RgbaImage TileRenderer::read_naive() const {
                          impl_->options.timeout);
 }
 
+RgbaImage TileRenderer::read_floor() const {
+  if (!impl_->floor_target) throw Error("read_floor: this renderer does not run the floor pass (baselines)");
+  return read_image_rgba(impl_->context, impl_->pool, impl_->floor_target->image(),
+                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, impl_->options.timeout);
+}
+
 RgbaImage TileRenderer::read_dynamic() const {
   if (!impl_->runs_dynamic())
     throw Error("read_dynamic: this renderer does not run the dynamic pass (baselines naive)");
@@ -501,8 +595,14 @@ RgbaImage TileRenderer::read_dynamic() const {
 GBufferSamples TileRenderer::read_gbuffer() {
   Impl& impl = *impl_;
   impl.classification->enable_gbuffer_dump(impl.context, impl.descriptor_pool.get(), msaa_samples());
+  // Where a baseline ran, the targets hold its plain G-buffer, without the classification data
+  // the CPU reference needs: draw the classified one again first (the frame's, bit for bit).
   submit_and_wait(
-      impl.context, impl.pool, [&](VkCommandBuffer cmd) { impl.classification->record_gbuffer_dump(cmd); },
+      impl.context, impl.pool,
+      [&](VkCommandBuffer cmd) {
+        if (impl.runs_any_baseline()) impl.record_classified_gbuffer(cmd);
+        impl.classification->record_gbuffer_dump(cmd);
+      },
       "G-buffer dump", impl.options.timeout);
   GBufferSamples out;
   out.width = impl.grid.width;
@@ -525,6 +625,9 @@ std::vector<float> TileRenderer::read_shadow_map() const {
 void TileRenderer::set_gbuffer_override(const GBufferSamples& samples) {
   impl_->gbuffer_upload = std::make_unique<GBufferUpload>(
       impl_->context, *impl_->targets, samples, impl_->lighting->params().sun_direction, impl_->descriptor_pool.get());
+  // Submit B draws the baselines' G-buffer: it must be the upload as well. No frame is in
+  // flight here (render_frame() returns after its fence).
+  if (impl_->runs_any_baseline()) impl_->record_tile_pass();
 }
 
 void TileRenderer::set_before_host_signal(std::function<void()> hook) { impl_->before_host_signal = std::move(hook); }

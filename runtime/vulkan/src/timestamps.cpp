@@ -80,9 +80,13 @@ std::vector<Timestamp> TimestampQueries::read() const {
   }
   for (std::size_t i = 0; i < labels_.size(); ++i) {
     const std::uint64_t ticks = timestamp_delta(raw[0], raw[2 * i], valid_bits_);
-    out.push_back({labels_[i], static_cast<double>(ticks) * period_ns_ * 1e-6});
+    out.push_back({labels_[i], static_cast<double>(ticks) * period_ns_ * 1e-6, raw[2 * i]});
   }
   return out;
+}
+
+double TimestampQueries::span_ms(const Timestamp& from, const Timestamp& to) const {
+  return static_cast<double>(timestamp_delta(from.ticks, to.ticks, valid_bits_)) * period_ns_ * 1e-6;
 }
 
 double TimestampQueries::elapsed_ms(std::string_view from, std::string_view to) const {

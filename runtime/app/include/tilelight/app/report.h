@@ -1,6 +1,7 @@
 #pragma once
 // The frame report: the figures report.json holds and the Table-4.2-style summary on stdout.
 
+#include "tilelight/app/frame_ratios.h"
 #include "tilelight/render/tile_renderer.h"
 
 #include <cstdint>
@@ -13,14 +14,14 @@ namespace tilelight::app {
 struct RunDescription {
   std::string device;
   std::uint32_t width = 0, height = 0, msaa_samples = 0, tile_size = 0, frames = 0;
-  std::string path;          // "cpu" | "gpu"
-  std::string permutations;  // "optimised" | "raw"
+  IndexPath path = IndexPath::cpu;
+  bool raw_permutations = false;  // "raw" | "optimised" in the report
   std::string camera;
   bool coalesce = true;
-  std::string lavapipe_threads;  // LP_NUM_THREADS as set, or "" (driver default)
-  std::string primitive;         // "points" | "triangles": what the tile pass drew; "workgroups" (compute)
-  std::string baselines;         // "naive" | "dynamic" | "both": the full-screen passes that ran
-  std::string light_pass;        // "raster" | "compute": how every light pass ran
+  std::string lavapipe_threads;               // LP_NUM_THREADS as set, or "" (driver default)
+  std::string primitive;                      // "points" | "triangles": what the tile pass drew; "workgroups" (compute)
+  Baselines baselines = Baselines::both;      // the full-frame passes that ran (--baseline)
+  LightPass light_pass = LightPass::compute;  // how every light pass ran
   // The scene: the --scene file's name (empty: the procedural scene), its triangles per G-buffer pass.
   std::string scene;
   std::uint64_t scene_triangles = 0;
@@ -50,8 +51,9 @@ struct ProcessFigures {
 struct FrameReport {
   RunDescription run;
   std::uint32_t tiles = 0;
-  std::vector<std::pair<std::string, std::uint32_t>> raw_property_tiles;  // in the order
-  std::vector<std::uint32_t> optimised_tiles;                             // 32 counts
+  // Per raw feature, named by its shader define (the generated registry's), in the spec's order.
+  std::vector<std::pair<std::string, std::uint32_t>> raw_property_tiles;
+  std::vector<std::uint32_t> optimised_tiles;  // 32 counts
   // Raster: one primitive per tile uncoalesced, the primitives drawn after coalescing, and the
   // rectangles they draw (a non-square one is drawn as one point per tile). Compute: the tiles
   // dispatched, the workgroups that shade them, and 0.
@@ -59,7 +61,8 @@ struct FrameReport {
   std::uint32_t rectangles = 0;
   MedianTimings timings;
   std::vector<FrameTimings> frame_timings;  // every timed frame, in order (timings: their medians)
-  Equivalences equivalence;
+  FrameRatios ratios;                       // frame_ratios(frame_timings)
+  std::optional<Equivalences> equivalence;  // empty when neither naive nor dynamic ran
   ProcessFigures process;
 };
 
@@ -84,7 +87,8 @@ Equivalences compare_with_baselines(const RgbaImage& classified, const std::opti
 
 std::string report_json(const FrameReport& report);
 
-// The chapter's Table 4.2 layout: per-stage milliseconds, naive vs classified.
+// The chapter's Table 4.2 layout, led by the whole frame: per-stage milliseconds of each
+// baseline that ran and of the classified frame, then the per-frame speed-ups.
 std::string timing_table(const FrameReport& report);
 
 }  // namespace tilelight::app

@@ -6,10 +6,12 @@
 //   submit A  shadow map -> G-buffer -> classification -> copy IDs to host memory
 //             [--path gpu: + LUT, counts, prefix sum, index fill, indirect records in compute]
 //             signals timeline value 2k-1
-//   submit B  the tile pass and the baseline passes (naive, dynamic), recorded ONCE at start-up,
-//             before any classification ran; --path cpu: waits for timeline value 2k, which the host
-//             signals after it built the index buffer and patched the indirect records
-//             (submitted before that signal: wait-before-signal)
+//   submit B  the tile pass, then (where any baseline runs) the plain G-buffer pass into the same
+//             targets and the baseline passes (naive, dynamic, floor), recorded ONCE at start-up
+//             (again when a test overrides the G-buffer), before any classification ran;
+//             --path cpu: waits for timeline value 2k, which the host signals after it built the
+//             index buffer and patched the indirect records (submitted before that signal:
+//             wait-before-signal)
 //   host      waits for 2k-1, maps IDs through the generated LUT, builds the index buffer
 //             (3 passes + coalescing), writes the indirect records, signals 2k
 // With LightPass::compute the tile pass is one indirect dispatch per class instead of one draw,
@@ -66,8 +68,8 @@ struct RendererOptions {
   std::uint32_t msaa = 0;       // 0: automatic (2x where offered, else 4x); else 1, 2, 4, 8, 16
   std::uint32_t tile_size = 4;  // pixels: 4, 8 or 16
   IndexPath path = IndexPath::cpu;
-  LightPass light_pass = LightPass::raster;
-  bool raw_permutations = false;  // draw the 96 raw permutations instead of the 32 optimised ones
+  LightPass light_pass = LightPass::compute;  // tilelight's default (docs/results.md g4)
+  bool raw_permutations = false;              // draw the 96 raw permutations instead of the 32 optimised ones
   bool coalesce = true;
   // How the tile pass draws its rectangles (tile_primitive.h); empty: points where the device
   // draws them (largePoints, a whole block's width), else triangles.
@@ -129,7 +131,8 @@ struct GBufferSamples {
 class TileRenderer {
  public:
   // Throws tilelight::Error naming the value for a size of 0 or beyond the device's limits,
-  // an MSAA count the device lacks, an unknown camera or tile size.
+  // an MSAA count the device lacks, an unknown camera or tile size (OptionError, naming the
+  // option, for the size, the MSAA count and the primitive).
   TileRenderer(const Context& context, const Scene& scene, const RendererOptions& options);
   ~TileRenderer();
   TileRenderer(const TileRenderer&) = delete;
@@ -149,14 +152,16 @@ class TileRenderer {
   RgbaImage read_classified() const;
   RgbaImage read_naive() const;    // precondition: the naive pass runs (RendererOptions::baselines)
   RgbaImage read_dynamic() const;  // precondition: the dynamic pass runs
+  RgbaImage read_floor() const;    // precondition: the floor pass runs
 
  private:
   // The tests' seam (tests/support/tilelight_testing/renderer_test_seam.h) and the only caller
   // of the test-only members below; production code has no way to reach them.
   friend class TileRendererTestSeam;
 
-  // What the CPU reference classifier needs: the last frame's G-buffer and shadow map, and the
-  // lighting parameters the shaders read.
+  // What the CPU reference classifier needs: the G-buffer the last frame classified (drawn
+  // again where the baselines' plain one replaced it), its shadow map, and the lighting
+  // parameters the shaders read.
   const LightingParamsBlock& lighting_params() const;
   GBufferSamples read_gbuffer();
   std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major

@@ -18,7 +18,8 @@ class Context;
 
 struct Timestamp {
   std::string label;
-  double ms = 0.0;  // milliseconds since the first timestamp written after reset()
+  double ms = 0.0;          // milliseconds since the first timestamp written after reset()
+  std::uint64_t ticks = 0;  // the raw counter: spans_ms() measures across pools with it
 };
 
 class TimestampQueries {
@@ -49,6 +50,10 @@ class TimestampQueries {
   // Milliseconds from timestamp `from` to `to` (by label) in read(); throws if either is
   // missing.
   double elapsed_ms(std::string_view from, std::string_view to) const;
+
+  // Milliseconds from `from` to `to`, which may come from another pool of the same queue (one
+  // clock): e.g. a frame that starts in one submission and ends in the next.
+  double span_ms(const Timestamp& from, const Timestamp& to) const;
 
   std::uint32_t capacity() const { return capacity_; }
   std::uint32_t size() const { return static_cast<std::uint32_t>(labels_.size()); }

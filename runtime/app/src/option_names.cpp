@@ -1,0 +1,33 @@
+#include "option_names.h"
+
+namespace tilelight::app {
+
+const OptionNames<std::uint32_t>& msaa_names() {
+  static const OptionNames<std::uint32_t> names{{"auto", 0}, {"1", 1}, {"2", 2}, {"4", 4}, {"8", 8}, {"16", 16}};
+  return names;
+}
+
+const OptionNames<IndexPath>& path_names() {
+  static const OptionNames<IndexPath> names{{"cpu", IndexPath::cpu}, {"gpu", IndexPath::gpu}};
+  return names;
+}
+
+const OptionNames<bool>& permutation_names() {
+  static const OptionNames<bool> names{{"optimised", false}, {"raw", true}};
+  return names;
+}
+
+const OptionNames<Baselines>& baseline_names() {
+  static const OptionNames<Baselines> names{{"none", Baselines::none},       {"naive", Baselines::naive},
+                                            {"dynamic", Baselines::dynamic}, {"both", Baselines::both},
+                                            {"floor", Baselines::floor},     {"all", Baselines::all}};
+  return names;
+}
+
+const OptionNames<LightPass>& light_pass_names() {
+  static const OptionNames<LightPass> names{{to_string(LightPass::raster), LightPass::raster},
+                                            {to_string(LightPass::compute), LightPass::compute}};
+  return names;
+}
+
+}  // namespace tilelight::app
