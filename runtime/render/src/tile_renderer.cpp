@@ -326,11 +326,7 @@ struct TileRenderer::Impl {
   // reads, no classification data) into the same targets, then each baseline that runs.
   void record_baselines(VkCommandBuffer cmd) {
     order_gbuffer_after_light_reads(cmd);
-    if (gbuffer_upload) {
-      gbuffer_upload->record(cmd, *targets);  // the baselines must see the overridden G-buffer too
-    } else {
-      scene_passes->record_gbuffer_plain(cmd, *targets);
-    }
+    record_plain_gbuffer(cmd);
     tile_queries.write(cmd, std::string(kGBufferPlain));
     if (runs_naive()) {
       compute_passes ? compute_passes->record_naive(cmd, *targets) : light_passes->record_naive(cmd, *targets);
@@ -348,6 +344,14 @@ struct TileRenderer::Impl {
   }
 
   // The G-buffer classification reads: the scene's, or the test's upload.
+  void record_plain_gbuffer(VkCommandBuffer cmd) const {
+    if (gbuffer_upload) {
+      gbuffer_upload->record(cmd, *targets);  // the baselines must see the overridden G-buffer too
+    } else {
+      scene_passes->record_gbuffer_plain(cmd, *targets);
+    }
+  }
+
   void record_classified_gbuffer(VkCommandBuffer cmd) const {
     if (gbuffer_upload) {
       gbuffer_upload->record(cmd, *targets);
@@ -592,7 +596,7 @@ RgbaImage TileRenderer::read_dynamic() const {
                          impl_->options.timeout);
 }
 
-GBufferSamples TileRenderer::read_gbuffer() {
+GBufferSamples TileRenderer::read_gbuffer(GBufferKind kind) {
   Impl& impl = *impl_;
   impl.classification->enable_gbuffer_dump(impl.context, impl.descriptor_pool.get(), msaa_samples());
   // Where a baseline ran, the targets hold its plain G-buffer, without the classification data
@@ -600,7 +604,11 @@ GBufferSamples TileRenderer::read_gbuffer() {
   submit_and_wait(
       impl.context, impl.pool,
       [&](VkCommandBuffer cmd) {
-        if (impl.runs_any_baseline()) impl.record_classified_gbuffer(cmd);
+        if (kind == GBufferKind::plain) {
+          impl.record_plain_gbuffer(cmd);
+        } else if (impl.runs_any_baseline()) {
+          impl.record_classified_gbuffer(cmd);
+        }
         impl.classification->record_gbuffer_dump(cmd);
       },
       "G-buffer dump", impl.options.timeout);

@@ -4,7 +4,9 @@
 
 namespace tilelight {
 
-GBufferSamples TileRendererTestSeam::read_gbuffer(TileRenderer& renderer) { return renderer.read_gbuffer(); }
+GBufferSamples TileRendererTestSeam::read_gbuffer(TileRenderer& renderer, GBufferKind kind) {
+  return renderer.read_gbuffer(kind);
+}
 
 std::vector<float> TileRendererTestSeam::read_shadow_map(const TileRenderer& renderer) {
   return renderer.read_shadow_map();

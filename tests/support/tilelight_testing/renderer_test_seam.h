@@ -14,7 +14,8 @@ class TileRendererTestSeam {
  public:
   // The last frame's G-buffer, every sample as stored, and shadow map (size^2 depths,
   // row-major), and the lighting parameters the shaders read: the CPU reference's inputs.
-  static GBufferSamples read_gbuffer(TileRenderer& renderer);
+  // `kind`: which G-buffer (the classified one by default); the plain one is drawn for the dump.
+  static GBufferSamples read_gbuffer(TileRenderer& renderer, GBufferKind kind = GBufferKind::classified);
   static std::vector<float> read_shadow_map(const TileRenderer& renderer);
   static const LightingParamsBlock& lighting_params(const TileRenderer& renderer);
 

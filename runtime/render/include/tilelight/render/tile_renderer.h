@@ -128,6 +128,10 @@ struct GBufferSamples {
   }
 };
 
+// Which of the frame's two G-buffers: the classified path's (with its fragment tags) or the
+// baselines' plain one.
+enum class GBufferKind { classified, plain };
+
 class TileRenderer {
  public:
   // Throws tilelight::Error naming the value for a size of 0 or beyond the device's limits,
@@ -163,7 +167,9 @@ class TileRenderer {
   // again where the baselines' plain one replaced it), its shadow map, and the lighting
   // parameters the shaders read.
   const LightingParamsBlock& lighting_params() const;
-  GBufferSamples read_gbuffer();
+  // `kind`: the G-buffer drawn again into the targets before the dump (the classified one only
+  // where a baseline's plain one replaced it), from the same scene, camera and override.
+  GBufferSamples read_gbuffer(GBufferKind kind = GBufferKind::classified);
   std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major
 
   // Later frames take their G-buffer from `samples` (the layout read_gbuffer() returns) instead
