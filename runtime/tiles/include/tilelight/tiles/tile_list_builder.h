@@ -63,7 +63,7 @@ class TileListBuilder {
   TileGrid grid_;
   std::uint32_t class_count_;
   std::uint32_t tiles_per_group_;
-  std::array<std::uint8_t, 256> map_{};  // raw byte -> class, kInvalidClass where impossible
+  std::array<std::uint8_t, 256> map_{};  // raw byte -> class, or no class (src/raw_class_map.h)
 };
 
 }  // namespace tilelight
