@@ -60,8 +60,10 @@ std::uint32_t workgroups(std::uint32_t invocations, const shadergen::Permutation
 class ComputeBuild {
  public:
   ComputeBuild() = default;  // empty: record() may not be called
-  // Throws tilelight::Error when the passes' reflection disagrees with `desc`: bindings other
-  // than five storage buffers in set 0, or a push-constant block of another size than `push`.
+  // Preconditions: every pass's shader is set (a compute companion); input.class_for_raw and
+  // input.pruned have one size, at most 256. Throws tilelight::Error when the passes' reflection
+  // disagrees with `desc`: bindings other than five storage buffers in set 0, or a push-constant
+  // block of another size than `push`.
   ComputeBuild(const Context& context, VkDescriptorPool pool, const ComputeBuildInput& input, ComputeBuildDesc desc);
 
   void record(VkCommandBuffer cmd) const;
