@@ -45,6 +45,9 @@ class PlanBuilder {
 
 SweepPlan make_sweep_plan(const SweepOptions& options) {
   RendererOptions base;
+  // The design choices a) to g) are the raster tile pass's (primitives and coalescing mean
+  // nothing to the compute one); the baselines comparison names its light-pass kinds itself.
+  base.light_pass = LightPass::raster;
   base.width = options.sizes.front().width;
   base.height = options.sizes.front().height;
   const std::string at = fmt::format(" ({}x{})", base.width, base.height);

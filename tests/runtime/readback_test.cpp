@@ -40,10 +40,15 @@ void clear(Context& context, CommandPool& pool, const Image& image, VkClearColor
       "clearing " + image.name(), Seconds{30.0});
 }
 
-void expect_every_pixel(const RgbaImage& pixels, std::array<float, 4> expected) {
+std::array<float, 4> pixel(const FloatRgba& image, std::uint32_t x, std::uint32_t y) {
+  const std::size_t i = (std::size_t{y} * image.width + x) * 4;
+  return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2], image.pixels[i + 3]};
+}
+
+void expect_every_pixel(const FloatRgba& pixels, std::array<float, 4> expected) {
   for (std::uint32_t y = 0; y < pixels.height; ++y) {
     for (std::uint32_t x = 0; x < pixels.width; ++x) {
-      ASSERT_EQ(pixels.at(x, y), expected) << "at " << x << "," << y;
+      ASSERT_EQ(pixel(pixels, x, y), expected) << "at " << x << "," << y;
     }
   }
 }
@@ -60,7 +65,7 @@ TEST_F(VulkanTest, ClearRgba8ReadsBackExactly) {
     ASSERT_EQ(std::to_integer<int>(bytes[i + 2]), 255);
     ASSERT_EQ(std::to_integer<int>(bytes[i + 3]), 0);
   }
-  const RgbaImage rgba = read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  const FloatRgba rgba = read_image_float_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
   expect_every_pixel(rgba, {51.0f / 255.0f, 102.0f / 255.0f, 1.0f, 0.0f});
 }
 
@@ -70,14 +75,14 @@ TEST_F(VulkanTest, ClearFloatFormatsReadBackExactly) {
   for (const VkFormat format : {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT}) {
     const Image image = make_image(context(), format, 5, 3, "HDR target");
     clear(context(), pool(), image, {{colour[0], colour[1], colour[2], colour[3]}});
-    expect_every_pixel(read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL), colour);
+    expect_every_pixel(read_image_float_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL), colour);
   }
 }
 
 TEST_F(VulkanTest, Bgra8IsSwizzledToRgba) {
   const Image image = make_image(context(), VK_FORMAT_B8G8R8A8_UNORM, 2, 2, "bgra");
   clear(context(), pool(), image, {{1.0f, 0.0f, 51.0f / 255.0f, 1.0f}});
-  expect_every_pixel(read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL),
+  expect_every_pixel(read_image_float_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL),
                      {1.0f, 0.0f, 51.0f / 255.0f, 1.0f});
 }
 
@@ -113,16 +118,16 @@ TEST_F(VulkanTest, UploadedPatternComesBackInRowOrder) {
                       {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT});
       },
       "uploading a pattern", Seconds{30.0});
-  const RgbaImage rgba = read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_GENERAL);
+  const FloatRgba rgba = read_image_float_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_GENERAL);
   for (std::uint32_t y = 0; y < kHeight; ++y) {
     for (std::uint32_t x = 0; x < kWidth; ++x) {
       const std::array<float, 4> expected = {static_cast<float>(x * 10) / 255.0f, static_cast<float>(y * 20) / 255.0f,
                                              7.0f / 255.0f, 1.0f};
-      ASSERT_EQ(rgba.at(x, y), expected) << "at " << x << "," << y;
+      ASSERT_EQ(pixel(rgba, x, y), expected) << "at " << x << "," << y;
     }
   }
   // A second readback from the same layout works: the first put the image back in GENERAL.
-  EXPECT_EQ(read_image_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_GENERAL).pixels, rgba.pixels);
+  EXPECT_EQ(read_image_float_rgba(context(), pool(), image, VK_IMAGE_LAYOUT_GENERAL).pixels, rgba.pixels);
 }
 
 TEST_F(VulkanTest, ReadbackPreconditionsAreChecked) {
@@ -150,7 +155,7 @@ TEST_F(VulkanTest, ReadbackPreconditionsAreChecked) {
   const Image fresh = make_image(context(), VK_FORMAT_R8G8B8A8_UNORM, 4, 4, "fresh");
   EXPECT_THROW(read_image_bytes(context(), pool(), fresh, VK_IMAGE_LAYOUT_UNDEFINED), Error);
   const Image ids = make_image(context(), VK_FORMAT_R32_UINT, 4, 4, "tile IDs");
-  EXPECT_THROW(read_image_rgba(context(), pool(), ids, VK_IMAGE_LAYOUT_GENERAL), Error);
+  EXPECT_THROW(read_image_float_rgba(context(), pool(), ids, VK_IMAGE_LAYOUT_GENERAL), Error);
 }
 
 TEST(Decode, HalfToFloat) {
@@ -169,9 +174,9 @@ TEST(Decode, SingleChannelAndSizeMismatch) {
   const float values[] = {0.25f, -1.0f};
   std::array<std::byte, 8> bytes{};
   std::memcpy(bytes.data(), values, sizeof(values));
-  const RgbaImage image = decode_rgba(VK_FORMAT_D32_SFLOAT, 2, 1, bytes);
-  EXPECT_EQ(image.at(0, 0), (std::array<float, 4>{0.25f, 0.0f, 0.0f, 1.0f}));
-  EXPECT_EQ(image.at(1, 0), (std::array<float, 4>{-1.0f, 0.0f, 0.0f, 1.0f}));
+  const FloatRgba image = decode_rgba(VK_FORMAT_D32_SFLOAT, 2, 1, bytes);
+  EXPECT_EQ(pixel(image, 0, 0), (std::array<float, 4>{0.25f, 0.0f, 0.0f, 1.0f}));
+  EXPECT_EQ(pixel(image, 1, 0), (std::array<float, 4>{-1.0f, 0.0f, 0.0f, 1.0f}));
   EXPECT_THROW(decode_rgba(VK_FORMAT_R32_SFLOAT, 3, 1, bytes), Error);
   EXPECT_THROW(decode_rgba(VK_FORMAT_R32_UINT, 2, 1, bytes), Error);
 }

@@ -8,7 +8,6 @@
 #include "tilelight/tiles/tile_grid.h"
 #include "tilelight/tiles/tile_primitive.h"
 #include "tilelight/vulkan/buffer.h"
-#include "tilelight/vulkan/vk_handles.h"
 
 #include <shadergen/registry.h>
 
@@ -43,14 +42,9 @@ class GpuIndexBuild {
   Counts read_counts() const;
 
  private:
-  TileGrid grid_;
   std::uint32_t class_count_;
-  ComputeBuildBuffers buffers_;
   Buffer indices_, draws_;
-  UniqueDescriptorSetLayout set_layout_;
-  UniquePipelineLayout layout_;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
-  UniquePipeline count_, prefix_, fill_;
+  ComputeBuild build_;
 };
 
 }  // namespace tilelight

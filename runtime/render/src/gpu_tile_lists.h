@@ -8,7 +8,6 @@
 #include "compute_build_passes.h"
 #include "tilelight/tiles/tile_grid.h"
 #include "tilelight/vulkan/buffer.h"
-#include "tilelight/vulkan/vk_handles.h"
 
 #include <shadergen/registry.h>
 
@@ -45,15 +44,9 @@ class GpuTileLists {
   Counts read_counts() const;
 
  private:
-  TileGrid grid_;
   std::uint32_t class_count_;
-  std::uint32_t tiles_per_group_;
-  ComputeBuildBuffers buffers_;
   Buffer lists_, dispatches_;
-  UniqueDescriptorSetLayout set_layout_;
-  UniquePipelineLayout layout_;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
-  UniquePipeline count_, prefix_, fill_;
+  ComputeBuild build_;
 };
 
 }  // namespace tilelight

@@ -2,11 +2,13 @@
 
 #include "descriptors.h"
 #include "pipelines.h"
+#include "reflected_layout.h"
 #include "shader_registry.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
 
-#include <algorithm>
+#include <shadergen/vulkan.h>
+
 #include <array>
 #include <string>
 
@@ -17,17 +19,28 @@ namespace {
 constexpr std::uint32_t kParamsBinding = 0;
 constexpr std::array<std::uint32_t, 5> kImageBindings{1, 2, 3, 4, 5};
 constexpr std::uint32_t kFragmentTagsBinding = 6;  // classification only, multisampled G-buffer
+constexpr std::uint32_t kStorageSet = 1;           // the compute passes' output buffer
+
+// The compute passes that bind set 0 and one output buffer in set 1 through compute_layout().
+const shadergen::Reflection& classifier(const shadergen::Registry& registry) {
+  return companion_shader(registry, "classify_tiles").reflection;
+}
+const shadergen::Reflection& gbuffer_dump(const shadergen::Registry& registry) {
+  return companion_shader(registry, "gbuffer_dump").reflection;
+}
 
 // Set 0 of the light pass (the registry's merged layout) plus what the classifier alone reads
 // from it (the fragment tags), from the classifier's own reflection.
 std::vector<VkDescriptorSetLayoutBinding> set0_bindings(const shadergen::Registry& registry) {
-  std::vector<VkDescriptorSetLayoutBinding> bindings = layout_bindings_for_set(registry.pipeline_layout, 0);
-  const shadergen::Permutation& classifier = companion_shader(registry, "classify_tiles");
-  for (const VkDescriptorSetLayoutBinding& b : layout_bindings_for_set(classifier.reflection.bindings, 0)) {
-    const bool known = std::any_of(bindings.begin(), bindings.end(),
-                                   [&](const VkDescriptorSetLayoutBinding& have) { return have.binding == b.binding; });
-    if (!known) bindings.push_back(b);
-  }
+  return merged_set_bindings({registry.pipeline_layout, classifier(registry).bindings}, 0, "lighting set 0");
+}
+
+// Set 1 of the compute passes: the one storage buffer each of them writes (tile_classification.cpp
+// binds it at binding 0).
+std::vector<VkDescriptorSetLayoutBinding> storage_set_bindings(const shadergen::Registry& registry) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings = merged_set_bindings(
+      {classifier(registry).bindings, gbuffer_dump(registry).bindings}, kStorageSet, "compute output set");
+  check_storage_buffers(bindings, 1, "compute output set");
   return bindings;
 }
 
@@ -53,20 +66,16 @@ LightingInterface::LightingInterface(const Context& context, const LightingParam
   for (VkDescriptorSetLayoutBinding& b : bindings) b.stageFlags |= VK_SHADER_STAGE_COMPUTE_BIT;
   set0_layout_ = create_descriptor_set_layout(context, bindings, "lighting set 0 layout");
 
-  const VkDescriptorSetLayoutBinding storage{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT,
-                                             nullptr};
-  storage_set_layout_ = create_descriptor_set_layout(context, std::span(&storage, 1), "compute output set layout");
+  storage_set_layout_ =
+      create_descriptor_set_layout(context, storage_set_bindings(registry), "compute output set layout");
 
-  std::vector<VkPushConstantRange> push;
-  for (const shadergen::PushConstantRange& range : registry.push_constants) {
-    push.push_back({range.stages, 0, range.size});
-  }
   const std::array<VkDescriptorSetLayout, 1> lighting_sets{set0_layout_.get()};
-  lighting_layout_ = create_pipeline_layout(context, lighting_sets, push, "lighting pipeline layout");
+  lighting_layout_ = create_pipeline_layout(context, lighting_sets, shadergen::vk::push_constant_ranges(registry),
+                                            "lighting pipeline layout");
   const std::array<VkDescriptorSetLayout, 2> compute_sets{set0_layout_.get(), storage_set_layout_.get()};
-  const VkPushConstantRange compute_push{VK_SHADER_STAGE_COMPUTE_BIT, 0, 32};
-  compute_layout_ =
-      create_pipeline_layout(context, compute_sets, std::span(&compute_push, 1), "classification pipeline layout");
+  const std::vector<VkPushConstantRange> compute_push =
+      merged_push_constant_ranges({&classifier(registry), &gbuffer_dump(registry)}, VK_SHADER_STAGE_COMPUTE_BIT);
+  compute_layout_ = create_pipeline_layout(context, compute_sets, compute_push, "classification pipeline layout");
 
   set0_ = allocate_descriptor_set(context, pool, set0_layout_.get(), "lighting set 0");
   write_buffer_descriptor(context, set0_, kParamsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());

@@ -10,8 +10,8 @@
 namespace tilelight {
 namespace {
 
-// layout_bindings_for_set() casts the registry's kinds to VkDescriptorType: they must be the
-// same numbers.
+// shadergen::vk casts the registry's kinds to VkDescriptorType for every layout the runtime
+// builds from reflection: they must be the same numbers.
 using shadergen::DescriptorKind;
 constexpr bool same_kind(DescriptorKind kind, VkDescriptorType type) {
   return static_cast<std::uint32_t>(kind) == static_cast<std::uint32_t>(type);
@@ -53,21 +53,6 @@ UniqueDescriptorSetLayout create_descriptor_set_layout(const Context& context,
   UniqueDescriptorSetLayout owned(layout, {context.device()});
   context.name_object(layout, name);
   return owned;
-}
-
-std::vector<VkDescriptorSetLayoutBinding> layout_bindings_for_set(
-    std::span<const shadergen::DescriptorBinding> bindings, std::uint32_t set) {
-  std::vector<VkDescriptorSetLayoutBinding> out;
-  for (const shadergen::DescriptorBinding& b : bindings) {
-    if (b.set != set) continue;
-    VkDescriptorSetLayoutBinding binding{};
-    binding.binding = b.binding;
-    binding.descriptorType = static_cast<VkDescriptorType>(b.kind);
-    binding.descriptorCount = b.count;
-    binding.stageFlags = b.stages;
-    out.push_back(binding);
-  }
-  return out;
 }
 
 UniquePipelineLayout create_pipeline_layout(const Context& context, std::span<const VkDescriptorSetLayout> set_layouts,

@@ -3,6 +3,7 @@
 
 #include "tilelight/vulkan/vk_handles.h"
 
+#include <shadergen/vulkan.h>
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -11,10 +12,6 @@
 #include <string>
 #include <string_view>
 #include <vector>
-
-namespace shadergen {
-struct DescriptorBinding;
-}
 
 namespace tilelight {
 
@@ -28,10 +25,12 @@ UniqueDescriptorSetLayout create_descriptor_set_layout(const Context& context,
                                                        std::span<const VkDescriptorSetLayoutBinding> bindings,
                                                        std::string_view name);
 
-// The bindings of descriptor set `set` among `bindings` (a registry's reflection), as Vulkan
-// layout bindings: the registry is the one source of the lighting interface.
-std::vector<VkDescriptorSetLayoutBinding> layout_bindings_for_set(
-    std::span<const shadergen::DescriptorBinding> bindings, std::uint32_t set);
+// shadergen::vk::descriptor_set_layout_bindings() under its former runtime name, kept only
+// while compute_lighting_passes.cpp still calls it; new code calls shadergen's directly.
+inline std::vector<VkDescriptorSetLayoutBinding> layout_bindings_for_set(
+    std::span<const shadergen::DescriptorBinding> bindings, std::uint32_t set) {
+  return shadergen::vk::descriptor_set_layout_bindings(bindings, set);
+}
 
 UniquePipelineLayout create_pipeline_layout(const Context& context, std::span<const VkDescriptorSetLayout> set_layouts,
                                             std::span<const VkPushConstantRange> push_constants, std::string_view name);

@@ -8,6 +8,7 @@
 #include "gpu_tile_lists.h"
 #include "lighting_interface.h"
 #include "lighting_passes.h"
+#include "picture_readback.h"
 #include "render_targets.h"
 #include "scene_passes.h"
 #include "tile_classification.h"

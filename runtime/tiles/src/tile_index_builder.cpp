@@ -1,5 +1,6 @@
 #include "tilelight/tiles/tile_index_builder.h"
 
+#include "raw_class_map.h"
 #include "tilelight/base/error.h"
 
 #include <fmt/format.h>
@@ -11,9 +12,7 @@
 namespace tilelight {
 namespace {
 
-// map_ marker for a byte that is not a valid raw ID (>= 128, or pruned). Optimised IDs are < 32,
-// so OR-ing the mapped bytes of a block and testing this bit validates the whole block at once.
-constexpr std::uint8_t kInvalid = 0x80;
+static_assert(kMaxDrawClasses <= kNoClass, "a draw class must never read as kNoClass");
 
 // A block row whose 4 bytes are all equal to its lowest byte.
 constexpr bool row_is_uniform(std::uint32_t row) { return row == (row & 0xFFu) * 0x01010101u; }
@@ -56,26 +55,10 @@ struct TileIndexBuilder::Counts {
 
 TileIndexBuilder::TileIndexBuilder(const TileGrid& grid, std::span<const std::uint8_t> lut,
                                    std::span<const bool> pruned, std::uint32_t class_count, TilePrimitive primitive)
-    : grid_(grid), class_count_(class_count), primitive_(primitive) {
-  if (class_count == 0 || class_count > kMaxDrawClasses) {
-    throw Error(fmt::format("TileIndexBuilder: the class count must be 1..{} (got {})", kMaxDrawClasses, class_count));
-  }
-  if (lut.size() != kRawClassCount) {
-    throw Error(fmt::format("TileIndexBuilder: the LUT must have {} entries (got {})", kRawClassCount, lut.size()));
-  }
-  if (!pruned.empty() && pruned.size() != kRawClassCount) {
-    throw Error(fmt::format("TileIndexBuilder: the pruned set must have {} entries or none (got {})", kRawClassCount,
-                            pruned.size()));
-  }
-  map_.fill(kInvalid);
-  for (std::uint32_t raw = 0; raw < kRawClassCount; ++raw) {
-    if (lut[raw] >= class_count_) {
-      throw Error(
-          fmt::format("TileIndexBuilder: LUT entry {} is {}, out of range (0..{})", raw, lut[raw], class_count_ - 1));
-    }
-    const bool impossible = !pruned.empty() && pruned[raw];
-    if (!impossible) map_[raw] = lut[raw];
-  }
+    : grid_(grid),
+      class_count_(class_count),
+      primitive_(primitive),
+      map_(make_raw_class_map("TileIndexBuilder", lut, pruned, class_count, kMaxDrawClasses)) {
   rects_.resize(grid_.tile_count());
 }
 
@@ -86,13 +69,8 @@ void TileIndexBuilder::throw_bad_tile(const std::uint8_t* raw, std::uint32_t bx,
   for (std::uint32_t row = 0; row < h; ++row) {
     for (std::uint32_t col = 0; col < w; ++col) {
       const std::uint8_t value = raw[row * kBlockTiles + col];
-      if ((map_[value] & kInvalid) == 0) continue;
-      const std::uint32_t tx = bx * kBlockTiles + col;
-      const std::uint32_t ty = by * kBlockTiles + row;
-      if (value >= kRawClassCount) {
-        throw Error(fmt::format("tile ({}, {}): raw ID {} is out of range (0..{})", tx, ty, value, kRawClassCount - 1));
-      }
-      throw Error(fmt::format("tile ({}, {}): raw ID {} is impossible (a pruned class)", tx, ty, value));
+      if ((map_[value] & kNoClass) == 0) continue;
+      throw_no_class(bx * kBlockTiles + col, by * kBlockTiles + row, value);
     }
   }
   throw Error(fmt::format("block ({}, {}): invalid raw ID not found (internal error)", bx, by));
@@ -107,7 +85,7 @@ std::uint32_t TileIndexBuilder::full_block(const std::uint8_t* raw, std::uint32_
   // Scene-like frames are mostly blocks of one raw ID: one lookup instead of sixteen.
   if (coalesce && rows_are_uniform(rows)) {
     const std::uint8_t id = map_[raw[0]];
-    if ((id & kInvalid) != 0) throw_bad_tile(raw, bx, by);
+    if ((id & kNoClass) != 0) throw_bad_tile(raw, bx, by);
     return counts.emit(out, bx % Counts::kLanes, v00, id, kBlockTiles, kBlockTiles);
   }
   std::uint8_t mapped[kBlockTileCount];
@@ -116,7 +94,7 @@ std::uint32_t TileIndexBuilder::full_block(const std::uint8_t* raw, std::uint32_
     mapped[i] = map_[raw[i]];
     bad |= mapped[i];
   }
-  if ((bad & kInvalid) != 0) throw_bad_tile(raw, bx, by);
+  if ((bad & kNoClass) != 0) throw_bad_tile(raw, bx, by);
 
   std::uint32_t n = 0;
   if (!coalesce) {
@@ -169,7 +147,7 @@ std::uint32_t TileIndexBuilder::partial_block(const std::uint8_t* raw, std::uint
       uniform = uniform && mapped[i] == mapped[0];
     }
   }
-  if ((bad & kInvalid) != 0) throw_bad_tile(raw, bx, by);
+  if ((bad & kNoClass) != 0) throw_bad_tile(raw, bx, by);
   if (coalesce && uniform) return counts.emit(out, bx % Counts::kLanes, v00, mapped[0], w, h);
 
   std::uint32_t n = 0;

@@ -1,5 +1,6 @@
 #include "tilelight/tiles/tile_list_builder.h"
 
+#include "raw_class_map.h"
 #include "tilelight/base/error.h"
 #include "tilelight/tiles/tile_index_builder.h"
 
@@ -12,7 +13,8 @@
 namespace tilelight {
 namespace {
 
-constexpr std::uint8_t kInvalidClass = 0xFF;          // classes are < 128
+static_assert(kTileListMaxClasses <= kNoClass, "a draw class must never read as kNoClass");
+
 constexpr std::uint32_t kMaxTileCoordinate = 0xFFFF;  // 16 bits each in pack_tile()
 
 // Bit i of `v` to bit 2i: one coordinate's half of a Morton code.
@@ -55,39 +57,19 @@ void check_tile_list_grid(const TileGrid& grid) {
 
 TileListBuilder::TileListBuilder(const TileGrid& grid, std::span<const std::uint8_t> lut, std::span<const bool> pruned,
                                  std::uint32_t class_count, std::uint32_t tiles_per_group)
-    : grid_(grid), class_count_(class_count), tiles_per_group_(tiles_per_group) {
-  if (class_count == 0 || class_count > kTileListMaxClasses) {
-    throw Error(
-        fmt::format("TileListBuilder: the class count must be 1..{} (got {})", kTileListMaxClasses, class_count));
-  }
+    : grid_(grid),
+      class_count_(class_count),
+      tiles_per_group_(tiles_per_group),
+      map_(make_raw_class_map("TileListBuilder", lut, pruned, class_count, kTileListMaxClasses)) {
   check_tile_list_grid(grid);
   if (tiles_per_group == 0) throw Error("TileListBuilder: tiles per workgroup must be >= 1 (got 0)");
-  if (lut.size() != kRawClassCount) {
-    throw Error(fmt::format("TileListBuilder: the LUT must have {} entries (got {})", kRawClassCount, lut.size()));
-  }
-  if (!pruned.empty() && pruned.size() != kRawClassCount) {
-    throw Error(fmt::format("TileListBuilder: the pruned set must have {} entries or none (got {})", kRawClassCount,
-                            pruned.size()));
-  }
-  map_.fill(kInvalidClass);
-  for (std::uint32_t raw = 0; raw < kRawClassCount; ++raw) {
-    if (lut[raw] >= class_count_) {
-      throw Error(
-          fmt::format("TileListBuilder: LUT entry {} is {}, out of range (0..{})", raw, lut[raw], class_count_ - 1));
-    }
-    if (pruned.empty() || !pruned[raw]) map_[raw] = lut[raw];
-  }
   order_ = morton_order(grid);
 }
 
 std::uint8_t TileListBuilder::class_of(std::uint8_t raw, std::uint32_t tile_x, std::uint32_t tile_y) const {
   const std::uint8_t c = map_[raw];
-  if (c != kInvalidClass) return c;
-  if (raw >= kRawClassCount) {
-    throw Error(
-        fmt::format("tile ({}, {}): raw ID {} is out of range (0..{})", tile_x, tile_y, raw, kRawClassCount - 1));
-  }
-  throw Error(fmt::format("tile ({}, {}): raw ID {} is impossible (a pruned class)", tile_x, tile_y, raw));
+  if (c == kNoClass) throw_no_class(tile_x, tile_y, raw);
+  return c;
 }
 
 TileListStats TileListBuilder::build(std::span<const std::uint8_t> blocked_raw_ids, std::span<std::uint32_t> lists,

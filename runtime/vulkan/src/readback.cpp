@@ -61,7 +61,7 @@ bool can_decode_rgba(VkFormat format) {
   }
 }
 
-RgbaImage decode_rgba(VkFormat format, std::uint32_t width, std::uint32_t height, std::span<const std::byte> texels) {
+FloatRgba decode_rgba(VkFormat format, std::uint32_t width, std::uint32_t height, std::span<const std::byte> texels) {
   if (!can_decode_rgba(format)) {
     throw Error(fmt::format("cannot decode {} to float RGBA", format_name(format)));
   }
@@ -71,7 +71,7 @@ RgbaImage decode_rgba(VkFormat format, std::uint32_t width, std::uint32_t height
     throw Error(fmt::format("{}x{} {} needs {} bytes, got {}", width, height, format_name(format), count * stride,
                             texels.size()));
   }
-  RgbaImage out;
+  FloatRgba out;
   out.width = width;
   out.height = height;
   out.pixels.resize(count * 4);
@@ -164,8 +164,8 @@ std::vector<std::byte> read_image_bytes(const Context& context, const CommandPoo
   return bytes;
 }
 
-RgbaImage read_image_rgba(const Context& context, const CommandPool& pool, const Image& image, VkImageLayout layout,
-                          Seconds timeout) {
+FloatRgba read_image_float_rgba(const Context& context, const CommandPool& pool, const Image& image,
+                                VkImageLayout layout, Seconds timeout) {
   if (!can_decode_rgba(image.format())) {
     throw Error(
         fmt::format("reading back {}: cannot decode {} to float RGBA", image.name(), format_name(image.format())));

@@ -1,6 +1,6 @@
 #pragma once
-// The picture library's image: float RGBA as the renderer reads its targets back (the Vulkan
-// layer's readback converts texels into it), kept free of Vulkan so that PNG output, the
+// The picture library's image: float RGBA as the renderer reads its targets back (the renderer
+// moves the Vulkan layer's plain readback into it), kept free of Vulkan so that PNG output, the
 // tile-class picture and the benchmarks' charts need no GPU library.
 
 #include <array>

@@ -19,12 +19,12 @@
 // Every wait is bounded (`timeout`); a failure between submit B and the host signal still
 // signals (with empty draws) so the queue is never left blocked.
 
+#include "tilelight/picture/rgba_image.h"
 #include "tilelight/scene/scene.h"
 #include "tilelight/scene/uniform_blocks.h"
 #include "tilelight/tiles/tile_grid.h"
 #include "tilelight/tiles/tile_primitive.h"
 #include "tilelight/vulkan/context.h"
-#include "tilelight/vulkan/readback.h"
 #include "tilelight/vulkan/timeout.h"
 
 #include <cstdint>

@@ -100,8 +100,8 @@ class TileIndexBuilder {
   TileGrid grid_;
   std::uint32_t class_count_ = kOptimisedClassCount;
   TilePrimitive primitive_ = TilePrimitive::triangles;
-  // byte -> optimised ID, or kInvalid for raw IDs >= 128 and pruned ones; one table lookup per
-  // tile both maps and validates.
+  // byte -> draw class, or no class for raw IDs >= 128 and pruned ones (src/raw_class_map.h);
+  // one table lookup per tile both maps and validates.
   std::array<std::uint8_t, 256> map_{};
   std::vector<Rect> rects_;  // pass 1 output, tile_count() entries (the most rectangles possible)
 };

@@ -64,8 +64,8 @@ class TileListBuilder {
   TileGrid grid_;
   std::uint32_t class_count_;
   std::uint32_t tiles_per_group_;
+  std::array<std::uint8_t, 256> map_{};  // raw byte -> class, or no class (src/raw_class_map.h)
   std::vector<std::uint32_t> order_;     // every tile, packed, in the order lists are filled (Morton)
-  std::array<std::uint8_t, 256> map_{};  // raw byte -> class, kInvalidClass where impossible
 };
 
 }  // namespace tilelight
