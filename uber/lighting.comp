@@ -15,8 +15,8 @@
 // sample averaged in where MSAA_EDGE says so) and stored to the single-sampled light target.
 //
 // The tile pass of an MSAA_EDGE class spreads the per-sample work over the workgroup instead
-// (shade_tiles_spread()): every lane shades sample 0 of its pixel; the pixels whose fragment
-// tags say their samples may differ (a few in a tile: the others are equal) go to a list in
+// (shade_tiles_spread()): every lane shades sample 0 of its pixel; the pixels whose coverage
+// flags say their samples may differ (a few in a tile: the others are equal) go to a list in
 // shared memory, and the workgroup's 64 lanes shade the other samples of those pixels together,
 // one (pixel, sample) pair a lane, instead of one lane looping over all samples of its pixel
 // while its neighbours idle. Each pixel's owner then averages its samples in sample order with

@@ -63,25 +63,24 @@ TEST_F(Classification, GpuMatchesCpuReferenceWithPartialTiles) {
   expect_matches_reference(*renderer);
 }
 
-// The classifier trusts the fragment tags instead of comparing samples (gbuffer.glsl): it
-// compares values only where a tag carries the shared bit. That is sound only if every pixel
-// whose samples differ in any stored value has differing tags or the shared bit; check it on
-// every pixel of real frames. The converse need not hold (a mesh's inner edges give fragments of
-// different triangles with equal values), which costs only time.
+// The classifier trusts the coverage flags instead of comparing samples (gbuffer.glsl): it
+// compares values only where a sample has the shared flag. That is sound only if every pixel
+// whose samples differ in any stored value has a flag on some sample; check it on every pixel of
+// real frames. The converse need not hold (a mesh's inner edges give partial fragments with
+// equal values), which costs only time.
 struct EdgeBitCount {
   std::size_t differing = 0, flagged = 0, missed = 0;
   std::string first_missed;
 };
 
 EdgeBitCount count_edge_bits(const GBufferSamples& g) {
-  const auto tag = [](const float* sample) { return std::bit_cast<std::uint32_t>(sample[13]); };
-  const auto shared = [&](const float* sample) { return (tag(sample) & 0x80000000u) != 0; };  // gbuffer.glsl
+  const auto flagged = [](const float* sample) { return std::bit_cast<std::uint32_t>(sample[13]) != 0; };
   EdgeBitCount count;
   for (std::uint32_t y = 0; y < g.height; ++y) {
     for (std::uint32_t x = 0; x < g.width; ++x) {
-      bool differ = false, bit = shared(g.at(x, y, 0));
+      bool differ = false, bit = flagged(g.at(x, y, 0));
       for (std::uint32_t s = 1; s < g.samples; ++s) {
-        bit = bit || shared(g.at(x, y, s)) || tag(g.at(x, y, s)) != tag(g.at(x, y, 0));
+        bit = bit || flagged(g.at(x, y, s));
         for (int i = 0; i < 13; ++i) differ = differ || !(g.at(x, y, 0)[i] == g.at(x, y, s)[i]);
       }
       count.differing += differ;
@@ -92,12 +91,12 @@ EdgeBitCount count_edge_bits(const GBufferSamples& g) {
   return count;
 }
 
-TEST_F(Classification, FragmentTagsCoverEveryPixelWithDifferingSamples) {
+TEST_F(Classification, CoverageFlagsCoverEveryPixelWithDifferingSamples) {
   std::size_t differing = 0;
   for (const char* camera : {"default", "low", "shadow"}) {
     const EdgeBitCount count = count_edge_bits(TileRendererTestSeam::read_gbuffer(*render(camera, 320, 180)));
     EXPECT_EQ(count.missed, 0u) << camera << ": " << count.first_missed
-                                << " has differing samples but equal tags without the shared bit";
+                                << " has differing samples but no coverage flag";
     differing += count.differing;
   }
   EXPECT_GT(differing, 0u) << "no frame has an MSAA edge: the check proves nothing";

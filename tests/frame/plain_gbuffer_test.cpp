@@ -1,7 +1,7 @@
 // The two G-buffers of a frame (uber/include/gbuffer.glsl): the classified path's and the
 // baselines' plain one must store the same bits in every target lighting reads (RT0..RT3), so
 // that the baselines light exactly what the classified path lights and pay for nothing else;
-// only the classified one has fragment tags. And no scene G-buffer shader writes gl_FragDepth,
+// only the classified one has coverage flags. And no scene G-buffer shader writes gl_FragDepth,
 // which would turn off early and hierarchical depth testing.
 #include "frame_support.h"
 #include "tilelight/scene/scene.h"

@@ -57,7 +57,7 @@ std::array<float, 16> far_pixel(const GBufferSamples& g, const LightingParamsBlo
   v[6] = -p.sun_direction.z;
   v[7] = 9.0f / 255.0f;  // a geometry motion ID
   // As a material stores it (gbuffer.glsl): facing away, so the surface depth's sun-facing bit
-  // is clear (the upload would clear it anyway). Every sample keeps its fragment tag.
+  // is clear (the upload would clear it anyway). Every sample keeps its coverage flags.
   v[12] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(clip.z / clip.w) & ~1u);
   return v;
 }
@@ -69,12 +69,11 @@ std::array<float, 16> sky_pixel() {
   return v;
 }
 
-// What two fragments sharing a pixel leave (gbuffer.glsl): a fragment tag of its own on each
-// sample, here the sample's index past any triangle of the test frames.
+// What a partially covering fragment leaves (gbuffer.glsl): the partial flag on its samples.
 void mark_msaa_edge(GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
   for (std::uint32_t s = 0; s < g.samples; ++s) {
     float* v = g.values.data() + ((static_cast<std::size_t>(y) * g.width + x) * g.samples + s) * 16;
-    v[13] = std::bit_cast<float>(0x70000000u + s);
+    v[13] = std::bit_cast<float>(1u);  // GBUFFER_FLAG_PARTIAL
   }
 }
 

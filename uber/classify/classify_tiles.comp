@@ -13,7 +13,7 @@
 // completely: SOLID only if every tap of every such sample is occluded, none if every tap is
 // lit, SOFT (full PCF, right for any sample) otherwise.
 //
-// Per sample the pass reads the fragment tag, which says whether the pixel's samples may differ
+// Per sample the pass reads the coverage flags, which say whether the pixel's samples may differ
 // (an MSAA edge, gbuffer.glsl), and per pixel sample 0's surface depth, which says whether it is
 // sky, faces the sun (the lighting's own decision, made by the material) and where it lies; an
 // edge pixel's other samples add their depths too. Everything that depends on position is decided per TILE, from bounds, because
@@ -181,7 +181,7 @@ const uint GATHER_PIXELS = GATHER_ROWS * TILE_SIZE;
 // loop runs as long as its busiest lane plus one masked pass. So
 //   - the pixels of GATHER_ROWS rows are unrolled, with constant bounds (coordinates clamped to
 //     the frame: a repeated pixel adds nothing new), and no per-pixel loop runs out;
-//   - every sample's fragment tag (one R32UI fetch) is read without a branch per sample;
+//   - every sample's coverage flags (one R8UI fetch) are read without a branch per sample;
 //   - the other samples of the edge pixels are added afterwards, in a loop over a bit mask of
 //     them, instead of a branch per pixel that paid their fetches for every pixel; the loop
 //     runs once per edge pixel of the busiest of the eight tiles (a few % of pixels are edge
@@ -191,21 +191,20 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
 {
     float depth[GATHER_PIXELS];  // sample 0: corners fit the plane, sun-facing ones get offsets
     uint needs_offset = 0u;      // bit k: pixel k = j * TILE_SIZE + i, that is (i, rows + j)
-    uint edge_pixels = 0u;    // bit k: the samples of pixel k come from different fragments
-    uint shared_pixels = 0u;  // ... carry the shared bit (a flat face's partial fragments)
+    uint edge_pixels = 0u;    // bit k: some sample of pixel k has the partial flag
+    uint shared_pixels = 0u;  // ... the shared flag (partial fragments with shared values)
     [[unroll]] for (uint k = 0u; k < GATHER_PIXELS; ++k) {
         ivec2 pixel = min(first_pixel + ivec2(k % TILE_SIZE, rows + k / TILE_SIZE), last_pixel);
         GDepthSample first = gbuffer_load_depth(pixel, 0);
         uint edge = 0u;
         uint shared_face = 0u;
 #ifndef GBUFFER_SINGLE_SAMPLED
-        uint first_tag = gbuffer_load_tag(pixel, 0);
-        shared_face = uint(gbuffer_tag_is_shared(first_tag));
-        [[unroll]] for (int s = 1; s < GBUFFER_SAMPLES; ++s) {
-            uint tag = gbuffer_load_tag(pixel, s);
-            edge |= uint(gbuffer_tags_differ(tag, first_tag));
-            shared_face |= uint(gbuffer_tag_is_shared(tag));
+        uint flags = 0u;
+        [[unroll]] for (int s = 0; s < GBUFFER_SAMPLES; ++s) {
+            flags |= gbuffer_load_flags(pixel, s);
         }
+        edge = uint(gbuffer_flags_partial(flags));
+        shared_face = uint(gbuffer_flags_shared(flags));
 #endif
         depth[k] = first.depth;
         needs_offset |= uint(add_sample_flags(tile, first)) << k;
@@ -222,11 +221,11 @@ void gather_rows(inout TileSamples tile, ivec2 first_pixel, ivec2 last_pixel, in
             add_sun_offset(tile, plane, pixel - first_pixel, depth[k]);
         }
     }
-    // Samples 1.. of the pixels whose tags differ or carry the shared bit (the G-buffer always
-    // has 2 or more), one (pixel, sample) pair per pass, so that the pass the loop always runs
-    // once more (masked) costs one sample's fetches, not a pixel's. The tile is an MSAA edge
-    // tile where some pixel's samples may differ: a pixel whose tags differ; or one with the
-    // shared bit whose samples differ from sample 0 in their surface depth, which this loop
+    // Samples 1.. of the pixels with a partial or shared flag (the G-buffer always has 2 or
+    // more), one (pixel, sample) pair per pass, so that the pass the loop always runs once more
+    // (masked) costs one sample's fetches, not a pixel's. The tile is an MSAA edge tile where
+    // some pixel's samples may differ: a pixel with the partial flag; or one with the shared
+    // flag whose samples differ from sample 0 in their surface depth, which this loop
     // reads anyway, or, where every depth agrees (a flat face's inner diagonal, which is no
     // edge), in a colour target, which the loop after it checks, only in tiles without an edge
     // so far and only until one pixel's values differ.

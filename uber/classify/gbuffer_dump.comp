@@ -2,8 +2,8 @@
 // gbuffer_dump.comp -- copies every sample of the G-buffer into a buffer, as stored, so the CPU
 // reference classifier and tests can read it (multisampled images cannot be copied to the host
 // directly; the single-sampled build reads its one sample the same way). Layout per pixel: for
-// each sample, rt0, rt1, rt2, then vec4(rt3 surface depth, fragment tag as float bits, 0, 0):
-// 16 floats per sample, pixels row-major. The single-sampled G-buffer has no tags: 0 there.
+// each sample, rt0, rt1, rt2, then vec4(rt3 surface depth, coverage flags as float bits, 0, 0):
+// 16 floats per sample, pixels row-major. The single-sampled G-buffer has no flags: 0 there.
 #extension GL_GOOGLE_include_directive : require
 #include "gbuffer.glsl"
 
@@ -28,10 +28,10 @@ void main()
         dump.texels[at + 1u] = gbuffer_fetch(gbuffer_normal_motion, pixel, s);
         dump.texels[at + 2u] = gbuffer_fetch(gbuffer_prelit_power, pixel, s);
 #ifdef GBUFFER_SINGLE_SAMPLED
-        uint tag = 0u;
+        uint flags = 0u;
 #else
-        uint tag = gbuffer_load_tag(pixel, s);
+        uint flags = gbuffer_load_flags(pixel, s);
 #endif
-        dump.texels[at + 3u] = vec4(gbuffer_fetch(gbuffer_surface_depth, pixel, s).r, uintBitsToFloat(tag), 0.0, 0.0);
+        dump.texels[at + 3u] = vec4(gbuffer_fetch(gbuffer_surface_depth, pixel, s).r, uintBitsToFloat(flags), 0.0, 0.0);
     }
 }

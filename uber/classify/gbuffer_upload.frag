@@ -7,7 +7,7 @@
 #include "gbuffer.glsl"
 
 layout(set = 0, binding = 0, std430) readonly buffer Samples {
-    vec4 texels[]; // per pixel, per sample: rt0, rt1, rt2, vec4(rt3, tag bits, 0, 0)
+    vec4 texels[]; // per pixel, per sample: rt0, rt1, rt2, vec4(rt3, flag bits, 0, 0)
 } source;
 
 layout(push_constant) uniform UploadPush {
@@ -20,7 +20,7 @@ layout(location = 1) out vec4 out_rt1;
 layout(location = 2) out vec4 out_rt2;
 layout(location = 3) out float out_rt3;
 #ifndef GBUFFER_SINGLE_SAMPLED
-layout(location = 4) out uint out_tag;
+layout(location = 4) out uint out_flags;
 #endif
 
 uint sample_texel(uvec2 pixel, uint sample_index, uint target)
@@ -29,10 +29,10 @@ uint sample_texel(uvec2 pixel, uint sample_index, uint target)
 }
 
 // The upload stands in for the material shaders, so it must keep their promises (gbuffer.glsl):
-// samples with equal tags and no shared bit are equal -- a test's edits may make samples differ
-// that the scene wrote alike; such a pixel gets the shared bit on every sample, so that readers
-// compare its values -- and a geometry sample's sun-facing bit is that of its stored normal, its
-// depth below the sky's. Samples that keep the promises already are written exactly as given.
+// a pixel without flags has equal samples -- a test's edits may make samples differ that the
+// scene wrote alike; such a pixel gets the shared flag on every sample, so that readers compare
+// its values -- and a geometry sample's sun-facing bit is that of its stored normal, its depth
+// below the sky's. Samples that keep the promises already are written exactly as given.
 bool pixel_samples_differ(uvec2 pixel)
 {
     for (uint s = 1u; s < push.size.z; ++s) {
@@ -48,20 +48,19 @@ bool pixel_samples_differ(uvec2 pixel)
     return false;
 }
 
-uint given_tag(uvec2 pixel, uint sample_index)
+uint given_flags(uvec2 pixel, uint sample_index)
 {
     return floatBitsToUint(source.texels[sample_texel(pixel, sample_index, 3u)].y);
 }
 
-// True when the given tags already tell the pixel's samples apart or ask for a comparison.
-bool tags_mark_pixel(uvec2 pixel)
+// True when some given sample already carries a flag.
+bool flags_mark_pixel(uvec2 pixel)
 {
-    uint first = given_tag(pixel, 0u);
-    bool marked = gbuffer_tag_is_shared(first);
-    for (uint s = 1u; s < push.size.z; ++s) {
-        marked = marked || gbuffer_tags_differ(given_tag(pixel, s), first) || gbuffer_tag_is_shared(given_tag(pixel, s));
+    uint flags = 0u;
+    for (uint s = 0u; s < push.size.z; ++s) {
+        flags |= given_flags(pixel, s);
     }
-    return marked;
+    return flags != 0u;
 }
 
 void main()
@@ -79,7 +78,7 @@ void main()
     out_rt2 = source.texels[at + 2u];
     out_rt3 = depth;
 #ifndef GBUFFER_SINGLE_SAMPLED
-    uint tag = given_tag(pixel, uint(gl_SampleID));
-    out_tag = !tags_mark_pixel(pixel) && pixel_samples_differ(pixel) ? tag | GBUFFER_SHARED_TAG_BIT : tag;
+    uint flags = given_flags(pixel, uint(gl_SampleID));
+    out_flags = !flags_mark_pixel(pixel) && pixel_samples_differ(pixel) ? GBUFFER_FLAG_SHARED : flags;
 #endif
 }

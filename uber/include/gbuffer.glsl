@@ -12,7 +12,7 @@
 //   RT2     RGBA16F      prelit.r  prelit.g  prelit.b  specular power
 //   RT3     R32F         surface depth (0..1): exactly 1.0 is sky, geometry lies
 //                        below it; its lowest mantissa bit is the sun-facing bit
-//   RT4     R32UI        fragment tag (classified G-buffer, 2+ samples only)
+//   RT4     R8UI         coverage flags (classified G-buffer, 2+ samples only)
 //   depth   D32          the hardware depth test's own, interpolated per sample;
 //                        no shader reads it
 //
@@ -43,22 +43,20 @@
 // G-buffer depend on the direction of the one sun, which the frame knows before
 // the G-buffer pass (scene_params.glsl).
 //
-// Fragment tag (RT4): which fragment wrote the sample. Bits 0..30 name the
-// triangle: its instance's first triangle plus gl_PrimitiveID, unique in the
-// frame (scene_passes.cpp checks the count), or GBUFFER_SKY_TAG for the sky.
-// Two samples with the same such tag come from the same fragment (one fragment
-// per triangle per pixel), so they are equal in every target. A partial
-// fragment of a flat face (one covering only some of its pixel's samples)
-// writes GBUFFER_SHARED_TAG_BIT | its instance instead: two triangles of one
-// face, or coplanar faces of one instance, may then store equal values, and only
-// a comparison of the stored values can tell (gbuffer_samples_equal()).
-// So a pixel may differ between its samples (is an MSAA edge) exactly when its
-// samples' tags differ, or carry the shared bit and some stored value differs;
-// two full fragments that interleave by depth within one pixel (intersecting
-// surfaces) have different tags, which the former gl_FragDepth-based bits
-// could only rule out by giving up early depth testing.
+// Coverage flags (RT4, one byte a sample): what the fragment that wrote the sample knew about
+// its coverage AFTER the depth test (post-depth coverage: gl_SampleMaskIn holds only the samples
+// that passed, with early fragment tests). GBUFFER_FLAG_PARTIAL: it won only some of its
+// pixel's samples. A pixel whose samples come from two or more fragments always holds a sample
+// of a partial one: the last fragment written among them did not win every sample, or it would
+// hold them all. So a pixel with no flag on any sample has bit-identical samples, exactly, and
+// intersecting surfaces, which interleave by depth inside a pixel, are found too.
+// GBUFFER_FLAG_SHARED replaces PARTIAL where the partial fragment's values come from data its
+// neighbours share exactly: a flat face (both triangles of a face store the same values along
+// their diagonal, gbuffer.frag) and the sky (whose values depend on the pixel centre alone, and
+// whose full-screen triangle a driver may split); such a pixel differs only where a comparison
+// of its stored values says so (gbuffer_samples_equal()).
 //
-// The plain G-buffer has no tags: a reader that needs the decision there (the
+// The plain G-buffer has no flags: a reader that needs the decision there (the
 // dynamic baseline) compares every sample's stored values instead
 // (gbuffer_pixel_samples_differ()), which is exact and costs more.
 //
@@ -81,10 +79,9 @@ const uint GBUFFER_DEPTH_SUN_BIT = 1u;
 // The depth of the sky (the far plane), and the largest a material stores.
 const float GBUFFER_SKY_DEPTH = 1.0;
 const float GBUFFER_MAX_GEOMETRY_DEPTH = 0.99999994; // the float below 1.0
-// Fragment tags (RT4).
-const uint GBUFFER_SKY_TAG = 0x7FFFFFFFu;        // no triangle has this index
-const uint GBUFFER_SHARED_TAG_BIT = 0x80000000u; // a flat face's partial fragment: compare values
-const uint GBUFFER_MAX_TRIANGLE_TAG = 0x7FFFFFFEu;
+// Coverage flags (RT4).
+const uint GBUFFER_FLAG_PARTIAL = 1u; // the writing fragment won only some samples: they differ
+const uint GBUFFER_FLAG_SHARED = 2u;  // ... and its values are shared data: compare them
 
 // One decoded G-buffer sample: everything the lighting needs, and nothing about
 // how it is stored.
@@ -172,19 +169,19 @@ vec4 gbuffer_encode_rt2(vec3 prelit, float spec_power)
     return vec4(prelit, spec_power);
 }
 
-// The tag of a fragment of triangle `triangle` (the frame-wide index), or with
-// `shared_face` of a partial fragment of a flat face of instance `instance`.
-uint gbuffer_encode_tag(uint triangle, bool shared_face, uint instance)
+// The coverage flags of a fragment: `partial` (post-depth), and whether its values are shared
+// data (a flat face, the sky).
+uint gbuffer_encode_flags(bool partial, bool shared_values)
 {
-    return shared_face ? GBUFFER_SHARED_TAG_BIT | instance : min(triangle, GBUFFER_MAX_TRIANGLE_TAG);
+    return partial ? (shared_values ? GBUFFER_FLAG_SHARED : GBUFFER_FLAG_PARTIAL) : 0u;
 }
 
 #ifdef GBUFFER_ENCODE_ONLY
 // Samples per pixel of the G-buffer being written; the runtime specialises it.
 layout(constant_id = 0) const uint GBUFFER_SAMPLES = 1u;
 
-// True when this fragment covers only some of its pixel's samples. Fragment
-// stage only.
+// True when this fragment covers only some of its pixel's samples (after the depth test where
+// the shader declares post_depth_coverage). Fragment stage only.
 bool gbuffer_fragment_is_partial()
 {
     uint all_samples = (1u << GBUFFER_SAMPLES) - 1u;
@@ -225,16 +222,15 @@ GSample gbuffer_decode(vec4 rt0, vec4 rt1, vec4 rt2, float depth)
     return g;
 }
 
-// Whether two samples' tags say they come from different fragments (then they
-// may differ), and whether a tag asks for a comparison of values.
-bool gbuffer_tags_differ(uint a, uint b)
+// Whether a sample's flags make its pixel an edge, and whether they ask for a comparison.
+bool gbuffer_flags_partial(uint flags)
 {
-    return a != b;
+    return (flags & GBUFFER_FLAG_PARTIAL) != 0u;
 }
 
-bool gbuffer_tag_is_shared(uint tag)
+bool gbuffer_flags_shared(uint flags)
 {
-    return (tag & GBUFFER_SHARED_TAG_BIT) != 0u;
+    return (flags & GBUFFER_FLAG_SHARED) != 0u;
 }
 
 // ---------------------------------------------------------------------------
@@ -283,7 +279,7 @@ bool gbuffer_samples_equal(ivec2 pixel, int samples)
 }
 
 // True when the samples of `pixel` differ in some target lighting reads: the plain G-buffer's
-// test (it has no tags), exact. False means the samples are bit-identical, so sample 0 alone
+// test (it has no flags), exact. False means the samples are bit-identical, so sample 0 alone
 // shades the pixel.
 bool gbuffer_pixel_samples_differ(ivec2 pixel)
 {
@@ -291,21 +287,20 @@ bool gbuffer_pixel_samples_differ(ivec2 pixel)
 }
 
 #ifndef GBUFFER_SINGLE_SAMPLED
-uint gbuffer_load_tag(ivec2 pixel, int sample_index)
+uint gbuffer_load_flags(ivec2 pixel, int sample_index)
 {
-    return gbuffer_fetch(gbuffer_fragment_tags, pixel, sample_index).r;
+    return gbuffer_fetch(gbuffer_coverage_flags, pixel, sample_index).r;
 }
 
-// False only when every sample of `pixel` comes from one fragment (equal tags, no shared bit):
-// then they are bit-identical. The classified G-buffer's cheap test (one R32UI texel a sample).
-bool gbuffer_tags_say_samples_may_differ(ivec2 pixel)
+// False only when no sample of `pixel` carries a flag: then every sample comes from one fragment
+// and they are bit-identical. The classified G-buffer's cheap test (one R8UI texel a sample).
+bool gbuffer_flags_say_samples_may_differ(ivec2 pixel)
 {
-    uint first = gbuffer_load_tag(pixel, 0);
-    bool may_differ = gbuffer_tag_is_shared(first);
-    for (int s = 1; s < gbuffer_sample_count(); ++s) {
-        may_differ = may_differ || gbuffer_tags_differ(gbuffer_load_tag(pixel, s), first);
+    uint flags = 0u;
+    for (int s = 0; s < gbuffer_sample_count(); ++s) {
+        flags |= gbuffer_load_flags(pixel, s);
     }
-    return may_differ;
+    return flags != 0u;
 }
 #endif
 

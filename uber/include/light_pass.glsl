@@ -100,7 +100,7 @@ vec3 shade_sample(ivec2 pixel, int sample_index)
     return shade_geometry(g, pixel);
 }
 
-// Whether the bound G-buffer is the classified path's, with fragment tags (RT4): the tile passes
+// Whether the bound G-buffer is the classified path's, with coverage flags (RT4): the tile passes
 // set it (specialization constant 2); the baselines run on the plain G-buffer, which has none.
 layout(constant_id = 2) const bool TAGGED_GBUFFER = false;
 
@@ -128,8 +128,8 @@ vec3 add_other_samples(ivec2 pixel, vec3 sample0_colour)
 }
 
 // Whether `pixel` needs its other samples shaded (MSAA_EDGE): the dynamic pass compares the
-// samples' stored values (the plain G-buffer has no tags); a tile pass asks the fragment tags,
-// which say "equal" only for samples of one fragment; the naive pass shades every sample of
+// samples' stored values (the plain G-buffer has no flags); a tile pass asks the coverage
+// flags, which say "equal" only for samples of one fragment; the naive pass shades every sample of
 // every pixel. Skipping equal samples changes nothing (add_sample_to_mean()).
 bool pixel_needs_other_samples(ivec2 pixel)
 {
@@ -138,7 +138,7 @@ bool pixel_needs_other_samples(ivec2 pixel)
     }
 #ifndef GBUFFER_SINGLE_SAMPLED
     if (TAGGED_GBUFFER) {
-        return gbuffer_tags_say_samples_may_differ(pixel);
+        return gbuffer_flags_say_samples_may_differ(pixel);
     }
 #endif
     return true;

@@ -41,9 +41,9 @@ layout(set = 0, binding = 1) uniform sampler2DMS gbuffer_albedo_spec;   // RT0
 layout(set = 0, binding = 2) uniform sampler2DMS gbuffer_normal_motion; // RT1
 layout(set = 0, binding = 3) uniform sampler2DMS gbuffer_prelit_power;  // RT2
 layout(set = 0, binding = 4) uniform sampler2DMS gbuffer_surface_depth; // RT3
-// RT4, the fragment tags: the classified G-buffer's, read by classification only (a single-
-// sampled G-buffer has none: no pixel of it can differ between samples).
-layout(set = 0, binding = 6) uniform usampler2DMS gbuffer_fragment_tags;
+// RT4, the coverage flags: the classified G-buffer's, read by classification and the tile pass
+// (a single-sampled G-buffer has none: no pixel of it can differ between samples).
+layout(set = 0, binding = 6) uniform usampler2DMS gbuffer_coverage_flags;
 #define gbuffer_fetch(target, pixel, sample_index) texelFetch(target, pixel, sample_index)
 #define gbuffer_samples() textureSamples(gbuffer_normal_motion)
 #endif

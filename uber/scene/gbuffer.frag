@@ -2,8 +2,14 @@
 // gbuffer.frag -- the material shader: writes the Table 4.1 G-buffer through gbuffer.glsl,
 // with prelit (ambient) lighting already applied, as in Split/Second. Compiled twice: plain (the
 // baselines' G-buffer: RT0..RT3, what lighting reads) and with GBUFFER_FRAGMENT_TAGS (the
-// classified path's: the same RT0..RT3 plus RT4, the fragment tag classification reads).
+// classified path's: the same RT0..RT3 plus RT4, the coverage flags classification reads).
 #extension GL_GOOGLE_include_directive : require
+#ifdef GBUFFER_FRAGMENT_TAGS
+// The coverage flags need the samples this fragment won in the depth test (gbuffer.glsl).
+#extension GL_ARB_post_depth_coverage : require
+layout(early_fragment_tests) in;
+layout(post_depth_coverage) in;
+#endif
 #define GBUFFER_ENCODE_ONLY
 #include "gbuffer.glsl"
 #include "scene_params.glsl"
@@ -15,9 +21,6 @@ layout(location = 3) flat in vec4 in_material;
 layout(location = 4) flat in vec4 in_face_normal; // w: 1 on a flat-faced mesh (scene.vert)
 layout(location = 5) flat in vec3 in_face_depth;  // the face's depth plane over gl_FragCoord.xy
 layout(location = 6) in vec2 in_uv;
-#ifdef GBUFFER_FRAGMENT_TAGS
-layout(location = 7) flat in uvec2 in_tag_base;   // x: the instance's first triangle, y: the instance
-#endif
 
 // The mesh's base colour texture (sRGB, so read in linear light), or 1x1 white for meshes
 // without one: the albedo is then multiplied by exactly 1.
@@ -28,7 +31,7 @@ layout(location = 1) out vec4 out_rt1;
 layout(location = 2) out vec4 out_rt2;
 layout(location = 3) out float out_rt3;
 #ifdef GBUFFER_FRAGMENT_TAGS
-layout(location = 4) out uint out_tag;
+layout(location = 4) out uint out_flags;
 #endif
 
 // A world-space checkerboard so shadows and fog read clearly in the pictures.
@@ -78,7 +81,6 @@ void main()
     out_rt3 = gbuffer_encode_depth(surface_depth(flat_face),
                                    gbuffer_faces_sun(stored_normal, scene.sun_direction.xyz));
 #ifdef GBUFFER_FRAGMENT_TAGS
-    out_tag = gbuffer_encode_tag(in_tag_base.x + uint(gl_PrimitiveID), flat_face && gbuffer_fragment_is_partial(),
-                                 in_tag_base.y);
+    out_flags = gbuffer_encode_flags(gbuffer_fragment_is_partial(), flat_face);
 #endif
 }

@@ -3,6 +3,11 @@
 // cleared depth of 1, so it fills exactly the pixels nothing else covered. Its final colour
 // (gradient plus sun disc) goes to the prelit target; motion ID 0 marks it as sky.
 #extension GL_GOOGLE_include_directive : require
+#ifdef GBUFFER_FRAGMENT_TAGS
+#extension GL_ARB_post_depth_coverage : require
+layout(early_fragment_tests) in;
+layout(post_depth_coverage) in;
+#endif
 #define GBUFFER_ENCODE_ONLY
 #include "gbuffer.glsl"
 #include "scene_params.glsl"
@@ -12,7 +17,7 @@ layout(location = 1) out vec4 out_rt1;
 layout(location = 2) out vec4 out_rt2;
 layout(location = 3) out float out_rt3;
 #ifdef GBUFFER_FRAGMENT_TAGS
-layout(location = 4) out uint out_tag;
+layout(location = 4) out uint out_flags;
 #endif
 
 void main()
@@ -30,10 +35,10 @@ void main()
     out_rt2 = gbuffer_encode_rt2(colour, 0.0);
     out_rt3 = GBUFFER_SKY_DEPTH;
 #ifdef GBUFFER_FRAGMENT_TAGS
-    // One tag for all sky: every sky fragment of a pixel stores the same values (they depend on
-    // the pixel centre only), so sky samples alone never make a pixel's samples differ. The
-    // driver may split the full-screen triangle, and tagging its parts apart would make sky
-    // tiles MSAA edges for nothing.
-    out_tag = GBUFFER_SKY_TAG;
+    // Shared values: every sky fragment of a pixel stores the same values (they depend on the
+    // pixel centre only). The driver may split the full-screen triangle, and flagging its parts
+    // as partial would make sky tiles MSAA edges for nothing; where geometry covers the rest of
+    // the pixel, the comparison finds the difference.
+    out_flags = gbuffer_encode_flags(gbuffer_fragment_is_partial(), true);
 #endif
 }

@@ -45,7 +45,7 @@ void check_set0_matches(const shadergen::Registry& compute, const shadergen::Reg
   }
 }
 
-// The tile pass (not `full_frame`) reads the classified G-buffer, whose fragment tags exist with
+// The tile pass (not `full_frame`) reads the classified G-buffer, whose coverage flags exist with
 // 2 or more samples; the baselines read the plain one.
 UniquePipeline create_light_pipeline(const Context& context, VkPipelineLayout layout,
                                      std::span<const std::uint32_t> spirv, const RenderTargets& targets,

@@ -30,7 +30,7 @@ const shadergen::Reflection& gbuffer_dump(const shadergen::Registry& registry) {
 }
 
 // Set 0 of the light pass (the registry's merged layout) plus what the classifier alone reads
-// from it (the fragment tags), from the classifier's own reflection.
+// from it (the coverage flags), from the classifier's own reflection.
 std::vector<VkDescriptorSetLayoutBinding> set0_bindings(const shadergen::Registry& registry) {
   return merged_set_bindings({registry.pipeline_layout, classifier(registry).bindings}, 0, "lighting set 0");
 }

@@ -18,7 +18,7 @@ constexpr VkDeviceSize kDrawRecordBytes = sizeof(VkDrawIndexedIndirectCommand);
 constexpr std::uint32_t kCornerBinding = 0;  // tile.vert: the corner grid, per vertex
 constexpr std::uint32_t kGridBinding = 1;    // tile_point.vert: the grid's shape, per instance
 
-// `tile_pass`: the classified path's pass, which reads the classified G-buffer (fragment tags,
+// `tile_pass`: the classified path's pass, which reads the classified G-buffer (coverage flags,
 // with 2 or more samples); the baselines read the plain one.
 UniquePipeline create_light_pipeline(const Context& context, const RenderTargets& targets,
                                      const LightingInterface& lighting, std::span<const std::uint32_t> fragment,

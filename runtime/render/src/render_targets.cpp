@@ -102,7 +102,8 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   rt1_ = gbuffer_image(context, extent, kGBufferRt1Format, samples, "G-buffer RT1 (normal, motion ID)");
   rt2_ = gbuffer_image(context, extent, kGBufferRt2Format, samples, "G-buffer RT2 (prelit, power)");
   rt3_ = gbuffer_image(context, extent, kGBufferRt3Format, samples, "G-buffer RT3 (surface depth)");
-  if (has_fragment_tags()) tags_ = gbuffer_image(context, extent, kGBufferTagFormat, samples, "G-buffer RT4 (tags)");
+  if (has_fragment_tags())
+    tags_ = gbuffer_image(context, extent, kGBufferTagFormat, samples, "G-buffer RT4 (coverage flags)");
   // Only the depth test reads it, within the pass: nothing samples it, nothing keeps it.
   depth_ = Image(context, {extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, samples,
                            VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth"});

@@ -3,7 +3,7 @@
 // the multisampled G-buffer (Table 4.1, uber/include/gbuffer.glsl), the sun shadow map and the
 // light targets (classified, naive and dynamic), which the frame reads back for comparison and
 // the PNGs. The G-buffer has two render passes over the same images: the classified path's,
-// which also writes the fragment tags (RT4, with 2 or more samples), and the baselines' plain
+// which also writes the coverage flags (RT4, with 2 or more samples), and the baselines' plain
 // one, which writes what lighting reads and nothing else.
 
 #include "pipelines.h"
@@ -23,7 +23,7 @@ inline constexpr VkFormat kGBufferRt0Format = VK_FORMAT_R8G8B8A8_UNORM;
 inline constexpr VkFormat kGBufferRt1Format = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kGBufferRt2Format = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kGBufferRt3Format = VK_FORMAT_R32_SFLOAT;  // surface depth + sun bit
-inline constexpr VkFormat kGBufferTagFormat = VK_FORMAT_R32_UINT;    // RT4: fragment tags
+inline constexpr VkFormat kGBufferTagFormat = VK_FORMAT_R8_UINT;     // RT4: coverage flags
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kLightFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
@@ -73,7 +73,7 @@ class RenderTargets {
 
   // What every pipeline writing the G-buffer shares: that render pass and sample count, its
   // colour targets, the depth test, and GBUFFER_SAMPLES (fragment specialization constant 0,
-  // see gbuffer.glsl) for the fragment tags. Callers add shaders and depth state.
+  // see gbuffer.glsl) for the coverage flags. Callers add shaders and depth state.
   GraphicsPipelineDesc gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name, bool tagged = true) const;
   // The colour attachments of that render pass: RT0..RT3, and RT4 when tagged.
   std::uint32_t gbuffer_colour_targets(bool tagged) const { return tagged && has_fragment_tags() ? 5 : 4; }

@@ -30,14 +30,8 @@ Buffer upload_buffer(const Context& context, std::span<const T> data, VkBufferUs
   return buffer;
 }
 
-// Binding 2: each instance's first triangle among all triangles of the frame (fragment tags),
-// read at scene.vert's location 9.
-constexpr std::uint32_t kFirstTriangleLocation = 9;
-
 std::vector<VkVertexInputBindingDescription> scene_bindings() {
-  return {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX},
-          {1, sizeof(Instance), VK_VERTEX_INPUT_RATE_INSTANCE},
-          {2, sizeof(std::uint32_t), VK_VERTEX_INPUT_RATE_INSTANCE}};
+  return {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(Instance), VK_VERTEX_INPUT_RATE_INSTANCE}};
 }
 
 std::vector<VkVertexInputAttributeDescription> scene_attributes() {
@@ -50,33 +44,7 @@ std::vector<VkVertexInputAttributeDescription> scene_attributes() {
   }
   a.push_back({6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, albedo_spec)});
   a.push_back({7, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, material)});
-  a.push_back({kFirstTriangleLocation, 2, VK_FORMAT_R32_UINT, 0});
   return a;
-}
-
-// The largest triangle index a fragment tag holds (gbuffer.glsl: GBUFFER_MAX_TRIANGLE_TAG).
-constexpr std::uint64_t kMaxTaggedTriangles = 0x7FFFFFFFull;
-
-// Per instance, in Scene::instances order, the index of its first triangle when every instance
-// of every batch is numbered in turn: with gl_PrimitiveID (which restarts per instance) it
-// names each triangle of the frame once. Throws when the frame has more triangles than a tag
-// can name.
-std::vector<std::uint32_t> first_triangles(const Scene& scene) {
-  std::vector<std::uint32_t> first(scene.instances.size(), 0);
-  std::uint64_t next = 0;
-  for (const MeshBatch& batch : scene.batches) {
-    const std::uint64_t triangles = scene.meshes[batch.mesh].indices.size() / 3;
-    for (std::uint32_t i = 0; i < batch.instance_count; ++i) {
-      first[batch.first_instance + i] = static_cast<std::uint32_t>(std::min(next, kMaxTaggedTriangles));
-      next += triangles;
-    }
-  }
-  if (next > kMaxTaggedTriangles) {
-    throw Error("the scene draws " + std::to_string(next) +
-                " triangles (instances included); the G-buffer's fragment tags name at most " +
-                std::to_string(kMaxTaggedTriangles));
-  }
-  return first;
 }
 
 }  // namespace
@@ -95,8 +63,6 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
     meshes_.push_back(std::move(buffers));
   }
   instances_ = upload_buffer<Instance>(context, scene.instances, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene instances");
-  instance_triangles_ = upload_buffer<std::uint32_t>(context, first_triangles(scene), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                                     "first triangle per instance");
   const SceneParamsBlock block = make_scene_params(scene, camera, targets.extent().width, targets.extent().height);
   params_ = upload_buffer<SceneParamsBlock>(context, std::span(&block, 1), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                             "scene parameters");
@@ -112,11 +78,9 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   const shadergen::Registry& shaders = shaders_for(targets.samples());
   plain_ = create_gbuffer_pipelines(context, shaders, targets, false);
   if (targets.has_fragment_tags()) {
-    if (!context.features().geometry_shader) {
-      throw Error(
-          "the classified G-buffer's fragment tags read gl_PrimitiveID, which needs the geometryShader "
-          "feature; " +
-          context.device_name() + " lacks it (--msaa 1 needs no tags)");
+    if (!context.features().post_depth_coverage) {
+      throw Error("the classified G-buffer's coverage flags need VK_EXT_post_depth_coverage, which " +
+                  context.device_name() + " lacks (--msaa 1 needs no flags)");
     }
     tagged_ = create_gbuffer_pipelines(context, shaders, targets, true);
   }
@@ -144,14 +108,10 @@ ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Contex
                                                                     const RenderTargets& targets, bool tagged) const {
   const std::string kind = tagged ? " (tagged)" : " (plain)";
   GraphicsPipelineDesc materials = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials" + kind, tagged);
-  materials.vertex_spirv = companion_spirv(shaders, tagged ? "scene_tagged" : "scene");
+  materials.vertex_spirv = companion_spirv(shaders, "scene");
   materials.fragment_spirv = companion_spirv(shaders, tagged ? "gbuffer_tagged" : "gbuffer");
   materials.vertex_bindings = scene_bindings();
-  // The plain pass reads no first triangles: only what its vertex shader consumes (unused
-  // attributes are a validation performance warning).
-  for (const VkVertexInputAttributeDescription& a : scene_attributes()) {
-    if (tagged || a.location != kFirstTriangleLocation) materials.vertex_attributes.push_back(a);
-  }
+  materials.vertex_attributes = scene_attributes();
   materials.depth_write = true;
 
   GraphicsPipelineDesc sky = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer sky" + kind, tagged);
@@ -167,8 +127,8 @@ void ScenePasses::draw_batches(VkCommandBuffer cmd, bool textured) const {
     if (textured) {
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 1, 1, &mesh.base_colour, 0, nullptr);
     }
-    const std::array<VkBuffer, 3> buffers{mesh.vertices.handle(), instances_.handle(), instance_triangles_.handle()};
-    const std::array<VkDeviceSize, 3> offsets{0, 0, 0};
+    const std::array<VkBuffer, 2> buffers{mesh.vertices.handle(), instances_.handle()};
+    const std::array<VkDeviceSize, 2> offsets{0, 0};
     vkCmdBindVertexBuffers(cmd, 0, static_cast<std::uint32_t>(buffers.size()), buffers.data(), offsets.data());
     vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, mesh.index_count, batch.instance_count, 0, 0, batch.first_instance);

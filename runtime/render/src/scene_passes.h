@@ -26,7 +26,7 @@ class ScenePasses {
               VkDescriptorPool pool, const CommandPool& upload_pool);
 
   // Shadow map pass, then the classified path's G-buffer pass (geometry, then sky at the far
-  // plane), with the fragment tags where the targets have them.
+  // plane), with the coverage flags where the targets have them.
   void record_shadow_map(VkCommandBuffer cmd, const RenderTargets& targets) const;
   void record_gbuffer(VkCommandBuffer cmd, const RenderTargets& targets) const;
   // The baselines' plain G-buffer: what lighting reads and nothing else (no classification data),
@@ -55,7 +55,6 @@ class ScenePasses {
   std::vector<MeshBuffers> meshes_;
   std::vector<MeshBatch> batches_;
   Buffer instances_;
-  Buffer instance_triangles_;  // per instance: its first triangle (fragment tags)
   Buffer params_;
   UniqueDescriptorSetLayout set_layout_;
   UniquePipelineLayout layout_;

@@ -24,6 +24,18 @@ bool layer_available(const char* name) {
                      [&](const VkLayerProperties& layer) { return std::strcmp(layer.layerName, name) == 0; });
 }
 
+// Whether `device` offers the device extension `name`.
+bool device_extension_available(VkPhysicalDevice device, const char* name) {
+  std::uint32_t count = 0;
+  check(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr), "vkEnumerateDeviceExtensionProperties",
+        "the device's extensions");
+  std::vector<VkExtensionProperties> extensions(count);
+  check(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data()),
+        "vkEnumerateDeviceExtensionProperties", "the device's extensions");
+  return std::any_of(extensions.begin(), extensions.begin() + count,
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
 // Instance extensions offered by the loader and drivers (layer == nullptr) or by one layer.
 bool instance_extension_available(const char* layer, const char* name) {
   std::uint32_t count = 0;
@@ -202,7 +214,6 @@ void Context::create_device() {
   enable.features.depthClamp = supported.features.depthClamp;
   enable.features.fragmentStoresAndAtomics = supported.features.fragmentStoresAndAtomics;
   enable.features.largePoints = supported.features.largePoints;
-  enable.features.geometryShader = supported.features.geometryShader;
 
   features_.draw_indirect_count = enable12.drawIndirectCount == VK_TRUE;
   features_.host_query_reset = enable12.hostQueryReset == VK_TRUE;
@@ -211,7 +222,11 @@ void Context::create_device() {
   features_.depth_clamp = enable.features.depthClamp == VK_TRUE;
   features_.fragment_stores_and_atomics = enable.features.fragmentStoresAndAtomics == VK_TRUE;
   features_.large_points = enable.features.largePoints == VK_TRUE;
-  features_.geometry_shader = enable.features.geometryShader == VK_TRUE;
+  std::vector<const char*> extensions;
+  if (device_extension_available(physical_device_, VK_EXT_POST_DEPTH_COVERAGE_EXTENSION_NAME)) {
+    extensions.push_back(VK_EXT_POST_DEPTH_COVERAGE_EXTENSION_NAME);
+    features_.post_depth_coverage = true;
+  }
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -223,6 +238,8 @@ void Context::create_device() {
   info.pNext = &enable;  // features go through pNext, so pEnabledFeatures stays null
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
 
   VkDevice device = VK_NULL_HANDLE;
   check(vkCreateDevice(physical_device_, &info, nullptr, &device), "vkCreateDevice",

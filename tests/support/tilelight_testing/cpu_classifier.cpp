@@ -43,11 +43,12 @@ struct Flags {
 };
 
 // What lighting reads of a G-buffer sample: rt0[4], rt1[4], rt2[4], rt3 (surface depth); the
-// fragment tag's bits follow (GBufferSamples pads to 16).
+// coverage flags' bits follow (GBufferSamples pads to 16).
 constexpr std::size_t kStoredFloats = 13;
-constexpr std::size_t kTagFloat = 13;
-// gbuffer.glsl: GBUFFER_SHARED_TAG_BIT.
-constexpr std::uint32_t kSharedTagBit = 0x80000000u;
+constexpr std::size_t kFlagsFloat = 13;
+// gbuffer.glsl: GBUFFER_FLAG_PARTIAL, GBUFFER_FLAG_SHARED.
+constexpr std::uint32_t kPartialFlag = 1u;
+constexpr std::uint32_t kSharedFlag = 2u;
 
 // Whether two samples store the same bits in their first `count` floats. Bits, not values: the
 // classifier's question is whether the samples differ at all (a float compare would call -0 and
@@ -59,13 +60,13 @@ bool same_bits(const float* a, const float* b, std::size_t count) {
 }
 
 struct Sample {
-  const float* v;  // rt0[4], rt1[4], rt2[4], rt3, tag bits
+  const float* v;  // rt0[4], rt1[4], rt2[4], rt3, flag bits
   // gbuffer.glsl: the sky lies at surface depth 1.0, every material depth below it.
   bool is_sky() const { return v[12] == 1.0f; }
   // gbuffer.glsl: the lowest mantissa bit of the surface depth, set by the material where the
   // stored normal faces the sun.
   bool sun_bit() const { return !is_sky() && (std::bit_cast<std::uint32_t>(v[12]) & 1u) != 0; }
-  std::uint32_t tag() const { return std::bit_cast<std::uint32_t>(v[kTagFloat]); }
+  std::uint32_t flags() const { return std::bit_cast<std::uint32_t>(v[kFlagsFloat]); }
 };
 
 glm::vec4 multiply(const glm::mat4& m, const glm::vec4& v) {
@@ -191,15 +192,14 @@ class SampleClassifier {
 };
 
 Flags classify_pixel(const SampleClassifier& classifier, const GBufferSamples& g, std::uint32_t x, std::uint32_t y) {
-  // classify_tiles.comp: samples whose fragment tags differ make an edge (gbuffer.glsl: they come
-  // from different fragments); the shared bit (partial fragments of flat faces, which may store
-  // equal values) only where some sample differs from sample 0, bit for bit, in some target.
-  const std::uint32_t first_tag = Sample{g.at(x, y, 0)}.tag();
-  bool edge = false, shared = false;
-  for (std::uint32_t s = 0; s < g.samples; ++s) {
-    edge = edge || Sample{g.at(x, y, s)}.tag() != first_tag;
-    shared = shared || (Sample{g.at(x, y, s)}.tag() & kSharedTagBit) != 0;
-  }
+  // classify_tiles.comp: the partial flag on any sample makes an edge (gbuffer.glsl: a pixel
+  // whose samples come from several fragments holds a sample of a partial one); the shared flag
+  // (partial fragments with shared values: flat faces, the sky) only where some sample differs
+  // from sample 0, bit for bit, in some target.
+  std::uint32_t flags = 0;
+  for (std::uint32_t s = 0; s < g.samples; ++s) flags |= Sample{g.at(x, y, s)}.flags();
+  bool edge = (flags & kPartialFlag) != 0;
+  const bool shared = (flags & kSharedFlag) != 0;
   for (std::uint32_t s = 1; shared && !edge && s < g.samples; ++s) {
     edge = !same_bits(g.at(x, y, s), g.at(x, y, 0), kStoredFloats);
   }

@@ -114,7 +114,7 @@ struct FrameResult {
 
 // Every G-buffer sample as stored (see uber/include/gbuffer.glsl).
 struct GBufferSamples {
-  // Per sample: rt0.rgba, rt1.rgba, rt2.rgba, rt3 (surface depth), the fragment tag's bits (0
+  // Per sample: rt0.rgba, rt1.rgba, rt2.rgba, rt3 (surface depth), the coverage flags' bits (0
   // with one sample), 0, 0 (uber/classify/gbuffer_dump.comp writes them as four vec4s).
   static constexpr std::size_t kFloatsPerSample = 16;
 
@@ -128,7 +128,7 @@ struct GBufferSamples {
   }
 };
 
-// Which of the frame's two G-buffers: the classified path's (with its fragment tags) or the
+// Which of the frame's two G-buffers: the classified path's (with its coverage flags) or the
 // baselines' plain one.
 enum class GBufferKind { classified, plain };
 

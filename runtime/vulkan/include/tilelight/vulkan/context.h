@@ -41,8 +41,8 @@ struct EnabledFeatures {
   bool sample_rate_shading = false;
   bool depth_clamp = false;  // shadow-map rendering
   bool fragment_stores_and_atomics = false;
-  bool large_points = false;     // point sprites wider than 1 pixel: the tile pass's points
-  bool geometry_shader = false;  // gl_PrimitiveID in fragment shaders: the G-buffer's fragment tags
+  bool large_points = false;         // point sprites wider than 1 pixel: the tile pass's points
+  bool post_depth_coverage = false;  // VK_EXT_post_depth_coverage: the G-buffer's coverage flags
 };
 
 class Context {
