@@ -7,6 +7,8 @@
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
 
+#include <shadergen/vulkan.h>
+
 #include <array>
 #include <string>
 
@@ -32,8 +34,8 @@ const Scope kTransferRead{VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_REA
 
 // The compute registry's set 0 must be the fragment registry's: both bind LightingInterface's set.
 void check_set0_matches(const shadergen::Registry& compute, const shadergen::Registry& fragment) {
-  const auto compute0 = layout_bindings_for_set(compute.pipeline_layout, 0);
-  const auto fragment0 = layout_bindings_for_set(fragment.pipeline_layout, 0);
+  const auto compute0 = shadergen::vk::descriptor_set_layout_bindings(compute.pipeline_layout, 0);
+  const auto fragment0 = shadergen::vk::descriptor_set_layout_bindings(fragment.pipeline_layout, 0);
   bool same = compute0.size() == fragment0.size();
   for (std::size_t i = 0; same && i < compute0.size(); ++i) {
     same = compute0[i].binding == fragment0[i].binding && compute0[i].descriptorType == fragment0[i].descriptorType &&
@@ -82,15 +84,14 @@ ComputeLightingPasses::ComputeLightingPasses(const Context& context, const TileG
     : lighting_(&lighting), extent_(targets.extent()) {
   const shadergen::Registry& registry = compute_shaders_for(targets.samples());
   check_set0_matches(registry, lighting.shaders());
-  const std::vector<VkDescriptorSetLayoutBinding> set1 = layout_bindings_for_set(registry.pipeline_layout, kTargetSet);
+  const std::vector<VkDescriptorSetLayoutBinding> set1 =
+      shadergen::vk::descriptor_set_layout_bindings(registry.pipeline_layout, kTargetSet);
   if (set1.size() != 2) {
     throw Error("the compute light registry's set 1 has " + std::to_string(set1.size()) +
                 " bindings; the runtime expects the light target and the tile lists of uber/lighting.comp");
   }
   target_set_layout_ = create_descriptor_set_layout(context, set1, "compute light set 1 layout");
-  std::vector<VkPushConstantRange> push;
-  for (const shadergen::PushConstantRange& range : registry.push_constants)
-    push.push_back({range.stages, 0, range.size});
+  const std::vector<VkPushConstantRange> push = shadergen::vk::push_constant_ranges(registry);
   const std::array<VkDescriptorSetLayout, 2> sets{lighting.set0_layout(), target_set_layout_.get()};
   layout_ = create_pipeline_layout(context, sets, push, "compute light pipeline layout");
 

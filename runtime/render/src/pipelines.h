@@ -25,13 +25,6 @@ UniqueDescriptorSetLayout create_descriptor_set_layout(const Context& context,
                                                        std::span<const VkDescriptorSetLayoutBinding> bindings,
                                                        std::string_view name);
 
-// shadergen::vk::descriptor_set_layout_bindings() under its former runtime name, kept only
-// while compute_lighting_passes.cpp still calls it; new code calls shadergen's directly.
-inline std::vector<VkDescriptorSetLayoutBinding> layout_bindings_for_set(
-    std::span<const shadergen::DescriptorBinding> bindings, std::uint32_t set) {
-  return shadergen::vk::descriptor_set_layout_bindings(bindings, set);
-}
-
 UniquePipelineLayout create_pipeline_layout(const Context& context, std::span<const VkDescriptorSetLayout> set_layouts,
                                             std::span<const VkPushConstantRange> push_constants, std::string_view name);
 

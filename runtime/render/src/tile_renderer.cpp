@@ -1,19 +1,14 @@
 #include "tilelight/render/tile_renderer.h"
 
-#include "compute_lighting_passes.h"
 #include "descriptors.h"
 #include "floor_target.h"
 #include "gbuffer_upload.h"
-#include "gpu_index_build.h"
-#include "gpu_tile_lists.h"
 #include "lighting_interface.h"
-#include "lighting_passes.h"
 #include "picture_readback.h"
 #include "render_targets.h"
 #include "scene_passes.h"
 #include "tile_classification.h"
-#include "tilelight/tiles/tile_index_builder.h"
-#include "tilelight/tiles/tile_list_builder.h"
+#include "tile_light_pass.h"
 #include "tilelight/vulkan/barriers.h"
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/commands.h"
@@ -28,25 +23,11 @@
 #include <chrono>
 #include <cstddef>
 #include <cstring>
-#include <numeric>
 #include <optional>
 #include <string>
 #include <string_view>
 
 namespace tilelight {
-
-// The CPU index builder fills the mapped indirect buffer through tiles' Vulkan-free DrawRecord.
-static_assert(sizeof(DrawRecord) == sizeof(VkDrawIndexedIndirectCommand));
-static_assert(offsetof(DrawRecord, indexCount) == offsetof(VkDrawIndexedIndirectCommand, indexCount));
-static_assert(offsetof(DrawRecord, instanceCount) == offsetof(VkDrawIndexedIndirectCommand, instanceCount));
-static_assert(offsetof(DrawRecord, firstIndex) == offsetof(VkDrawIndexedIndirectCommand, firstIndex));
-static_assert(offsetof(DrawRecord, vertexOffset) == offsetof(VkDrawIndexedIndirectCommand, vertexOffset));
-static_assert(offsetof(DrawRecord, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance));
-// ... and the tile-list builder the mapped dispatch buffer through DispatchRecord.
-static_assert(sizeof(DispatchRecord) == sizeof(VkDispatchIndirectCommand));
-static_assert(offsetof(DispatchRecord, x) == offsetof(VkDispatchIndirectCommand, x));
-static_assert(offsetof(DispatchRecord, y) == offsetof(VkDispatchIndirectCommand, y));
-static_assert(offsetof(DispatchRecord, z) == offsetof(VkDispatchIndirectCommand, z));
 
 namespace {
 
@@ -184,22 +165,9 @@ struct TileRenderer::Impl {
   std::unique_ptr<ScenePasses> scene_passes;
   std::unique_ptr<LightingInterface> lighting;
   std::unique_ptr<TileClassification> classification;
-  std::unique_ptr<LightingPasses> light_passes;           // LightPass::raster
-  std::unique_ptr<ComputeLightingPasses> compute_passes;  // LightPass::compute
-  std::unique_ptr<GpuIndexBuild> gpu_build;               // raster, --path gpu
-  std::unique_ptr<GpuTileLists> gpu_lists;                // compute, --path gpu
-  std::unique_ptr<GBufferUpload> gbuffer_upload;          // replaces the scene's G-buffer when set
-  std::unique_ptr<FloorTarget> floor_target;              // Baselines::floor and all
-
-  // The CPU path's draw list: one preallocated index buffer and one indirect record per class,
-  // host-visible and coherent, written after the tile pass was submitted.
-  std::vector<std::uint8_t> class_for_raw;
-  std::array<bool, split_second::kRawCount> pruned{};
-  std::unique_ptr<TileIndexBuilder> cpu_builder;
-  Buffer cpu_indices, cpu_draws;
-  // The same for the compute light pass: the tile lists and one dispatch record per class.
-  std::unique_ptr<TileListBuilder> cpu_list_builder;
-  Buffer cpu_lists, cpu_dispatches;
+  std::unique_ptr<FloorTarget> floor_target;      // Baselines::floor and all
+  std::unique_ptr<TileLightPass> light_pass;      // LightPass x IndexPath
+  std::unique_ptr<GBufferUpload> gbuffer_upload;  // replaces the scene's G-buffer when set
 
   UniqueCommandBuffer frame_commands;  // submit A, re-recorded each frame
   UniqueCommandBuffer tile_commands;   // submit B, recorded once
@@ -224,14 +192,8 @@ struct TileRenderer::Impl {
     lighting = std::make_unique<LightingInterface>(ctx, make_lighting_params(scene, camera, opts.width, opts.height),
                                                    *targets, descriptor_pool.get());
     classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());
-    class_for_raw = draw_classes(lighting->shaders(), opts.raw_permutations);
-    pruned = pruned_raw_ids(lighting->shaders());
     if (runs_floor()) floor_target = std::make_unique<FloorTarget>(ctx, *targets);
-    if (opts.light_pass == LightPass::compute) {
-      create_compute_pass();
-    } else {
-      create_raster_pass();
-    }
+    light_pass = create_light_pass();
 
     frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
     tile_queries = TimestampQueries(ctx, "tile pass timestamps", kTileTimestamps);
@@ -246,63 +208,22 @@ struct TileRenderer::Impl {
     return options.raw_permutations ? PermutationSet::raw : PermutationSet::optimised;
   }
 
-  void create_raster_pass() {
-    const Context& ctx = context;
-    const RendererOptions& opts = options;
-    light_passes =
-        std::make_unique<LightingPasses>(ctx, grid, *targets, *lighting, permutation_set(), primitive, runs_floor());
-    const std::uint32_t classes = light_passes->class_count();
-    if (opts.path == IndexPath::cpu) {
-      cpu_builder = std::make_unique<TileIndexBuilder>(grid, class_for_raw, pruned, classes, primitive);
-      cpu_indices = Buffer(ctx, {std::max<VkDeviceSize>(grid.max_index_count(), 6) * sizeof(std::uint32_t),
-                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUse::HostUpload, "tile indices (host-built)"});
-      cpu_draws = Buffer(ctx, {classes * sizeof(VkDrawIndexedIndirectCommand), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
-                               MemoryUse::HostUpload, "indirect draws (host-patched)"});
-      clear_draws();
-    } else {
-      gpu_build =
-          std::make_unique<GpuIndexBuild>(ctx, lighting->shaders(), grid, class_for_raw, pruned, classes, opts.coalesce,
-                                          primitive, classification->device_ids(), descriptor_pool.get());
-    }
+  // The builders keep what they need of the class map and the pruned IDs: both die here.
+  std::unique_ptr<TileLightPass> create_light_pass() const {
+    const std::vector<std::uint8_t> class_for_raw = draw_classes(lighting->shaders(), options.raw_permutations);
+    const std::array<bool, split_second::kRawCount> pruned = pruned_raw_ids(lighting->shaders());
+    return make_tile_light_pass(
+        options.light_pass,
+        {context, grid, *targets, *lighting, permutation_set(), options.path, options.coalesce, primitive,
+         class_for_raw, pruned, classification->device_ids(), descriptor_pool.get(), floor_target.get()});
   }
 
-  // The compute light pass reads per-class tile lists: written by the host (CPU path, into
-  // host-visible coherent memory, after the tile pass was submitted) or by the GPU build.
-  void create_compute_pass() {
-    const Context& ctx = context;
-    const std::uint32_t classes = options.raw_permutations ? kRawClassCount : kOptimisedClassCount;
-    const std::uint32_t per_group = ComputeLightingPasses::tiles_per_workgroup(grid.tile_size);
-    const Buffer* lists = nullptr;
-    if (options.path == IndexPath::cpu) {
-      cpu_list_builder = std::make_unique<TileListBuilder>(grid, class_for_raw, pruned, classes, per_group);
-      cpu_lists = Buffer(ctx, {(kTileListHeaderWords + std::size_t{grid.tile_count()}) * sizeof(std::uint32_t),
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostUpload, "tile lists (host-built)"});
-      cpu_dispatches = Buffer(ctx, {classes * sizeof(VkDispatchIndirectCommand), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
-                                    MemoryUse::HostUpload, "indirect dispatches (host-patched)"});
-      clear_draws();
-      lists = &cpu_lists;
-    } else {
-      gpu_lists =
-          std::make_unique<GpuTileLists>(ctx, compute_shaders_for(samples), grid, class_for_raw, pruned, classes,
-                                         per_group, classification->device_ids(), descriptor_pool.get());
-      lists = &gpu_lists->lists();
-    }
-    compute_passes = std::make_unique<ComputeLightingPasses>(ctx, grid, *targets, *lighting, permutation_set(),
-                                                             descriptor_pool.get(), *lists, floor_target.get());
-  }
-
-  std::uint32_t class_count() const {
-    return compute_passes ? compute_passes->class_count() : light_passes->class_count();
-  }
+  std::uint32_t class_count() const { return light_pass->class_count(); }
 
   bool runs_naive() const { return tilelight::runs_naive(options.baselines); }
   bool runs_dynamic() const { return tilelight::runs_dynamic(options.baselines); }
   bool runs_floor() const { return tilelight::runs_floor(options.baselines); }
   bool runs_any_baseline() const { return tilelight::runs_any_baseline(options.baselines); }
-
-  const Buffer& tile_indices() const { return gpu_build ? gpu_build->indices() : cpu_indices; }
-  const Buffer& tile_draws() const { return gpu_build ? gpu_build->draws() : cpu_draws; }
-  const Buffer& tile_dispatches() const { return gpu_lists ? gpu_lists->dispatches() : cpu_dispatches; }
 
   // Recorded once, before any classification: the draws it holds are patched every frame.
   // Recorded again when the G-buffer override is set (the plain pass becomes the upload).
@@ -311,13 +232,9 @@ struct TileRenderer::Impl {
     check(vkResetCommandBuffer(cmd, 0), "vkResetCommandBuffer", "tile pass (submit B)");
     begin_commands(cmd, "tile pass", 0);
     tile_queries.reset(cmd);
-    if (compute_passes) compute_passes->record_prepare(cmd, *targets);
+    light_pass->record_prepare(cmd, *targets);
     tile_queries.write(cmd, std::string(kTileStart));
-    if (compute_passes) {
-      compute_passes->record_tiled(cmd, *targets, tile_dispatches());
-    } else {
-      light_passes->record_tiled(cmd, *targets, tile_indices(), tile_draws());
-    }
+    light_pass->record_tiled(cmd, *targets);
     tile_queries.write(cmd, std::string(kTiled));
     if (runs_any_baseline()) record_baselines(cmd);
     end_commands(cmd, "tile pass");
@@ -330,16 +247,15 @@ struct TileRenderer::Impl {
     record_plain_gbuffer(cmd);
     tile_queries.write(cmd, std::string(kGBufferPlain));
     if (runs_naive()) {
-      compute_passes ? compute_passes->record_naive(cmd, *targets) : light_passes->record_naive(cmd, *targets);
+      light_pass->record_naive(cmd, *targets);
       tile_queries.write(cmd, std::string(kNaive));
     }
     if (runs_dynamic()) {
-      compute_passes ? compute_passes->record_dynamic(cmd, *targets) : light_passes->record_dynamic(cmd, *targets);
+      light_pass->record_dynamic(cmd, *targets);
       tile_queries.write(cmd, std::string(kDynamic));
     }
     if (runs_floor()) {
-      compute_passes ? compute_passes->record_floor(cmd, *floor_target)
-                     : light_passes->record_floor(cmd, *targets, *floor_target);
+      light_pass->record_floor(cmd, *targets, *floor_target);
       tile_queries.write(cmd, std::string(kFloor));
     }
   }
@@ -373,92 +289,21 @@ struct TileRenderer::Impl {
     frame_queries.write(cmd, "gbuffer");
     classification->record(cmd);
     frame_queries.write(cmd, "classified");
-    if (gpu_build) {
-      gpu_build->record(cmd);
-      frame_queries.write(cmd, "built");
-    }
-    if (gpu_lists) {
-      gpu_lists->record(cmd);
+    if (!light_pass->host_builds()) {
+      light_pass->record_build(cmd);
       frame_queries.write(cmd, "built");
     }
     end_commands(cmd, "frame");
   }
 
-  // Every CPU-path draw or dispatch does nothing: the state before a build, and after a failed one.
-  void clear_draws() {
-    if (cpu_draws.handle() != VK_NULL_HANDLE) {
-      for (DrawRecord& d : cpu_draws.as<DrawRecord>()) d = {0, 1, 0, 0, 0};
-    }
-    if (cpu_dispatches.handle() != VK_NULL_HANDLE) {
-      for (DispatchRecord& d : cpu_dispatches.as<DispatchRecord>()) d = {0, 1, 1};
-    }
-  }
-
   // The host's part of the CPU path: wait for classification, build, patch, signal.
-  FrameStats build_and_patch(std::uint64_t classified_value, std::uint64_t patched_value, double& build_ms) {
+  void build_and_patch(std::uint64_t classified_value, std::uint64_t patched_value, double& build_ms) {
     timeline.wait(classified_value, "classification", options.timeout);
     const auto start = std::chrono::steady_clock::now();
-    if (cpu_list_builder) {
-      const TileListStats built = cpu_list_builder->build(classification->host_ids(), cpu_lists.as<std::uint32_t>(),
-                                                          cpu_dispatches.as<DispatchRecord>());
-      build_ms = milliseconds_since(start);
-      if (before_host_signal) before_host_signal();
-      timeline.signal(patched_value);
-      return list_stats(std::span(built.class_tiles).first(class_count()));
-    }
-    const IndexBuildStats built = cpu_builder->build(classification->host_ids(), options.coalesce,
-                                                     cpu_indices.as<std::uint32_t>(), cpu_draws.as<DrawRecord>());
+    light_pass->build_on_host(classification->host_ids());
     build_ms = milliseconds_since(start);
     if (before_host_signal) before_host_signal();
     timeline.signal(patched_value);
-    FrameStats stats;
-    // One entry per draw class, like the GPU path's counts.
-    const std::size_t classes = class_count();
-    stats.class_tiles.assign(built.class_tiles.begin(), built.class_tiles.begin() + classes);
-    stats.class_rectangles.assign(built.rectangles.begin(), built.rectangles.begin() + classes);
-    stats.class_primitives.assign(built.primitives.begin(), built.primitives.begin() + classes);
-    stats.primitives_uncoalesced = built.primitives_uncoalesced;
-    stats.primitives_coalesced = built.primitives_coalesced;
-    stats.rectangles = built.rectangles_coalesced;
-    return stats;
-  }
-
-  // The compute tile pass's figures: tiles per class, and the workgroups that shade them.
-  FrameStats list_stats(std::span<const std::uint32_t> class_tiles) const {
-    const std::uint32_t per_group = ComputeLightingPasses::tiles_per_workgroup(grid.tile_size);
-    FrameStats stats;
-    stats.class_tiles.assign(class_tiles.begin(), class_tiles.end());
-    stats.class_rectangles.assign(class_tiles.size(), 0);
-    for (const std::uint32_t tiles : class_tiles) stats.class_primitives.push_back((tiles + per_group - 1) / per_group);
-    stats.primitives_uncoalesced = std::accumulate(class_tiles.begin(), class_tiles.end(), 0u);
-    stats.primitives_coalesced = std::accumulate(stats.class_primitives.begin(), stats.class_primitives.end(), 0u);
-    return stats;
-  }
-
-  FrameStats gpu_list_stats() const {
-    const GpuTileLists::Counts counts = gpu_lists->read_counts();
-    if (counts.invalid_tiles != 0) {
-      throw Error(std::to_string(counts.invalid_tiles) +
-                  " tiles were classified with an impossible raw ID (GPU-driven tile-list build)");
-    }
-    return list_stats(counts.tiles);
-  }
-
-  FrameStats gpu_stats() const {
-    if (gpu_lists) return gpu_list_stats();
-    const GpuIndexBuild::Counts counts = gpu_build->read_counts();
-    if (counts.invalid_tiles != 0) {
-      throw Error(std::to_string(counts.invalid_tiles) +
-                  " tiles were classified with an impossible raw ID (GPU-driven index build)");
-    }
-    FrameStats stats;
-    stats.class_tiles = counts.tiles;
-    stats.class_rectangles = counts.rectangles;
-    stats.class_primitives = counts.primitives;
-    stats.primitives_uncoalesced = std::accumulate(counts.tiles.begin(), counts.tiles.end(), 0u);
-    stats.primitives_coalesced = std::accumulate(counts.primitives.begin(), counts.primitives.end(), 0u);
-    stats.rectangles = std::accumulate(counts.rectangles.begin(), counts.rectangles.end(), 0u);
-    return stats;
   }
 
   FrameResult render_frame() {
@@ -474,12 +319,12 @@ struct TileRenderer::Impl {
 
     const VkCommandBuffer b = tile_commands.get();
     FrameResult result;
-    if (cpu_builder || cpu_list_builder) {
+    if (light_pass->host_builds()) {
       // Submitted before the host has built anything: the GPU holds it until the signal.
       const SemaphoreWait patched{timeline.handle(), patched_value, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT};
       submit(context, {std::span(&b, 1), std::span(&patched, 1), {}, frame_done.handle()}, "tile pass (submit B)");
       try {
-        result.stats = build_and_patch(classified_value, patched_value, result.timings.index_build_cpu);
+        build_and_patch(classified_value, patched_value, result.timings.index_build_cpu);
       } catch (...) {
         release_blocked_tile_pass(classified_value, patched_value);
         throw;
@@ -488,7 +333,7 @@ struct TileRenderer::Impl {
       submit(context, {std::span(&b, 1), {}, {}, frame_done.handle()}, "tile pass (submit B)");
     }
     frame_done.wait("the tile and baseline light passes", options.timeout);
-    if (gpu_build || gpu_lists) result.stats = gpu_stats();
+    result.stats = light_pass->stats();
     read_timings(result.timings);
     return result;
   }
@@ -502,7 +347,7 @@ struct TileRenderer::Impl {
   // and the context's teardown reports it (and leaks the device rather than destroy it in use).
   void release_blocked_tile_pass(std::uint64_t classified_value, std::uint64_t patched_value) noexcept {
     try {
-      clear_draws();
+      light_pass->clear_draws();
       timeline.wait(classified_value, "classification, before releasing the tile pass",
                     std::max(options.timeout, kReleaseGrace));
       if (timeline.value() < patched_value) timeline.signal(patched_value);
@@ -520,7 +365,7 @@ struct TileRenderer::Impl {
     t.shadow_map = between(frame_stamps, 0);
     t.gbuffer = between(frame_stamps, 1);
     t.classification = between(frame_stamps, 2);
-    if (gpu_build || gpu_lists) t.index_build_gpu = between(frame_stamps, 3);
+    if (!light_pass->host_builds()) t.index_build_gpu = between(frame_stamps, 3);
     t.tiled_light = pass_ms(tile_stamps, kTiled);
     // End to end across both submissions: the CPU path's wait for the host is part of it.
     t.frame_classified = tile_queries.span_ms(frame_stamps.front(), tile_stamps[index_of(tile_stamps, kTiled)]);
@@ -563,9 +408,7 @@ const TileGrid& TileRenderer::grid() const { return impl_->grid; }
 std::uint32_t TileRenderer::msaa_samples() const { return static_cast<std::uint32_t>(impl_->samples); }
 std::uint32_t TileRenderer::draw_class_count() const { return impl_->class_count(); }
 TilePrimitive TileRenderer::tile_primitive() const { return impl_->primitive; }
-std::uint32_t TileRenderer::pipeline_count() const {
-  return impl_->compute_passes ? impl_->compute_passes->pipeline_count() : impl_->light_passes->pipeline_count();
-}
+std::uint32_t TileRenderer::pipeline_count() const { return impl_->light_pass->pipeline_count(); }
 LightPass TileRenderer::light_pass() const { return impl_->options.light_pass; }
 const LightingParamsBlock& TileRenderer::lighting_params() const { return impl_->lighting->params(); }
 
