@@ -148,13 +148,8 @@ quick() {
 }
 
 build_release() {
-  launcher=""
-  if command -v ccache >/dev/null; then
-    launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
-    CCACHE_BASEDIR=$(pwd)
-    CCACHE_NOHASHDIR=1
-    export CCACHE_BASEDIR CCACHE_NOHASHDIR
-  fi
+  # shellcheck source=scripts/ccache-launcher.sh
+  . scripts/ccache-launcher.sh
   # The release preset builds the benchmarks too (SHADERGEN_BUILD_BENCH defaults on); said
   # explicitly so that a cache configured otherwise still builds tilelight_sweep.
   # shellcheck disable=SC2086 # $launcher is empty or one word

@@ -17,17 +17,9 @@ case "${1:-}" in
 esac
 
 ./scripts/install-deps.sh --tests
-# ccache (installed by install-deps --tests) when it is there: a cold run gains nothing, a
-# repeat run on the same machine recompiles only what changed. Paths under this checkout are
-# hashed relative to it (CCACHE_BASEDIR, CCACHE_NOHASHDIR), so a fresh clone anywhere on the
-# machine hits what another clone compiled; scripts/lint.sh's clang-tidy cache does the same.
-launcher=""
-if command -v ccache >/dev/null; then
-  launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
-  CCACHE_BASEDIR=$(pwd)
-  CCACHE_NOHASHDIR=1
-  export CCACHE_BASEDIR CCACHE_NOHASHDIR
-fi
+# ccache when it is there (scripts/ccache-launcher.sh sets $launcher).
+# shellcheck source=scripts/ccache-launcher.sh
+. scripts/ccache-launcher.sh
 
 # The presets (CMakePresets.json) build in build/tests and build/sanitize. Tests pass their own
 # scratch cache folders; the presets' SHADERGEN_CACHE_DIR keeps the build-time shadergen runs of

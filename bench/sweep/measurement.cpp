@@ -57,18 +57,6 @@ double Measurement::speedup_over_dynamic() const {
   return classified > 0 ? timings.dynamic_light / classified : 0.0;
 }
 
-const char* to_string(Baselines baselines) {
-  switch (baselines) {
-    case Baselines::none: return "none";
-    case Baselines::naive: return "naive";
-    case Baselines::dynamic: return "dynamic";
-    case Baselines::both: return "both";
-    case Baselines::floor: return "floor";
-    case Baselines::all: return "all";
-  }
-  return "?";
-}
-
 app::MedianTimings all_medians(const std::vector<FrameTimings>& frames) {
   app::MedianTimings m = app::median_timings(frames);
   for (double FrameTimings::*field :

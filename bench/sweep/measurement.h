@@ -43,9 +43,6 @@ struct Measurement {
   app::FrameRatios ratios() const { return app::frame_ratios(frame_timings); }
 };
 
-// "none", "naive", "dynamic", "both", "floor", "all" (as tilelight's --baseline spells them).
-const char* to_string(Baselines baselines);
-
 // Medians of every field of `frames` (precondition: not empty). app::median_timings() takes the
 // stages; the whole frames, the plain G-buffer and the floor are taken here as well, so the sweep
 // reports them whichever fields that function covers.

@@ -19,21 +19,9 @@ namespace {
 
 using Combination = std::tuple<Baselines, LightPass, IndexPath>;
 
-const char* name_of(Baselines b) {
-  switch (b) {
-    case Baselines::none: return "none";
-    case Baselines::naive: return "naive";
-    case Baselines::dynamic: return "dynamic";
-    case Baselines::both: return "both";
-    case Baselines::floor: return "floor";
-    case Baselines::all: return "all";
-  }
-  return "?";
-}
-
 std::string combination_name(const ::testing::TestParamInfo<Combination>& info) {
   const auto& [baselines, light_pass, path] = info.param;
-  return std::string(name_of(baselines)) + "_" + to_string(light_pass) + (path == IndexPath::gpu ? "_gpu" : "_cpu");
+  return std::string(to_string(baselines)) + "_" + to_string(light_pass) + (path == IndexPath::gpu ? "_gpu" : "_cpu");
 }
 
 RendererOptions options_for(const Combination& c) {

@@ -130,11 +130,14 @@ TEST_F(SplitSecondBuild, RawEntriesCarryTheLookupTable) {
   }
 }
 
+// Set 0 of lighting_params.glsl: the parameters, RT0..RT3, the shadow map and the coverage
+// flags (which the MSAA_EDGE permutations read).
 TEST_F(SplitSecondBuild, AllPermutationsShareOnePipelineLayout) {
   const auto& bindings = (*manifest_)["pipeline_layout"]["bindings"];
-  ASSERT_EQ(bindings.size(), 6u);
+  ASSERT_EQ(bindings.size(), 7u);
   EXPECT_EQ(bindings[0]["kind"], "uniform_buffer");
-  for (std::size_t i = 0; i < 6; ++i) {
+  EXPECT_EQ(bindings[6]["name"], "gbuffer_coverage_flags");
+  for (std::size_t i = 0; i < 7; ++i) {
     EXPECT_EQ(bindings[i]["set"], 0);
     EXPECT_EQ(bindings[i]["binding"], i);
     if (i > 0) {

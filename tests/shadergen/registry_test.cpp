@@ -61,9 +61,10 @@ TEST(GeneratedRegistry, CompanionAndLayout) {
   EXPECT_EQ(tile->shader.reflection.inputs[0].components, 2u);
   EXPECT_EQ(tile->shader.reflection.push_constant_size, 8u);
   EXPECT_EQ(r.companion("nope"), nullptr);
-  ASSERT_EQ(r.pipeline_layout.size(), 6u);
+  ASSERT_EQ(r.pipeline_layout.size(), 7u);
   EXPECT_EQ(r.pipeline_layout[0].kind, shadergen::DescriptorKind::uniform_buffer);
   EXPECT_EQ(r.pipeline_layout[5].name, "shadow_map");
+  EXPECT_EQ(r.pipeline_layout[6].name, "gbuffer_coverage_flags");
   ASSERT_EQ(r.push_constants.size(), 1u);
   EXPECT_EQ(r.push_constants[0].stages, static_cast<std::uint32_t>(shadergen::Stage::vertex));
 }

@@ -62,6 +62,19 @@ constexpr bool runs_dynamic(Baselines b) {
 constexpr bool runs_floor(Baselines b) { return b == Baselines::floor || b == Baselines::all; }
 constexpr bool runs_any_baseline(Baselines b) { return b != Baselines::none; }
 
+// "none" | "naive" | "dynamic" | "both" | "floor" | "all", as tilelight's --baseline spells it.
+constexpr const char* to_string(Baselines b) {
+  switch (b) {
+    case Baselines::none: return "none";
+    case Baselines::naive: return "naive";
+    case Baselines::dynamic: return "dynamic";
+    case Baselines::both: return "both";
+    case Baselines::floor: return "floor";
+    case Baselines::all: return "all";
+  }
+  return "?";
+}
+
 struct RendererOptions {
   std::uint32_t width = 1280;
   std::uint32_t height = 720;
