@@ -69,12 +69,14 @@ TEST_P(PlainGBuffer, StoresWhatTheClassifiedOneStoresInEveryTargetLightingReads)
   EXPECT_EQ(m.samples, 0u) << m.first;
 }
 
+std::string case_name(const ::testing::TestParamInfo<Case>& param_info) {
+  return std::get<0>(param_info.param) + (std::get<1>(param_info.param) == 1 ? "_1x" : "_msaa");
+}
+
 INSTANTIATE_TEST_SUITE_P(Cameras, PlainGBuffer,
                          ::testing::Values(Case{"default", 0}, Case{"street", 0}, Case{"closeup", 0}, Case{"low", 1},
                                            Case{"default", 1}),
-                         [](const ::testing::TestParamInfo<Case>& info) {
-                           return std::get<0>(info.param) + (std::get<1>(info.param) == 1 ? "_1x" : "_msaa");
-                         });
+                         case_name);
 
 // SPIR-V: OpDecorate (opcode 71) <id> BuiltIn (11) FragDepth (22).
 bool writes_frag_depth(std::span<const std::uint32_t> words) {
