@@ -97,7 +97,7 @@ case "$loader" in
     tools_lib=$work/tools/usr/lib/x86_64-linux-gnu
     if [ -d "$tools_lib" ]; then LD_LIBRARY_PATH=$tools_lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}; fi
     if [ -d "$work/tools/usr/bin" ]; then PATH=$work/tools/usr/bin:$PATH; fi
-    # Without it the loader finds an ICD file that fails ("Found no drivers"): ../shared/GPU.md.
+    # Without it the loader picks an ICD file there that fails ("Found no drivers").
     nvidia_icd=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
     if [ -z "${VK_DRIVER_FILES:-}" ] && [ -e "$nvidia_icd" ]; then VK_DRIVER_FILES=$nvidia_icd; fi
     [ -n "${VK_DRIVER_FILES:-}" ] || log "warning: no $nvidia_icd and VK_DRIVER_FILES unset; the loader searches itself"

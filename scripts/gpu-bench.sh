@@ -6,7 +6,7 @@ set -eu
 cd "$(dirname "$0")/.."
 
 pack_dir=gpu-pack
-# The Vulkan loader and GL dispatch, extracted into / on the device (../shared/GPU.md), and what
+# The Vulkan loader and GL dispatch, extracted into / on the device (it has no loader), and what
 # vulkaninfo needs beyond them, extracted into a scratch folder there (see scripts/gpu-bench-device.sh).
 root_debs="libvulkan1 libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2"
 tool_debs="vulkan-tools libxext6 libx11-6 libxcb1 libwayland-client0 libxau6 libxdmcp6 libbsd0 libmd0"

@@ -92,7 +92,7 @@ bool writes_frag_depth(std::span<const std::uint32_t> words) {
 TEST(SceneShaders, NoGBufferShaderWritesFragDepth) {
   for (const shadergen::Registry* registry : {&split_second::registry(), &split_second_1x::registry()}) {
     int checked = 0;
-    for (const char* name : {"gbuffer", "gbuffer_tagged", "sky", "sky_tagged"}) {
+    for (const char* name : {"gbuffer", "gbuffer_flagged", "sky", "sky_flagged"}) {
       const shadergen::CompanionShader* shader = registry->companion(name);
       ASSERT_NE(shader, nullptr) << name;
       EXPECT_FALSE(writes_frag_depth(shader->shader.spirv)) << registry->name << " " << name;

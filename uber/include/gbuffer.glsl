@@ -18,7 +18,7 @@
 //
 // RT0..RT3 are what lighting reads; the baselines' "plain" G-buffer writes them
 // and nothing else, bit for bit as the classified G-buffer does (one material
-// shader, compiled with and without GBUFFER_FRAGMENT_TAGS). RT4 is the classified
+// shader, compiled with and without GBUFFER_COVERAGE_FLAGS). RT4 is the classified
 // path's only extra: classification reads it to find the pixels whose samples
 // may differ. Motion byte: bits 0..6 are the motion ID (0 = sky), bit 7 unused.
 //

@@ -1,10 +1,10 @@
 #version 450
 // gbuffer.frag -- the material shader: writes the Table 4.1 G-buffer through gbuffer.glsl,
 // with prelit (ambient) lighting already applied, as in Split/Second. Compiled twice: plain (the
-// baselines' G-buffer: RT0..RT3, what lighting reads) and with GBUFFER_FRAGMENT_TAGS (the
+// baselines' G-buffer: RT0..RT3, what lighting reads) and with GBUFFER_COVERAGE_FLAGS (the
 // classified path's: the same RT0..RT3 plus RT4, the coverage flags classification reads).
 #extension GL_GOOGLE_include_directive : require
-#ifdef GBUFFER_FRAGMENT_TAGS
+#ifdef GBUFFER_COVERAGE_FLAGS
 // The coverage flags need the samples this fragment won in the depth test (gbuffer.glsl).
 #extension GL_ARB_post_depth_coverage : require
 layout(early_fragment_tests) in;
@@ -30,7 +30,7 @@ layout(location = 0) out vec4 out_rt0;
 layout(location = 1) out vec4 out_rt1;
 layout(location = 2) out vec4 out_rt2;
 layout(location = 3) out float out_rt3;
-#ifdef GBUFFER_FRAGMENT_TAGS
+#ifdef GBUFFER_COVERAGE_FLAGS
 layout(location = 4) out uint out_flags;
 #endif
 
@@ -80,7 +80,7 @@ void main()
     out_rt2 = gbuffer_encode_rt2(albedo * ambient, in_material.x);
     out_rt3 = gbuffer_encode_depth(surface_depth(flat_face),
                                    gbuffer_faces_sun(stored_normal, scene.sun_direction.xyz));
-#ifdef GBUFFER_FRAGMENT_TAGS
+#ifdef GBUFFER_COVERAGE_FLAGS
     out_flags = gbuffer_encode_flags(gbuffer_fragment_is_partial(), flat_face);
 #endif
 }

@@ -3,7 +3,7 @@
 // cleared depth of 1, so it fills exactly the pixels nothing else covered. Its final colour
 // (gradient plus sun disc) goes to the prelit target; motion ID 0 marks it as sky.
 #extension GL_GOOGLE_include_directive : require
-#ifdef GBUFFER_FRAGMENT_TAGS
+#ifdef GBUFFER_COVERAGE_FLAGS
 #extension GL_ARB_post_depth_coverage : require
 layout(early_fragment_tests) in;
 layout(post_depth_coverage) in;
@@ -16,7 +16,7 @@ layout(location = 0) out vec4 out_rt0;
 layout(location = 1) out vec4 out_rt1;
 layout(location = 2) out vec4 out_rt2;
 layout(location = 3) out float out_rt3;
-#ifdef GBUFFER_FRAGMENT_TAGS
+#ifdef GBUFFER_COVERAGE_FLAGS
 layout(location = 4) out uint out_flags;
 #endif
 
@@ -34,7 +34,7 @@ void main()
     out_rt1 = gbuffer_encode_sky_rt1();
     out_rt2 = gbuffer_encode_rt2(colour, 0.0);
     out_rt3 = GBUFFER_SKY_DEPTH;
-#ifdef GBUFFER_FRAGMENT_TAGS
+#ifdef GBUFFER_COVERAGE_FLAGS
     // Shared values: every sky fragment of a pixel stores the same values (they depend on the
     // pixel centre only). The driver may split the full-screen triangle, and flagging its parts
     // as partial would make sky tiles MSAA edges for nothing; where geometry covers the rest of

@@ -55,7 +55,7 @@ UniquePipeline create_light_pipeline(const Context& context, VkPipelineLayout la
   const SpecConstants constants = SpecConstants{}
                                       .set(kTileSizeConstant, tile_size)
                                       .set(kFullFrameConstant, full_frame)
-                                      .set(kTaggedConstant, !full_frame && targets.has_fragment_tags())
+                                      .set(kTaggedConstant, !full_frame && targets.has_coverage_flags())
                                       .set(kSamplesConstant, static_cast<std::uint32_t>(targets.samples()));
   return create_compute_pipeline(context, layout, spirv, constants, name);
 }

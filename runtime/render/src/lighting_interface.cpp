@@ -58,7 +58,7 @@ LightingInterface::LightingInterface(const Context& context, const LightingParam
   // Every stage that could read set 0: the merged layout names the fragment stage; the
   // compute passes share the same set, so widen the stage mask.
   std::vector<VkDescriptorSetLayoutBinding> bindings = set0_bindings(registry);
-  const std::size_t expected = 1 + kImageBindings.size() + (targets.has_fragment_tags() ? 1 : 0);
+  const std::size_t expected = 1 + kImageBindings.size() + (targets.has_coverage_flags() ? 1 : 0);
   if (bindings.size() != expected) {
     throw Error("the shader registry's set 0 has " + std::to_string(bindings.size()) +
                 " bindings; the runtime expects the " + std::to_string(expected) + " of lighting_params.glsl");
@@ -85,8 +85,8 @@ LightingInterface::LightingInterface(const Context& context, const LightingParam
     write_image_descriptor(context, set0_, kImageBindings[i], sampler_.handle(), images[i]->view(),
                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   }
-  if (targets.has_fragment_tags()) {
-    write_image_descriptor(context, set0_, kFragmentTagsBinding, sampler_.handle(), targets.fragment_tags().view(),
+  if (targets.has_coverage_flags()) {
+    write_image_descriptor(context, set0_, kFragmentTagsBinding, sampler_.handle(), targets.coverage_flags().view(),
                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   }
 }

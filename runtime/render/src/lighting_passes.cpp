@@ -27,7 +27,7 @@ UniquePipeline create_light_pipeline(const Context& context, const RenderTargets
   desc.layout = lighting.lighting_layout();
   desc.render_pass = targets.light_pass();
   desc.fragment_spirv = fragment;
-  desc.fragment_constants.set(kTaggedConstant, tile_pass && targets.has_fragment_tags());
+  desc.fragment_constants.set(kTaggedConstant, tile_pass && targets.has_coverage_flags());
   if (primitive == TilePrimitive::points) {
     // tile_point.vert computes each point from its index; binding 1 holds the grid's shape.
     desc.vertex_spirv = companion_spirv(lighting.shaders(), "tile_point");

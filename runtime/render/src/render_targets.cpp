@@ -102,8 +102,8 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   rt1_ = gbuffer_image(context, extent, kGBufferRt1Format, samples, "G-buffer RT1 (normal, motion ID)");
   rt2_ = gbuffer_image(context, extent, kGBufferRt2Format, samples, "G-buffer RT2 (prelit, power)");
   rt3_ = gbuffer_image(context, extent, kGBufferRt3Format, samples, "G-buffer RT3 (surface depth)");
-  if (has_fragment_tags())
-    tags_ = gbuffer_image(context, extent, kGBufferTagFormat, samples, "G-buffer RT4 (coverage flags)");
+  if (has_coverage_flags())
+    flags_ = gbuffer_image(context, extent, kGBufferTagFormat, samples, "G-buffer RT4 (coverage flags)");
   // Only the depth test reads it, within the pass: nothing samples it, nothing keeps it.
   depth_ = Image(context, {extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, samples,
                            VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth"});
@@ -146,18 +146,18 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   dynamic_framebuffer_ = light_framebuffer(dynamic_, "light target (dynamic)");
 }
 
-// RT0..RT3 (+ RT4 when tagged) and the depth, whose contents end with the pass: every pass that
+// RT0..RT3 (+ RT4 when with_flags) and the depth, whose contents end with the pass: every pass that
 // reads the G-buffer reads the colour targets.
 void RenderTargets::create_gbuffer_passes(const Context& context) {
   const VkImageLayout read_only = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  auto create = [&](bool tagged, std::string_view name) {
+  auto create = [&](bool with_flags, std::string_view name) {
     std::vector<VkAttachmentDescription> attachments{
         attachment(kGBufferRt0Format, samples_, read_only), attachment(kGBufferRt1Format, samples_, read_only),
         attachment(kGBufferRt2Format, samples_, read_only), attachment(kGBufferRt3Format, samples_, read_only)};
     std::vector<VkImageView> views{rt0_.view(), rt1_.view(), rt2_.view(), rt3_.view()};
-    if (tagged) {
+    if (with_flags) {
       attachments.push_back(attachment(kGBufferTagFormat, samples_, read_only));
-      views.push_back(tags_.view());
+      views.push_back(flags_.view());
     }
     attachments.push_back(attachment(kDepthFormat, samples_, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                                      VK_ATTACHMENT_STORE_OP_DONT_CARE));
@@ -168,33 +168,33 @@ void RenderTargets::create_gbuffer_passes(const Context& context) {
     return std::pair{std::move(pass), std::move(framebuffer)};
   };
   std::tie(plain_gbuffer_pass_, plain_gbuffer_framebuffer_) = create(false, "G-buffer pass (plain)");
-  if (has_fragment_tags()) std::tie(gbuffer_pass_, gbuffer_framebuffer_) = create(true, "G-buffer pass (tagged)");
+  if (has_coverage_flags()) std::tie(gbuffer_pass_, gbuffer_framebuffer_) = create(true, "G-buffer pass (classified)");
 }
 
 GraphicsPipelineDesc RenderTargets::gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name,
-                                                          bool tagged) const {
+                                                          bool with_flags) const {
   GraphicsPipelineDesc desc;
   desc.layout = layout;
-  desc.render_pass = gbuffer_pass(tagged);
+  desc.render_pass = gbuffer_pass(with_flags);
   desc.samples = samples_;
   desc.fragment_constants.set(0, static_cast<std::uint32_t>(samples_));  // GBUFFER_SAMPLES
-  desc.color_attachments = gbuffer_colour_targets(tagged);
+  desc.color_attachments = gbuffer_colour_targets(with_flags);
   desc.depth_test = true;
   desc.name = std::move(name);
   return desc;
 }
 
-void RenderTargets::begin_gbuffer_pass(VkCommandBuffer cmd, bool tagged) const {
+void RenderTargets::begin_gbuffer_pass(VkCommandBuffer cmd, bool with_flags) const {
   // RT1 cleared to motion ID 0 and RT3 to 1.0 read as sky; the sky pass (or the upload)
   // overwrites every pixel anyway, so the colour clear values only matter for debugging.
-  const bool with_tags = tagged && has_fragment_tags();
-  const std::uint32_t colours = gbuffer_colour_targets(tagged);
+  const bool flagged = with_flags && has_coverage_flags();
+  const std::uint32_t colours = gbuffer_colour_targets(with_flags);
   std::array<VkClearValue, 6> clears{};
   clears[3].color.float32[0] = 1.0f;
   clears[colours].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = gbuffer_pass(tagged);
-  begin.framebuffer = with_tags ? gbuffer_framebuffer_.get() : plain_gbuffer_framebuffer_.get();
+  begin.renderPass = gbuffer_pass(with_flags);
+  begin.framebuffer = flagged ? gbuffer_framebuffer_.get() : plain_gbuffer_framebuffer_.get();
   begin.renderArea = {{0, 0}, extent_};
   begin.clearValueCount = colours + 1;
   begin.pClearValues = clears.data();

@@ -47,17 +47,17 @@ class RenderTargets {
   const Image& rt1() const { return rt1_; }
   const Image& rt2() const { return rt2_; }
   const Image& rt3() const { return rt3_; }
-  // RT4; precondition: has_fragment_tags() (2 or more samples).
-  const Image& fragment_tags() const { return tags_; }
-  bool has_fragment_tags() const { return samples_ != VK_SAMPLE_COUNT_1_BIT; }
+  // RT4; precondition: has_coverage_flags() (2 or more samples).
+  const Image& coverage_flags() const { return flags_; }
+  bool has_coverage_flags() const { return samples_ != VK_SAMPLE_COUNT_1_BIT; }
   const Image& shadow_map() const { return shadow_map_; }
   const Image& classified() const { return classified_; }
   const Image& naive() const { return naive_; }
   const Image& dynamic() const { return dynamic_; }
 
-  // The classified G-buffer's render pass (`tagged`), or the plain one's; the same with one sample.
-  VkRenderPass gbuffer_pass(bool tagged = true) const {
-    return tagged && has_fragment_tags() ? gbuffer_pass_.get() : plain_gbuffer_pass_.get();
+  // The classified G-buffer's render pass (`with_flags`), or the plain one's; the same with one sample.
+  VkRenderPass gbuffer_pass(bool with_flags = true) const {
+    return with_flags && has_coverage_flags() ? gbuffer_pass_.get() : plain_gbuffer_pass_.get();
   }
   VkRenderPass shadow_pass() const { return shadow_pass_.get(); }
   VkRenderPass light_pass() const { return light_pass_.get(); }
@@ -67,16 +67,16 @@ class RenderTargets {
   VkFramebuffer dynamic_framebuffer() const { return dynamic_framebuffer_.get(); }
   VkExtent2D shadow_extent() const { return {shadow_map_size_, shadow_map_size_}; }
 
-  // Begins the classified (`tagged`) or plain G-buffer render pass (every target cleared; depth
+  // Begins the classified (`with_flags`) or plain G-buffer render pass (every target cleared; depth
   // to 1) and sets the viewport.
-  void begin_gbuffer_pass(VkCommandBuffer cmd, bool tagged = true) const;
+  void begin_gbuffer_pass(VkCommandBuffer cmd, bool with_flags = true) const;
 
   // What every pipeline writing the G-buffer shares: that render pass and sample count, its
   // colour targets, the depth test, and GBUFFER_SAMPLES (fragment specialization constant 0,
   // see gbuffer.glsl) for the coverage flags. Callers add shaders and depth state.
-  GraphicsPipelineDesc gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name, bool tagged = true) const;
-  // The colour attachments of that render pass: RT0..RT3, and RT4 when tagged.
-  std::uint32_t gbuffer_colour_targets(bool tagged) const { return tagged && has_fragment_tags() ? 5 : 4; }
+  GraphicsPipelineDesc gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name, bool with_flags = true) const;
+  // The colour attachments of that render pass: RT0..RT3, and RT4 when with_flags.
+  std::uint32_t gbuffer_colour_targets(bool with_flags) const { return with_flags && has_coverage_flags() ? 5 : 4; }
 
  private:
   void create_gbuffer_passes(const Context& context);
@@ -84,7 +84,7 @@ class RenderTargets {
   VkExtent2D extent_;
   VkSampleCountFlagBits samples_;
   std::uint32_t shadow_map_size_;
-  Image rt0_, rt1_, rt2_, rt3_, tags_, depth_, shadow_map_, classified_, naive_, dynamic_;
+  Image rt0_, rt1_, rt2_, rt3_, flags_, depth_, shadow_map_, classified_, naive_, dynamic_;
   UniqueRenderPass gbuffer_pass_, plain_gbuffer_pass_, shadow_pass_, light_pass_;
   UniqueFramebuffer gbuffer_framebuffer_, plain_gbuffer_framebuffer_, shadow_framebuffer_, classified_framebuffer_,
       naive_framebuffer_, dynamic_framebuffer_;

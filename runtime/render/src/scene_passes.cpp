@@ -77,12 +77,12 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
 
   const shadergen::Registry& shaders = shaders_for(targets.samples());
   plain_ = create_gbuffer_pipelines(context, shaders, targets, false);
-  if (targets.has_fragment_tags()) {
+  if (targets.has_coverage_flags()) {
     if (!context.features().post_depth_coverage) {
       throw Error("the classified G-buffer's coverage flags need VK_EXT_post_depth_coverage, which " +
                   context.device_name() + " lacks (--msaa 1 needs no flags)");
     }
-    tagged_ = create_gbuffer_pipelines(context, shaders, targets, true);
+    flagged_ = create_gbuffer_pipelines(context, shaders, targets, true);
   }
 
   GraphicsPipelineDesc shadow;
@@ -105,18 +105,20 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
 
 ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Context& context,
                                                                     const shadergen::Registry& shaders,
-                                                                    const RenderTargets& targets, bool tagged) const {
-  const std::string kind = tagged ? " (tagged)" : " (plain)";
-  GraphicsPipelineDesc materials = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials" + kind, tagged);
+                                                                    const RenderTargets& targets,
+                                                                    bool with_flags) const {
+  const std::string kind = with_flags ? " (classified)" : " (plain)";
+  GraphicsPipelineDesc materials =
+      targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials" + kind, with_flags);
   materials.vertex_spirv = companion_spirv(shaders, "scene");
-  materials.fragment_spirv = companion_spirv(shaders, tagged ? "gbuffer_tagged" : "gbuffer");
+  materials.fragment_spirv = companion_spirv(shaders, with_flags ? "gbuffer_flagged" : "gbuffer");
   materials.vertex_bindings = scene_bindings();
   materials.vertex_attributes = scene_attributes();
   materials.depth_write = true;
 
-  GraphicsPipelineDesc sky = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer sky" + kind, tagged);
+  GraphicsPipelineDesc sky = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer sky" + kind, with_flags);
   sky.vertex_spirv = companion_spirv(shaders, "sky_vertex");
-  sky.fragment_spirv = companion_spirv(shaders, tagged ? "sky_tagged" : "sky");
+  sky.fragment_spirv = companion_spirv(shaders, with_flags ? "sky_flagged" : "sky");
   sky.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
   return {create_graphics_pipeline(context, materials), create_graphics_pipeline(context, sky)};
 }
@@ -153,7 +155,7 @@ void ScenePasses::record_shadow_map(VkCommandBuffer cmd, const RenderTargets& ta
 }
 
 void ScenePasses::record_gbuffer(VkCommandBuffer cmd, const RenderTargets& targets) const {
-  record_gbuffer_with(cmd, targets, targets.has_fragment_tags() ? tagged_ : plain_, true);
+  record_gbuffer_with(cmd, targets, targets.has_coverage_flags() ? flagged_ : plain_, true);
 }
 
 void ScenePasses::record_gbuffer_plain(VkCommandBuffer cmd, const RenderTargets& targets) const {
@@ -161,8 +163,8 @@ void ScenePasses::record_gbuffer_plain(VkCommandBuffer cmd, const RenderTargets&
 }
 
 void ScenePasses::record_gbuffer_with(VkCommandBuffer cmd, const RenderTargets& targets,
-                                      const GBufferPipelines& pipelines, bool tagged) const {
-  targets.begin_gbuffer_pass(cmd, tagged);
+                                      const GBufferPipelines& pipelines, bool with_flags) const {
+  targets.begin_gbuffer_pass(cmd, with_flags);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.materials.get());
   draw_batches(cmd, true);

@@ -38,9 +38,9 @@ class ScenePasses {
     UniquePipeline materials, sky;
   };
   GBufferPipelines create_gbuffer_pipelines(const Context& context, const shadergen::Registry& shaders,
-                                            const RenderTargets& targets, bool tagged) const;
+                                            const RenderTargets& targets, bool with_flags) const;
   void record_gbuffer_with(VkCommandBuffer cmd, const RenderTargets& targets, const GBufferPipelines& pipelines,
-                           bool tagged) const;
+                           bool with_flags) const;
 
   struct MeshBuffers {
     Buffer vertices;
@@ -59,7 +59,7 @@ class ScenePasses {
   UniqueDescriptorSetLayout set_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
-  GBufferPipelines plain_, tagged_;  // tagged_: only with 2 or more samples
+  GBufferPipelines plain_, flagged_;  // flagged_: only with 2 or more samples
   UniquePipeline shadow_pipeline_;
 };
 
