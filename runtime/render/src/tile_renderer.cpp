@@ -123,17 +123,6 @@ constexpr std::string_view kNaive = "naive", kDynamic = "dynamic", kFloor = "flo
 // Submit B writes at most: start, tiled, gbuffer_plain, naive, dynamic, floor.
 constexpr std::uint32_t kTileTimestamps = 6;
 
-// The plain G-buffer pass overwrites the targets the tile pass just read (fragment or compute
-// shader): the G-buffer render pass discards them (initial layout UNDEFINED) and its external
-// dependency orders it after those reads; this barrier states the write-after-read here as
-// well, so the order does not rest on how a render pass is declared elsewhere.
-void order_gbuffer_after_light_reads(VkCommandBuffer cmd) {
-  memory_barrier(cmd, {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0},
-                 {VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
-                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  0});
-}
-
 std::size_t index_of(const std::vector<Timestamp>& stamps, std::string_view label) {
   for (std::size_t i = 0; i < stamps.size(); ++i) {
     if (stamps[i].label == label) return i;
@@ -243,7 +232,8 @@ struct TileRenderer::Impl {
   // The baselines' whole frame after the classified one: the plain G-buffer (what lighting
   // reads, no classification data) into the same targets, then each baseline that runs.
   void record_baselines(VkCommandBuffer cmd) {
-    order_gbuffer_after_light_reads(cmd);
+    // The G-buffer render pass's external dependency orders its writes after the tile pass's
+    // reads of the same images, as it does in submit A after the previous frame's.
     record_plain_gbuffer(cmd);
     tile_queries.write(cmd, std::string(kGBufferPlain));
     if (runs_naive()) {
@@ -260,7 +250,7 @@ struct TileRenderer::Impl {
     }
   }
 
-  // The G-buffer classification reads: the scene's, or the test's upload.
+  // The baselines' G-buffer: the scene's plain one, or the test's upload.
   void record_plain_gbuffer(VkCommandBuffer cmd) const {
     if (gbuffer_upload) {
       gbuffer_upload->record(cmd, *targets);  // the baselines must see the overridden G-buffer too
@@ -269,6 +259,7 @@ struct TileRenderer::Impl {
     }
   }
 
+  // The G-buffer classification reads: the scene's classified one, or the test's upload.
   void record_classified_gbuffer(VkCommandBuffer cmd) const {
     if (gbuffer_upload) {
       gbuffer_upload->record(cmd, *targets);
