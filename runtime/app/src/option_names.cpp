@@ -18,9 +18,14 @@ const OptionNames<bool>& permutation_names() {
 }
 
 const OptionNames<Baselines>& baseline_names() {
-  static const OptionNames<Baselines> names{{"none", Baselines::none},       {"naive", Baselines::naive},
-                                            {"dynamic", Baselines::dynamic}, {"both", Baselines::both},
-                                            {"floor", Baselines::floor},     {"all", Baselines::all}};
+  static const OptionNames<Baselines> names = [] {
+    OptionNames<Baselines> all;
+    for (const Baselines b :
+         {Baselines::none, Baselines::naive, Baselines::dynamic, Baselines::both, Baselines::floor, Baselines::all}) {
+      all.emplace_back(to_string(b), b);
+    }
+    return all;
+  }();
   return names;
 }
 
