@@ -1,4 +1,5 @@
 // The context on lavapipe: validation on and silent, limits read, the log really records.
+#include "tilelight_testing/context_test_seam.h"
 #include "tilelight_testing/test_support.h"
 
 #include "tilelight/vulkan/error.h"
@@ -16,9 +17,8 @@ TEST(ContextOnLavapipe, ValidationEnabledAndSilent) {
   std::shared_ptr<const ValidationLog> log;
   {
     Context context(options);
-    log = context.shared_validation_log();
+    log = ContextTestSeam::shared_validation_log(context);
     EXPECT_TRUE(context.validation_enabled());
-    ASSERT_NE(context.validation(), nullptr);
     EXPECT_NE(context.device(), VK_NULL_HANDLE);
     EXPECT_NE(context.queue(), VK_NULL_HANDLE);
     EXPECT_NO_THROW(context.require_no_validation_messages("context creation"));
@@ -32,7 +32,7 @@ TEST(ContextOnLavapipe, SynchronizationValidationCanBeEnabled) {
   options.validation = true;
   options.synchronization_validation = true;
   Context context(options);
-  EXPECT_EQ(context.validation_log().count(), 0u) << context.validation_log().summary();
+  EXPECT_EQ(ContextTestSeam::validation_log(context).count(), 0u) << ContextTestSeam::validation_log(context).summary();
 }
 
 TEST(ContextOnLavapipe, SynchronizationValidationNeedsValidation) {
@@ -44,8 +44,7 @@ TEST(ContextOnLavapipe, SynchronizationValidationNeedsValidation) {
 TEST(ContextOnLavapipe, WithoutValidationThereIsNoLog) {
   Context context;
   EXPECT_FALSE(context.validation_enabled());
-  EXPECT_EQ(context.validation(), nullptr);
-  EXPECT_TRUE(context.validation_log().empty());
+  EXPECT_TRUE(ContextTestSeam::validation_log(context).empty());
 }
 
 TEST(ContextOnLavapipe, LimitsAndFeatures) {
@@ -68,7 +67,7 @@ TEST_F(VulkanTest, WaitIdleWithNothingPendingReturns) { EXPECT_NO_THROW(context(
 // The log records what the layer says: an injected message and a real misuse both count, and
 // require_no_validation_messages() turns them into an error.
 TEST_F(VulkanTest, ValidationMessagesAreCountedAndFailTheRun) {
-  ValidationLog& log = context().validation_log();
+  ValidationLog& log = ContextTestSeam::validation_log(context());
   auto submit_message = reinterpret_cast<PFN_vkSubmitDebugUtilsMessageEXT>(
       vkGetInstanceProcAddr(context().instance(), "vkSubmitDebugUtilsMessageEXT"));
   ASSERT_NE(submit_message, nullptr);
@@ -105,7 +104,7 @@ TEST_F(VulkanTest, ValidationMessagesAreCountedAndFailTheRun) {
 }
 
 TEST_F(VulkanTest, IgnoredIdsAreCountedSeparately) {
-  ValidationLog& log = context().validation_log();
+  ValidationLog& log = ContextTestSeam::validation_log(context());
   log.ignore("TEST-known-layer-bug", "test of the filter");
   auto submit_message = reinterpret_cast<PFN_vkSubmitDebugUtilsMessageEXT>(
       vkGetInstanceProcAddr(context().instance(), "vkSubmitDebugUtilsMessageEXT"));

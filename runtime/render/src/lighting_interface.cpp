@@ -21,12 +21,9 @@ constexpr std::array<std::uint32_t, 5> kImageBindings{1, 2, 3, 4, 5};
 constexpr std::uint32_t kFragmentTagsBinding = 6;  // classification only, multisampled G-buffer
 constexpr std::uint32_t kStorageSet = 1;           // the compute passes' output buffer
 
-// The compute passes that bind set 0 and one output buffer in set 1 through compute_layout().
+// The compute pass that binds set 0 and one output buffer in set 1 through compute_layout().
 const shadergen::Reflection& classifier(const shadergen::Registry& registry) {
   return companion_shader(registry, "classify_tiles").reflection;
-}
-const shadergen::Reflection& gbuffer_dump(const shadergen::Registry& registry) {
-  return companion_shader(registry, "gbuffer_dump").reflection;
 }
 
 // Set 0 of the light pass (the registry's merged layout) plus what the classifier alone reads
@@ -35,11 +32,11 @@ std::vector<VkDescriptorSetLayoutBinding> set0_bindings(const shadergen::Registr
   return merged_set_bindings({registry.pipeline_layout, classifier(registry).bindings}, 0, "lighting set 0");
 }
 
-// Set 1 of the compute passes: the one storage buffer each of them writes (tile_classification.cpp
+// Set 1 of the compute passes: the one storage buffer the classifier writes (tile_classification.cpp
 // binds it at binding 0).
 std::vector<VkDescriptorSetLayoutBinding> storage_set_bindings(const shadergen::Registry& registry) {
-  std::vector<VkDescriptorSetLayoutBinding> bindings = merged_set_bindings(
-      {classifier(registry).bindings, gbuffer_dump(registry).bindings}, kStorageSet, "compute output set");
+  std::vector<VkDescriptorSetLayoutBinding> bindings =
+      merged_set_bindings({classifier(registry).bindings}, kStorageSet, "compute output set");
   check_storage_buffers(bindings, 1, "compute output set");
   return bindings;
 }
@@ -74,7 +71,7 @@ LightingInterface::LightingInterface(const Context& context, const LightingParam
                                             "lighting pipeline layout");
   const std::array<VkDescriptorSetLayout, 2> compute_sets{set0_layout_.get(), storage_set_layout_.get()};
   const std::vector<VkPushConstantRange> compute_push =
-      merged_push_constant_ranges({&classifier(registry), &gbuffer_dump(registry)}, VK_SHADER_STAGE_COMPUTE_BIT);
+      merged_push_constant_ranges({&classifier(registry)}, VK_SHADER_STAGE_COMPUTE_BIT);
   compute_layout_ = create_pipeline_layout(context, compute_sets, compute_push, "classification pipeline layout");
 
   set0_ = allocate_descriptor_set(context, pool, set0_layout_.get(), "lighting set 0");

@@ -1,9 +1,10 @@
 #pragma once
 // The descriptor interface shared by classification and every lighting permutation
 // (uber/include/lighting_params.glsl): set 0 is built from the registry's merged layout, so the
-// generated code, not this file, says which bindings exist. Set 1 is one storage buffer for the
-// compute passes that write a result (classification, the G-buffer dump), and their push
-// constants are what their reflection declares: a shader change cannot disagree silently.
+// generated code, not this file, says which bindings exist. Set 1 is one storage buffer for a
+// compute pass that writes a result (classification; the tests' G-buffer dump binds a layout of
+// its own with the same set 0), and the push constants are what the classifier's reflection
+// declares: a shader change cannot disagree silently.
 
 #include "render_targets.h"
 #include "shader_registry.h"
@@ -26,8 +27,8 @@ class LightingInterface {
   VkDescriptorSet set0() const { return set0_; }
   // Lighting pipelines: set 0 + the registry's push-constant range (the tile vertex shader's).
   VkPipelineLayout lighting_layout() const { return lighting_layout_.get(); }
-  // Compute passes: set 0, set 1 (one storage buffer), the largest push-constant block of
-  // classify_tiles and gbuffer_dump (the classifier pushes its grid).
+  // Classification: set 0, set 1 (one storage buffer), classify_tiles's push constants (its
+  // grid).
   VkPipelineLayout compute_layout() const { return compute_layout_.get(); }
   const LightingParamsBlock& params() const { return params_block_; }
   // The shaders that read this G-buffer (shaders_for() its sample count): every pass that binds

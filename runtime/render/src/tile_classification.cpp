@@ -73,30 +73,4 @@ std::span<const std::uint8_t> TileClassification::host_ids() const {
   return {reinterpret_cast<const std::uint8_t*>(bytes.data()), grid_.id_bytes()};
 }
 
-void TileClassification::enable_gbuffer_dump(const Context& context, VkDescriptorPool pool, std::uint32_t samples) {
-  if (dump_pipeline_) return;
-  // Large (64 bytes per sample): created only for the tests and tools that ask for it.
-  const VkDeviceSize values =
-      static_cast<VkDeviceSize>(grid_.width) * grid_.height * samples * GBufferSamples::kFloatsPerSample;
-  dump_ = Buffer(
-      context, {values * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostReadback, "G-buffer dump"});
-  dump_set_ = allocate_descriptor_set(context, pool, lighting_->storage_set_layout(), "G-buffer dump set");
-  write_buffer_descriptor(context, dump_set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, dump_.handle());
-  dump_pipeline_ = create_compute_pipeline(context, lighting_->compute_layout(),
-                                           companion_spirv(lighting_->shaders(), "gbuffer_dump"), {}, "G-buffer dump");
-}
-
-void TileClassification::record_gbuffer_dump(VkCommandBuffer cmd) const {
-  if (!dump_pipeline_) throw Error("the G-buffer dump was not enabled");
-  const std::array<VkDescriptorSet, 2> sets{lighting_->set0(), dump_set_};
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, dump_pipeline_.get());
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, lighting_->compute_layout(), 0, 2, sets.data(), 0,
-                          nullptr);
-  vkCmdDispatch(cmd, (grid_.width + 7) / 8, (grid_.height + 7) / 8, 1);
-  buffer_barrier(cmd, dump_.handle(), {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
-                 {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
-}
-
-std::span<const float> TileClassification::host_gbuffer_dump() const { return dump_.as<const float>(); }
-
 }  // namespace tilelight

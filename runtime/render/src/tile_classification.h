@@ -1,8 +1,7 @@
 #pragma once
 // Classification on the GPU (uber/classify/classify_tiles.comp): one invocation per row of a
 // block of 4x4 tiles writes the raw IDs in the blocked layout, then the IDs are copied to host
-// memory for the CPU index builder (and the report). Also the G-buffer dump used by the CPU
-// reference classifier and the tests.
+// memory for the CPU index builder (and the report).
 
 #include "lighting_interface.h"
 #include "render_targets.h"
@@ -32,19 +31,12 @@ class TileClassification {
   // The host copy; valid once the submission that ran record() has completed.
   std::span<const std::uint8_t> host_ids() const;
 
-  // Every sample of the G-buffer as stored: per pixel (row-major), per sample, 16 floats
-  // (rt0, rt1, rt2, depth, 0, 0, 0). enable_gbuffer_dump() allocates the buffer (64 bytes per
-  // sample) and must precede record_gbuffer_dump().
-  void enable_gbuffer_dump(const Context& context, VkDescriptorPool pool, std::uint32_t samples);
-  void record_gbuffer_dump(VkCommandBuffer cmd) const;
-  std::span<const float> host_gbuffer_dump() const;
-
  private:
   const LightingInterface* lighting_;
   TileGrid grid_;
-  Buffer ids_, host_ids_, dump_;
-  VkDescriptorSet ids_set_ = VK_NULL_HANDLE, dump_set_ = VK_NULL_HANDLE;
-  UniquePipeline classify_, dump_pipeline_;
+  Buffer ids_, host_ids_;
+  VkDescriptorSet ids_set_ = VK_NULL_HANDLE;
+  UniquePipeline classify_;
 };
 
 }  // namespace tilelight

@@ -2,7 +2,6 @@
 
 #include "descriptors.h"
 #include "floor_target.h"
-#include "gbuffer_upload.h"
 #include "lighting_interface.h"
 #include "picture_readback.h"
 #include "render_targets.h"
@@ -107,9 +106,9 @@ std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Regist
   return pruned;
 }
 
-// Descriptor sets one renderer allocates from its pool, at most 11: the scene's, lighting set 0,
-// the tile-ID output, the G-buffer dump and upload (tests), the GPU index build, the GPU
-// tile-list build, and the compute light pass's four targets (classified, naive, dynamic, floor).
+// Descriptor sets one renderer allocates from its pool, at most 9: the scene's, lighting set 0,
+// the tile-ID output, the GPU index build, the GPU tile-list build, and the compute light pass's
+// four targets (classified, naive, dynamic, floor).
 // The base colour textures have a pool of their own (scene_textures.cpp).
 constexpr std::uint32_t kMaxDescriptorSets = 16;
 
@@ -154,9 +153,9 @@ struct TileRenderer::Impl {
   std::unique_ptr<ScenePasses> scene_passes;
   std::unique_ptr<LightingInterface> lighting;
   std::unique_ptr<TileClassification> classification;
-  std::unique_ptr<FloorTarget> floor_target;      // Baselines::floor and all
-  std::unique_ptr<TileLightPass> light_pass;      // LightPass x IndexPath
-  std::unique_ptr<GBufferUpload> gbuffer_upload;  // replaces the scene's G-buffer when set
+  std::unique_ptr<FloorTarget> floor_target;              // Baselines::floor and all
+  std::unique_ptr<TileLightPass> light_pass;              // LightPass x IndexPath
+  std::function<void(VkCommandBuffer)> gbuffer_override;  // replaces the scene's G-buffers when set
 
   UniqueCommandBuffer frame_commands;  // submit A, re-recorded each frame
   UniqueCommandBuffer tile_commands;   // submit B, recorded once
@@ -250,19 +249,19 @@ struct TileRenderer::Impl {
     }
   }
 
-  // The baselines' G-buffer: the scene's plain one, or the test's upload.
+  // The baselines' G-buffer: the scene's plain one, or the test's override.
   void record_plain_gbuffer(VkCommandBuffer cmd) const {
-    if (gbuffer_upload) {
-      gbuffer_upload->record(cmd, *targets);  // the baselines must see the overridden G-buffer too
+    if (gbuffer_override) {
+      gbuffer_override(cmd);  // the baselines must see the overridden G-buffer too
     } else {
       scene_passes->record_gbuffer_plain(cmd, *targets);
     }
   }
 
-  // The G-buffer classification reads: the scene's classified one, or the test's upload.
+  // The G-buffer classification reads: the scene's classified one, or the test's override.
   void record_classified_gbuffer(VkCommandBuffer cmd) const {
-    if (gbuffer_upload) {
-      gbuffer_upload->record(cmd, *targets);
+    if (gbuffer_override) {
+      gbuffer_override(cmd);
     } else {
       scene_passes->record_gbuffer(cmd, *targets);
     }
@@ -431,9 +430,12 @@ RgbaImage TileRenderer::read_dynamic() const {
                          impl_->options.timeout);
 }
 
-GBufferSamples TileRenderer::read_gbuffer(GBufferKind kind) {
+const Context& TileRenderer::context() const { return impl_->context; }
+const RenderTargets& TileRenderer::render_targets() const { return *impl_->targets; }
+const LightingInterface& TileRenderer::lighting_interface() const { return *impl_->lighting; }
+
+void TileRenderer::submit_after_gbuffer(GBufferKind kind, const std::function<void(VkCommandBuffer)>& record) {
   Impl& impl = *impl_;
-  impl.classification->enable_gbuffer_dump(impl.context, impl.descriptor_pool.get(), msaa_samples());
   // Where a baseline ran, the targets hold its plain G-buffer, without the classification data
   // the CPU reference needs: draw the classified one again first (the frame's, bit for bit).
   submit_and_wait(
@@ -444,16 +446,9 @@ GBufferSamples TileRenderer::read_gbuffer(GBufferKind kind) {
         } else if (impl.runs_any_baseline()) {
           impl.record_classified_gbuffer(cmd);
         }
-        impl.classification->record_gbuffer_dump(cmd);
+        record(cmd);
       },
-      "G-buffer dump", impl.options.timeout);
-  GBufferSamples out;
-  out.width = impl.grid.width;
-  out.height = impl.grid.height;
-  out.samples = msaa_samples();
-  const std::span<const float> values = impl.classification->host_gbuffer_dump();
-  out.values.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(out.value_count()));
-  return out;
+      "a test pass after the G-buffer", impl.options.timeout);
 }
 
 std::vector<float> TileRenderer::read_shadow_map() const {
@@ -465,10 +460,9 @@ std::vector<float> TileRenderer::read_shadow_map() const {
   return depths;
 }
 
-void TileRenderer::set_gbuffer_override(const GBufferSamples& samples) {
-  impl_->gbuffer_upload = std::make_unique<GBufferUpload>(
-      impl_->context, *impl_->targets, samples, impl_->lighting->params().sun_direction, impl_->descriptor_pool.get());
-  // Submit B draws the baselines' G-buffer: it must be the upload as well. No frame is in
+void TileRenderer::set_gbuffer_recorder(std::function<void(VkCommandBuffer)> gbuffer) {
+  impl_->gbuffer_override = std::move(gbuffer);
+  // Submit B draws the baselines' G-buffer: it must be the override as well. No frame is in
   // flight here (render_frame() returns after its fence).
   if (impl_->runs_any_baseline()) impl_->record_tile_pass();
 }

@@ -15,6 +15,8 @@
 // 1e-4 m); shadow-map texel position 1e-3 texel; shadow depth compare 2e-6. Sky and sun-facing
 // are read from the depth's bits as stored (gbuffer.glsl), so they are never uncertain.
 
+#include "tilelight_testing/gbuffer_samples.h"
+
 #include "tilelight/render/tile_renderer.h"
 #include "tilelight/scene/uniform_blocks.h"
 #include "tilelight/tiles/tile_grid.h"

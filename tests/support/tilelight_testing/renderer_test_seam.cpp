@@ -1,11 +1,18 @@
 #include "tilelight_testing/renderer_test_seam.h"
 
+#include "lighting_interface.h"
+#include "tilelight_testing/gbuffer_dump.h"
+#include "tilelight_testing/gbuffer_upload.h"
+
+#include <memory>
 #include <utility>
 
 namespace tilelight {
 
 GBufferSamples TileRendererTestSeam::read_gbuffer(TileRenderer& renderer, GBufferKind kind) {
-  return renderer.read_gbuffer(kind);
+  const GBufferDump dump(renderer.context(), renderer.render_targets(), renderer.lighting_interface());
+  renderer.submit_after_gbuffer(kind, [&](VkCommandBuffer cmd) { dump.record(cmd); });
+  return dump.read();
 }
 
 std::vector<float> TileRendererTestSeam::read_shadow_map(const TileRenderer& renderer) {
@@ -17,7 +24,11 @@ const LightingParamsBlock& TileRendererTestSeam::lighting_params(const TileRende
 }
 
 void TileRendererTestSeam::set_gbuffer_override(TileRenderer& renderer, const GBufferSamples& samples) {
-  renderer.set_gbuffer_override(samples);
+  // Shared by the recorder the renderer keeps: it lives as long as the renderer's frames.
+  auto upload = std::make_shared<const GBufferUpload>(renderer.context(), renderer.render_targets(), samples,
+                                                      renderer.lighting_params().sun_direction);
+  const RenderTargets* targets = &renderer.render_targets();
+  renderer.set_gbuffer_recorder([upload, targets](VkCommandBuffer cmd) { upload->record(cmd, *targets); });
 }
 
 void TileRendererTestSeam::set_before_host_signal(TileRenderer& renderer, std::function<void()> hook) {

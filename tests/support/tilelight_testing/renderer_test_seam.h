@@ -1,7 +1,11 @@
 #pragma once
 // The tests' way into TileRenderer's test-only members, which are private: TileRenderer
 // befriends this class, and only the test-support library defines it, so production code cannot
-// call them while the frame tests still drive the real render path.
+// call them while the frame tests still drive the real render path. The G-buffer dump and upload
+// are the test support's own passes (gbuffer_dump.h, gbuffer_upload.h), recorded through the
+// renderer's generic hooks.
+
+#include "tilelight_testing/gbuffer_samples.h"
 
 #include "tilelight/render/tile_renderer.h"
 

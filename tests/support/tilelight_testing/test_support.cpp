@@ -1,5 +1,7 @@
 #include "tilelight_testing/test_support.h"
 
+#include "tilelight_testing/context_test_seam.h"
+
 #include <testsupport/scratch_dir.h>
 
 #include <cstdlib>
@@ -14,7 +16,7 @@ void VulkanTest::SetUp() {
   const char* sync = std::getenv("TILELIGHT_SYNC_VALIDATION");
   options.synchronization_validation = sync != nullptr && std::string_view(sync) == "1";
   context_ = std::make_unique<Context>(options);
-  log_ = context_->shared_validation_log();
+  log_ = ContextTestSeam::shared_validation_log(*context_);
   pool_ = std::make_unique<CommandPool>(*context_, "test pool");
 }
 

@@ -36,6 +36,9 @@
 
 namespace tilelight {
 
+class LightingInterface;
+class RenderTargets;
+
 enum class IndexPath { cpu, gpu };
 
 // How the light passes run: as draws (the tile pass draws each class's tiles with the fragment
@@ -125,22 +128,6 @@ struct FrameResult {
   FrameStats stats;
 };
 
-// Every G-buffer sample as stored (see uber/include/gbuffer.glsl).
-struct GBufferSamples {
-  // Per sample: rt0.rgba, rt1.rgba, rt2.rgba, rt3 (surface depth), the coverage flags' bits (0
-  // with one sample), 0, 0 (uber/classify/gbuffer_dump.comp writes them as four vec4s).
-  static constexpr std::size_t kFloatsPerSample = 16;
-
-  std::uint32_t width = 0, height = 0, samples = 0;
-  std::vector<float> values;  // per pixel (row-major), per sample: kFloatsPerSample floats
-  // width * height * samples * kFloatsPerSample: the size `values` must have.
-  std::size_t value_count() const { return std::size_t{width} * height * samples * kFloatsPerSample; }
-  // Precondition: x < width, y < height, s < samples. Points at kFloatsPerSample floats.
-  const float* at(std::uint32_t x, std::uint32_t y, std::uint32_t s) const {
-    return values.data() + ((static_cast<std::size_t>(y) * width + x) * samples + s) * kFloatsPerSample;
-  }
-};
-
 // Which of the frame's two G-buffers: the classified path's (with its coverage flags) or the
 // baselines' plain one.
 enum class GBufferKind { classified, plain };
@@ -176,19 +163,24 @@ class TileRenderer {
   // of the test-only members below; production code has no way to reach them.
   friend class TileRendererTestSeam;
 
-  // What the CPU reference classifier needs: the G-buffer the last frame classified (drawn
-  // again where the baselines' plain one replaced it), its shadow map, and the lighting
-  // parameters the shaders read.
+  // The seam's way to run a test's own passes (tests/support/tilelight_testing: the G-buffer
+  // dump and upload, whose shaders are a test domain) against this renderer's targets and
+  // lighting set, which are internal types.
+  const Context& context() const;
+  const RenderTargets& render_targets() const;
+  const LightingInterface& lighting_interface() const;
+  // The lighting parameters the shaders read (the CPU reference classifier's input).
   const LightingParamsBlock& lighting_params() const;
-  // `kind`: the G-buffer drawn again into the targets before the dump (the classified one only
-  // where a baseline's plain one replaced it), from the same scene, camera and override.
-  GBufferSamples read_gbuffer(GBufferKind kind = GBufferKind::classified);
+  // Submits and waits for: the G-buffer of `kind` drawn again into the targets (the classified
+  // one only where a baseline's plain one replaced it), from the same scene, camera and
+  // override, then `record` (which reads it). Precondition: a frame was rendered.
+  void submit_after_gbuffer(GBufferKind kind, const std::function<void(VkCommandBuffer)>& record);
   std::vector<float> read_shadow_map() const;  // shadow_map_size^2 depths, row-major
 
-  // Later frames take their G-buffer from `samples` (the layout read_gbuffer() returns) instead
-  // of rendering the scene; the shadow map still comes from the scene. Needs sample-rate
-  // shading. Precondition: size and sample count match this renderer.
-  void set_gbuffer_override(const GBufferSamples& samples);
+  // Later frames record `gbuffer` instead of both scene G-buffer passes (the shadow map still
+  // comes from the scene). `gbuffer` must begin and end the G-buffer render pass itself, and
+  // keep what it records alive as long as this renderer.
+  void set_gbuffer_recorder(std::function<void(VkCommandBuffer)> gbuffer);
 
   // Called on the host after the tile pass was submitted and before the host signals it; an
   // exception thrown here must still leave the GPU unblocked (the failure path).

@@ -24,7 +24,7 @@ struct ContextOptions {
   // index, anything else = case-insensitive substring of the device name.
   std::string device;
   // Enables VK_LAYER_KHRONOS_validation with a messenger that records every warning and error
-  // (see validation_log()). Throws if the layer is not installed.
+  // (see require_no_validation_messages()). Throws if the layer is not installed.
   bool validation = false;
   // Also enables the layer's synchronization validation (hazards between commands). Requires
   // `validation`. Slow; for tests of the synchronisation code.
@@ -89,14 +89,6 @@ class Context {
   VkSampleCountFlagBits choose_msaa(std::uint32_t requested) const;
 
   bool validation_enabled() const { return validation_; }
-  // Warnings and errors from the validation layer (always empty when validation is off). The
-  // shared form outlives the context, so messages emitted while it is destroyed (leaked
-  // objects) can still be checked.
-  ValidationLog& validation_log() const { return *log_; }
-  // The log, or nullptr when validation is off.
-  const ValidationLog* validation() const { return validation_ ? log_.get() : nullptr; }
-  ValidationLog* validation() { return validation_ ? log_.get() : nullptr; }
-  std::shared_ptr<const ValidationLog> shared_validation_log() const { return log_; }
   // Throws tilelight::Error listing the messages if the layer reported any.
   void require_no_validation_messages(std::string_view stage) const { log_->require_empty(stage); }
 
@@ -116,6 +108,16 @@ class Context {
   void wait_idle(std::string_view stage, Seconds timeout = kDefaultGpuTimeout) const;
 
  private:
+  // The tests' way to the validation log itself (tests/support/tilelight_testing/
+  // context_test_seam.h); the product only asks require_no_validation_messages().
+  friend class ContextTestSeam;
+
+  // Warnings and errors from the validation layer (always empty when validation is off). The
+  // shared form outlives the context, so messages emitted while it is destroyed (leaked
+  // objects) can still be checked.
+  ValidationLog& validation_log() const { return *log_; }
+  std::shared_ptr<const ValidationLog> shared_validation_log() const { return log_; }
+
   void create_instance(const ContextOptions& options);
   void create_validation_messenger();
   void pick_device(const ContextOptions& options);

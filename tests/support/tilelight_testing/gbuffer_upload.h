@@ -1,9 +1,10 @@
 #pragma once
 // Replaces the scene's G-buffer pass with given sample values (tests: synthetic tiles that
-// reach classes the scene does not produce). Same render pass and targets as the scene pass.
+// reach classes the scene does not produce). Same render pass and targets as the scene pass;
+// the shader is the test domain gbuffer_upload.json's (shaders/gbuffer_upload.frag).
 
-#include "render_targets.h"
-#include "tilelight/render/tile_renderer.h"
+#include "tilelight_testing/gbuffer_samples.h"
+
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
 
@@ -15,6 +16,7 @@
 namespace tilelight {
 
 class Context;
+class RenderTargets;
 
 class GBufferUpload {
  public:
@@ -22,11 +24,11 @@ class GBufferUpload {
   // sample-rate shading (checked: tilelight::Error otherwise). `sun_direction` (xyz, towards the
   // sun) decides the sun-facing bits, as the material shaders do with the scene's.
   GBufferUpload(const Context& context, const RenderTargets& targets, const GBufferSamples& samples,
-                const glm::vec4& sun_direction, VkDescriptorPool pool);
+                const glm::vec4& sun_direction);
   void record(VkCommandBuffer cmd, const RenderTargets& targets) const;
 
  private:
-  // gbuffer_upload.frag's push constants.
+  // gbuffer_upload.frag's push constants (their size is checked against its reflection).
   struct UploadPush {
     std::array<std::uint32_t, 4> size;  // width, height, samples, 0
     glm::vec4 sun_direction;
@@ -34,6 +36,7 @@ class GBufferUpload {
 
   UploadPush push_;
   Buffer samples_;
+  UniqueDescriptorPool pool_;
   UniqueDescriptorSetLayout set_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
