@@ -15,7 +15,7 @@ static_assert(offsetof(DispatchRecord, z) == offsetof(VkDispatchIndirectCommand,
 
 // The lists come first: the light pass's descriptor sets bind them.
 ComputeTileLightPass::ComputeTileLightPass(const TileLightPassSetup& s)
-    : tiles_per_group_(ComputeLightingPasses::tiles_per_workgroup(s.grid.tile_size)) {
+    : TileLightPass(s), tiles_per_group_(ComputeLightingPasses::tiles_per_workgroup(s.grid.tile_size)) {
   const std::uint32_t classes = s.permutations == PermutationSet::raw ? kRawClassCount : kOptimisedClassCount;
   const Buffer* lists = nullptr;
   if (s.path == IndexPath::cpu) {
@@ -53,16 +53,12 @@ void ComputeTileLightPass::record_tiled(VkCommandBuffer cmd, const RenderTargets
   passes_->record_tiled(cmd, targets, *dispatches_);
 }
 
-void ComputeTileLightPass::record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const {
-  passes_->record_naive(cmd, targets);
-}
-
-void ComputeTileLightPass::record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const {
-  passes_->record_dynamic(cmd, targets);
-}
-
-void ComputeTileLightPass::record_floor(VkCommandBuffer cmd, const RenderTargets&, const FloorTarget& floor) const {
-  passes_->record_floor(cmd, floor);
+void ComputeTileLightPass::record_baseline(VkCommandBuffer cmd, const RenderTargets& targets, BaselinePass pass) const {
+  switch (pass) {
+    case BaselinePass::naive: return passes_->record_naive(cmd, targets);
+    case BaselinePass::dynamic: return passes_->record_dynamic(cmd, targets);
+    case BaselinePass::floor: return passes_->record_floor(cmd, floor());
+  }
 }
 
 void ComputeTileLightPass::build_on_host(std::span<const std::uint8_t> blocked_raw_ids) {

@@ -21,14 +21,11 @@ class ComputeTileLightPass final : public TileLightPass {
 
   std::uint32_t class_count() const override { return passes_->class_count(); }
   std::uint32_t pipeline_count() const override { return passes_->pipeline_count(); }
-  bool host_builds() const override { return cpu_builder_ != nullptr; }
 
   void record_build(VkCommandBuffer cmd) const override;
   void record_prepare(VkCommandBuffer cmd, const RenderTargets& targets) const override;
   void record_tiled(VkCommandBuffer cmd, const RenderTargets& targets) const override;
-  void record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const override;
-  void record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const override;
-  void record_floor(VkCommandBuffer cmd, const RenderTargets& targets, const FloorTarget& floor) const override;
+  void record_baseline(VkCommandBuffer cmd, const RenderTargets& targets, BaselinePass pass) const override;
 
   void build_on_host(std::span<const std::uint8_t> blocked_raw_ids) override;
   void clear_draws() override;

@@ -14,7 +14,8 @@ static_assert(offsetof(DrawRecord, vertexOffset) == offsetof(VkDrawIndexedIndire
 static_assert(offsetof(DrawRecord, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance));
 
 RasterTileLightPass::RasterTileLightPass(const TileLightPassSetup& s)
-    : passes_(s.context, s.grid, s.targets, s.lighting, s.permutations, s.primitive, s.floor != nullptr),
+    : TileLightPass(s),
+      passes_(s.context, s.grid, s.targets, s.lighting, s.permutations, s.primitive, s.floor != nullptr),
       coalesce_(s.coalesce) {
   const std::uint32_t classes = passes_.class_count();
   if (s.path == IndexPath::cpu) {
@@ -41,17 +42,12 @@ void RasterTileLightPass::record_tiled(VkCommandBuffer cmd, const RenderTargets&
   passes_.record_tiled(cmd, targets, *indices_, *draws_);
 }
 
-void RasterTileLightPass::record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const {
-  passes_.record_naive(cmd, targets);
-}
-
-void RasterTileLightPass::record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const {
-  passes_.record_dynamic(cmd, targets);
-}
-
-void RasterTileLightPass::record_floor(VkCommandBuffer cmd, const RenderTargets& targets,
-                                       const FloorTarget& floor) const {
-  passes_.record_floor(cmd, targets, floor);
+void RasterTileLightPass::record_baseline(VkCommandBuffer cmd, const RenderTargets& targets, BaselinePass pass) const {
+  switch (pass) {
+    case BaselinePass::naive: return passes_.record_naive(cmd, targets);
+    case BaselinePass::dynamic: return passes_.record_dynamic(cmd, targets);
+    case BaselinePass::floor: return passes_.record_floor(cmd, targets, floor());
+  }
 }
 
 void RasterTileLightPass::build_on_host(std::span<const std::uint8_t> blocked_raw_ids) {

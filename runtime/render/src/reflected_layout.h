@@ -25,15 +25,27 @@ std::vector<VkDescriptorSetLayoutBinding> merged_set_bindings(
     std::initializer_list<std::span<const shadergen::DescriptorBinding>> sources, std::uint32_t set,
     std::string_view what);
 
+// The same for the bindings of every one of `shaders` (none null).
+std::vector<VkDescriptorSetLayoutBinding> merged_set_bindings(std::span<const shadergen::Reflection* const> shaders,
+                                                              std::uint32_t set, std::string_view what);
+
 // The push-constant range that `stages` need to run every one of `shaders` (none null): the
 // largest block among them from offset 0; empty when none has push constants.
 std::vector<VkPushConstantRange> merged_push_constant_ranges(
     std::initializer_list<const shadergen::Reflection*> shaders, VkShaderStageFlags stages);
+std::vector<VkPushConstantRange> merged_push_constant_ranges(std::span<const shadergen::Reflection* const> shaders,
+                                                             VkShaderStageFlags stages);
 
 // The bytes of that range: 0 when `ranges` is empty.
 std::uint32_t push_constant_bytes(std::span<const VkPushConstantRange> ranges);
 
-// Throws tilelight::Error naming `what` unless `bindings` (one set) are exactly `count` single
+// Throws tilelight::Error naming `what` and both lists unless `bindings` (one set, in binding
+// order) are exactly one descriptor of each of `types`, at bindings 0..types.size()-1: what a
+// pass binds that writes those descriptors in order.
+void check_bindings(std::span<const VkDescriptorSetLayoutBinding> bindings, std::span<const VkDescriptorType> types,
+                    std::string_view what);
+
+// check_bindings() with `count` storage buffers: exactly `count` single
 // storage buffers at bindings 0..count-1: what a pass writes that binds `count` buffers in order.
 // Precondition: count >= 1.
 void check_storage_buffers(std::span<const VkDescriptorSetLayoutBinding> bindings, std::uint32_t count,

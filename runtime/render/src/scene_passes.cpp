@@ -2,6 +2,7 @@
 
 #include "descriptors.h"
 #include "pipelines.h"
+#include "reflected_layout.h"
 #include "shader_registry.h"
 #include "tilelight/scene/uniform_blocks.h"
 #include "tilelight/vulkan/context.h"
@@ -47,11 +48,37 @@ std::vector<VkVertexInputAttributeDescription> scene_attributes() {
   return a;
 }
 
+// Every shader drawn with the scene's pipeline layout: the shadow map's and both G-buffers'.
+std::array<const shadergen::Reflection*, 7> scene_shaders(const shadergen::Registry& shaders) {
+  const auto of = [&](std::string_view name) { return &companion_shader(shaders, name).reflection; };
+  return {of("scene"),      of("shadow"), of("gbuffer"),    of("gbuffer_flagged"),
+          of("sky_vertex"), of("sky"),    of("sky_flagged")};
+}
+
+// Set `set` of the scene's pipeline layout, as the scene shaders' reflection declares it;
+// `expected` is what ScenePasses or SceneTextures binds there (checked).
+std::vector<VkDescriptorSetLayoutBinding> scene_set_bindings(const shadergen::Registry& shaders, std::uint32_t set,
+                                                             VkDescriptorType expected, std::string_view what) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings = merged_set_bindings(scene_shaders(shaders), set, what);
+  check_bindings(bindings, std::span(&expected, 1), what);
+  return bindings;
+}
+
+std::vector<VkDescriptorSetLayoutBinding> scene_params_bindings(const RenderTargets& targets) {
+  return scene_set_bindings(shaders_for(targets.samples()), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                            "scene set 0 (scene parameters)");
+}
+
+std::vector<VkDescriptorSetLayoutBinding> base_colour_bindings(const RenderTargets& targets) {
+  return scene_set_bindings(shaders_for(targets.samples()), 1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            "scene set 1 (base colour texture)");
+}
+
 }  // namespace
 
 ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
                          VkDescriptorPool pool, const CommandPool& upload_pool)
-    : textures_(context, upload_pool, scene.textures), batches_(scene.batches) {
+    : textures_(context, upload_pool, scene.textures, base_colour_bindings(targets)), batches_(scene.batches) {
   for (const Mesh& mesh : scene.meshes) {
     MeshBuffers buffers;
     buffers.vertices = upload_buffer<MeshVertex>(context, mesh.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
@@ -67,15 +94,15 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   params_ = upload_buffer<SceneParamsBlock>(context, std::span(&block, 1), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                             "scene parameters");
 
-  const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
-                                             VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-  set_layout_ = create_descriptor_set_layout(context, std::span(&binding, 1), "scene set layout");
+  set_layout_ = create_descriptor_set_layout(context, scene_params_bindings(targets), "scene set layout");
   const VkDescriptorSetLayout set_layouts[] = {set_layout_.get(), textures_.set_layout()};
-  layout_ = create_pipeline_layout(context, set_layouts, {}, "scene pipeline layout");
+  const shadergen::Registry& shaders = shaders_for(targets.samples());
+  const std::vector<VkPushConstantRange> push =
+      merged_push_constant_ranges(scene_shaders(shaders), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+  layout_ = create_pipeline_layout(context, set_layouts, push, "scene pipeline layout");
   set_ = allocate_descriptor_set(context, pool, set_layout_.get(), "scene descriptor set");
   write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
 
-  const shadergen::Registry& shaders = shaders_for(targets.samples());
   plain_ = create_gbuffer_pipelines(context, shaders, targets, false);
   if (targets.has_coverage_flags()) {
     if (!context.features().post_depth_coverage) {

@@ -76,7 +76,8 @@ void record_copy(VkCommandBuffer cmd, const Image& image, VkBuffer staging, cons
 
 }  // namespace
 
-SceneTextures::SceneTextures(const Context& context, const CommandPool& pool, const std::vector<Texture>& textures) {
+SceneTextures::SceneTextures(const Context& context, const CommandPool& pool, const std::vector<Texture>& textures,
+                             std::span<const VkDescriptorSetLayoutBinding> set_bindings) {
   const auto set_count = static_cast<std::uint32_t>(textures.size() + 1);
   const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, set_count};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -89,9 +90,7 @@ SceneTextures::SceneTextures(const Context& context, const CommandPool& pool, co
   descriptor_pool_ = UniqueDescriptorPool(descriptor_pool, {context.device()});
   context.name_object(descriptor_pool, "base colour textures");
 
-  const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                             VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-  set_layout_ = create_descriptor_set_layout(context, std::span(&binding, 1), "base colour texture set layout");
+  set_layout_ = create_descriptor_set_layout(context, set_bindings, "base colour texture set layout");
   textures_.reserve(set_count);
   for (const Texture& texture : textures) textures_.push_back(upload(context, pool, texture));
   textures_.push_back(upload(context, pool, white_texture()));

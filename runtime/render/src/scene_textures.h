@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace tilelight {
@@ -21,10 +22,13 @@ class Context;
 class SceneTextures {
  public:
   // Uploads every texture (a submit each, waited for) and writes the sets. Throws tilelight::Error
-  // naming the texture if the device cannot hold it.
-  SceneTextures(const Context& context, const CommandPool& pool, const std::vector<Texture>& textures);
+  // naming the texture if the device cannot hold it. `set_bindings`: the texture set's layout as
+  // the material shaders' reflection declares it; precondition: one combined image sampler at
+  // binding 0 (what this class writes).
+  SceneTextures(const Context& context, const CommandPool& pool, const std::vector<Texture>& textures,
+                std::span<const VkDescriptorSetLayoutBinding> set_bindings);
 
-  // The layout of each texture's set: one combined image sampler, fragment stage.
+  // The layout of each texture's set.
   VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
 
   // The set of texture `texture` (an index into the scene's textures), or the white one.

@@ -8,6 +8,14 @@
 
 namespace tilelight {
 
+TileLightPass::TileLightPass(const TileLightPassSetup& setup)
+    : host_builds_(setup.path == IndexPath::cpu), floor_(setup.floor) {}
+
+const FloorTarget& TileLightPass::floor() const {
+  if (floor_ == nullptr) throw Error("the floor pass was recorded, but this renderer does not run it");
+  return *floor_;
+}
+
 void TileLightPass::record_prepare(VkCommandBuffer, const RenderTargets&) const {}
 
 std::unique_ptr<TileLightPass> make_tile_light_pass(LightPass kind, const TileLightPassSetup& setup) {

@@ -45,6 +45,9 @@ struct TileLightPassSetup {
   const FloorTarget* floor;  // the floor pass's target; null where the floor pass does not run
 };
 
+// The full-frame baseline light passes, each run on the plain G-buffer.
+enum class BaselinePass { naive, dynamic, floor };
+
 class TileLightPass {
  public:
   virtual ~TileLightPass() = default;
@@ -55,7 +58,7 @@ class TileLightPass {
 
   // True on the CPU path: each frame the host must build_on_host() between classification and
   // the signal that releases submit B. False on the GPU path: record_build() goes into submit A.
-  virtual bool host_builds() const = 0;
+  bool host_builds() const { return host_builds_; }
 
   // GPU path (precondition: !host_builds()): the build, after classification in submit A; it
   // ends with the barrier that makes its output visible to the tile pass.
@@ -64,10 +67,9 @@ class TileLightPass {
   virtual void record_prepare(VkCommandBuffer cmd, const RenderTargets& targets) const;
   // The tile pass, recorded once: it reads what the build writes later, each frame.
   virtual void record_tiled(VkCommandBuffer cmd, const RenderTargets& targets) const = 0;
-  virtual void record_naive(VkCommandBuffer cmd, const RenderTargets& targets) const = 0;
-  virtual void record_dynamic(VkCommandBuffer cmd, const RenderTargets& targets) const = 0;
-  // Precondition: the setup's `floor` was this target.
-  virtual void record_floor(VkCommandBuffer cmd, const RenderTargets& targets, const FloorTarget& floor) const = 0;
+  // A baseline, into its own target. Precondition for BaselinePass::floor: the setup had a
+  // `floor` target (checked: tilelight::Error).
+  virtual void record_baseline(VkCommandBuffer cmd, const RenderTargets& targets, BaselinePass pass) const = 0;
 
   // CPU path (precondition: host_builds()): builds the frame's work from the classification's
   // blocked raw IDs into the host-visible buffers the tile pass reads. Throws tilelight::Error
@@ -81,6 +83,16 @@ class TileLightPass {
   // build_on_host(); on the GPU path read back from the build (precondition: the frame's fence
   // was waited for), throwing tilelight::Error where a tile had an impossible raw ID.
   virtual FrameStats stats() const = 0;
+
+ protected:
+  // `setup`: that of the implementation, whose path and floor target this keeps.
+  explicit TileLightPass(const TileLightPassSetup& setup);
+  // The setup's floor target; throws tilelight::Error where the floor pass does not run.
+  const FloorTarget& floor() const;
+
+ private:
+  bool host_builds_;
+  const FloorTarget* floor_;
 };
 
 // Precondition: setup.floor is non-null iff the renderer runs the floor pass.

@@ -236,15 +236,15 @@ struct TileRenderer::Impl {
     record_plain_gbuffer(cmd);
     tile_queries.write(cmd, std::string(kGBufferPlain));
     if (runs_naive()) {
-      light_pass->record_naive(cmd, *targets);
+      light_pass->record_baseline(cmd, *targets, BaselinePass::naive);
       tile_queries.write(cmd, std::string(kNaive));
     }
     if (runs_dynamic()) {
-      light_pass->record_dynamic(cmd, *targets);
+      light_pass->record_baseline(cmd, *targets, BaselinePass::dynamic);
       tile_queries.write(cmd, std::string(kDynamic));
     }
     if (runs_floor()) {
-      light_pass->record_floor(cmd, *targets, *floor_target);
+      light_pass->record_baseline(cmd, *targets, BaselinePass::floor);
       tile_queries.write(cmd, std::string(kFloor));
     }
   }

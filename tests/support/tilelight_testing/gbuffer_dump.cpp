@@ -1,5 +1,7 @@
 #include "tilelight_testing/gbuffer_dump.h"
 
+#include "tilelight_testing/gbuffer_form_shader.h"
+
 #include "descriptors.h"
 #include "lighting_interface.h"
 #include "pipelines.h"
@@ -19,12 +21,11 @@ namespace {
 constexpr std::uint32_t kOutputSet = 1;  // gbuffer_dump.comp: set 1, binding 0
 constexpr std::uint32_t kGroupSize = 8;  // local_size_x and _y
 
-// The dump compiled for this G-buffer's form (the test domain's one dimension).
+// The dump compiled for this G-buffer's form.
 const shadergen::Permutation& dump_shader(VkSampleCountFlagBits samples) {
-  const std::optional<std::uint32_t> id = gbuffer_dump::raw_id({.SINGLE_SAMPLED = samples == VK_SAMPLE_COUNT_1_BIT});
-  const shadergen::Permutation* shader = id ? gbuffer_dump::registry().find_raw(*id) : nullptr;
-  if (shader == nullptr) throw Error("the test domain gbuffer_dump has no shader for this G-buffer");
-  return *shader;
+  return gbuffer_form_shader(gbuffer_dump::registry(),
+                             gbuffer_dump::raw_id({.SINGLE_SAMPLED = samples == VK_SAMPLE_COUNT_1_BIT}),
+                             "gbuffer_dump");
 }
 
 }  // namespace

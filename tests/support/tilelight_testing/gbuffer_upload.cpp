@@ -1,5 +1,7 @@
 #include "tilelight_testing/gbuffer_upload.h"
 
+#include "tilelight_testing/gbuffer_form_shader.h"
+
 #include "descriptors.h"
 #include "pipelines.h"
 #include "reflected_layout.h"
@@ -16,12 +18,11 @@
 namespace tilelight {
 namespace {
 
-// The upload compiled for this G-buffer's form (the test domain's one dimension).
+// The upload compiled for this G-buffer's form.
 const shadergen::Permutation& upload_shader(VkSampleCountFlagBits samples) {
-  const std::optional<std::uint32_t> id = gbuffer_upload::raw_id({.SINGLE_SAMPLED = samples == VK_SAMPLE_COUNT_1_BIT});
-  const shadergen::Permutation* shader = id ? gbuffer_upload::registry().find_raw(*id) : nullptr;
-  if (shader == nullptr) throw Error("the test domain gbuffer_upload has no shader for this G-buffer");
-  return *shader;
+  return gbuffer_form_shader(gbuffer_upload::registry(),
+                             gbuffer_upload::raw_id({.SINGLE_SAMPLED = samples == VK_SAMPLE_COUNT_1_BIT}),
+                             "gbuffer_upload");
 }
 
 }  // namespace
