@@ -1,5 +1,6 @@
 #include "glb_container.h"
 
+#include "json_schema.h"
 #include "tilelight/base/error.h"
 
 #include <fmt/format.h>
@@ -30,6 +31,7 @@ GlbChunks split_glb(std::span<const std::uint8_t> bytes) {
     throw Error(fmt::format("truncated GLB: {} bytes, fewer than a GLB header and a chunk header (20)", bytes.size()));
   }
   const std::uint32_t version = read_u32(bytes, 4);
+  if (version == 1) throw Error(kGltf1Refused);
   if (version != 2) throw Error(fmt::format("GLB version {}; only glTF 2.0 (version 2) is supported", version));
   const std::uint64_t length = read_u32(bytes, 8);
   if (length > bytes.size()) {
