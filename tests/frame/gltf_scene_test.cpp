@@ -153,8 +153,9 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, GltfTexturedFrame,
                          ::testing::Values("textured_quad.glb", "textured_quad_texcoord1.gltf",
                                            "textured_quad_quantized.gltf", "textured_quad_quantized_bytes.gltf"));
 
-// The geometry real files use (sparse accessors, KHR_mesh_quantization) through the whole
-// frame: classified == naive and dynamic == naive, every tile drawn once, under validation.
+// The geometry real files use (sparse accessors, KHR_mesh_quantization,
+// EXT_meshopt_compression) through the whole frame: classified == naive and dynamic == naive,
+// every tile drawn once, under validation.
 class GltfGeometryFrame : public VulkanTest, public ::testing::WithParamInterface<const char*> {};
 
 TEST_P(GltfGeometryFrame, ClassifiedEqualsNaivePerPixel) {
@@ -179,7 +180,7 @@ TEST_P(GltfGeometryFrame, ClassifiedEqualsNaivePerPixel) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, GltfGeometryFrame,
-                         ::testing::Values("box_sparse.gltf", "textured_quad_quantized.gltf"));
+                         ::testing::Values("box_sparse.gltf", "textured_quad_quantized.gltf", "box_meshopt.gltf"));
 
 }  // namespace
 }  // namespace tilelight::test

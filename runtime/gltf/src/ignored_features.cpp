@@ -12,9 +12,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-// Extensions the loader implements: using them drops nothing.
-bool implemented(std::string_view extension) { return extension == "KHR_mesh_quantization"; }
-
 // An extension's name as the file spells it, made one short line: it is any JSON string.
 std::string printable(const std::string& name) {
   constexpr std::size_t kLongest = 64;
@@ -153,7 +150,7 @@ std::size_t punctual_lights(const Json& root) {
 
 void extension_features(const Json& root, std::vector<std::string>& lines) {
   for (const auto& [name, where] : extension_uses(root)) {
-    if (implemented(name)) continue;
+    if (implemented_extension(name)) continue;
     if (name == "KHR_lights_punctual") {  // until local lights land
       lines.push_back(fmt::format("{} ({}) ignored: the sun alone lights the scene", printable(name),
                                   counted(punctual_lights(root), "lights")));
@@ -171,6 +168,10 @@ void extension_features(const Json& root, std::vector<std::string>& lines) {
 }
 
 }  // namespace
+
+bool implemented_extension(std::string_view name) {
+  return name == "KHR_mesh_quantization" || name == "EXT_meshopt_compression";
+}
 
 std::vector<std::string> ignored_features(const nlohmann::json& root) {
   std::vector<std::string> lines;

@@ -9,9 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tilelight::gltf_detail {
+
+// Whether the loader implements the extension (reads what it means): using it drops nothing.
+bool implemented_extension(std::string_view name);
 
 // The lines, without the file's name, in a fixed order: core features, then extensions by name.
 std::vector<std::string> ignored_features(const nlohmann::json& root);

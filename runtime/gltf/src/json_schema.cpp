@@ -1,5 +1,7 @@
 #include "json_schema.h"
 
+#include "ignored_features.h"
+
 #include "tilelight/base/error.h"
 
 #include <fmt/format.h>
@@ -232,9 +234,6 @@ bool ignorable_extension(std::string_view name) {
   return name.rfind("KHR_materials_", 0) == 0 || name == "KHR_texture_transform" || name == "KHR_lights_punctual";
 }
 
-// Extensions this loader implements.
-bool supported_extension(std::string_view name) { return name == "KHR_mesh_quantization"; }
-
 // glTF 1.0 (and its drafts) says so in asset.version, as a string or a number, or, without
 // one, shows it by keeping its objects in dictionaries where 2.0 has arrays.
 bool is_gltf1(const Json& root) {
@@ -335,7 +334,7 @@ Json check_json_schema(std::string_view json_text) {
   if (version.rfind("2.", 0) != 0) throw Error("asset.version is \"" + version + "\"; only glTF 2.x is supported");
   if (const auto required = root.find("extensionsRequired"); required != root.end()) {
     for (const Json& name : *required) {
-      if (!ignorable_extension(name.get<std::string>()) && !supported_extension(name.get<std::string>())) {
+      if (!ignorable_extension(name.get<std::string>()) && !implemented_extension(name.get<std::string>())) {
         throw Error("requires the extension " + name.get<std::string>() + ", which this loader does not support");
       }
     }

@@ -7,6 +7,7 @@
 #include "glb_container.h"
 #include "ignored_features.h"
 #include "json_schema.h"
+#include "meshopt_views.h"
 #include "node_graph.h"
 #include "primitive_mesh.h"
 #include "read_file.h"
@@ -73,17 +74,23 @@ std::string one_line(std::string text) {
   return text.empty() ? "tinygltf rejected the file without saying why" : text;
 }
 
-// The parsed file, and the features of it that are not drawn (ignored_features.h).
+// The parsed file, the features of it that are not drawn (ignored_features.h) and its
+// compressed buffer views, not yet decoded (meshopt_views.h).
 struct Parsed {
   tinygltf::Model model;
   std::vector<std::string> ignored;
+  std::vector<MeshoptView> meshopt;
 };
 
-// The JSON checked before tinygltf reads it: types, glTF 1.0, external buffers present.
-std::vector<std::string> check_json(std::string_view json, const std::filesystem::path& base_dir) {
-  const nlohmann::json root = check_json_schema(json);
+// The JSON checked before tinygltf reads it: types, glTF 1.0, external buffers present,
+// compressed views. Returns the JSON tinygltf is to read instead of `json`, or "" for `json`
+// itself: a meshopt fallback buffer is given bytes tinygltf can load.
+std::string check_json(std::string_view json, const std::filesystem::path& base_dir, Parsed& parsed) {
+  nlohmann::json root = check_json_schema(json);
   check_external_buffers(root, base_dir);
-  return ignored_features(root);
+  parsed.ignored = ignored_features(root);
+  parsed.meshopt = meshopt_views(root);
+  return empty_fallback_buffers(root) ? root.dump() : std::string();
 }
 
 Parsed parse(std::span<const std::uint8_t> bytes, const std::filesystem::path& base_dir) {
@@ -96,18 +103,25 @@ Parsed parse(std::span<const std::uint8_t> bytes, const std::filesystem::path& b
   bool ok = false;
   if (is_glb(bytes)) {
     // A GLB's JSON chunk is padded to 4 bytes with spaces; NULs there are tolerated as padding.
-    std::string_view json = split_glb(bytes).json;
+    const GlbChunks chunks = split_glb(bytes);
+    std::string_view json = chunks.json;
     while (!json.empty() && json.back() == '\0') json.remove_suffix(1);
-    parsed.ignored = check_json(json, base_dir);
-    ok = parser.LoadBinaryFromMemory(&parsed.model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
+    const std::string rewritten = check_json(json, base_dir, parsed);
+    const std::vector<std::uint8_t> glb =
+        rewritten.empty() ? std::vector<std::uint8_t>() : make_glb(rewritten, chunks.bin);
+    const std::span<const std::uint8_t> input = rewritten.empty() ? bytes : std::span<const std::uint8_t>(glb);
+    ok = parser.LoadBinaryFromMemory(&parsed.model, &err, &warn, input.data(), static_cast<unsigned int>(input.size()),
                                      base_dir.string());
   } else {
     if (bytes.empty()) throw Error("the file is empty");
-    parsed.ignored = check_json(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), base_dir);
-    ok = parser.LoadASCIIFromString(&parsed.model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                    static_cast<unsigned int>(bytes.size()), base_dir.string());
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    const std::string rewritten = check_json(text, base_dir, parsed);
+    const std::string_view input = rewritten.empty() ? text : std::string_view(rewritten);
+    ok = parser.LoadASCIIFromString(&parsed.model, &err, &warn, input.data(), static_cast<unsigned int>(input.size()),
+                                    base_dir.string());
   }
   if (!ok) throw Error(one_line(err));
+  decode_meshopt_views(parsed.model, parsed.meshopt);
   return parsed;
 }
 
