@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -138,6 +139,47 @@ TEST(GltfMeshopt, ACompressedGltfLoadsAsTheBox) {
 TEST(GltfMeshopt, ACompressedGlbWithAnEmptyFallbackBufferLoadsAsTheBox) {
   const Bytes glb = glb_box();
   expect_box(load_gltf_from_memory(glb, "box_meshopt.glb", {}).scene);
+}
+
+// Normals as gltfpack stores them: 8-bit octahedral (KHR_mesh_quantization's normalized
+// bytes), compressed with the OCTAHEDRAL filter.
+TEST(GltfMeshopt, OctahedralFilteredNormalsLoadAsTheBoxNormals) {
+  Bytes compressed;
+  Json doc = compressed_box(compressed);
+  const Bytes plain = read_bytes(kFixtures / "box_external.bin");
+  Json& view = doc["bufferViews"][1];
+  const std::size_t offset = view["byteOffset"], count = 24, stride = 4;
+  std::vector<float> normals(count * 4, 0.0f);
+  for (std::size_t i = 0; i < count; ++i) std::memcpy(&normals[i * 4], plain.data() + offset + i * 12, 12);
+  Bytes filtered(count * stride);
+  meshopt_encodeFilterOct(filtered.data(), count, stride, 8, normals.data());
+  Bytes encoded(meshopt_encodeVertexBufferBound(count, stride));
+  encoded.resize(meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), filtered.data(), count, stride));
+  view["byteLength"] = count * stride;
+  view["byteStride"] = stride;
+  view["extensions"]["EXT_meshopt_compression"] = {{"buffer", 0},
+                                                   {"byteOffset", compressed.size()},
+                                                   {"byteLength", encoded.size()},
+                                                   {"byteStride", stride},
+                                                   {"count", count},
+                                                   {"mode", "ATTRIBUTES"},
+                                                   {"filter", "OCTAHEDRAL"}};
+  compressed.insert(compressed.end(), encoded.begin(), encoded.end());
+  doc["accessors"][1]["componentType"] = 5120;
+  doc["accessors"][1]["normalized"] = true;
+  doc["extensionsUsed"].push_back("KHR_mesh_quantization");
+  doc["buffers"][0]["byteLength"] = compressed.size();
+  doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(compressed);
+
+  const Scene scene = load_text(doc.dump()).scene;
+  const Scene box = load_gltf_scene(kFixtures / "box.gltf");
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  ASSERT_EQ(scene.meshes[0].vertices.size(), box.meshes[0].vertices.size());
+  for (std::size_t i = 0; i < box.meshes[0].vertices.size(); ++i) {
+    EXPECT_EQ(scene.meshes[0].vertices[i].position, box.meshes[0].vertices[i].position) << i;
+    const glm::vec3 n = scene.meshes[0].vertices[i].normal, expected = box.meshes[0].vertices[i].normal;
+    EXPECT_NEAR(glm::dot(n, expected), 1.0f, 1e-5f) << i << ": the filter was not undone";
+  }
 }
 
 TEST(GltfMeshopt, TheCheckedInFixtureLoadsAsTheBox) { expect_box(load_gltf_scene(kFixtures / "box_meshopt.gltf")); }
