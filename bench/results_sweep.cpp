@@ -31,6 +31,7 @@
 #include <iostream>
 #include <map>
 #include <tuple>
+#include <utility>
 
 namespace {
 
@@ -113,11 +114,14 @@ std::vector<Measurement> measure_in_groups(const Context& context, const Scene& 
   return measurements;
 }
 
-// The procedural scene, or the --scene file (a bad one is an error naming the flag and file).
+// The procedural scene, or the --scene file (a bad one is an error naming the flag and file;
+// what it holds that is not drawn is a warning on stderr, as tilelight prints it).
 Scene sweep_scene(const SweepOptions& options) {
   if (options.scene.empty()) return make_demo_scene();
   try {
-    return load_gltf_scene(options.scene, GltfLoadOptions{options.scene_index});
+    GltfScene loaded = load_gltf(options.scene, GltfLoadOptions{options.scene_index});
+    for (const std::string& warning : loaded.warnings) std::cerr << warning << '\n';
+    return std::move(loaded.scene);
   } catch (const Error& e) {
     throw Error(std::string("--scene ") + e.what());
   }

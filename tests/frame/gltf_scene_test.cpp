@@ -150,7 +150,37 @@ TEST_P(GltfTexturedFrame, EveryCoveredSampleStoresATexelOfTheBaseColourTexture) 
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, GltfTexturedFrame,
-                         ::testing::Values("textured_quad.glb", "textured_quad_texcoord1.gltf"));
+                         ::testing::Values("textured_quad.glb", "textured_quad_texcoord1.gltf",
+                                           "textured_quad_quantized.gltf", "textured_quad_quantized_bytes.gltf"));
+
+// The geometry real files use (sparse accessors, KHR_mesh_quantization,
+// EXT_meshopt_compression) through the whole frame: classified == naive and dynamic == naive,
+// every tile drawn once, under validation.
+class GltfGeometryFrame : public VulkanTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(GltfGeometryFrame, ClassifiedEqualsNaivePerPixel) {
+  const Scene scene = load_gltf_scene(kFixtures / GetParam());
+  RendererOptions options;
+  options.width = 128;
+  options.height = 96;
+  TileRenderer renderer(context(), scene, options);
+  const FrameResult frame = renderer.render_frame();
+  const RgbaImage naive = renderer.read_naive();
+  const FrameComparison classified = compare(renderer.read_classified(), naive, kEquivalenceTolerance);
+  EXPECT_EQ(classified.magenta_pixels, 0u) << "tiles left undrawn";
+  EXPECT_EQ(classified.pixels_over_tolerance, 0u) << classified.first_difference;
+  const FrameComparison dynamic = compare(renderer.read_dynamic(), naive, kEquivalenceTolerance);
+  EXPECT_EQ(dynamic.pixels_over_tolerance, 0u) << "dynamic vs naive: " << dynamic.first_difference;
+  EXPECT_EQ(std::accumulate(frame.stats.class_tiles.begin(), frame.stats.class_tiles.end(), 0u),
+            renderer.grid().tile_count());
+  const std::vector<std::uint8_t> ids = renderer.raw_tile_ids();
+  EXPECT_TRUE(std::any_of(ids.begin(), ids.end(), [](std::uint8_t id) {
+    return (id & split_second::raw_bit::SKY) == 0;
+  })) << "the model covers no tile";
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, GltfGeometryFrame,
+                         ::testing::Values("box_sparse.gltf", "textured_quad_quantized.gltf", "box_meshopt.gltf"));
 
 }  // namespace
 }  // namespace tilelight::test

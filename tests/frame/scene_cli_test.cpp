@@ -48,8 +48,64 @@ TEST(TilelightScene, TheProceduralSceneIsReportedAsNoFile) {
   std::ifstream file(out / "report.json");
   const nlohmann::json report = nlohmann::json::parse(file);
   EXPECT_TRUE(report["scene"].is_null());
+  EXPECT_EQ(report["scene_warnings"], nlohmann::json::array());
   EXPECT_EQ(report["scene_triangles"], make_demo_scene().triangle_count());
   EXPECT_NE(r.out.find("scene procedural ("), std::string::npos) << r.out;
+}
+
+// What the file holds that is not drawn: one line each on stderr, the same lines in report.json.
+TEST(TilelightScene, WarnsOfEveryIgnoredFeatureOnStderrAndInTheReport) {
+  const fs::path model = kFixtures / "ignored_features.gltf";
+  const fs::path out = scratch_dir() / "out";
+  const CliResult r =
+      run_cli({"--scene", model.string(), "--width", "64", "--height", "48", "--validation", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string file = "warning: " + model.string() + ": ";
+  const std::vector<std::string> lines{
+      file + "2 animations ignored: drawn in the rest pose",
+      file + "1 skin ignored: meshes are drawn as stored, unskinned",
+      file + "1 camera ignored: the default camera frames the scene",
+      file + "morph targets (1 primitive) ignored: drawn in the base shape",
+      file + "points and lines (1 primitive) ignored: they have no surface",
+      file + "vertex colours (1 primitive) ignored",
+      file + "alphaMode MASK (1 material) ignored: drawn opaque",
+      file + "alphaMode BLEND (1 material) ignored: drawn opaque",
+      file + "normalTexture (1 material) ignored",
+      file + "emissiveFactor (1 material) ignored",
+      file + "EXT_unknown_thing ignored",
+      file + "KHR_lights_punctual (2 lights) ignored: the sun alone lights the scene",
+      file + "KHR_materials_sheen (2 materials) ignored",
+      file + "KHR_texture_transform (1 material) ignored",
+  };
+  std::string stderr_text;
+  for (const std::string& line : lines) stderr_text += line + "\n";
+  EXPECT_EQ(r.err, stderr_text);
+  std::ifstream file_stream(out / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(file_stream);
+  EXPECT_EQ(report["scene_warnings"], nlohmann::json(lines));
+  EXPECT_EQ(report["equivalence"]["pixels_different"], 0);
+  EXPECT_EQ(report["dynamic_equivalence"]["pixels_different"], 0);
+}
+
+// glTF 1.0 and a missing external file: exit 1, the whole message, nothing written.
+TEST(TilelightScene, Gltf1AndMissingFilesAreNamedInOurWords) {
+  const fs::path truck = kModels.parent_path() / "glTF/CesiumMilkTruck/CesiumMilkTruck.gltf";
+  const fs::path bin = kFixtures / "bad_missing_bin.gltf";
+  const std::vector<std::pair<fs::path, std::string>> cases{
+      {kFixtures / "bad_gltf1.gltf", "glTF 1.0 is not supported; convert it to 2.0"},
+      {kFixtures / "bad_gltf1.glb", "glTF 1.0 is not supported; convert it to 2.0"},
+      {truck, "glTF 1.0 is not supported; convert it to 2.0"},
+      {bin, "buffers[0]: the file " + (kFixtures / "no_such_file.bin").string() +
+                " does not exist (uri \"no_such_file.bin\")"},
+  };
+  for (const auto& [path, message] : cases) {
+    SCOPED_TRACE(path.string());
+    const fs::path out = scratch_dir() / "out";
+    const CliResult r = run_cli({"--scene", path.string(), "--out", out.string()});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.err, "tilelight: error: --scene " + path.string() + ": " + message + "\n");
+    EXPECT_FALSE(fs::exists(out)) << "the output folder was made";
+  }
 }
 
 TEST(TilelightScene, ListsTheScenesCameras) {
@@ -78,6 +134,8 @@ TEST(TilelightScene, BadFilesExitOneNamingTheFileAndWriteNothing) {
       {kModels / "RecursiveNodes/RecursiveNodes.gltf", "cycle"},
       {kModels / "MissingBin/BoxTextured.gltf", "BoxTextured0.bin"},
       {kModels / "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", "not finite"},
+      {kFixtures / "bad_sparse_index_range.gltf", "accessors[0].sparse.indices: index 24 at element 3 is out of range"},
+      {kFixtures / "bad_quantized_not_listed.gltf", "needs KHR_mesh_quantization"},
   };
   for (const BadScene& c : cases) {
     SCOPED_TRACE(c.file.string());

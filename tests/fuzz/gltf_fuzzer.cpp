@@ -5,7 +5,8 @@
 // Beyond "no crash, no hang, no leak", it checks that every rejection is a tilelight::Error
 // naming the file and saying what is wrong, and that an accepted file gives a scene the
 // renderer can draw: every reference in range, every index below its mesh's vertex count,
-// positions and transforms finite, unit normals, at least one triangle, a default camera.
+// positions and transforms finite, unit normals, at least one triangle, a default camera, and
+// every warning a line "warning: fuzz.glb: ..." (what the file holds that is not drawn).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -58,7 +59,12 @@ void check_scene(const tilelight::Scene& scene) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using shadergen::fuzz::require;
   try {
-    check_scene(tilelight::load_gltf_scene_from_memory(std::span(data, size), kFile, {}));
+    const tilelight::GltfScene loaded = tilelight::load_gltf_from_memory(std::span(data, size), kFile, {});
+    check_scene(loaded.scene);
+    for (const std::string& warning : loaded.warnings) {
+      require(warning.rfind(std::string("warning: ") + kFile + ": ", 0) == 0, "every warning names the file");
+      require(warning.find('\n') == std::string::npos, "every warning is one line");
+    }
   } catch (const tilelight::Error& e) {
     const std::string_view what = e.what();
     const std::string prefix = std::string(kFile) + ": ";

@@ -36,10 +36,12 @@ RgbaImage display_encoded(const RgbaImage& linear) {
   return out;
 }
 
-// A bad file is an error about the flag's value: "--scene FILE: what is wrong".
-Scene load_scene(const Arguments& a) {
+// The procedural scene, or the --scene file with its warnings. A bad file is an error about
+// the flag's value: "--scene FILE: what is wrong".
+GltfScene load_scene(const Arguments& a) {
+  if (a.scene.empty()) return {make_demo_scene(), {}};
   try {
-    return load_gltf_scene(a.scene, GltfLoadOptions{a.scene_index});
+    return load_gltf(a.scene, GltfLoadOptions{a.scene_index});
   } catch (const Error& e) {
     throw OptionError("--scene", std::string("--scene ") + e.what());
   }
@@ -168,9 +170,11 @@ void write_outputs(OutputFiles& files, FrameReport& report, const ReadBack& fram
 
 }  // namespace
 
-int render_run(const Arguments& a, std::ostream& out, std::string& stage) {
+int render_run(const Arguments& a, std::ostream& out, std::ostream& err, std::string& stage) {
   stage = "building the scene";
-  const Scene scene = a.scene.empty() ? make_demo_scene() : load_scene(a);
+  const GltfScene loaded = load_scene(a);
+  for (const std::string& warning : loaded.warnings) err << warning << '\n';
+  const Scene& scene = loaded.scene;
   if (a.list_cameras) {
     for (const Camera& c : scene.cameras) out << c.name << ": " << c.description << '\n';
     return 0;
@@ -202,6 +206,7 @@ int render_run(const Arguments& a, std::ostream& out, std::string& stage) {
 
   stage = "comparing the frames and writing the results to " + a.out;
   FrameReport report = make_report(a, context, scene, *renderer, timed, frames);
+  report.run.scene_warnings = loaded.warnings;
   write_outputs(files, report, frames, a.tile_size);
 
   out << timing_table(report);

@@ -135,6 +135,8 @@ std::string report_json(const FrameReport& r) {
   // The --scene file's name, or null for the procedural scene; the triangles of either.
   j["scene"] = r.run.scene.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.run.scene);
   j["scene_triangles"] = r.run.scene_triangles;
+  // The lines "warning: FILE: ..." printed on stderr; [] for the procedural scene.
+  j["scene_warnings"] = r.run.scene_warnings;
   j["coalesce"] = r.run.coalesce;
   j["primitive"] = r.run.primitive;
   j["baselines"] = name_of(baseline_names(), r.run.baselines);

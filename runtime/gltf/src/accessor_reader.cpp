@@ -1,24 +1,18 @@
 #include "accessor_reader.h"
 
+#include "accessor_elements.h"
 #include "tilelight/base/error.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <limits>
 #include <string>
 
 namespace tilelight::gltf_detail {
 namespace {
 
-// Where an accessor's elements are: `count` elements of `element_bytes`, `stride` apart,
-// starting at `data`. Every byte of it is inside the loaded buffer.
-struct ElementRange {
-  const std::uint8_t* data = nullptr;
-  std::size_t count = 0;
-  std::size_t stride = 0;
-};
+enum class Use { position, normal, texcoord };
 
 std::string accessor_name(int index) { return fmt::format("accessors[{}]", index); }
 
@@ -27,35 +21,6 @@ const tinygltf::Accessor& find_accessor(const tinygltf::Model& model, int index,
     throw Error(fmt::format("{}: accessor {} does not exist (the file has {})", user, index, model.accessors.size()));
   }
   return model.accessors[static_cast<std::size_t>(index)];
-}
-
-ElementRange locate(const tinygltf::Model& model, int index, std::size_t element_bytes) {
-  const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(index)];
-  const std::string name = accessor_name(index);
-  if (accessor.sparse.isSparse) throw Error(name + ": sparse accessors are not supported");
-  if (accessor.bufferView < 0) throw Error(name + ": no bufferView (an all-zero accessor has nothing to draw)");
-  const std::span<const std::uint8_t> bytes = buffer_view_bytes(model, accessor.bufferView, name);
-  const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
-  const std::string view_name = fmt::format("bufferViews[{}]", accessor.bufferView);
-  const std::size_t stride = view.byteStride != 0 ? view.byteStride : element_bytes;
-  if (stride < element_bytes) {
-    throw Error(fmt::format("{}: byteStride {} is smaller than an element of {} ({} bytes)", view_name, view.byteStride,
-                            name, element_bytes));
-  }
-  ElementRange range{bytes.data(), accessor.count, stride};
-  if (accessor.count == 0) return range;
-  // count - 1 strides plus one element, without overflow: count is checked against the view
-  // before it is multiplied.
-  const std::uint64_t offset = accessor.byteOffset;
-  const std::uint64_t available = view.byteLength;
-  const bool fits = offset <= available && element_bytes <= available - offset &&
-                    accessor.count - 1 <= (available - offset - element_bytes) / stride;
-  if (!fits) {
-    throw Error(fmt::format("{}: {} elements of {} bytes, {} apart, from byte {} do not fit in {} ({} bytes)", name,
-                            accessor.count, element_bytes, stride, offset, view_name, available));
-  }
-  range.data += offset;
-  return range;
 }
 
 const char* type_name(int type) {
@@ -69,6 +34,99 @@ const char* type_name(int type) {
     case TINYGLTF_TYPE_MAT4: return "MAT4";
     default: return "an unknown type";
   }
+}
+
+std::string component_name(int component) {
+  switch (component) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return "signed 8-bit integers";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "unsigned 8-bit integers";
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return "signed 16-bit integers";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "unsigned 16-bit integers";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "unsigned 32-bit integers";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "32-bit floats";
+    default: return fmt::format("component type {}", component);
+  }
+}
+
+std::string format_name(const tinygltf::Accessor& a) {
+  return fmt::format("{} of {}{}", type_name(a.type), component_name(a.componentType),
+                     a.normalized ? " (normalized)" : "");
+}
+
+bool small_integer(int component) {
+  return component == TINYGLTF_COMPONENT_TYPE_BYTE || component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+         component == TINYGLTF_COMPONENT_TYPE_SHORT || component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+}
+
+// The component formats core glTF 2.0 allows for the use ("Meshes", attribute table).
+bool core_format(Use use, int component, bool normalized) {
+  if (component == TINYGLTF_COMPONENT_TYPE_FLOAT) return true;
+  return use == Use::texcoord && normalized &&
+         (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+}
+
+// Those KHR_mesh_quantization adds: normals stay unit vectors, so only as normalized signed
+// integers; positions and texture coordinates in any 8 or 16-bit form (the node's transform or
+// the texture transform scales them back).
+bool quantized_format(Use use, int component, bool normalized) {
+  if (use == Use::normal) {
+    return normalized && (component == TINYGLTF_COMPONENT_TYPE_BYTE || component == TINYGLTF_COMPONENT_TYPE_SHORT);
+  }
+  return small_integer(component);
+}
+
+const char* expected_formats(Use use) {
+  switch (use) {
+    case Use::position: return "VEC3 of 32-bit floats (or, with KHR_mesh_quantization, of 8 or 16-bit integers)";
+    case Use::normal:
+      return "VEC3 of 32-bit floats (or, with KHR_mesh_quantization, of normalized signed 8 or 16-bit integers)";
+    case Use::texcoord:
+      return "VEC2 of 32-bit floats or of normalized unsigned 8 or 16-bit integers (or, with "
+             "KHR_mesh_quantization, of 8 or 16-bit integers)";
+  }
+  return "";
+}
+
+bool lists_quantization(const tinygltf::Model& model) {
+  return std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_mesh_quantization") !=
+         model.extensionsUsed.end();
+}
+
+// The accessor's type and format suit the use; a quantized format only where the file says so.
+void check_format(const tinygltf::Model& model, int index, const std::string& user, Use use) {
+  const tinygltf::Accessor& a = find_accessor(model, index, user);
+  const int expected_type = use == Use::texcoord ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3;
+  const std::string name = accessor_name(index);
+  const bool quantized = quantized_format(use, a.componentType, a.normalized);
+  if (a.type != expected_type || (!core_format(use, a.componentType, a.normalized) && !quantized)) {
+    throw Error(fmt::format("{} (used as {}): expected {}, got {}", name, user, expected_formats(use), format_name(a)));
+  }
+  if (!core_format(use, a.componentType, a.normalized) && !lists_quantization(model)) {
+    throw Error(
+        fmt::format("{} (used as {}): {} needs KHR_mesh_quantization, which the file does not list in "
+                    "extensionsUsed",
+                    name, user, format_name(a)));
+  }
+}
+
+// Components as read, `N` per element, every one finite.
+template <int N>
+std::vector<glm::vec<N, float>> read_vectors(const tinygltf::Model& model, int index, const std::string& user) {
+  const std::vector<float> components = read_float_components(model, index, N);
+  std::vector<glm::vec<N, float>> values(components.size() / N);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    bool finite = true;
+    for (int c = 0; c < N; ++c) {
+      values[i][c] = components[i * N + static_cast<std::size_t>(c)];
+      finite = finite && std::isfinite(values[i][c]);
+    }
+    if (!finite) {
+      std::string shown;
+      for (int c = 0; c < N; ++c) shown += fmt::format("{}{}", c == 0 ? "" : ", ", values[i][c]);
+      throw Error(fmt::format("{} (used as {}): element {} is not finite ({})", accessor_name(index), user, i, shown));
+    }
+  }
+  return values;
 }
 
 }  // namespace
@@ -94,100 +152,39 @@ std::span<const std::uint8_t> buffer_view_bytes(const tinygltf::Model& model, in
   return {buffer.data() + view.byteOffset, view.byteLength};
 }
 
-std::vector<glm::vec3> read_vec3(const tinygltf::Model& model, int index, const std::string& user) {
-  const tinygltf::Accessor& accessor = find_accessor(model, index, user);
-  const std::string name = accessor_name(index);
-  if (accessor.type != TINYGLTF_TYPE_VEC3 || accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
-    throw Error(fmt::format("{} (used as {}): expected VEC3 of 32-bit floats, got {} of component type {}", name, user,
-                            type_name(accessor.type), accessor.componentType));
-  }
-  const ElementRange range = locate(model, index, sizeof(float) * 3);
-  std::vector<glm::vec3> values(range.count);
-  for (std::size_t i = 0; i < range.count; ++i) {
-    float xyz[3];
-    std::memcpy(xyz, range.data + i * range.stride, sizeof xyz);
-    if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
-      throw Error(
-          fmt::format("{} (used as {}): element {} is not finite ({}, {}, {})", name, user, i, xyz[0], xyz[1], xyz[2]));
-    }
-    values[i] = glm::vec3(xyz[0], xyz[1], xyz[2]);
-  }
-  return values;
+std::vector<glm::vec3> read_positions(const tinygltf::Model& model, int index, const std::string& user) {
+  check_format(model, index, user, Use::position);
+  return read_vectors<3>(model, index, user);
+}
+
+std::vector<glm::vec3> read_normals(const tinygltf::Model& model, int index, const std::string& user) {
+  check_format(model, index, user, Use::normal);
+  return read_vectors<3>(model, index, user);
 }
 
 std::vector<glm::vec2> read_texcoords(const tinygltf::Model& model, int index, const std::string& user) {
-  const tinygltf::Accessor& accessor = find_accessor(model, index, user);
-  const std::string name = accessor_name(index);
-  const int component = accessor.componentType;
-  const bool normalised_integer = accessor.normalized && (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                                          component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-  if (accessor.type != TINYGLTF_TYPE_VEC2 || (component != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalised_integer)) {
-    throw Error(
-        fmt::format("{} (used as {}): expected VEC2 of 32-bit floats or of normalized unsigned 8 or 16-bit integers, "
-                    "got {} of component type {}{}",
-                    name, user, type_name(accessor.type), component, accessor.normalized ? " (normalized)" : ""));
-  }
-  const std::size_t component_bytes = component == TINYGLTF_COMPONENT_TYPE_FLOAT            ? 4
-                                      : component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
-                                                                                            : 1;
-  const ElementRange range = locate(model, index, component_bytes * 2);
-  std::vector<glm::vec2> values(range.count);
-  for (std::size_t i = 0; i < range.count; ++i) {
-    const std::uint8_t* p = range.data + i * range.stride;
-    if (component_bytes == 4) {
-      float uv[2];
-      std::memcpy(uv, p, sizeof uv);
-      if (!std::isfinite(uv[0]) || !std::isfinite(uv[1])) {
-        throw Error(fmt::format("{} (used as {}): element {} is not finite ({}, {})", name, user, i, uv[0], uv[1]));
-      }
-      values[i] = glm::vec2(uv[0], uv[1]);
-    } else if (component_bytes == 2) {
-      std::uint16_t uv[2];
-      std::memcpy(uv, p, sizeof uv);
-      values[i] = glm::vec2(uv[0], uv[1]) / 65535.0f;
-    } else {
-      values[i] = glm::vec2(p[0], p[1]) / 255.0f;
-    }
-  }
-  return values;
+  check_format(model, index, user, Use::texcoord);
+  return read_vectors<2>(model, index, user);
 }
 
 std::vector<std::uint32_t> read_indices(const tinygltf::Model& model, int index, const std::string& user,
                                         std::size_t vertex_count) {
   const tinygltf::Accessor& accessor = find_accessor(model, index, user);
   const std::string name = accessor_name(index);
-  std::size_t bytes = 0;
-  switch (accessor.componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: bytes = 1; break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: bytes = 2; break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: bytes = 4; break;
-    default: bytes = 0;
+  const int component = accessor.componentType;
+  const bool unsigned_integer = component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                                component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  if (accessor.type != TINYGLTF_TYPE_SCALAR || !unsigned_integer) {
+    throw Error(fmt::format("{} (used as {}): expected SCALAR of unsigned 8, 16 or 32-bit integers, got {}", name, user,
+                            format_name(accessor)));
   }
-  if (accessor.type != TINYGLTF_TYPE_SCALAR || bytes == 0) {
-    throw Error(
-        fmt::format("{} (used as {}): expected SCALAR of unsigned 8, 16 or 32-bit integers, got {} of component "
-                    "type {}",
-                    name, user, type_name(accessor.type), accessor.componentType));
-  }
-  const ElementRange range = locate(model, index, bytes);
-  std::vector<std::uint32_t> indices(range.count);
-  for (std::size_t i = 0; i < range.count; ++i) {
-    const std::uint8_t* p = range.data + i * range.stride;
-    std::uint32_t value = 0;
-    if (bytes == 1) {
-      value = *p;
-    } else if (bytes == 2) {
-      std::uint16_t v16 = 0;
-      std::memcpy(&v16, p, 2);
-      value = v16;
-    } else {
-      std::memcpy(&value, p, 4);
-    }
-    if (value >= vertex_count) {
+  std::vector<std::uint32_t> indices = read_uint_components(model, index);
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    if (indices[i] >= vertex_count) {
       throw Error(fmt::format("{} (used as {}): index {} at element {} is out of range (the primitive has {} vertices)",
-                              name, user, value, i, vertex_count));
+                              name, user, indices[i], i, vertex_count));
     }
-    indices[i] = value;
   }
   return indices;
 }

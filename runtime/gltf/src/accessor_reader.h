@@ -1,7 +1,8 @@
 #pragma once
-// Reading a glTF accessor's elements with every reference and length checked: the accessor,
-// its buffer view and buffer exist, the elements lie inside the view and the view inside the
-// buffer's bytes (as loaded, not as "byteLength" claims), the stride holds an element.
+// Reading a glTF accessor's elements for one use (positions, normals, texture coordinates,
+// indices), with the formats glTF allows for that use checked and every reference and length
+// checked (accessor_elements.h: dense, zero and sparse storage). The 8 and 16-bit integer
+// formats of KHR_mesh_quantization are read where the file lists it in extensionsUsed.
 // Errors are tilelight::Error naming the accessor ("accessors[3]: ..."), without the file.
 
 #include "tinygltf.h"
@@ -20,11 +21,17 @@ namespace tilelight::gltf_detail {
 std::span<const std::uint8_t> buffer_view_bytes(const tinygltf::Model& model, int index, const std::string& user);
 
 // The accessor `index`, which `user` ("meshes[0].primitives[1].attributes.POSITION") refers to.
-// Must be VEC3 of 32-bit floats, every component finite.
-std::vector<glm::vec3> read_vec3(const tinygltf::Model& model, int index, const std::string& user);
+// VEC3 of 32-bit floats, every component finite; with KHR_mesh_quantization also of signed or
+// unsigned 8 or 16-bit integers, normalized or not.
+std::vector<glm::vec3> read_positions(const tinygltf::Model& model, int index, const std::string& user);
+
+// Normals: VEC3 of 32-bit floats, every component finite; with KHR_mesh_quantization also of
+// normalized signed 8 or 16-bit integers.
+std::vector<glm::vec3> read_normals(const tinygltf::Model& model, int index, const std::string& user);
 
 // Texture coordinates (TEXCOORD_n): VEC2 of 32-bit floats, every component finite, or of
-// normalised unsigned 8 or 16-bit integers (read as value / 255 or / 65535).
+// normalized unsigned 8 or 16-bit integers; with KHR_mesh_quantization also of signed or
+// unsigned 8 or 16-bit integers, normalized or not.
 std::vector<glm::vec2> read_texcoords(const tinygltf::Model& model, int index, const std::string& user);
 
 // Triangle-list indices: SCALAR of unsigned 8, 16 or 32 bits, each below `vertex_count`.

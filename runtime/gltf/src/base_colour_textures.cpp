@@ -1,6 +1,7 @@
 #include "base_colour_textures.h"
 
 #include "accessor_reader.h"
+#include "external_files.h"
 #include "image_decoder.h"
 #include "read_file.h"
 #include "tilelight/base/error.h"
@@ -73,26 +74,6 @@ TextureSampling sampling_of(const tinygltf::Model& model, int sampler_index, con
   return sampling;
 }
 
-int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  const char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return lower >= 'a' && lower <= 'f' ? lower - 'a' + 10 : -1;
-}
-
-// A URI reference's path as a file path: %XX escapes decoded (glTF URIs are RFC 3986).
-std::string decode_percent_escapes(const std::string& uri) {
-  std::string path;
-  for (std::size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && hex_digit(uri[i + 1]) >= 0 && hex_digit(uri[i + 2]) >= 0) {
-      path += static_cast<char>(hex_digit(uri[i + 1]) * 16 + hex_digit(uri[i + 2]));
-      i += 2;
-    } else {
-      path += uri[i];
-    }
-  }
-  return path;
-}
-
 }  // namespace
 
 bool keep_encoded_image(tinygltf::Image* image, int, std::string*, std::string*, int, int, const unsigned char* bytes,
@@ -161,7 +142,7 @@ std::vector<std::uint8_t> BaseColourTextures::image_bytes(int image_index) const
     throw Error(
         fmt::format("{}: the external image \"{}\" is not read (a load from memory reads no files)", name, image.uri));
   }
-  const std::filesystem::path path = base_dir_ / decode_percent_escapes(image.uri);
+  const std::filesystem::path path = external_file(base_dir_, image.uri, name);
   return read_file(path, fmt::format("{}: {}", name, path.string()));
 }
 

@@ -1,5 +1,6 @@
 #include "glb_container.h"
 
+#include "json_schema.h"
 #include "tilelight/base/error.h"
 
 #include <fmt/format.h>
@@ -30,6 +31,7 @@ GlbChunks split_glb(std::span<const std::uint8_t> bytes) {
     throw Error(fmt::format("truncated GLB: {} bytes, fewer than a GLB header and a chunk header (20)", bytes.size()));
   }
   const std::uint32_t version = read_u32(bytes, 4);
+  if (version == 1) throw Error(kGltf1Refused);
   if (version != 2) throw Error(fmt::format("GLB version {}; only glTF 2.0 (version 2) is supported", version));
   const std::uint64_t length = read_u32(bytes, 8);
   if (length > bytes.size()) {
@@ -67,6 +69,37 @@ GlbChunks split_glb(std::span<const std::uint8_t> bytes) {
         bytes.subspan(static_cast<std::size_t>(json_end + kChunkHeaderBytes), static_cast<std::size_t>(bin_length));
   }
   return chunks;
+}
+
+namespace {
+
+void append_u32(std::vector<std::uint8_t>& out, std::size_t value) {
+  for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<std::uint8_t>(value >> shift));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> make_glb(std::string_view json, std::span<const std::uint8_t> bin) {
+  const std::size_t json_bytes = (json.size() + 3) / 4 * 4;
+  const std::size_t bin_bytes = (bin.size() + 3) / 4 * 4;
+  const std::size_t total =
+      kHeaderBytes + kChunkHeaderBytes + json_bytes + (bin.empty() ? 0 : kChunkHeaderBytes + bin_bytes);
+  std::vector<std::uint8_t> out;
+  out.reserve(total);
+  append_u32(out, kMagic);
+  append_u32(out, 2);
+  append_u32(out, total);
+  append_u32(out, json_bytes);
+  append_u32(out, kJsonChunk);
+  out.insert(out.end(), json.begin(), json.end());
+  out.resize(out.size() + json_bytes - json.size(), ' ');
+  if (!bin.empty()) {
+    append_u32(out, bin_bytes);
+    append_u32(out, kBinChunk);
+    out.insert(out.end(), bin.begin(), bin.end());
+    out.resize(out.size() + bin_bytes - bin.size(), 0);
+  }
+  return out;
 }
 
 }  // namespace tilelight::gltf_detail

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace tilelight::gltf_detail {
 
@@ -20,5 +21,9 @@ struct GlbChunks {
 // Throws tilelight::Error saying what is wrong ("truncated: the GLB header says 1200 bytes, the
 // file has 1000"), without the file's name. Precondition: is_glb(bytes).
 GlbChunks split_glb(std::span<const std::uint8_t> bytes);
+
+// A GLB of `json` (padded with spaces) and, when not empty, `bin` (padded with zeros): how a
+// .glb whose JSON the loader had to change (meshopt_views.h) is given to tinygltf.
+std::vector<std::uint8_t> make_glb(std::string_view json, std::span<const std::uint8_t> bin);
 
 }  // namespace tilelight::gltf_detail

@@ -1,11 +1,14 @@
 #include "json_schema.h"
 
+#include "ignored_features.h"
+
 #include "tilelight/base/error.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,7 +18,8 @@ namespace {
 
 using Json = nlohmann::json;
 
-enum class Kind { uint, number, string, boolean, object, array, any };
+// int32: a non-negative integer that tinygltf reads into an int (the sparse properties).
+enum class Kind { uint, int32, number, string, boolean, object, array, any };
 
 struct ObjectSchema;
 
@@ -40,6 +44,7 @@ struct ObjectSchema {
 };
 
 Expect uint_(bool required = false) { return {Kind::uint, Kind::any, 0, nullptr, required}; }
+Expect int32(bool required = false) { return {Kind::int32, Kind::any, 0, nullptr, required}; }
 Expect number() { return {Kind::number}; }
 Expect string_(bool required = false) { return {Kind::string, Kind::any, 0, nullptr, required}; }
 Expect boolean() { return {Kind::boolean}; }
@@ -89,10 +94,10 @@ const ObjectSchema kNode{{{"camera", uint_()},
                           {"weights", numbers()}}};
 const ObjectSchema kScene{{{"nodes", uints()}}};
 const ObjectSchema kSparseIndices{
-    {{"bufferView", uint_(true)}, {"byteOffset", uint_()}, {"componentType", uint_(true)}}};
-const ObjectSchema kSparseValues{{{"bufferView", uint_(true)}, {"byteOffset", uint_()}}};
+    {{"bufferView", int32(true)}, {"byteOffset", int32()}, {"componentType", int32(true)}}};
+const ObjectSchema kSparseValues{{{"bufferView", int32(true)}, {"byteOffset", int32()}}};
 const ObjectSchema kSparse{
-    {{"count", uint_(true)}, {"indices", object(&kSparseIndices, true)}, {"values", object(&kSparseValues, true)}}};
+    {{"count", int32(true)}, {"indices", object(&kSparseIndices, true)}, {"values", object(&kSparseValues, true)}}};
 const ObjectSchema kAccessor{{{"bufferView", uint_()},
                               {"byteOffset", uint_()},
                               {"componentType", uint_(true)},
@@ -148,6 +153,7 @@ const char* kind_name(const Json& value) {
 const char* expected_name(Kind kind) {
   switch (kind) {
     case Kind::uint: return "a non-negative integer";
+    case Kind::int32: return "a non-negative integer below 2^31";
     case Kind::number: return "a number";
     case Kind::string: return "a string";
     case Kind::boolean: return "a boolean";
@@ -161,6 +167,9 @@ const char* expected_name(Kind kind) {
 bool matches(const Json& value, Kind kind) {
   switch (kind) {
     case Kind::uint: return value.is_number_unsigned() || (value.is_number_integer() && value.get<std::int64_t>() >= 0);
+    case Kind::int32:
+      return matches(value, Kind::uint) &&
+             value.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
     case Kind::number: return value.is_number();
     case Kind::string: return value.is_string();
     case Kind::boolean: return value.is_boolean();
@@ -218,10 +227,30 @@ void check_object(const Json& value, const ObjectSchema& schema, const std::stri
 }
 
 // Extensions that only change shading this renderer does not do: a file that requires them
-// still renders meaningfully without them. Any other required extension (mesh compression,
-// quantized attributes) changes what the buffers mean, so the file is refused.
+// still renders meaningfully without them (each is reported as ignored: ignored_features.h).
+// Any other required extension that is not implemented (mesh compression) changes what the
+// buffers mean, so the file is refused.
 bool ignorable_extension(std::string_view name) {
   return name.rfind("KHR_materials_", 0) == 0 || name == "KHR_texture_transform" || name == "KHR_lights_punctual";
+}
+
+// glTF 1.0 (and its drafts) says so in asset.version, as a string or a number, or, without
+// one, shows it by keeping its objects in dictionaries where 2.0 has arrays.
+bool is_gltf1(const Json& root) {
+  const auto asset = root.find("asset");
+  if (asset != root.end() && asset->is_object()) {
+    const auto version = asset->find("version");
+    if (version != asset->end() && version->is_number()) return version->get<double>() < 2.0;
+    if (version != asset->end() && version->is_string()) {
+      const std::string text = version->get<std::string>();
+      return text.rfind("1.", 0) == 0 || text.rfind("0.", 0) == 0 || text == "1";
+    }
+  }
+  for (const char* collection : {"meshes", "accessors", "bufferViews", "buffers", "nodes", "scenes", "materials"}) {
+    const auto found = root.find(collection);
+    if (found != root.end() && found->is_object()) return true;
+  }
+  return false;
 }
 
 // A base64 data URI's payload length, from its text alone; nullopt when it is not one.
@@ -279,7 +308,7 @@ std::size_t nesting_depth(std::string_view text) {
 
 }  // namespace
 
-void check_json_schema(std::string_view json_text) {
+Json check_json_schema(std::string_view json_text) {
   // nlohmann::json (and so tinygltf) stops reading at a NUL byte and would ignore the rest.
   if (const std::size_t nul = json_text.find('\0'); nul != std::string_view::npos) {
     throw Error(fmt::format("not valid JSON: a NUL byte at offset {} (everything after it would be ignored)", nul));
@@ -298,17 +327,19 @@ void check_json_schema(std::string_view json_text) {
     throw Error("not valid JSON: " + what);
   }
   if (!root.is_object()) throw Error(fmt::format("the top level is {}, not a glTF object", kind_name(root)));
+  if (is_gltf1(root)) throw Error(kGltf1Refused);
   check_object(root, kRoot, "");
   check_data_uris(root);
   const std::string version = root["asset"]["version"].get<std::string>();
   if (version.rfind("2.", 0) != 0) throw Error("asset.version is \"" + version + "\"; only glTF 2.x is supported");
   if (const auto required = root.find("extensionsRequired"); required != root.end()) {
     for (const Json& name : *required) {
-      if (!ignorable_extension(name.get<std::string>())) {
+      if (!ignorable_extension(name.get<std::string>()) && !implemented_extension(name.get<std::string>())) {
         throw Error("requires the extension " + name.get<std::string>() + ", which this loader does not support");
       }
     }
   }
+  return root;
 }
 
 }  // namespace tilelight::gltf_detail

@@ -3,8 +3,11 @@
 #include "tilelight/gltf/load_gltf.h"
 
 #include "base_colour_textures.h"
+#include "external_files.h"
 #include "glb_container.h"
+#include "ignored_features.h"
 #include "json_schema.h"
+#include "meshopt_views.h"
 #include "node_graph.h"
 #include "primitive_mesh.h"
 #include "read_file.h"
@@ -71,29 +74,55 @@ std::string one_line(std::string text) {
   return text.empty() ? "tinygltf rejected the file without saying why" : text;
 }
 
-tinygltf::Model parse(std::span<const std::uint8_t> bytes, const std::filesystem::path& base_dir) {
+// The parsed file, the features of it that are not drawn (ignored_features.h) and its
+// compressed buffer views, not yet decoded (meshopt_views.h).
+struct Parsed {
+  tinygltf::Model model;
+  std::vector<std::string> ignored;
+  std::vector<MeshoptView> meshopt;
+};
+
+// The JSON checked before tinygltf reads it: types, glTF 1.0, external buffers present,
+// compressed views. Returns the JSON tinygltf is to read instead of `json`, or "" for `json`
+// itself: a meshopt fallback buffer is given bytes tinygltf can load.
+std::string check_json(std::string_view json, const std::filesystem::path& base_dir, Parsed& parsed) {
+  nlohmann::json root = check_json_schema(json);
+  check_external_buffers(root, base_dir);
+  parsed.ignored = ignored_features(root);
+  parsed.meshopt = meshopt_views(root);
+  return empty_fallback_buffers(root) ? root.dump() : std::string();
+}
+
+Parsed parse(std::span<const std::uint8_t> bytes, const std::filesystem::path& base_dir) {
   FileAccess access{!base_dir.empty()};
   tinygltf::TinyGLTF parser;
   parser.SetFsCallbacks({&file_exists, &expand_path, &read_whole_file, &write_whole_file, &access});
   parser.SetImageLoader(&keep_encoded_image, nullptr);
-  tinygltf::Model model;
+  Parsed parsed;
   std::string err, warn;
   bool ok = false;
   if (is_glb(bytes)) {
     // A GLB's JSON chunk is padded to 4 bytes with spaces; NULs there are tolerated as padding.
-    std::string_view json = split_glb(bytes).json;
+    const GlbChunks chunks = split_glb(bytes);
+    std::string_view json = chunks.json;
     while (!json.empty() && json.back() == '\0') json.remove_suffix(1);
-    check_json_schema(json);
-    ok = parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
+    const std::string rewritten = check_json(json, base_dir, parsed);
+    const std::vector<std::uint8_t> glb =
+        rewritten.empty() ? std::vector<std::uint8_t>() : make_glb(rewritten, chunks.bin);
+    const std::span<const std::uint8_t> input = rewritten.empty() ? bytes : std::span<const std::uint8_t>(glb);
+    ok = parser.LoadBinaryFromMemory(&parsed.model, &err, &warn, input.data(), static_cast<unsigned int>(input.size()),
                                      base_dir.string());
   } else {
     if (bytes.empty()) throw Error("the file is empty");
-    check_json_schema(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-    ok = parser.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                    static_cast<unsigned int>(bytes.size()), base_dir.string());
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    const std::string rewritten = check_json(text, base_dir, parsed);
+    const std::string_view input = rewritten.empty() ? text : std::string_view(rewritten);
+    ok = parser.LoadASCIIFromString(&parsed.model, &err, &warn, input.data(), static_cast<unsigned int>(input.size()),
+                                    base_dir.string());
   }
   if (!ok) throw Error(one_line(err));
-  return model;
+  decode_meshopt_views(parsed.model, parsed.meshopt);
+  return parsed;
 }
 
 std::size_t chosen_scene(const tinygltf::Model& model, const GltfLoadOptions& options) {
@@ -203,16 +232,18 @@ Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& bas
   return scene;
 }
 
-Scene load(std::span<const std::uint8_t> bytes, const std::string& name, const std::string& source,
-           const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
+GltfScene load(std::span<const std::uint8_t> bytes, const std::string& name, const std::string& source,
+               const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
   try {
     // tinygltf takes sizes as unsigned int.
     if (bytes.size() > kMaxFileBytes) {
       throw Error(fmt::format("{} bytes, more than this loader reads ({})", bytes.size(), kMaxFileBytes));
     }
-    Scene scene = build_scene(parse(bytes, base_dir), base_dir, options);
-    scene.source = source;
-    return scene;
+    const Parsed parsed = parse(bytes, base_dir);
+    GltfScene loaded{build_scene(parsed.model, base_dir, options), {}};
+    loaded.scene.source = source;
+    for (const std::string& line : parsed.ignored) loaded.warnings.push_back("warning: " + name + ": " + line);
+    return loaded;
   } catch (const Error& e) {
     throw Error(name + ": " + e.what());
   } catch (const std::bad_alloc&) {
@@ -224,16 +255,25 @@ Scene load(std::span<const std::uint8_t> bytes, const std::string& name, const s
 
 }  // namespace
 
-Scene load_gltf_scene(const std::filesystem::path& file, const GltfLoadOptions& options) {
+GltfScene load_gltf(const std::filesystem::path& file, const GltfLoadOptions& options) {
   const std::vector<std::uint8_t> bytes = read_file(file, file.string());
   std::filesystem::path folder = file.parent_path();
   if (folder.empty()) folder = ".";
   return load(bytes, file.string(), file.filename().string(), folder, options);
 }
 
+GltfScene load_gltf_from_memory(std::span<const std::uint8_t> bytes, const std::string& name,
+                                const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
+  return load(bytes, name, std::filesystem::path(name).filename().string(), base_dir, options);
+}
+
+Scene load_gltf_scene(const std::filesystem::path& file, const GltfLoadOptions& options) {
+  return load_gltf(file, options).scene;
+}
+
 Scene load_gltf_scene_from_memory(std::span<const std::uint8_t> bytes, const std::string& name,
                                   const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
-  return load(bytes, name, std::filesystem::path(name).filename().string(), base_dir, options);
+  return load_gltf_from_memory(bytes, name, base_dir, options).scene;
 }
 
 }  // namespace tilelight

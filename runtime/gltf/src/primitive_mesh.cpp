@@ -77,7 +77,7 @@ std::optional<Mesh> primitive_mesh(const tinygltf::Model& model, int mesh_index,
   }
   const auto position = primitive.attributes.find("POSITION");
   if (position == primitive.attributes.end()) throw Error(name + ": no POSITION attribute");
-  const std::vector<glm::vec3> positions = read_vec3(model, position->second, name + ".attributes.POSITION");
+  const std::vector<glm::vec3> positions = read_positions(model, position->second, name + ".attributes.POSITION");
 
   std::vector<std::uint32_t> indices;
   if (primitive.indices >= 0) {
@@ -97,7 +97,8 @@ std::optional<Mesh> primitive_mesh(const tinygltf::Model& model, int mesh_index,
   }
   if (indices.empty()) return std::nullopt;
 
-  const std::vector<glm::vec3> normals = read_attribute(model, primitive, name, "NORMAL", positions.size(), &read_vec3);
+  const std::vector<glm::vec3> normals =
+      read_attribute(model, primitive, name, "NORMAL", positions.size(), &read_normals);
   std::vector<glm::vec2> uvs;
   if (texcoord_set) {
     const std::string attribute = fmt::format("TEXCOORD_{}", *texcoord_set);

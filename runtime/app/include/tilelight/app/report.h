@@ -25,6 +25,8 @@ struct RunDescription {
   // The scene: the --scene file's name (empty: the procedural scene), its triangles per G-buffer pass.
   std::string scene;
   std::uint64_t scene_triangles = 0;
+  // What the --scene file holds that is not drawn, as printed on stderr (load_gltf.h's GltfScene::warnings).
+  std::vector<std::string> scene_warnings;
 };
 
 // Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).
