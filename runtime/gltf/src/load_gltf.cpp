@@ -4,6 +4,7 @@
 
 #include "base_colour_textures.h"
 #include "glb_container.h"
+#include "gltf_cameras.h"
 #include "json_schema.h"
 #include "node_graph.h"
 #include "primitive_mesh.h"
@@ -200,6 +201,7 @@ Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& bas
   }
   scene.textures = textures.take_textures();
   fit_scene(scene, scene_bounds(scene));
+  add_file_cameras(model, scene);
   return scene;
 }
 
