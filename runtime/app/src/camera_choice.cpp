@@ -177,34 +177,26 @@ std::optional<glm::vec3> parse_xyz(const std::string& text) {
 ChosenCamera choose_camera(const CameraRequest& a, Scene& scene, float aspect) {
   const bool loaded = !scene.source.empty();
   if (!a.sun_direction.empty()) scene.sun.sun_direction = glm::normalize(*parse_xyz(a.sun_direction));
-  const LightingDistances distances = chosen_distances(a, scene);
   if (a.eye.empty() && loaded) refuse_procedural_name(a);
-  ChosenCamera chosen;
   Camera camera = a.eye.empty() ? named_camera(a, scene) : placed_camera(a, scene);
-  chosen.name = camera.name;
-  if (!loaded && a.eye.empty()) {
-    // A named procedural camera: drawn as it always was, only the distances a flag sets change.
-    scene.sun.shadow_fade_start = distances.shadow_fade_start.value_or(scene.sun.shadow_fade_start);
-    scene.sun.shadow_fade_length = distances.shadow_fade_length.value_or(scene.sun.shadow_fade_length);
-    scene.sun.scattering_start = distances.scattering_start.value_or(scene.sun.scattering_start);
-    chosen.pose = pose_of(scene, camera);
-    return chosen;
+  LightingDistances distances = chosen_distances(a, scene);
+  if (!loaded) {
+    // The procedural scene keeps its own distances (its field is larger than any view of it).
+    distances.shadow_fade_start = distances.shadow_fade_start.value_or(scene.sun.shadow_fade_start);
+    distances.shadow_fade_length = distances.shadow_fade_length.value_or(scene.sun.shadow_fade_length);
+    distances.scattering_start = distances.scattering_start.value_or(scene.sun.scattering_start);
   }
   const WorldBox box = world_box(scene);
-  // A file camera keeps its own znear and zfar (gltf_cameras.h).
-  if (!camera.name.starts_with("gltf:")) fit_clip_planes(camera, box);
-  if (loaded) {
-    fit_lighting_distances(scene.sun, camera, box, distances);
-  } else {
-    LightingDistances procedural = distances;
-    procedural.shadow_fade_start = distances.shadow_fade_start.value_or(scene.sun.shadow_fade_start);
-    procedural.shadow_fade_length = distances.shadow_fade_length.value_or(scene.sun.shadow_fade_length);
-    procedural.scattering_start = distances.scattering_start.value_or(scene.sun.scattering_start);
-    fit_lighting_distances(scene.sun, camera, box, procedural);
+  fit_lighting_distances(scene.sun, camera, box, distances);
+  ChosenCamera chosen{camera.name, std::nullopt, {}};
+  // A named procedural camera is drawn as it always was: its planes and shadow map are hand-set.
+  if (loaded || !a.eye.empty()) {
+    // A file camera keeps its own znear and zfar (gltf_cameras.h).
+    if (!camera.name.starts_with("gltf:")) fit_clip_planes(camera, box);
+    fit_shadow_map(scene.sun, camera, box, aspect);
+    chosen.placed = camera;
   }
-  fit_shadow_map(scene.sun, camera, box, aspect);
   chosen.pose = pose_of(scene, camera);
-  chosen.placed = camera;
   return chosen;
 }
 
