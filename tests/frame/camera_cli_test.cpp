@@ -28,7 +28,7 @@ fs::path write_box_with_cameras(const fs::path& folder) {
   gltf["cameras"] = nlohmann::json::array(
       {{{"type", "perspective"}, {"name", "front"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}}}},
        {{"type", "orthographic"}, {"orthographic", {{"xmag", 2.0}, {"ymag", 2.0}, {"znear", 0.1}, {"zfar", 9.0}}}}});
-  const fs::path file = folder / "box_cameras.gltf";
+  fs::path file = folder / "box_cameras.gltf";
   std::ofstream(file) << gltf.dump();
   return file;
 }

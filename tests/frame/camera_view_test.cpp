@@ -52,7 +52,7 @@ fs::path write_atrium(const fs::path& folder) {
       {{"type", "orthographic"}, {"orthographic", {{"xmag", 5.0}, {"ymag", 5.0}, {"znear", 0.1}, {"zfar", 20.0}}}},
       {{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}},
   });
-  const fs::path file = folder / "atrium.gltf";
+  fs::path file = folder / "atrium.gltf";
   std::ofstream(file) << gltf.dump();
   return file;
 }
@@ -88,7 +88,7 @@ View render_and_compare(const Context& context, const Scene& scene, const app::C
   return v;
 }
 
-app::ChosenCamera choose(Scene& scene, app::CameraRequest request) {
+app::ChosenCamera choose(Scene& scene, const app::CameraRequest& request) {
   return app::choose_camera(request, scene, 256.0f / 192.0f);
 }
 
