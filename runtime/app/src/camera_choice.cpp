@@ -101,7 +101,7 @@ CLI::Validator xyz() {
       [](std::string& input) {
         return parse_xyz(input) ? std::string() : input + " is not X,Y,Z (three finite numbers, comma-separated)";
       },
-      "X,Y,Z");
+      "");  // the flag's type name says X,Y,Z
 }
 
 CLI::Validator vertical_fov() {
@@ -114,7 +114,7 @@ CLI::Validator vertical_fov() {
         }
         return std::string();
       },
-      "DEGREES");
+      "");
 }
 
 }  // namespace
@@ -144,7 +144,7 @@ void add_camera_options(CLI::App& cli, CameraRequest& a) {
             const auto v = parse_xyz(input);
             return v && glm::length(*v) > 0.0f ? std::string() : input + " has no direction (all zero)";
           },
-          "X,Y,Z"))
+          ""))
       ->type_name("X,Y,Z");
   cli.add_option("--shadow-fade-start", a.shadow_fade_start,
                  "view depth from the eye where sun shadows begin to fade out (scene units; default: 55 for the "

@@ -62,7 +62,8 @@ void add_options(CLI::App& cli, Arguments& a) {
   add_camera_options(cli, a.view);
   CLI::Option* scene =
       cli.add_option("--scene", a.scene,
-                     "a glTF 2.0 file (.gltf or .glb) to render instead of the procedural scene (camera: default)");
+                     "a glTF 2.0 file (.gltf or .glb) to render instead of the procedural scene (cameras: default, the "
+                     "file's gltf:N, or --eye)");
   cli.add_option("--scene-index", a.scene_index, "which scene of the --scene file (default: the file's own choice)")
       ->needs(scene);
   cli.add_option("--frames", a.frames, "timed frames (after one warm-up frame); timings are medians over them")
