@@ -15,7 +15,9 @@
 #include "sweep/sweep_tables.h"
 
 #include "plot/bar_chart.h"
+#include "tilelight/app/camera_choice.h"
 #include "tilelight/app/output_files.h"
+#include "tilelight/app/usage_error.h"
 #include "tilelight/base/atomic_write.h"
 #include "tilelight/base/error.h"
 #include "tilelight/gltf/load_gltf.h"
@@ -90,7 +92,7 @@ std::map<std::string, std::string> report_comparisons(const SweepPlan& plan,
 // renderer of a group is alive at once, and a group of 4K renderers at every camera, light-pass
 // kind and index build is as much GPU memory as should be held together (24 at 3840x2160 with
 // 2x MSAA in scripts/gpu-bench.sh's run).
-std::vector<Measurement> measure_in_groups(const Context& context, const Scene& scene,
+std::vector<Measurement> measure_in_groups(const Context& context, const SceneFor& scene,
                                            const std::vector<RendererOptions>& configurations, std::uint32_t frames) {
   using Group = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;  // width, height, msaa
   std::vector<Group> groups;
@@ -114,6 +116,29 @@ std::vector<Measurement> measure_in_groups(const Context& context, const Scene& 
   return measurements;
 }
 
+// The scene with its sun fitted to a configuration's camera (tilelight's choice: a procedural
+// camera as it always was, a file's or a placed one fitted to its view at that frame size).
+class FittedScene {
+ public:
+  FittedScene(Scene scene, const app::CameraRequest& view) : scene_(std::move(scene)), sun_(scene_.sun), view_(view) {}
+
+  const Scene& operator()(RendererOptions& o) {
+    scene_.sun = sun_;
+    app::CameraRequest request = view_;
+    request.camera = o.camera;
+    if (o.camera != "eye") request.eye.clear();
+    o.camera_pose =
+        app::choose_camera(request, scene_, static_cast<float>(o.width) / static_cast<float>(o.height)).placed;
+    return scene_;
+  }
+  const Scene& scene() const { return scene_; }
+
+ private:
+  Scene scene_;
+  SunAndAtmosphere sun_;  // as loaded: each fit starts from it
+  app::CameraRequest view_;
+};
+
 // The procedural scene, or the --scene file (a bad one is an error naming the flag and file;
 // what it holds that is not drawn is a warning on stderr, as tilelight prints it).
 Scene sweep_scene(const SweepOptions& options) {
@@ -128,7 +153,14 @@ Scene sweep_scene(const SweepOptions& options) {
 }
 
 int run_sweep(const SweepOptions& options) {
-  const Scene scene = sweep_scene(options);  // a bad file fails before any Vulkan work
+  FittedScene fitted(sweep_scene(options), options.view);  // a bad file fails before any Vulkan work
+  const Scene& scene = fitted.scene();
+  // So does a camera that cannot be drawn (exit 2, as tilelight's).
+  for (const std::string& camera : options.cameras) {
+    RendererOptions probe;
+    probe.camera = camera;
+    (void)fitted(probe);
+  }
   ContextOptions context_options;
   context_options.device = options.device;
   const Context context(context_options);
@@ -138,7 +170,8 @@ int run_sweep(const SweepOptions& options) {
   if (!options.update_doc.empty()) {
     (void)replace_marked_sections(read_document(options.update_doc), empty_sections(plan), options.update_doc);
   }
-  const std::vector<Measurement> measurements = measure_in_groups(context, scene, plan.configurations, options.frames);
+  const std::vector<Measurement> measurements =
+      measure_in_groups(context, std::ref(fitted), plan.configurations, options.frames);
 
   const char* threads = std::getenv("LP_NUM_THREADS");
   const std::string run_line = fmt::format(
@@ -171,6 +204,9 @@ int main(int argc, char** argv) {
   try {
     if (!parse_sweep_options(argc, argv, options, exit_code, std::cout, std::cerr)) return exit_code;
     return run_sweep(options);
+  } catch (const app::UsageError& e) {
+    std::cerr << e.what() << "\nRun with --help for more information.\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "tilelight_sweep: error: " << e.what() << '\n';
     return 1;

@@ -1,6 +1,7 @@
 # Smoke run of tilelight_sweep --scene: the baseline comparison on a glTF file (--quick), whose
-# results.json must name the file and its triangles; then a broken file, which must exit 1
-# naming it, before any output is written.
+# results.json must name the file and its triangles; a placed --eye view; a procedural camera
+# with the file (exit 2); then a broken file, which must exit 1 naming it, before any output is
+# written.
 # Arguments: -DSWEEP=<tilelight_sweep> -DOUT=<scratch folder> -DSCENE=<a valid .glb> -DBAD=<a broken glTF>.
 file(REMOVE_RECURSE "${OUT}")
 execute_process(COMMAND "${SWEEP}" --quick --only baselines --scene "${SCENE}" --out "${OUT}/good"
@@ -19,6 +20,27 @@ endif()
 string(FIND "${stdout}" "scene ${scene_name} (${triangles} triangles)" at)
 if(at EQUAL -1)
   message(FATAL_ERROR "the run line does not name the scene:\n${stdout}")
+endif()
+
+# A placed camera inside the file's box: the view "eye".
+execute_process(COMMAND "${SWEEP}" --quick --only baselines --light-passes compute --scene "${SCENE}"
+  --eye 0.2,0.3,0.9 --target 0,0,0 --fov 70 --out "${OUT}/eye"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "tilelight_sweep --eye exited with ${rc}\nstderr:\n${stderr}")
+endif()
+file(READ "${OUT}/eye/results.json" results)
+string(JSON camera GET "${results}" configurations 0 camera)
+if(NOT camera STREQUAL "eye")
+  message(FATAL_ERROR "results.json: camera '${camera}', not 'eye'")
+endif()
+
+# A procedural camera with a file: a usage error, before any output.
+execute_process(COMMAND "${SWEEP}" --quick --only baselines --scene "${SCENE}" --cameras street --out "${OUT}/street"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
+string(FIND "${stderr}" "--camera street: the cameras sky, shadow, low, street, closeup belong to the procedural scene" at)
+if(NOT rc EQUAL 2 OR at EQUAL -1 OR EXISTS "${OUT}/street")
+  message(FATAL_ERROR "--cameras street with --scene: exit ${rc}, stderr:\n${stderr}")
 endif()
 
 execute_process(COMMAND "${SWEEP}" --quick --only baselines --scene "${BAD}" --out "${OUT}/bad"

@@ -80,8 +80,8 @@ std::string configuration_key(const RendererOptions& o) {
   return key;
 }
 
-std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,
-                                             const std::vector<RendererOptions>& configurations, std::uint32_t frames,
+std::vector<Measurement> measure_round_robin(const Context& context, const SceneFor& scene_for,
+                                             std::vector<RendererOptions> configurations, std::uint32_t frames,
                                              std::ostream& progress) {
   const std::size_t n = configurations.size();
   std::vector<Run> runs(n);
@@ -89,6 +89,7 @@ std::vector<Measurement> measure_round_robin(const Context& context, const Scene
     const auto start = std::chrono::steady_clock::now();
     progress << fmt::format("[{}/{}] {}: set-up and warm-up frame", i + 1, n, configuration_key(configurations[i]))
              << std::flush;
+    const Scene& scene = scene_for(configurations[i]);
     runs[i].renderer = std::make_unique<TileRenderer>(context, scene, configurations[i]);
     // The warm-up frame takes the drivers' lazy pipeline compilation out of the timings.
     runs[i].renderer->render_frame();

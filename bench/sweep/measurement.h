@@ -9,6 +9,7 @@
 #include "tilelight/vulkan/context.h"
 
 #include <cstdint>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -59,9 +60,12 @@ std::string configuration_key(const RendererOptions& options);
 // configuration in turn: on a shared machine, a change of load then hits every configuration
 // alike instead of whichever happened to be measured at the time. Finally reads both images
 // of each back and compares them. Progress lines go to `progress`. Results are in the order
-// of `configurations`.
-std::vector<Measurement> measure_round_robin(const Context& context, const Scene& scene,
-                                             const std::vector<RendererOptions>& configurations, std::uint32_t frames,
+// of `configurations`. `scene_for` gives the scene each configuration's renderer is made from,
+// and may set its camera_pose (a fitted camera, tilelight/app/camera_choice.h): the renderer
+// copies what it needs of both when it is made.
+using SceneFor = std::function<const Scene&(RendererOptions&)>;
+std::vector<Measurement> measure_round_robin(const Context& context, const SceneFor& scene_for,
+                                             std::vector<RendererOptions> configurations, std::uint32_t frames,
                                              std::ostream& progress);
 
 }  // namespace tilelight::sweep

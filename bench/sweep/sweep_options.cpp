@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <charconv>
 
 namespace tilelight::sweep {
@@ -47,12 +48,15 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
   std::vector<std::string> msaa{"auto", "1"};
   options.cameras = {"default", "low", "street", "closeup", "shadow", "sky"};
   CLI::Option* cameras =
-      cli.add_option("--cameras", options.cameras, "cameras of the baseline comparison (tilelight --list-cameras)")
+      cli.add_option("--cameras", options.cameras,
+                     "cameras of the baseline comparison (tilelight --list-cameras; gltf:N for a --scene file's, eye "
+                     "for --eye's)")
           ->delimiter(',')
           ->capture_default_str();
   CLI::Option* scene = cli.add_option("--scene", options.scene,
                                       "a glTF 2.0 file (.gltf, .glb) to measure instead of the procedural scene");
   cli.add_option("--scene-index", options.scene_index, "which scene of the --scene file")->needs(scene);
+  app::add_camera_options(cli, options.view);
   cli.add_option("--msaa", msaa, "G-buffer sample counts of the baseline comparison: auto, 1, 2, 4, 8, 16")
       ->delimiter(',')
       ->check(CLI::IsMember({"auto", "1", "2", "4", "8", "16"}))
@@ -95,6 +99,12 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
     return false;
   }
   if (!options.scene.empty() && cameras->count() == 0) options.cameras = {"default"};
+  if (!options.view.eye.empty()) {
+    if (cameras->count() == 0) options.cameras.clear();
+    if (std::find(options.cameras.begin(), options.cameras.end(), "eye") == options.cameras.end())
+      options.cameras.push_back("eye");
+  }
+  options.view.scene_file = options.scene;
   if (options.quick) {
     sizes = {"64x36", "96x54"};
     options.frames = 1;

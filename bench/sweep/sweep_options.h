@@ -1,6 +1,7 @@
 #pragma once
 // The command line of tilelight_sweep: how many frames, which sizes, which device, where to.
 
+#include "tilelight/app/camera_choice.h"
 #include "tilelight/render/tile_renderer.h"
 
 #include <cstdint>
@@ -41,6 +42,9 @@ struct SweepOptions {
   // which of its scenes; with a file, the cameras default to its one camera, "default".
   std::string scene;
   std::optional<std::uint32_t> scene_index;
+  // tilelight's camera and lighting flags (--eye, --target, --up, --fov, --sun-direction, the
+  // distances): a placed camera is the view "eye", the only one unless --cameras names others.
+  app::CameraRequest view;
   // A markdown file whose marked sections (see doc_update.h) get the new tables; "" = none.
   std::string update_doc;
 };

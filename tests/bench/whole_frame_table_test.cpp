@@ -168,4 +168,28 @@ TEST(SweepOptions, DefaultsKeepOneCpuPathAndBothBaselines) {
             "1280x720 tile 4 cpu optimised coalesced auto camera default msaa auto raster");
 }
 
+// tilelight's camera flags: a placed camera is the view "eye", alone unless --cameras names others.
+TEST(SweepOptions, EyeAndTargetMakeTheViewEye) {
+  for (const bool with_cameras : {false, true}) {
+    SweepOptions options;
+    int exit_code = 0;
+    std::ostringstream out, err;
+    std::vector<const char*> argv{"tilelight_sweep", "--eye", "1,2,3", "--target", "0,0,0", "--fov", "45"};
+    if (with_cameras) argv.insert(argv.end(), {"--cameras", "low"});
+    ASSERT_TRUE(parse_sweep_options(static_cast<int>(argv.size()), argv.data(), options, exit_code, out, err))
+        << err.str();
+    EXPECT_EQ(options.cameras,
+              with_cameras ? (std::vector<std::string>{"low", "eye"}) : std::vector<std::string>{"eye"});
+    EXPECT_EQ(options.view.eye, "1,2,3");
+    EXPECT_EQ(options.view.fov_deg, 45.0);
+  }
+  SweepOptions options;
+  int exit_code = 0;
+  std::ostringstream out, err;
+  const char* argv[] = {"tilelight_sweep", "--eye", "1,2", "--target", "0,0,0"};
+  EXPECT_FALSE(parse_sweep_options(5, argv, options, exit_code, out, err));
+  EXPECT_EQ(exit_code, 2);
+  EXPECT_NE(err.str().find("--eye: 1,2 is not X,Y,Z"), std::string::npos) << err.str();
+}
+
 }  // namespace

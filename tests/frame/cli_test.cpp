@@ -287,7 +287,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "--msaa 2: MSAA 2x is not supported by this device (supported for the G-buffer: 1x, 4x)"},
         BadInput{"msaa_not_a_count", {"--msaa", "3"}, "--msaa: 3 not in {auto,1,2,4,8,16}"},
         BadInput{"unknown_device", {"--device", "no-such-gpu"}, "no-such-gpu"},
-        BadInput{"unknown_camera", {"--camera", "moon"}, "unknown camera 'moon'"},
+        BadInput{"unknown_camera", {"--camera", "moon"}, "--camera moon: unknown camera (known: default, sky"},
         BadInput{"bad_path", {"--path", "fpga"}, "--path"},
         BadInput{"bad_primitive", {"--primitive", "bogus"}, "--primitive: bogus not in {auto,points,triangles}"},
         BadInput{"bad_tile_size", {"--tile-size", "5"}, "--tile-size: 5 not in {4,8,16}"},

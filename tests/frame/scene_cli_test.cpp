@@ -64,7 +64,7 @@ TEST(TilelightScene, WarnsOfEveryIgnoredFeatureOnStderrAndInTheReport) {
   const std::vector<std::string> lines{
       file + "2 animations ignored: drawn in the rest pose",
       file + "1 skin ignored: meshes are drawn as stored, unskinned",
-      file + "1 camera ignored: the default camera frames the scene",
+      file + "1 camera cannot be chosen: orthographic, or placed by no node (--list-cameras says why)",
       file + "morph targets (1 primitive) ignored: drawn in the base shape",
       file + "points and lines (1 primitive) ignored: they have no surface",
       file + "vertex colours (1 primitive) ignored",
@@ -155,8 +155,13 @@ TEST(TilelightScene, AnUnknownCameraOrSceneIndexIsAnErrorAndBadFlagsAUsageError)
   EXPECT_EQ(camera.exit_code, 0) << "--list-cameras lists before a camera is chosen";
   const fs::path out = scratch_dir() / "out";
   const CliResult street = run_cli({"--scene", box, "--camera", "street", "--out", out.string()});
-  EXPECT_EQ(street.exit_code, 1);
-  EXPECT_NE(street.err.find("unknown camera 'street' (known: default)"), std::string::npos) << street.err;
+  EXPECT_EQ(street.exit_code, 2);
+  EXPECT_EQ(street.err,
+            "--camera street: the cameras sky, shadow, low, street, closeup belong to the procedural "
+            "scene, not to --scene " +
+                box +
+                "; place one with --eye X,Y,Z --target X,Y,Z, or choose the "
+                "file's own with --camera gltf:N (--list-cameras)\nRun with --help for more information.\n");
   const CliResult index = run_cli({"--scene", box, "--scene-index", "2", "--out", out.string()});
   EXPECT_EQ(index.exit_code, 1);
   EXPECT_NE(index.err.find("scene 2 does not exist (the file has 1 scene(s), 0 to 0)"), std::string::npos) << index.err;

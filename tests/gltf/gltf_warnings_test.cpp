@@ -32,7 +32,7 @@ TEST(GltfWarnings, EveryIgnoredFeatureIsOneLineNamingTheFile) {
   const std::vector<std::string> expected{
       file + "2 animations ignored: drawn in the rest pose",
       file + "1 skin ignored: meshes are drawn as stored, unskinned",
-      file + "1 camera ignored: the default camera frames the scene",
+      file + "1 camera cannot be chosen: orthographic, or placed by no node (--list-cameras says why)",
       file + "morph targets (1 primitive) ignored: drawn in the base shape",
       file + "points and lines (1 primitive) ignored: they have no surface",
       file + "vertex colours (1 primitive) ignored",

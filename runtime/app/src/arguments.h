@@ -4,6 +4,7 @@
 // (option_names.h); their defaults are RendererOptions' own, so there is one default for each.
 // Other values are as typed: their meaning and checks live where they are used.
 
+#include "tilelight/app/camera_choice.h"
 #include "tilelight/render/tile_renderer.h"
 
 #include <cstdint>
@@ -18,7 +19,7 @@ struct Arguments {
   std::uint32_t msaa = RendererOptions{}.msaa;  // 0: auto
   IndexPath path = RendererOptions{}.path;
   bool raw_permutations = RendererOptions{}.raw_permutations;
-  std::string camera = RendererOptions{}.camera;
+  CameraRequest view;  // --camera, --eye, ... (camera_choice.h)
   std::string primitive = "auto";
   Baselines baseline = RendererOptions{}.baselines;
   LightPass light_pass = RendererOptions{}.light_pass;

@@ -3,7 +3,9 @@
 #include "arguments.h"
 #include "option_names.h"
 #include "render_run.h"
+#include "tilelight/app/camera_choice.h"
 #include "tilelight/app/failure.h"
+#include "tilelight/app/usage_error.h"
 
 #include <command_line/command_line.h>
 #include <CLI/CLI.hpp>
@@ -53,11 +55,15 @@ void add_options(CLI::App& cli, Arguments& a) {
              "index build: cpu (host patches pre-recorded draws) or gpu (compute)");
   add_choice(cli, "--permutations", a.raw_permutations, permutation_names(),
              "lighting shaders: optimised (32) or raw (96 of 128)");
-  cli.add_option("--camera", a.camera, "camera: default, sky, shadow, low, street, closeup (--list-cameras)")
+  cli.add_option("--camera", a.view.camera,
+                 "camera: default, sky, shadow, low, street, closeup (the procedural scene's), or default and "
+                 "gltf:N (the N-th camera of a --scene file); --list-cameras lists them")
       ->capture_default_str();
+  add_camera_options(cli, a.view);
   CLI::Option* scene =
       cli.add_option("--scene", a.scene,
-                     "a glTF 2.0 file (.gltf or .glb) to render instead of the procedural scene (camera: default)");
+                     "a glTF 2.0 file (.gltf or .glb) to render instead of the procedural scene (cameras: default, the "
+                     "file's gltf:N, or --eye)");
   cli.add_option("--scene-index", a.scene_index, "which scene of the --scene file (default: the file's own choice)")
       ->needs(scene);
   cli.add_option("--frames", a.frames, "timed frames (after one warm-up frame); timings are medians over them")
@@ -105,6 +111,10 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   std::string stage = "starting";
   try {
     return render_run(arguments, out, err, stage);
+  } catch (const UsageError& e) {
+    // Flags that parse but do not fit the scene or each other: worded and counted as CLI11's.
+    err << e.what() << "\nRun with --help for more information.\n";
+    return command_line::kExitUsage;
   } catch (...) {
     err << "tilelight: error: " << failure_message(stage, std::current_exception()) << '\n';
     return command_line::kExitError;

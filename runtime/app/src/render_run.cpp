@@ -1,5 +1,7 @@
 #include "render_run.h"
 
+#include "tilelight/app/camera_choice.h"
+
 #include "tilelight/app/frame_ratios.h"
 #include "tilelight/app/output_files.h"
 #include "tilelight/app/process_stats.h"
@@ -47,7 +49,7 @@ GltfScene load_scene(const Arguments& a) {
   }
 }
 
-RendererOptions renderer_options(const Arguments& a) {
+RendererOptions renderer_options(const Arguments& a, const ChosenCamera& camera) {
   RendererOptions options;
   options.width = a.width;
   options.height = a.height;
@@ -58,7 +60,8 @@ RendererOptions renderer_options(const Arguments& a) {
   options.raw_permutations = a.raw_permutations;
   options.coalesce = !a.no_coalesce;
   if (a.primitive != "auto") options.primitive = parse_tile_primitive(a.primitive);
-  options.camera = a.camera;
+  options.camera = camera.name;
+  options.camera_pose = camera.placed;
   options.baselines = a.baseline;
   options.timeout = Seconds(a.timeout_s);
   return options;
@@ -112,8 +115,8 @@ ReadBack read_back(const TileRenderer& renderer, Baselines baselines) {
   return frames;
 }
 
-FrameReport make_report(const Arguments& a, const Context& context, const Scene& scene, const TileRenderer& renderer,
-                        const TimedFrames& timed, const ReadBack& frames) {
+FrameReport make_report(const Arguments& a, const ChosenCamera& camera, const Context& context, const Scene& scene,
+                        const TileRenderer& renderer, const TimedFrames& timed, const ReadBack& frames) {
   FrameReport report;
   const char* threads = std::getenv("LP_NUM_THREADS");
   report.run = {context.device_name(),
@@ -124,7 +127,7 @@ FrameReport make_report(const Arguments& a, const Context& context, const Scene&
                 a.frames,
                 a.path,
                 a.raw_permutations,
-                a.camera,
+                camera.name,
                 !a.no_coalesce,
                 threads != nullptr ? threads : "",
                 renderer.light_pass() == LightPass::compute ? std::string("workgroups")
@@ -133,6 +136,7 @@ FrameReport make_report(const Arguments& a, const Context& context, const Scene&
                 a.light_pass};
   report.run.scene = scene.source;
   report.run.scene_triangles = scene.triangle_count();
+  report.run.camera_pose = camera.pose;
   count_tiles(report, frames.raw_ids);
   report.primitives_uncoalesced = timed.last.stats.primitives_uncoalesced;
   report.primitives_coalesced = timed.last.stats.primitives_coalesced;
@@ -172,16 +176,19 @@ void write_outputs(OutputFiles& files, FrameReport& report, const ReadBack& fram
 
 int render_run(const Arguments& a, std::ostream& out, std::ostream& err, std::string& stage) {
   stage = "building the scene";
-  const GltfScene loaded = load_scene(a);
+  GltfScene loaded = load_scene(a);
   for (const std::string& warning : loaded.warnings) err << warning << '\n';
-  const Scene& scene = loaded.scene;
+  Scene& scene = loaded.scene;  // the camera's fit adjusts its sun (choose_camera())
   if (a.list_cameras) {
     for (const Camera& c : scene.cameras) out << c.name << ": " << c.description << '\n';
     return 0;
   }
-  const RendererOptions options = renderer_options(a);
   stage = "choosing the camera";
-  (void)scene.camera(a.camera);  // an unknown camera fails before any Vulkan work
+  // An unknown camera fails before any Vulkan work.
+  CameraRequest request = a.view;
+  request.scene_file = a.scene;
+  const ChosenCamera camera = choose_camera(request, scene, static_cast<float>(a.width) / static_cast<float>(a.height));
+  const RendererOptions options = renderer_options(a, camera);
 
   stage = "creating the Vulkan context";
   ContextOptions context_options;
@@ -205,7 +212,7 @@ int render_run(const Arguments& a, std::ostream& out, std::ostream& err, std::st
   if (a.validation) context.require_no_validation_messages("tilelight");
 
   stage = "comparing the frames and writing the results to " + a.out;
-  FrameReport report = make_report(a, context, scene, *renderer, timed, frames);
+  FrameReport report = make_report(a, camera, context, scene, *renderer, timed, frames);
   report.run.scene_warnings = loaded.warnings;
   write_outputs(files, report, frames, a.tile_size);
 

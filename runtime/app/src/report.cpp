@@ -132,6 +132,8 @@ std::string report_json(const FrameReport& r) {
   j["path"] = name_of(path_names(), r.run.path);
   j["permutations"] = name_of(permutation_names(), r.run.raw_permutations);
   j["camera"] = r.run.camera;
+  const CameraPose& pose = r.run.camera_pose;
+  j["camera_pose"] = {{"eye", pose.eye}, {"target", pose.target}, {"up", pose.up}, {"fov_deg", pose.fov_deg}};
   // The --scene file's name, or null for the procedural scene; the triangles of either.
   j["scene"] = r.run.scene.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.run.scene);
   j["scene_triangles"] = r.run.scene_triangles;

@@ -56,6 +56,21 @@ std::size_t count_materials(const Json& root, const std::function<bool(const Jso
 
 bool has(const Json& object, const char* key) { return object.is_object() && object.contains(key); }
 
+// Cameras that are not perspective, or that no node references.
+std::size_t unusable_cameras(const Json& root) {
+  std::set<std::uint64_t> placed;
+  for (const Json& node : array_of(root, "nodes")) {
+    if (has(node, "camera") && node["camera"].is_number_unsigned()) placed.insert(node["camera"].get<std::uint64_t>());
+  }
+  const Json& cameras = array_of(root, "cameras");
+  std::size_t n = 0;
+  for (std::uint64_t i = 0; i < cameras.size(); ++i) {
+    const bool perspective = has(cameras[i], "type") && cameras[i]["type"] == "perspective";
+    n += perspective && placed.count(i) != 0 ? 0 : 1;
+  }
+  return n;
+}
+
 // The core features, each: how many of what the file has, and the line when it has any.
 void core_features(const Json& root, std::vector<std::string>& lines) {
   const auto add = [&](std::size_t n, const std::string& line) {
@@ -65,9 +80,11 @@ void core_features(const Json& root, std::vector<std::string>& lines) {
   add(animations, fmt::format("{} ignored: drawn in the rest pose", counted(animations, "animations")));
   const std::size_t skins = array_of(root, "skins").size();
   add(skins, fmt::format("{} ignored: meshes are drawn as stored, unskinned", counted(skins, "skins")));
-  // Until the file's cameras can be chosen.
-  const std::size_t cameras = array_of(root, "cameras").size();
-  add(cameras, fmt::format("{} ignored: the default camera frames the scene", counted(cameras, "cameras")));
+  // A perspective camera that a node places is --camera gltf:N; the others stay in the list,
+  // marked not usable (gltf_cameras.cpp says why, in more cases than these two).
+  const std::size_t unusable = unusable_cameras(root);
+  add(unusable, fmt::format("{} cannot be chosen: orthographic, or placed by no node (--list-cameras says why)",
+                            counted(unusable, "cameras")));
   const std::size_t morphed = count_primitives(root, [](const Json& p) { return has(p, "targets"); });
   add(morphed, fmt::format("morph targets ({}) ignored: drawn in the base shape", counted(morphed, "primitives")));
   const std::size_t no_surface =

@@ -5,6 +5,7 @@
 #include "base_colour_textures.h"
 #include "external_files.h"
 #include "glb_container.h"
+#include "gltf_cameras.h"
 #include "ignored_features.h"
 #include "json_schema.h"
 #include "meshopt_views.h"
@@ -229,6 +230,7 @@ Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& bas
   }
   scene.textures = textures.take_textures();
   fit_scene(scene, scene_bounds(scene));
+  add_file_cameras(model, scene);
   return scene;
 }
 

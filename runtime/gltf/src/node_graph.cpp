@@ -22,47 +22,6 @@ bool all_finite(const std::vector<double>& values) {
   return true;
 }
 
-glm::mat4 local_transform(const tinygltf::Node& node, int index) {
-  const std::string name = node_name(index);
-  for (const auto& [property, values, length] :
-       {std::tuple{"matrix", &node.matrix, std::size_t{16}},
-        std::tuple{"translation", &node.translation, std::size_t{3}},
-        std::tuple{"rotation", &node.rotation, std::size_t{4}}, std::tuple{"scale", &node.scale, std::size_t{3}}}) {
-    if (!values->empty() && values->size() != length) {
-      throw Error(fmt::format("{}.{}: expected {} numbers, got {}", name, property, length, values->size()));
-    }
-    if (!all_finite(*values)) throw Error(fmt::format("{}.{}: not every number is finite", name, property));
-  }
-  if (!node.matrix.empty()) {
-    glm::mat4 m(1.0f);
-    for (int column = 0; column < 4; ++column) {
-      for (int row = 0; row < 4; ++row)
-        m[column][row] =
-            static_cast<float>(node.matrix[static_cast<std::size_t>(column) * 4 + static_cast<std::size_t>(row)]);
-    }
-    return m;
-  }
-  glm::mat4 m(1.0f);
-  if (!node.translation.empty()) {
-    m[3] = glm::vec4(static_cast<float>(node.translation[0]), static_cast<float>(node.translation[1]),
-                     static_cast<float>(node.translation[2]), 1.0f);
-  }
-  if (!node.rotation.empty()) {
-    // glTF stores x, y, z, w; glm::quat's constructor takes w first.
-    glm::quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
-                static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
-    const float length = glm::length(q);
-    if (!(length > 0.0f) || !std::isfinite(length)) throw Error(name + ".rotation: not a rotation (zero quaternion)");
-    m = m * glm::mat4_cast(q / length);
-  }
-  if (!node.scale.empty()) {
-    m = m * glm::mat4(glm::vec4(static_cast<float>(node.scale[0]), 0, 0, 0),
-                      glm::vec4(0, static_cast<float>(node.scale[1]), 0, 0),
-                      glm::vec4(0, 0, static_cast<float>(node.scale[2]), 0), glm::vec4(0, 0, 0, 1));
-  }
-  return m;
-}
-
 bool finite(const glm::mat4& m) {
   for (int c = 0; c < 4; ++c) {
     for (int r = 0; r < 4; ++r) {
@@ -116,6 +75,47 @@ void check_root(const std::vector<int>& parent, std::size_t scene_index, int roo
 }
 
 }  // namespace
+
+glm::mat4 local_transform(const tinygltf::Node& node, int index) {
+  const std::string name = node_name(index);
+  for (const auto& [property, values, length] :
+       {std::tuple{"matrix", &node.matrix, std::size_t{16}},
+        std::tuple{"translation", &node.translation, std::size_t{3}},
+        std::tuple{"rotation", &node.rotation, std::size_t{4}}, std::tuple{"scale", &node.scale, std::size_t{3}}}) {
+    if (!values->empty() && values->size() != length) {
+      throw Error(fmt::format("{}.{}: expected {} numbers, got {}", name, property, length, values->size()));
+    }
+    if (!all_finite(*values)) throw Error(fmt::format("{}.{}: not every number is finite", name, property));
+  }
+  if (!node.matrix.empty()) {
+    glm::mat4 m(1.0f);
+    for (int column = 0; column < 4; ++column) {
+      for (int row = 0; row < 4; ++row)
+        m[column][row] =
+            static_cast<float>(node.matrix[static_cast<std::size_t>(column) * 4 + static_cast<std::size_t>(row)]);
+    }
+    return m;
+  }
+  glm::mat4 m(1.0f);
+  if (!node.translation.empty()) {
+    m[3] = glm::vec4(static_cast<float>(node.translation[0]), static_cast<float>(node.translation[1]),
+                     static_cast<float>(node.translation[2]), 1.0f);
+  }
+  if (!node.rotation.empty()) {
+    // glTF stores x, y, z, w; glm::quat's constructor takes w first.
+    glm::quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+                static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
+    const float length = glm::length(q);
+    if (!(length > 0.0f) || !std::isfinite(length)) throw Error(name + ".rotation: not a rotation (zero quaternion)");
+    m = m * glm::mat4_cast(q / length);
+  }
+  if (!node.scale.empty()) {
+    m = m * glm::mat4(glm::vec4(static_cast<float>(node.scale[0]), 0, 0, 0),
+                      glm::vec4(0, static_cast<float>(node.scale[1]), 0, 0),
+                      glm::vec4(0, 0, static_cast<float>(node.scale[2]), 0), glm::vec4(0, 0, 0, 1));
+  }
+  return m;
+}
 
 std::vector<PlacedMesh> place_meshes(const tinygltf::Model& model, std::size_t scene_index) {
   const std::vector<int> parent = parents_of(model);

@@ -18,6 +18,11 @@ struct PlacedMesh {
   glm::mat4 world{1.0f};  // the node's transform times its ancestors'
 };
 
+// A node's own transform: its "matrix", else translation * rotation * scale. Throws
+// tilelight::Error naming nodes[`index`] when a property has the wrong length or a non-finite
+// number, or the rotation is a zero quaternion.
+glm::mat4 local_transform(const tinygltf::Node& node, int index);
+
 // Every node of `scene_index` (precondition: a valid index into model.scenes) that has a mesh,
 // depth first in the file's order, with its world transform. Each node's local transform is
 // its "matrix", else translation * rotation * scale; non-finite ones are errors.

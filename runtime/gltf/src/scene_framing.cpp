@@ -1,6 +1,7 @@
 #include "scene_framing.h"
 
 #include "tilelight/base/error.h"
+#include "tilelight/scene/view_fit.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -90,11 +91,10 @@ void fit_scene(Scene& scene, const Bounds& bounds) {
   scene.sun.shadow_depth_range = kSceneRadius * 2.2f;
   const float texel = 2.0f * scene.sun.shadow_half_extent / static_cast<float>(scene.sun.shadow_map_size);
   scene.sun.shadow_depth_bias = 3.0f * texel / scene.sun.shadow_depth_range;
-  // Shadows fade and light scatters over the far half of the scene, so that a loaded model's
-  // frame has those tile classes too (the demo's 55 m / 75 m lie beyond any loaded scene).
-  scene.sun.shadow_fade_start = distance;
-  scene.sun.shadow_fade_length = kSceneRadius;
-  scene.sun.scattering_start = distance + 0.25f * kSceneRadius;
+  // Shadows fade and light scatters from the scene's far side as the camera sees it (view
+  // depths from the eye), so no visible surface loses its shadow (view_fit.h).
+  fit_lighting_distances(scene.sun, scene.cameras.front(), WorldBox{-half, half}, {});
+  scene.world_from_file = normalise;
 }
 
 }  // namespace tilelight::gltf_detail

@@ -22,8 +22,8 @@ Bounds scene_bounds(const Scene& scene);
 
 // Scales and moves every instance so that `bounds` (the scene's, non-degenerate and finite)
 // becomes a box centred on the origin whose bounding sphere has kSceneRadius; sets the demo's
-// sun with the shadow map covering that sphere, the shadow-fade and scattering distances over
-// the scene's far half as the default camera sees it, and the cameras: "default", a raised
+// sun with the shadow map covering that sphere, the shadow-fade and scattering distances from
+// the scene's far side as the default camera sees it, Scene::world_from_file, and the cameras: "default", a raised
 // three-quarter view framing the box in the vertical field of view and a 4:3 frame's width. Throws tilelight::Error when a
 // transform becomes non-finite.
 void fit_scene(Scene& scene, const Bounds& bounds);

@@ -172,7 +172,7 @@ struct TileRenderer::Impl {
         primitive(choose_primitive(ctx, grid, opts.primitive)),
         samples(checked_msaa(ctx, opts.msaa)),
         pool(ctx, "tilelight frame") {
-    const Camera& camera = scene.camera(opts.camera);
+    const Camera& camera = opts.camera_pose ? *opts.camera_pose : scene.camera(opts.camera);
     descriptor_pool = create_descriptor_pool(ctx, kMaxDescriptorSets, "tilelight descriptors");
     targets = std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples,
                                               scene.sun.shadow_map_size, opts.light_pass == LightPass::compute);

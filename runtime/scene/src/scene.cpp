@@ -250,7 +250,8 @@ Scene make_demo_scene() {
 
 CameraMatrices camera_matrices(const Camera& camera, float aspect) {
   const glm::mat4 view = glm::lookAtRH(camera.position, camera.target, camera.up);
-  glm::mat4 proj = glm::perspectiveRH_ZO(glm::radians(camera.vertical_fov_degrees), aspect, 0.5f, 2000.0f);
+  glm::mat4 proj =
+      glm::perspectiveRH_ZO(glm::radians(camera.vertical_fov_degrees), aspect, camera.near_plane, camera.far_plane);
   proj[1][1] = -proj[1][1];  // Vulkan: NDC y points down
   const glm::mat4 view_proj = proj * view;
   return {view_proj, glm::inverse(view_proj), glm::normalize(camera.target - camera.position)};

@@ -4,6 +4,7 @@
 #include "tilelight/app/frame_ratios.h"
 #include "tilelight/render/tile_renderer.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -11,12 +12,19 @@
 
 namespace tilelight::app {
 
+// Where the camera stood, in the coordinates --eye takes (a --scene file's own): enough to
+// place it again with --eye, --target, --up and --fov.
+struct CameraPose {
+  std::array<double, 3> eye{}, target{}, up{};
+  double fov_deg = 0;
+};
+
 struct RunDescription {
   std::string device;
   std::uint32_t width = 0, height = 0, msaa_samples = 0, tile_size = 0, frames = 0;
   IndexPath path = IndexPath::cpu;
   bool raw_permutations = false;  // "raw" | "optimised" in the report
-  std::string camera;
+  std::string camera;             // a procedural camera's name, "gltf:N" or "eye"
   bool coalesce = true;
   std::string lavapipe_threads;               // LP_NUM_THREADS as set, or "" (driver default)
   std::string primitive;                      // "points" | "triangles": what the tile pass drew; "workgroups" (compute)
@@ -25,6 +33,7 @@ struct RunDescription {
   // The scene: the --scene file's name (empty: the procedural scene), its triangles per G-buffer pass.
   std::string scene;
   std::uint64_t scene_triangles = 0;
+  CameraPose camera_pose;
   // What the --scene file holds that is not drawn, as printed on stderr (load_gltf.h's GltfScene::warnings).
   std::vector<std::string> scene_warnings;
 };

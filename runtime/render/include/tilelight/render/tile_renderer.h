@@ -91,6 +91,8 @@ struct RendererOptions {
   // draws them (largePoints, a whole block's width), else triangles.
   std::optional<TilePrimitive> primitive;
   std::string camera = "default";
+  // A camera placed by the caller (--eye, a fitted file camera): drawn instead of `camera`.
+  std::optional<Camera> camera_pose;
   Baselines baselines = Baselines::both;  // which full-screen passes run (and are timed) each frame
   Seconds timeout = kDefaultGpuTimeout;
 };

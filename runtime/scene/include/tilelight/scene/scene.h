@@ -82,6 +82,13 @@ struct Camera {
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float vertical_fov_degrees = 60.0f;
   glm::vec3 shadow_focus{};  // ground point the sun's shadow map is centred on
+  // Clip planes (view depths). The procedural cameras keep these; a placed or file camera's
+  // follow the scene it sees (view_fit.h), so an interior view is neither clipped nor blurred.
+  float near_plane = 0.5f;
+  float far_plane = 2000.0f;
+  // Non-empty: why the camera cannot be drawn (an orthographic or malformed glTF camera); the
+  // command line refuses to choose it with this text.
+  std::string unusable{};
 };
 
 // Lighting constants shared by classification and lighting (distances are view depths).
@@ -111,6 +118,10 @@ struct Scene {
   std::vector<Camera> cameras;  // cameras[0] is the default
   SunAndAtmosphere sun;
   std::string source;  // the file the scene was loaded from (its name only); empty: the procedural scene
+  // The file's coordinates -> the renderer's (a loaded scene is scaled and centred, see
+  // runtime/gltf/src/scene_framing.h): a uniform scale then a translation. Identity for the
+  // procedural scene. Placed cameras (--eye) are given in the file's coordinates.
+  glm::mat4 world_from_file{1.0f};
 
   // Triangles drawn per frame: every batch's instances times its mesh's triangles.
   std::uint64_t triangle_count() const;
