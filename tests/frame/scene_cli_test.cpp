@@ -35,6 +35,10 @@ TEST(TilelightScene, RendersAGlbUnderValidationAndReportsIt) {
   EXPECT_EQ(report["scene"], "2CylinderEngine.glb");
   EXPECT_EQ(report["scene_triangles"], 121496);
   EXPECT_EQ(report["camera"], "default");
+  EXPECT_GT(report["load_ms"].get<double>(), 0.0) << "parse, decode and upload take time";
+  EXPECT_EQ(report["cull"], true);
+  EXPECT_TRUE(report["culled"]["gbuffer_batches"].is_number_unsigned()) << report["culled"];
+  EXPECT_TRUE(report["culled"]["shadow_batches"].is_number_unsigned()) << report["culled"];
   EXPECT_EQ(report["equivalence"]["pixels_different"], 0);
   EXPECT_EQ(report["dynamic_equivalence"]["pixels_different"], 0);
   EXPECT_NE(r.out.find("scene 2CylinderEngine.glb (121496 triangles)"), std::string::npos) << r.out;
@@ -49,6 +53,8 @@ TEST(TilelightScene, TheProceduralSceneIsReportedAsNoFile) {
   const nlohmann::json report = nlohmann::json::parse(file);
   EXPECT_TRUE(report["scene"].is_null());
   EXPECT_EQ(report["scene_warnings"], nlohmann::json::array());
+  EXPECT_EQ(report["culled"], nlohmann::json({{"gbuffer_batches", 0}, {"shadow_batches", 0}}))
+      << "the default camera sees every batch of the procedural scene";
   EXPECT_EQ(report["scene_triangles"], make_demo_scene().triangle_count());
   EXPECT_NE(r.out.find("scene procedural ("), std::string::npos) << r.out;
 }

@@ -29,6 +29,7 @@ struct Arguments {
   std::optional<std::uint32_t> scene_index;
   bool validation = false;
   bool no_coalesce = false;
+  bool no_cull = false;
   bool list_devices = false;
   bool list_cameras = false;
   double timeout_s = 60.0;

@@ -73,6 +73,9 @@ void add_options(CLI::App& cli, Arguments& a) {
       ->check(CLI::IsMember({4u, 8u, 16u}))
       ->capture_default_str();
   cli.add_flag("--no-coalesce", a.no_coalesce, "one rectangle per tile (no tile coalescing)");
+  cli.add_flag("--no-cull", a.no_cull,
+               "draw every mesh batch in the G-buffer and shadow passes (default: skip those wholly outside the "
+               "camera's or the sun's view; report.json counts them under culled)");
   cli.add_option("--primitive", a.primitive,
                  "tile pass primitive: points (a point sprite per square of tiles), triangles (two per "
                  "rectangle), auto (points where the device draws them)")

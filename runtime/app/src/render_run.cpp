@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -59,6 +60,7 @@ RendererOptions renderer_options(const Arguments& a, const ChosenCamera& camera)
   options.light_pass = a.light_pass;
   options.raw_permutations = a.raw_permutations;
   options.coalesce = !a.no_coalesce;
+  options.cull_batches = !a.no_cull;
   if (a.primitive != "auto") options.primitive = parse_tile_primitive(a.primitive);
   options.camera = camera.name;
   options.camera_pose = camera.placed;
@@ -176,7 +178,10 @@ void write_outputs(OutputFiles& files, FrameReport& report, const ReadBack& fram
 
 int render_run(const Arguments& a, std::ostream& out, std::ostream& err, std::string& stage) {
   stage = "building the scene";
+  const auto load_start = std::chrono::steady_clock::now();
   GltfScene loaded = load_scene(a);
+  const double parse_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start).count();
   for (const std::string& warning : loaded.warnings) err << warning << '\n';
   Scene& scene = loaded.scene;  // the camera's fit adjusts its sun (choose_camera())
   if (a.list_cameras) {
@@ -214,6 +219,9 @@ int render_run(const Arguments& a, std::ostream& out, std::ostream& err, std::st
   stage = "comparing the frames and writing the results to " + a.out;
   FrameReport report = make_report(a, camera, context, scene, *renderer, timed, frames);
   report.run.scene_warnings = loaded.warnings;
+  report.run.cull = options.cull_batches;
+  report.load_ms = parse_ms + renderer->scene_upload_ms();
+  report.culled = renderer->culled_batches();
   write_outputs(files, report, frames, a.tile_size);
 
   out << timing_table(report);

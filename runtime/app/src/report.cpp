@@ -139,6 +139,10 @@ std::string report_json(const FrameReport& r) {
   j["scene_triangles"] = r.run.scene_triangles;
   // The lines "warning: FILE: ..." printed on stderr; [] for the procedural scene.
   j["scene_warnings"] = r.run.scene_warnings;
+  j["load_ms"] = std::round(r.load_ms * 100.0) / 100.0;
+  // Mesh batches wholly outside a pass's clip volume, not drawn (--no-cull: 0, and "cull": false).
+  j["cull"] = r.run.cull;
+  j["culled"] = {{"gbuffer_batches", r.culled.gbuffer}, {"shadow_batches", r.culled.shadow}};
   j["coalesce"] = r.run.coalesce;
   j["primitive"] = r.run.primitive;
   j["baselines"] = name_of(baseline_names(), r.run.baselines);

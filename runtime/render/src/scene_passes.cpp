@@ -77,7 +77,7 @@ std::vector<VkDescriptorSetLayoutBinding> base_colour_bindings(const RenderTarge
 }  // namespace
 
 ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
-                         VkDescriptorPool pool, const CommandPool& upload_pool)
+                         VkDescriptorPool pool, const CommandPool& upload_pool, bool cull)
     : textures_(context, upload_pool, scene.textures, base_colour_bindings(targets)), batches_(scene.batches) {
   for (const Mesh& mesh : scene.meshes) {
     MeshBuffers buffers;
@@ -93,6 +93,7 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
   const SceneParamsBlock block = make_scene_params(scene, camera, targets.extent().width, targets.extent().height);
   params_ = upload_buffer<SceneParamsBlock>(context, std::span(&block, 1), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                             "scene parameters");
+  select_drawn_batches(scene, block, cull);
 
   set_layout_ = create_descriptor_set_layout(context, scene_params_bindings(targets), "scene set layout");
   const VkDescriptorSetLayout set_layouts[] = {set_layout_.get(), textures_.set_layout()};
@@ -150,8 +151,22 @@ ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Contex
   return {create_graphics_pipeline(context, materials), create_graphics_pipeline(context, sky)};
 }
 
-void ScenePasses::draw_batches(VkCommandBuffer cmd, bool textured) const {
-  for (const MeshBatch& batch : batches_) {
+// The camera and the sun are fixed per renderer, so each pass's batches are chosen once.
+void ScenePasses::select_drawn_batches(const Scene& scene, const SceneParamsBlock& block, bool cull) {
+  if (!cull) {
+    gbuffer_batches_.drawn.assign(scene.batches.size(), true);
+    shadow_batches_.drawn.assign(scene.batches.size(), true);
+    return;
+  }
+  const std::vector<WorldBox> bounds = batch_bounds(scene);
+  gbuffer_batches_ = select_batches(bounds, block.view_proj);
+  shadow_batches_ = select_batches(bounds, block.sun_view_proj);
+}
+
+void ScenePasses::draw_batches(VkCommandBuffer cmd, bool textured, const BatchSelection& selection) const {
+  for (std::size_t i = 0; i < batches_.size(); ++i) {
+    if (!selection.drawn[i]) continue;
+    const MeshBatch& batch = batches_[i];
     const MeshBuffers& mesh = meshes_[batch.mesh];
     if (textured) {
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 1, 1, &mesh.base_colour, 0, nullptr);
@@ -177,7 +192,7 @@ void ScenePasses::record_shadow_map(VkCommandBuffer cmd, const RenderTargets& ta
   set_viewport_and_scissor(cmd, targets.shadow_extent());
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadow_pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
-  draw_batches(cmd, false);
+  draw_batches(cmd, false, shadow_batches_);
   vkCmdEndRenderPass(cmd);
 }
 
@@ -194,7 +209,7 @@ void ScenePasses::record_gbuffer_with(VkCommandBuffer cmd, const RenderTargets& 
   targets.begin_gbuffer_pass(cmd, with_flags);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.materials.get());
-  draw_batches(cmd, true);
+  draw_batches(cmd, true, gbuffer_batches_);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.sky.get());
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);

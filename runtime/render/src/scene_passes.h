@@ -4,7 +4,9 @@
 
 #include "render_targets.h"
 #include "scene_textures.h"
+#include "tilelight/scene/batch_culling.h"
 #include "tilelight/scene/scene.h"
+#include "tilelight/scene/uniform_blocks.h"
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
 
@@ -21,9 +23,14 @@ class Context;
 
 class ScenePasses {
  public:
-  // `upload_pool` records the texture uploads (waited for before this returns).
+  // `upload_pool` records the texture uploads (waited for before this returns). With `cull`,
+  // each pass skips the batches wholly outside its clip volume (batch_culling.h).
   ScenePasses(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
-              VkDescriptorPool pool, const CommandPool& upload_pool);
+              VkDescriptorPool pool, const CommandPool& upload_pool, bool cull);
+
+  // Batches the G-buffer passes and the shadow-map pass skip (0 without culling).
+  std::uint32_t culled_gbuffer_batches() const { return gbuffer_batches_.culled; }
+  std::uint32_t culled_shadow_batches() const { return shadow_batches_.culled; }
 
   // Shadow map pass, then the classified path's G-buffer pass (geometry, then sky at the far
   // plane), with the coverage flags where the targets have them.
@@ -48,12 +55,15 @@ class ScenePasses {
     std::uint32_t index_count = 0;
     VkDescriptorSet base_colour = VK_NULL_HANDLE;  // set 1 of the G-buffer pass
   };
-  // With `textured`, each batch binds its mesh's base colour texture first (the G-buffer pass).
-  void draw_batches(VkCommandBuffer cmd, bool textured) const;
+  // The batches `selection` draws. With `textured`, each binds its mesh's base colour texture
+  // first (the G-buffer pass).
+  void draw_batches(VkCommandBuffer cmd, bool textured, const BatchSelection& selection) const;
+  void select_drawn_batches(const Scene& scene, const SceneParamsBlock& block, bool cull);
 
   SceneTextures textures_;
   std::vector<MeshBuffers> meshes_;
   std::vector<MeshBatch> batches_;
+  BatchSelection gbuffer_batches_, shadow_batches_;  // per batch of batches_
   Buffer instances_;
   Buffer params_;
   UniqueDescriptorSetLayout set_layout_;

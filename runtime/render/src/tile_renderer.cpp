@@ -164,6 +164,7 @@ struct TileRenderer::Impl {
   Fence frame_done;
   std::uint64_t frame = 0;
   std::function<void()> before_host_signal;
+  double scene_upload_ms = 0;
 
   Impl(const Context& ctx, const Scene& scene, const RendererOptions& opts)
       : context(ctx),
@@ -176,7 +177,10 @@ struct TileRenderer::Impl {
     descriptor_pool = create_descriptor_pool(ctx, kMaxDescriptorSets, "tilelight descriptors");
     targets = std::make_unique<RenderTargets>(ctx, VkExtent2D{opts.width, opts.height}, samples,
                                               scene.sun.shadow_map_size, opts.light_pass == LightPass::compute);
-    scene_passes = std::make_unique<ScenePasses>(ctx, scene, camera, *targets, descriptor_pool.get(), pool);
+    const auto upload_start = std::chrono::steady_clock::now();
+    scene_passes =
+        std::make_unique<ScenePasses>(ctx, scene, camera, *targets, descriptor_pool.get(), pool, opts.cull_batches);
+    scene_upload_ms = milliseconds_since(upload_start);
     lighting = std::make_unique<LightingInterface>(ctx, make_lighting_params(scene, camera, opts.width, opts.height),
                                                    *targets, descriptor_pool.get());
     classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());
@@ -400,6 +404,10 @@ std::uint32_t TileRenderer::draw_class_count() const { return impl_->class_count
 TilePrimitive TileRenderer::tile_primitive() const { return impl_->primitive; }
 std::uint32_t TileRenderer::pipeline_count() const { return impl_->light_pass->pipeline_count(); }
 LightPass TileRenderer::light_pass() const { return impl_->options.light_pass; }
+CulledBatches TileRenderer::culled_batches() const {
+  return {impl_->scene_passes->culled_gbuffer_batches(), impl_->scene_passes->culled_shadow_batches()};
+}
+double TileRenderer::scene_upload_ms() const { return impl_->scene_upload_ms; }
 const LightingParamsBlock& TileRenderer::lighting_params() const { return impl_->lighting->params(); }
 
 std::vector<std::uint8_t> TileRenderer::raw_tile_ids() const {

@@ -10,15 +10,6 @@
 namespace tilelight {
 namespace {
 
-std::array<glm::vec3, 8> corners(const WorldBox& box) {
-  std::array<glm::vec3, 8> c{};
-  for (int i = 0; i < 8; ++i) {
-    c[static_cast<std::size_t>(i)] = {(i & 1) != 0 ? box.max.x : box.min.x, (i & 2) != 0 ? box.max.y : box.min.y,
-                                      (i & 4) != 0 ? box.max.z : box.min.z};
-  }
-  return c;
-}
-
 glm::vec3 forward_of(const Camera& camera) { return glm::normalize(camera.target - camera.position); }
 
 float diagonal(const WorldBox& box) { return glm::length(box.max - box.min); }
@@ -59,28 +50,20 @@ std::array<glm::vec3, 8> frustum_slice(const Camera& camera, float aspect, float
 
 template <std::size_t N>
 WorldBox box_of(const glm::mat4& transform, const std::array<glm::vec3, N>& points) {
-  WorldBox b{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(std::numeric_limits<float>::lowest())};
-  for (const glm::vec3& p : points) {
-    const glm::vec3 q(transform * glm::vec4(p, 1.0f));
-    b.min = glm::min(b.min, q);
-    b.max = glm::max(b.max, q);
-  }
+  WorldBox b = empty_world_box();
+  for (const glm::vec3& p : points) add_point(b, glm::vec3(transform * glm::vec4(p, 1.0f)));
   return b;
 }
 
 }  // namespace
 
 WorldBox world_box(const Scene& scene) {
-  WorldBox b{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(std::numeric_limits<float>::lowest())};
+  WorldBox b = empty_world_box();
   for (const MeshBatch& batch : scene.batches) {
     const Mesh& mesh = scene.meshes[batch.mesh];
     for (std::uint32_t i = 0; i < batch.instance_count; ++i) {
       const glm::mat4& model = scene.instances[batch.first_instance + i].model;
-      for (const MeshVertex& v : mesh.vertices) {
-        const glm::vec3 p(model * glm::vec4(v.position, 1.0f));
-        b.min = glm::min(b.min, p);
-        b.max = glm::max(b.max, p);
-      }
+      for (const MeshVertex& v : mesh.vertices) add_point(b, glm::vec3(model * glm::vec4(v.position, 1.0f)));
     }
   }
   return b;

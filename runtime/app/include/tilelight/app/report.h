@@ -36,6 +36,7 @@ struct RunDescription {
   CameraPose camera_pose;
   // What the --scene file holds that is not drawn, as printed on stderr (load_gltf.h's GltfScene::warnings).
   std::vector<std::string> scene_warnings;
+  bool cull = true;  // RendererOptions::cull_batches (--no-cull: false)
 };
 
 // Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).
@@ -61,6 +62,10 @@ struct ProcessFigures {
 
 struct FrameReport {
   RunDescription run;
+  // Host milliseconds from the scene file (or the procedural scene's generation) to the scene on
+  // the GPU: parse and decode (load_gltf), then TileRenderer::scene_upload_ms().
+  double load_ms = 0;
+  CulledBatches culled;  // mesh batches the scene passes skipped (--no-cull: 0)
   std::uint32_t tiles = 0;
   // Per raw feature, named by its shader define (the generated registry's), in the spec's order.
   std::vector<std::pair<std::string, std::uint32_t>> raw_property_tiles;

@@ -87,6 +87,9 @@ struct RendererOptions {
   LightPass light_pass = LightPass::compute;  // tilelight's default (docs/results.md g4)
   bool raw_permutations = false;              // draw the 96 raw permutations instead of the 32 optimised ones
   bool coalesce = true;
+  // The scene passes skip mesh batches wholly outside their clip volume (the camera's for the
+  // G-buffer, the sun's for the shadow map); no pixel changes. Off: every batch is drawn.
+  bool cull_batches = true;
   // How the tile pass draws its rectangles (tile_primitive.h); empty: points where the device
   // draws them (largePoints, a whole block's width), else triangles.
   std::optional<TilePrimitive> primitive;
@@ -130,6 +133,11 @@ struct FrameResult {
   FrameStats stats;
 };
 
+struct CulledBatches {
+  std::uint32_t gbuffer = 0;  // outside the camera's frustum
+  std::uint32_t shadow = 0;   // outside the sun's shadow-map volume
+};
+
 // Which of the frame's two G-buffers: the classified path's (with its coverage flags) or the
 // baselines' plain one.
 enum class GBufferKind { classified, plain };
@@ -152,6 +160,11 @@ class TileRenderer {
   TilePrimitive tile_primitive() const;    // the one chosen (RendererOptions::primitive)
   std::uint32_t pipeline_count() const;    // 32 or 96
   LightPass light_pass() const;
+  // Mesh batches the scene passes skip (RendererOptions::cull_batches; 0 without it).
+  CulledBatches culled_batches() const;
+  // Host milliseconds to put the scene on the GPU: meshes, instances, textures (with their
+  // mip chains) and the scene passes' pipelines, once, when this renderer was made.
+  double scene_upload_ms() const;
 
   // Results of the last frame.
   std::vector<std::uint8_t> raw_tile_ids() const;  // row-major, tiles_x * tiles_y

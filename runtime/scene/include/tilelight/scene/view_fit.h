@@ -6,17 +6,13 @@
 // near geometry and a shadow map that covers what it sees rather than the whole scene.
 
 #include "tilelight/scene/scene.h"
+#include "tilelight/scene/world_box.h"
 
 #include <glm/glm.hpp>
 
 #include <optional>
 
 namespace tilelight {
-
-// An axis-aligned box in the renderer's world.
-struct WorldBox {
-  glm::vec3 min{0.0f}, max{0.0f};
-};
 
 // The world bounds of every instance's mesh. Precondition: at least one instance.
 WorldBox world_box(const Scene& scene);
