@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -36,13 +37,17 @@ RgbaImage display_encoded(const RgbaImage& linear) {
   return out;
 }
 
-// A bad file is an error about the flag's value: "--scene FILE: what is wrong".
+// A bad file is an error about the flag's value: "--scene FILE: what is wrong". What the loader
+// drew otherwise than the file asks is printed on stderr, one "warning: " line each.
 Scene load_scene(const Arguments& a) {
+  Scene scene;
   try {
-    return load_gltf_scene(a.scene, GltfLoadOptions{a.scene_index});
+    scene = load_gltf_scene(a.scene, GltfLoadOptions{a.scene_index});
   } catch (const Error& e) {
     throw OptionError("--scene", std::string("--scene ") + e.what());
   }
+  for (const std::string& warning : scene.warnings) std::cerr << "warning: " << warning << '\n';
+  return scene;
 }
 
 RendererOptions renderer_options(const Arguments& a) {
