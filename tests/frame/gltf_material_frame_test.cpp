@@ -13,6 +13,8 @@
 
 #include <bit>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace tilelight::test {
@@ -172,6 +174,18 @@ TEST_P(GltfDoubleSided, ABackFaceIsCulledOnlyOnASingleSidedMaterial) {
 INSTANTIATE_TEST_SUITE_P(Sides, GltfDoubleSided, ::testing::Bool(), [](const ::testing::TestParamInfo<bool>& info) {
   return std::string(info.param ? "double_sided" : "single_sided");
 });
+
+// The loader's warning reaches stderr once, as "warning: FILE: ...", before any other work.
+TEST(TilelightSceneWarnings, BlendIsReportedOnStderr) {
+  GltfBuilder builder;
+  builder.add_quad({-1, -1}, {1, 1}, 0, builder.add_material(R"("alphaMode": "BLEND")"));
+  const std::filesystem::path file = scratch_dir() / "blend.gltf";
+  std::ofstream(file) << builder.json();
+  const CliResult r = run_cli({"--scene", file.string(), "--list-cameras"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "warning: " + file.string() +
+                       ": 1 material uses alphaMode BLEND: drawn as MASK at 0.5; a deferred G-buffer cannot blend\n");
+}
 
 }  // namespace
 }  // namespace tilelight::test

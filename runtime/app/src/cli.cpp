@@ -104,7 +104,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   if (auto exit_code = command_line::parse(cli, args, out, err)) return *exit_code;
   std::string stage = "starting";
   try {
-    return render_run(arguments, out, stage);
+    return render_run(arguments, out, err, stage);
   } catch (...) {
     err << "tilelight: error: " << failure_message(stage, std::current_exception()) << '\n';
     return command_line::kExitError;

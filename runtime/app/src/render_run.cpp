@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <iostream>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -39,14 +38,14 @@ RgbaImage display_encoded(const RgbaImage& linear) {
 
 // A bad file is an error about the flag's value: "--scene FILE: what is wrong". What the loader
 // drew otherwise than the file asks is printed on stderr, one "warning: " line each.
-Scene load_scene(const Arguments& a) {
+Scene load_scene(const Arguments& a, std::ostream& err) {
   Scene scene;
   try {
     scene = load_gltf_scene(a.scene, GltfLoadOptions{a.scene_index});
   } catch (const Error& e) {
     throw OptionError("--scene", std::string("--scene ") + e.what());
   }
-  for (const std::string& warning : scene.warnings) std::cerr << "warning: " << warning << '\n';
+  for (const std::string& warning : scene.warnings) err << "warning: " << warning << '\n';
   return scene;
 }
 
@@ -173,9 +172,9 @@ void write_outputs(OutputFiles& files, FrameReport& report, const ReadBack& fram
 
 }  // namespace
 
-int render_run(const Arguments& a, std::ostream& out, std::string& stage) {
+int render_run(const Arguments& a, std::ostream& out, std::ostream& err, std::string& stage) {
   stage = "building the scene";
-  const Scene scene = a.scene.empty() ? make_demo_scene() : load_scene(a);
+  const Scene scene = a.scene.empty() ? make_demo_scene() : load_scene(a, err);
   if (a.list_cameras) {
     for (const Camera& c : scene.cameras) out << c.name << ": " << c.description << '\n';
     return 0;

@@ -12,6 +12,7 @@ namespace tilelight::app {
 
 // Returns the exit code (0). Throws tilelight::Error (OptionError for a bad flag value) or
 // anything the libraries throw; `stage` always says what the run is doing, for the message.
-int render_run(const Arguments& arguments, std::ostream& out, std::string& stage);
+// Warnings (the loaded scene's) go to `err`, one "warning: " line each.
+int render_run(const Arguments& arguments, std::ostream& out, std::ostream& err, std::string& stage);
 
 }  // namespace tilelight::app

@@ -60,7 +60,8 @@ std::vector<VkVertexInputAttributeDescription> scene_attributes_where(Wanted wan
   return kept;
 }
 
-// Location 9 (the alpha mask) is read by the masked shaders only.
+// The batch kinds (ScenePasses::kBatchKinds): masked ones read location 9 (the alpha mask), culled
+// ones are single-sided.
 bool masked_kind(std::size_t kind) { return kind >= 2; }
 bool culled_kind(std::size_t kind) { return kind % 2 == 1; }
 std::size_t batch_kind(const Mesh& mesh) { return (mesh.alpha_mask ? 2 : 0) + (mesh.double_sided ? 0 : 1); }
