@@ -20,10 +20,10 @@ class GltfBuilder {
  public:
   // A quad in the plane z = `z` from `lo` to `hi` (x, y), wound counter-clockwise seen from +z
   // (its front) or, with `facing_away`, from -z, with normals to match. TEXCOORD_0 is (0, 0) at the
-  // top left (lo.x, hi.y) and (1, 1) at the bottom right; TEXCOORD_1 is 1 - TEXCOORD_0. `scale`:
-  // the node's scale (a negative one mirrors it).
+  // top left (lo.x, hi.y) and (1, 1) at the bottom right; TEXCOORD_1 is 1 - TEXCOORD_0. `node`:
+  // the node's matrix (a negative determinant mirrors the quad).
   void add_quad(glm::vec2 lo, glm::vec2 hi, float z, int material, bool facing_away = false,
-                glm::vec3 scale = glm::vec3(1.0f)) {
+                const glm::mat4& node = glm::mat4(1.0f)) {
     const float n = facing_away ? -1.0f : 1.0f;
     Quad q;
     q.positions = {glm::vec3(lo.x, hi.y, z), glm::vec3(lo.x, lo.y, z), glm::vec3(hi.x, lo.y, z),
@@ -34,7 +34,7 @@ class GltfBuilder {
     q.indices =
         facing_away ? std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2} : std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3};
     q.material = material;
-    q.scale = scale;
+    q.node = node;
     quads_.push_back(q);
   }
 
@@ -77,7 +77,7 @@ class GltfBuilder {
                          ",\"NORMAL\":" + std::to_string(a + 1) + ",\"TEXCOORD_0\":" + std::to_string(a + 2) +
                          ",\"TEXCOORD_1\":" + std::to_string(a + 3) + "},\"indices\":" + std::to_string(a + 4) +
                          ",\"material\":" + std::to_string(q.material) + "}]}");
-      append(nodes, "{\"mesh\":" + std::to_string(k) + ",\"scale\":[" + numbers(q.scale) + "]}");
+      append(nodes, "{\"mesh\":" + std::to_string(k) + ",\"matrix\":[" + numbers(q.node) + "]}");
       append(scene_nodes, std::to_string(k));
     }
     std::string images, textures;
@@ -111,13 +111,21 @@ class GltfBuilder {
     glm::vec3 normal{};
     std::vector<std::uint32_t> indices;
     int material = 0;
-    glm::vec3 scale{1.0f};
+    glm::mat4 node{1.0f};
   };
 
   static void append(std::string& list, const std::string& item) { list += (list.empty() ? "" : ",") + item; }
 
   static std::string numbers(glm::vec3 v) {
     return std::to_string(v.x) + "," + std::to_string(v.y) + "," + std::to_string(v.z);
+  }
+
+  static std::string numbers(const glm::mat4& m) {  // column-major, as glTF's matrix
+    std::string list;
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) append(list, std::to_string(m[c][r]));
+    }
+    return list;
   }
 
   static std::string accessor(int view, int count, const char* type, int component, const std::string& extra) {

@@ -116,7 +116,8 @@ TEST(GltfMaterial, AMirroredInstanceGetsItsTrianglesWoundTheOtherWay) {
   GltfBuilder file;
   const int material = file.add_material(R"("name": "m")");
   file.add_quad({-1, -1}, {1, 1}, 0, material);
-  file.add_quad({-1, -1}, {1, 1}, 0, material, false, glm::vec3(-1, 1, 1));
+  file.add_quad({-1, -1}, {1, 1}, 0, material, false,
+                glm::mat4(glm::vec4(-1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0), glm::vec4(0, 0, 0, 1)));
   const Scene scene = load(file);
   ASSERT_EQ(scene.meshes.size(), 2u);
   EXPECT_EQ(scene.meshes[0].indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
