@@ -95,7 +95,10 @@ INSTANTIATE_TEST_SUITE_P(
         GltfCase{"engine_glb_compute_light_pass", "2CylinderEngine-glTF-Binary/2CylinderEngine.glb", IndexPath::gpu, 0,
                  std::nullopt, false, 4, true, LightPass::compute},
         GltfCase{"box_textured_embedded_cpu_triangles", "BoxTextured-glTF-Embedded/BoxTextured.gltf", IndexPath::cpu, 0,
-                 TilePrimitive::triangles}),
+                 TilePrimitive::triangles},
+        // KHR_texture_transform's test plates, and a spec-gloss box (its diffuse texture).
+        GltfCase{"texture_transform_gpu", "textureTransform/TextureTransformTest.gltf", IndexPath::gpu, 0},
+        GltfCase{"spec_gloss_box_cpu", "BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf", IndexPath::cpu, 0}),
     case_name);
 
 // The textured quad of tests/fixtures/gltf: a 2x2 texture (red, green / blue, white) read

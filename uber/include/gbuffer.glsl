@@ -176,6 +176,21 @@ uint gbuffer_encode_flags(bool partial, bool shared_values)
     return partial ? (shared_values ? GBUFFER_FLAG_SHARED : GBUFFER_FLAG_PARTIAL) : 0u;
 }
 
+// The coverage flags of an alpha-masked fragment. It runs without early fragment tests (a
+// discard must also discard its depth), so `partial_before_depth` is its rasterised coverage, not
+// the samples it won: covering every sample, it may still lose some to the depth test and leave
+// its pixel holding two surfaces, with no partial fragment written last. So a masked fragment
+// never writes "no flag": where its coverage is partial it flags as an opaque one would (a
+// partial fragment's post-depth coverage is partial too); where it covers every sample it writes
+// SHARED, "compare the stored values", which readers resolve exactly (classification compares,
+// the light pass shades every sample). The argument of the coverage flags above then holds again:
+// of the fragments a mixed pixel holds, the one written last is flagged, masked or not. A masked
+// fragment that wins every sample costs a comparison, never a wrong answer.
+uint gbuffer_encode_masked_flags(bool partial_before_depth, bool shared_values)
+{
+    return partial_before_depth ? gbuffer_encode_flags(true, shared_values) : GBUFFER_FLAG_SHARED;
+}
+
 #ifdef GBUFFER_ENCODE_ONLY
 // Samples per pixel of the G-buffer being written; the runtime specialises it.
 layout(constant_id = 0) const uint GBUFFER_SAMPLES = 1u;

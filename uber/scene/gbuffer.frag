@@ -3,9 +3,13 @@
 // with prelit (ambient) lighting already applied, as in Split/Second. Compiled twice: plain (the
 // baselines' G-buffer: RT0..RT3, what lighting reads) and with GBUFFER_COVERAGE_FLAGS (the
 // classified path's: the same RT0..RT3 plus RT4, the coverage flags classification reads).
+// With ALPHA_MASK (gbuffer_masked, gbuffer_masked_flagged: alpha-masked meshes) it discards the
+// texels the mask cuts away (alpha_mask.glsl), identically in both.
 #extension GL_GOOGLE_include_directive : require
-#ifdef GBUFFER_COVERAGE_FLAGS
-// The coverage flags need the samples this fragment won in the depth test (gbuffer.glsl).
+#if defined(GBUFFER_COVERAGE_FLAGS) && !defined(ALPHA_MASK)
+// The coverage flags need the samples this fragment won in the depth test (gbuffer.glsl). A
+// masked fragment cannot test early: a discarded fragment must not write depth. Its flags are
+// then worked out without post-depth coverage (gbuffer_encode_masked_flags()).
 #extension GL_ARB_post_depth_coverage : require
 layout(early_fragment_tests) in;
 layout(post_depth_coverage) in;
@@ -13,6 +17,9 @@ layout(post_depth_coverage) in;
 #define GBUFFER_ENCODE_ONLY
 #include "gbuffer.glsl"
 #include "scene_params.glsl"
+#ifdef ALPHA_MASK
+#include "alpha_mask.glsl"
+#endif
 
 layout(location = 0) in vec3 in_world_pos;
 layout(location = 1) in vec3 in_normal;
@@ -21,6 +28,9 @@ layout(location = 3) flat in vec4 in_material;
 layout(location = 4) flat in vec4 in_face_normal; // w: 1 on a flat-faced mesh (scene.vert)
 layout(location = 5) flat in vec3 in_face_depth;  // the face's depth plane over gl_FragCoord.xy
 layout(location = 6) in vec2 in_uv;
+#ifdef ALPHA_MASK
+layout(location = 7) flat in vec2 in_alpha_mask; // x base colour factor alpha, y cutoff
+#endif
 
 // The mesh's base colour texture (sRGB, so read in linear light), or 1x1 white for meshes
 // without one: the albedo is then multiplied by exactly 1.
@@ -68,7 +78,13 @@ void main()
     if (!gl_FrontFacing) {
         normal = -normal; // thin geometry seen from behind
     }
-    vec3 albedo = in_albedo_spec.rgb * texture(base_colour_texture, in_uv).rgb * checker(in_world_pos, in_material.z);
+    vec4 texel = texture(base_colour_texture, in_uv);
+#ifdef ALPHA_MASK
+    if (alpha_mask_discards(texel.a, in_alpha_mask)) {
+        discard;
+    }
+#endif
+    vec3 albedo = in_albedo_spec.rgb * texel.rgb * checker(in_world_pos, in_material.z);
     float hemisphere = normal.y * 0.5 + 0.5;
     vec3 ambient = mix(scene.ambient_ground.rgb, scene.ambient_sky.rgb, hemisphere);
     uint motion_id = uint(in_material.y);
@@ -80,7 +96,9 @@ void main()
     out_rt2 = gbuffer_encode_rt2(albedo * ambient, in_material.x);
     out_rt3 = gbuffer_encode_depth(surface_depth(flat_face),
                                    gbuffer_faces_sun(stored_normal, scene.sun_direction.xyz));
-#ifdef GBUFFER_COVERAGE_FLAGS
+#if defined(GBUFFER_COVERAGE_FLAGS) && defined(ALPHA_MASK)
+    out_flags = gbuffer_encode_masked_flags(gbuffer_fragment_is_partial(), flat_face);
+#elif defined(GBUFFER_COVERAGE_FLAGS)
     out_flags = gbuffer_encode_flags(gbuffer_fragment_is_partial(), flat_face);
 #endif
 }

@@ -2,7 +2,9 @@
 // scene.vert -- instanced scene geometry for the G-buffer and the sun shadow map.
 //
 // One vertex buffer per mesh (position, normal, base colour uv) plus one per-instance buffer
-// (model matrix and material). With SHADOW_PASS defined it is the depth-only shadow-map vertex shader.
+// (model matrix and material). With ALPHA_MASK (the scene_masked companion, for alpha-masked
+// meshes) it also passes the instance's alpha factor and cutoff to gbuffer.frag; unmasked meshes
+// keep the shader without them, so their pipelines read no attribute they do not use.
 #extension GL_GOOGLE_include_directive : require
 #include "scene_params.glsl"
 
@@ -15,6 +17,9 @@ layout(location = 5) in vec4 in_model_col3;
 layout(location = 6) in vec4 in_albedo_spec; // per instance: rgb albedo, a specular amount
 layout(location = 7) in vec4 in_material;    // x specular power, y motion ID, z checker scale, w flat faces
 layout(location = 8) in vec2 in_uv;          // base colour texture coordinate
+#ifdef ALPHA_MASK
+layout(location = 9) in vec2 in_alpha_mask;  // per instance: x base colour factor alpha, y cutoff
+#endif
 
 layout(location = 0) out vec3 out_world_pos;
 layout(location = 1) out vec3 out_normal;
@@ -28,6 +33,9 @@ layout(location = 3) flat out vec4 out_material;
 layout(location = 4) flat out vec4 out_face_normal;
 layout(location = 5) flat out vec3 out_face_depth;
 layout(location = 6) out vec2 out_uv;
+#ifdef ALPHA_MASK
+layout(location = 7) flat out vec2 out_alpha_mask;
+#endif
 
 // The depth plane z = a x + b y + c over framebuffer coordinates (gl_FragCoord.xy) of the world
 // plane dot(n, p) = dot(n, point). In homogeneous clip space the plane is L * inv_view_proj
@@ -54,6 +62,9 @@ void main()
     vec3 face_point = (model * vec4(in_normal * dot(in_normal, in_position), 1.0)).xyz;
     out_face_depth = in_material.w > 0.5 ? face_depth_plane(out_face_normal.xyz, face_point) : vec3(0.0);
     out_uv = in_uv;
+#ifdef ALPHA_MASK
+    out_alpha_mask = in_alpha_mask;
+#endif
 
     gl_Position = scene.view_proj * world;
 }

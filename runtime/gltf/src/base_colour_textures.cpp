@@ -2,6 +2,7 @@
 
 #include "accessor_reader.h"
 #include "external_files.h"
+#include "gltf_material.h"
 #include "image_decoder.h"
 #include "read_file.h"
 #include "tilelight/base/error.h"
@@ -89,13 +90,9 @@ BaseColourTextures::BaseColourTextures(const tinygltf::Model& model, std::filesy
     : model_(model), base_dir_(std::move(base_dir)) {}
 
 std::optional<BaseColourTexture> BaseColourTextures::of_material(int material) {
-  if (material < 0 || static_cast<std::size_t>(material) >= model_.materials.size()) return std::nullopt;
-  const tinygltf::TextureInfo& info =
-      model_.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness.baseColorTexture;
-  if (info.index < 0) return std::nullopt;
-  const std::string user = fmt::format("materials[{}].pbrMetallicRoughness.baseColorTexture", material);
-  if (info.texCoord < 0) throw Error(fmt::format("{}.texCoord: {} is negative", user, info.texCoord));
-  return BaseColourTexture{scene_texture(info.index, user), info.texCoord};
+  const std::optional<BaseColourTextureRef> ref = base_colour_texture_ref(model_, material);
+  if (!ref) return std::nullopt;
+  return BaseColourTexture{scene_texture(ref->texture, ref->user), ref->texcoord_set, ref->uv_transform};
 }
 
 std::uint32_t BaseColourTextures::scene_texture(int texture_index, const std::string& user) {

@@ -18,10 +18,12 @@ namespace tilelight::gltf_detail {
 // The most texels the base colour textures of one scene may have together (1 GiB as RGBA8).
 inline constexpr std::uint64_t kMaxSceneTexels = std::uint64_t{1} << 28;
 
-// What a primitive's material asks for: the scene texture and the TEXCOORD_n set it reads.
+// What a primitive's material asks for: the scene texture, the TEXCOORD_n set it reads and the
+// transform of those coordinates (gltf_material.h).
 struct BaseColourTexture {
   std::uint32_t texture = 0;  // index into the textures() vector
   int texcoord_set = 0;
+  glm::mat3 uv_transform{1.0f};
 };
 
 class BaseColourTextures {
@@ -30,7 +32,8 @@ class BaseColourTextures {
   // (a load from memory). The model must outlive this object.
   BaseColourTextures(const tinygltf::Model& model, std::filesystem::path base_dir);
 
-  // The base colour texture of material `material` (-1: none), decoded on first use. Throws
+  // The base colour texture of material `material` (-1: none), decoded on first use: its
+  // metallic-roughness base colour texture or its spec-gloss diffuse texture. Throws
   // tilelight::Error naming the material, texture, sampler or image at fault.
   std::optional<BaseColourTexture> of_material(int material);
 

@@ -6,6 +6,7 @@
 #include "external_files.h"
 #include "glb_container.h"
 #include "gltf_cameras.h"
+#include "gltf_material.h"
 #include "ignored_features.h"
 #include "json_schema.h"
 #include "meshopt_views.h"
@@ -23,6 +24,8 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace tilelight {
@@ -143,39 +146,27 @@ std::size_t chosen_scene(const tinygltf::Model& model, const GltfLoadOptions& op
   return static_cast<std::size_t>(model.defaultScene);
 }
 
-// The material's base colour factor (linear RGB) and a Blinn-Phong stand-in for its metallic
-// and roughness factors: rougher is dimmer and broader.
-Instance instance_of(const tinygltf::Model& model, int material, const glm::mat4& world, std::uint32_t motion_id,
-                     const std::string& user) {
-  glm::vec4 colour(1.0f);
-  double metallic = 1.0, roughness = 1.0;
-  if (material >= 0) {
-    if (static_cast<std::size_t>(material) >= model.materials.size()) {
-      throw Error(fmt::format("{}.material: material {} does not exist (the file has {})", user, material,
-                              model.materials.size()));
-    }
-    const tinygltf::PbrMetallicRoughness& pbr =
-        model.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() != 4) {
-      throw Error(fmt::format("materials[{}].pbrMetallicRoughness.baseColorFactor: expected 4 numbers", material));
-    }
-    for (int c = 0; c < 4; ++c) {
-      const double v = pbr.baseColorFactor[static_cast<std::size_t>(c)];
-      if (!std::isfinite(v)) throw Error(fmt::format("materials[{}]: base colour factor is not finite", material));
-      colour[c] = static_cast<float>(std::clamp(v, 0.0, 1.0));
-    }
-    metallic = std::isfinite(pbr.metallicFactor) ? std::clamp(pbr.metallicFactor, 0.0, 1.0) : 1.0;
-    roughness = std::isfinite(pbr.roughnessFactor) ? std::clamp(pbr.roughnessFactor, 0.0, 1.0) : 1.0;
-  }
-  const auto smooth = static_cast<float>(1.0 - roughness);
-  const float spec_amount = 0.05f + smooth * (0.25f + 0.5f * static_cast<float>(metallic));
-  const float spec_power = 4.0f + 124.0f * smooth * smooth;
-  return Instance{world, glm::vec4(glm::vec3(colour), spec_amount),
-                  glm::vec4(spec_power, static_cast<float>(motion_id), 0.0f, 0.0f)};
-}
-
 // A transform that collapses a dimension draws nothing and has no normal matrix.
 bool invertible(const glm::mat4& m) { return std::fabs(glm::determinant(glm::mat3(m))) >= 1e-18f; }
+
+// A mirroring transform turns counter-clockwise (front) faces clockwise (glTF: "the winding
+// order ... is reversed").
+bool mirrors(const glm::mat4& m) { return glm::determinant(glm::mat3(m)) < 0.0f; }
+
+// The material's mask, sidedness and texture applied to a mesh built for it; for mirrored
+// instances, its triangles wound the other way, so that their front faces stay front faces.
+void apply_material(Mesh& mesh, const MaterialLook& look, const std::optional<BaseColourTexture>& texture,
+                    bool mirrored) {
+  mesh.alpha_mask = look.alpha_mask;
+  mesh.double_sided = look.double_sided;
+  if (texture) {
+    mesh.base_colour_texture = texture->texture;
+    transform_uvs(mesh, texture->uv_transform);
+  }
+  if (mirrored) {
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+  }
+}
 
 Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
   const std::size_t scene_index = chosen_scene(model, options);
@@ -183,7 +174,8 @@ Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& bas
 
   Scene scene;
   BaseColourTextures textures(model, base_dir);
-  std::map<std::pair<int, int>, std::optional<std::uint32_t>> mesh_of;  // (mesh, primitive) -> scene mesh
+  // (mesh, primitive, mirrored) -> scene mesh; a mirrored instance gets the mesh wound the other way.
+  std::map<std::tuple<int, int, bool>, std::optional<std::uint32_t>> mesh_of;
   std::vector<std::vector<Instance>> instances_of_mesh;
   std::uint64_t triangles = 0;
   std::size_t instance_count = 0;
@@ -191,13 +183,15 @@ Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& bas
   for (const PlacedMesh& p : placed) {
     const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(p.mesh)];
     for (std::size_t k = 0; k < mesh.primitives.size(); ++k) {
-      const auto key = std::pair(p.mesh, static_cast<int>(k));
+      const std::string user = fmt::format("meshes[{}].primitives[{}]", p.mesh, k);
+      const MaterialLook look = material_look(model, mesh.primitives[k].material, user);
+      const auto key = std::tuple(p.mesh, static_cast<int>(k), mirrors(p.world));
       auto found = mesh_of.find(key);
       if (found == mesh_of.end()) {
         const std::optional<BaseColourTexture> texture = textures.of_material(mesh.primitives[k].material);
         std::optional<Mesh> built = primitive_mesh(model, p.mesh, static_cast<int>(k),
                                                    texture ? std::optional(texture->texcoord_set) : std::nullopt);
-        if (built && texture) built->base_colour_texture = texture->texture;
+        if (built) apply_material(*built, look, texture, std::get<2>(key));
         std::optional<std::uint32_t> index;
         if (built) {
           index = static_cast<std::uint32_t>(scene.meshes.size());
@@ -207,9 +201,7 @@ Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& bas
         found = mesh_of.emplace(key, index).first;
       }
       if (!found->second || !invertible(p.world)) continue;
-      const std::string user = fmt::format("meshes[{}].primitives[{}]", p.mesh, k);
-      instances_of_mesh[*found->second].push_back(
-          instance_of(model, mesh.primitives[k].material, p.world, next_motion_id, user));
+      instances_of_mesh[*found->second].push_back(material_instance(look, p.world, next_motion_id));
       next_motion_id = next_motion_id % 127u + 1u;  // 1..127; 0 is the sky
       triangles += scene.meshes[*found->second].indices.size() / 3;
       if (++instance_count > kMaxInstances || triangles > kMaxSceneTriangles) {
@@ -245,6 +237,9 @@ GltfScene load(std::span<const std::uint8_t> bytes, const std::string& name, con
     GltfScene loaded{build_scene(parsed.model, base_dir, options), {}};
     loaded.scene.source = source;
     for (const std::string& line : parsed.ignored) loaded.warnings.push_back("warning: " + name + ": " + line);
+    for (const std::string& line : material_warnings(parsed.model)) {
+      loaded.warnings.push_back("warning: " + name + ": " + line);
+    }
     return loaded;
   } catch (const Error& e) {
     throw Error(name + ": " + e.what());

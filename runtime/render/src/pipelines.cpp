@@ -149,11 +149,12 @@ VkPipelineVertexInputStateCreateInfo vertex_input_state(const GraphicsPipelineDe
   return input;
 }
 
-// Filled triangles, no culling (thin geometry is seen from both sides), desc's depth bias.
+// Filled triangles, desc's culling (none by default: thin geometry is seen from both sides) and
+// depth bias.
 VkPipelineRasterizationStateCreateInfo rasterization_state(const GraphicsPipelineDesc& desc) {
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.cullMode = desc.cull_mode;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.0f;
   raster.depthBiasEnable = desc.depth_bias ? VK_TRUE : VK_FALSE;

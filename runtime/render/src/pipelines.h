@@ -64,6 +64,9 @@ struct GraphicsPipelineDesc {
   bool depth_write = false;
   VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
   std::optional<DepthBias> depth_bias;  // none: no bias
+  // Counter-clockwise triangles face the front (glTF's winding, seen through the y-flipped
+  // projection of camera_matrices()); back: single-sided meshes.
+  VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   std::string name;
 };

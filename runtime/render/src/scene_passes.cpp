@@ -45,14 +45,34 @@ std::vector<VkVertexInputAttributeDescription> scene_attributes() {
   }
   a.push_back({6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, albedo_spec)});
   a.push_back({7, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, material)});
+  a.push_back({9, 1, VK_FORMAT_R32G32_SFLOAT, offsetof(Instance, alpha_mask)});
   return a;
 }
 
+// The attributes of scene_attributes() whose locations `wanted` accepts: a pipeline gets only those
+// its vertex shader reads (unused attributes are a validation performance warning).
+template <typename Wanted>
+std::vector<VkVertexInputAttributeDescription> scene_attributes_where(Wanted wanted) {
+  std::vector<VkVertexInputAttributeDescription> kept;
+  for (const VkVertexInputAttributeDescription& a : scene_attributes()) {
+    if (wanted(a.location)) kept.push_back(a);
+  }
+  return kept;
+}
+
+// The batch kinds (ScenePasses::kBatchKinds): masked ones read location 9 (the alpha mask), culled
+// ones are single-sided.
+bool masked_kind(std::size_t kind) { return kind >= 2; }
+bool culled_kind(std::size_t kind) { return kind % 2 == 1; }
+std::size_t batch_kind(const Mesh& mesh) { return (mesh.alpha_mask ? 2 : 0) + (mesh.double_sided ? 0 : 1); }
+
 // Every shader drawn with the scene's pipeline layout: the shadow map's and both G-buffers'.
-std::array<const shadergen::Reflection*, 7> scene_shaders(const shadergen::Registry& shaders) {
+std::array<const shadergen::Reflection*, 12> scene_shaders(const shadergen::Registry& shaders) {
   const auto of = [&](std::string_view name) { return &companion_shader(shaders, name).reflection; };
-  return {of("scene"),      of("shadow"), of("gbuffer"),    of("gbuffer_flagged"),
-          of("sky_vertex"), of("sky"),    of("sky_flagged")};
+  return {
+      of("scene"),         of("shadow"),      of("gbuffer"),      of("gbuffer_flagged"), of("sky_vertex"),
+      of("sky"),           of("sky_flagged"), of("scene_masked"), of("gbuffer_masked"),  of("gbuffer_masked_flagged"),
+      of("shadow_masked"), of("shadow_mask")};
 }
 
 // Set `set` of the scene's pipeline layout, as the scene shaders' reflection declares it;
@@ -87,8 +107,10 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
                                                    "mesh " + mesh.name + " indices");
     buffers.index_count = static_cast<std::uint32_t>(mesh.indices.size());
     buffers.base_colour = textures_.set_of(mesh.base_colour_texture);
+    buffers.kind = batch_kind(mesh);
     meshes_.push_back(std::move(buffers));
   }
+  for (const MeshBatch& batch : batches_) kind_drawn_[meshes_[batch.mesh].kind] = true;
   instances_ = upload_buffer<Instance>(context, scene.instances, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene instances");
   const SceneParamsBlock block = make_scene_params(scene, camera, targets.extent().width, targets.extent().height);
   params_ = upload_buffer<SceneParamsBlock>(context, std::span(&block, 1), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
@@ -113,42 +135,63 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
     flagged_ = create_gbuffer_pipelines(context, shaders, targets, true);
   }
 
-  GraphicsPipelineDesc shadow;
-  shadow.layout = layout_.get();
-  shadow.render_pass = targets.shadow_pass();
-  shadow.vertex_spirv = companion_spirv(shaders, "shadow");
-  shadow.vertex_bindings = scene_bindings();
-  // Only what shadow.vert reads: position and the model matrix (unused attributes are a
-  // validation performance warning).
-  for (const VkVertexInputAttributeDescription& a : scene_attributes()) {
-    if (a.location == 0 || (a.location >= 2 && a.location <= 5)) shadow.vertex_attributes.push_back(a);
+  create_shadow_pipelines(context, shaders, targets);
+}
+
+// Both sides of every mesh cast shadows (no culling): a single-sided leaf still shades.
+void ScenePasses::create_shadow_pipelines(const Context& context, const shadergen::Registry& shaders,
+                                          const RenderTargets& targets) {
+  for (const bool masked : {false, true}) {
+    if (!kind_drawn_[masked ? 2 : 0] && !kind_drawn_[masked ? 3 : 1]) continue;
+    GraphicsPipelineDesc shadow;
+    shadow.layout = layout_.get();
+    shadow.render_pass = targets.shadow_pass();
+    shadow.vertex_spirv = companion_spirv(shaders, masked ? "shadow_masked" : "shadow");
+    if (masked) shadow.fragment_spirv = companion_spirv(shaders, "shadow_mask");
+    shadow.vertex_bindings = scene_bindings();
+    // Only what shadow.vert reads: position and the model matrix, and for a mask its uv and alpha.
+    shadow.vertex_attributes = scene_attributes_where([masked](std::uint32_t location) {
+      return location == 0 || (location >= 2 && location <= 5) || (masked && location >= 8);
+    });
+    shadow.color_attachments = 0;
+    shadow.depth_test = true;
+    shadow.depth_write = true;
+    shadow.depth_bias = kShadowMapDepthBias;
+    shadow.name = masked ? "sun shadow map (alpha-masked)" : "sun shadow map";
+    shadow_pipelines_[masked ? 1 : 0] = create_graphics_pipeline(context, shadow);
   }
-  shadow.color_attachments = 0;
-  shadow.depth_test = true;
-  shadow.depth_write = true;
-  shadow.depth_bias = kShadowMapDepthBias;
-  shadow.name = "sun shadow map";
-  shadow_pipeline_ = create_graphics_pipeline(context, shadow);
 }
 
 ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Context& context,
                                                                     const shadergen::Registry& shaders,
                                                                     const RenderTargets& targets,
                                                                     bool with_flags) const {
-  const std::string kind = with_flags ? " (classified)" : " (plain)";
-  GraphicsPipelineDesc materials =
-      targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials" + kind, with_flags);
-  materials.vertex_spirv = companion_spirv(shaders, "scene");
-  materials.fragment_spirv = companion_spirv(shaders, with_flags ? "gbuffer_flagged" : "gbuffer");
-  materials.vertex_bindings = scene_bindings();
-  materials.vertex_attributes = scene_attributes();
-  materials.depth_write = true;
+  const std::string pass = with_flags ? " (classified)" : " (plain)";
+  GBufferPipelines pipelines;
+  for (std::size_t kind = 0; kind < kBatchKinds; ++kind) {
+    if (!kind_drawn_[kind]) continue;
+    const bool masked = masked_kind(kind);
+    const std::string what = std::string(masked ? ", alpha-masked" : "") + (culled_kind(kind) ? ", single-sided" : "");
+    GraphicsPipelineDesc materials =
+        targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials" + what + pass, with_flags);
+    materials.vertex_spirv = companion_spirv(shaders, masked ? "scene_masked" : "scene");
+    const char* fragment = masked ? (with_flags ? "gbuffer_masked_flagged" : "gbuffer_masked")
+                                  : (with_flags ? "gbuffer_flagged" : "gbuffer");
+    materials.fragment_spirv = companion_spirv(shaders, fragment);
+    materials.vertex_bindings = scene_bindings();
+    materials.vertex_attributes =
+        scene_attributes_where([masked](std::uint32_t location) { return masked || location != 9; });
+    materials.depth_write = true;
+    materials.cull_mode = culled_kind(kind) ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+    pipelines.materials[kind] = create_graphics_pipeline(context, materials);
+  }
 
-  GraphicsPipelineDesc sky = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer sky" + kind, with_flags);
+  GraphicsPipelineDesc sky = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer sky" + pass, with_flags);
   sky.vertex_spirv = companion_spirv(shaders, "sky_vertex");
   sky.fragment_spirv = companion_spirv(shaders, with_flags ? "sky_flagged" : "sky");
   sky.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
-  return {create_graphics_pipeline(context, materials), create_graphics_pipeline(context, sky)};
+  pipelines.sky = create_graphics_pipeline(context, sky);
+  return pipelines;
 }
 
 // The camera and the sun are fixed per renderer, so each pass's batches are chosen once.
@@ -163,11 +206,13 @@ void ScenePasses::select_drawn_batches(const Scene& scene, const SceneParamsBloc
   shadow_batches_ = select_batches(bounds, block.sun_view_proj);
 }
 
-void ScenePasses::draw_batches(VkCommandBuffer cmd, bool textured, const BatchSelection& selection) const {
+void ScenePasses::draw_batches(VkCommandBuffer cmd, bool textured, std::size_t kind,
+                               const BatchSelection& selection) const {
   for (std::size_t i = 0; i < batches_.size(); ++i) {
-    if (!selection.drawn[i]) continue;
     const MeshBatch& batch = batches_[i];
+    if (!selection.drawn[i]) continue;
     const MeshBuffers& mesh = meshes_[batch.mesh];
+    if (mesh.kind != kind) continue;
     if (textured) {
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 1, 1, &mesh.base_colour, 0, nullptr);
     }
@@ -190,9 +235,13 @@ void ScenePasses::record_shadow_map(VkCommandBuffer cmd, const RenderTargets& ta
   begin.pClearValues = &clear;
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   set_viewport_and_scissor(cmd, targets.shadow_extent());
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadow_pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
-  draw_batches(cmd, false, shadow_batches_);
+  for (std::size_t kind = 0; kind < kBatchKinds; ++kind) {
+    if (!kind_drawn_[kind]) continue;
+    const bool masked = masked_kind(kind);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadow_pipelines_[masked ? 1 : 0].get());
+    draw_batches(cmd, masked, kind, shadow_batches_);
+  }
   vkCmdEndRenderPass(cmd);
 }
 
@@ -208,8 +257,11 @@ void ScenePasses::record_gbuffer_with(VkCommandBuffer cmd, const RenderTargets& 
                                       const GBufferPipelines& pipelines, bool with_flags) const {
   targets.begin_gbuffer_pass(cmd, with_flags);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set_, 0, nullptr);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.materials.get());
-  draw_batches(cmd, true, gbuffer_batches_);
+  for (std::size_t kind = 0; kind < kBatchKinds; ++kind) {
+    if (!kind_drawn_[kind]) continue;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.materials[kind].get());
+    draw_batches(cmd, true, kind, gbuffer_batches_);
+  }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.sky.get());
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRenderPass(cmd);

@@ -10,6 +10,8 @@
 #include "tilelight/vulkan/buffer.h"
 #include "tilelight/vulkan/vk_handles.h"
 
+#include <array>
+#include <cstddef>
 #include <vector>
 
 namespace shadergen {
@@ -41,8 +43,13 @@ class ScenePasses {
   void record_gbuffer_plain(VkCommandBuffer cmd, const RenderTargets& targets) const;
 
  private:
+  // What a batch's pipelines depend on (batch_kind()): alpha-masked or not, single-sided (back
+  // faces culled) or not. Batches are drawn kind by kind, each in scene order, so the procedural
+  // scene (kind 0 only) draws as it always did; only the kinds a scene has get pipelines.
+  static constexpr std::size_t kBatchKinds = 4;
   struct GBufferPipelines {
-    UniquePipeline materials, sky;
+    std::array<UniquePipeline, kBatchKinds> materials;
+    UniquePipeline sky;
   };
   GBufferPipelines create_gbuffer_pipelines(const Context& context, const shadergen::Registry& shaders,
                                             const RenderTargets& targets, bool with_flags) const;
@@ -53,12 +60,16 @@ class ScenePasses {
     Buffer vertices;
     Buffer indices;
     std::uint32_t index_count = 0;
-    VkDescriptorSet base_colour = VK_NULL_HANDLE;  // set 1 of the G-buffer pass
+    VkDescriptorSet base_colour = VK_NULL_HANDLE;  // set 1 of the G-buffer pass and of masked shadows
+    std::size_t kind = 0;                          // batch_kind() of the mesh
   };
-  // The batches `selection` draws. With `textured`, each binds its mesh's base colour texture
-  // first (the G-buffer pass).
-  void draw_batches(VkCommandBuffer cmd, bool textured, const BatchSelection& selection) const;
+  // The batches whose mesh is of kind `kind` and that `selection` draws, in scene order. With
+  // `textured`, each binds its mesh's base colour texture first (the G-buffer pass, masked
+  // shadows).
+  void draw_batches(VkCommandBuffer cmd, bool textured, std::size_t kind, const BatchSelection& selection) const;
   void select_drawn_batches(const Scene& scene, const SceneParamsBlock& block, bool cull);
+  void create_shadow_pipelines(const Context& context, const shadergen::Registry& shaders,
+                               const RenderTargets& targets);
 
   SceneTextures textures_;
   std::vector<MeshBuffers> meshes_;
@@ -69,8 +80,9 @@ class ScenePasses {
   UniqueDescriptorSetLayout set_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
-  GBufferPipelines plain_, flagged_;  // flagged_: only with 2 or more samples
-  UniquePipeline shadow_pipeline_;
+  std::array<bool, kBatchKinds> kind_drawn_{};      // some batch is of that kind
+  GBufferPipelines plain_, flagged_;                // flagged_: only with 2 or more samples
+  std::array<UniquePipeline, 2> shadow_pipelines_;  // unmasked (depth only), masked
 };
 
 }  // namespace tilelight

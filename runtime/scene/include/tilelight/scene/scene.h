@@ -57,6 +57,14 @@ struct Mesh {
   // Index into Scene::textures: the base colour texture, multiplied into every instance's
   // albedo at the vertices' uv. None: the albedo alone.
   std::optional<std::uint32_t> base_colour_texture;
+  // glTF's alphaMode MASK: texels whose base colour alpha (texture alpha times the instance's
+  // alpha.x) is below the instance's cutoff (alpha.y) are discarded, in the G-buffer and the sun
+  // shadow map. Masked meshes are drawn with pipelines of their own, after the opaque ones.
+  bool alpha_mask = false;
+  // false: back faces are culled in the G-buffer (glTF's single-sided materials; their triangles
+  // wind counter-clockwise seen from the front). true (the procedural scene's meshes): both sides
+  // are drawn, and a back face stores the flipped normal.
+  bool double_sided = true;
 };
 
 // Per-instance vertex data (binding 1 of the scene pipelines; see uber/scene/scene.vert).
@@ -65,6 +73,7 @@ struct Instance {
   glm::vec4 albedo_spec;  // rgb albedo, a specular amount (0..1)
   glm::vec4 material;     // x specular power, y motion ID (1..127; 0 is the sky), z checker scale (0 = none),
                           // w 1 when the mesh has flat_faces, else 0
+  glm::vec2 alpha_mask{1.0f, 0.0f};  // x base colour factor alpha, y alpha cutoff: read by masked meshes only
 };
 
 // One mesh drawn with a contiguous range of the instance buffer.
