@@ -170,7 +170,7 @@ void extension_features(const Json& root, std::vector<std::string>& lines) {
 }  // namespace
 
 bool implemented_extension(std::string_view name) {
-  return name == "KHR_mesh_quantization" || name == "EXT_meshopt_compression";
+  return name == "KHR_mesh_quantization" || name == "EXT_meshopt_compression" || name == "KHR_draco_mesh_compression";
 }
 
 std::vector<std::string> ignored_features(const nlohmann::json& root) {
