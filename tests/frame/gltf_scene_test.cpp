@@ -95,7 +95,9 @@ INSTANTIATE_TEST_SUITE_P(
         GltfCase{"engine_glb_compute_light_pass", "2CylinderEngine-glTF-Binary/2CylinderEngine.glb", IndexPath::gpu, 0,
                  std::nullopt, false, 4, true, LightPass::compute},
         GltfCase{"box_textured_embedded_cpu_triangles", "BoxTextured-glTF-Embedded/BoxTextured.gltf", IndexPath::cpu, 0,
-                 TilePrimitive::triangles}),
+                 TilePrimitive::triangles},
+        // The engine again, its 34 primitives KHR_draco_mesh_compression streams (65,311 triangles).
+        GltfCase{"engine_draco_gpu", "draco/2CylinderEngine.gltf", IndexPath::gpu, 0}),
     case_name);
 
 // The textured quad of tests/fixtures/gltf: a 2x2 texture (red, green / blue, white) read
@@ -154,8 +156,8 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, GltfTexturedFrame,
                                            "textured_quad_quantized.gltf", "textured_quad_quantized_bytes.gltf"));
 
 // The geometry real files use (sparse accessors, KHR_mesh_quantization,
-// EXT_meshopt_compression) through the whole frame: classified == naive and dynamic == naive,
-// every tile drawn once, under validation.
+// EXT_meshopt_compression, KHR_draco_mesh_compression) through the whole frame: classified ==
+// naive and dynamic == naive, every tile drawn once, under validation.
 class GltfGeometryFrame : public VulkanTest, public ::testing::WithParamInterface<const char*> {};
 
 TEST_P(GltfGeometryFrame, ClassifiedEqualsNaivePerPixel) {
@@ -180,7 +182,8 @@ TEST_P(GltfGeometryFrame, ClassifiedEqualsNaivePerPixel) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, GltfGeometryFrame,
-                         ::testing::Values("box_sparse.gltf", "textured_quad_quantized.gltf", "box_meshopt.gltf"));
+                         ::testing::Values("box_sparse.gltf", "textured_quad_quantized.gltf", "box_meshopt.gltf",
+                                           "box_draco.gltf"));
 
 }  // namespace
 }  // namespace tilelight::test
