@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -59,7 +61,9 @@ int add_vec3(draco::Mesh& mesh, draco::GeometryAttribute::Type type, const Bytes
 }
 
 // The Draco stream of box_external.bin's box: POSITION is Draco attribute 0, NORMAL 1.
-Bytes encoded_box() {
+// `as_exporters_write`: edgebreaker connectivity (which reorders vertices) and quantized
+// attributes, instead of the sequential, lossless encoding.
+Bytes encoded_box(bool as_exporters_write = false) {
   const Bytes plain = read_bytes(kFixtures / "box_external.bin");
   draco::Mesh mesh;
   mesh.set_num_points(kVertices);
@@ -74,7 +78,12 @@ Bytes encoded_box() {
     mesh.AddFace(face);
   }
   draco::Encoder encoder;
-  encoder.SetEncodingMethod(draco::MESH_SEQUENTIAL_ENCODING);
+  if (as_exporters_write) {
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, 14);
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, 10);
+  } else {
+    encoder.SetEncodingMethod(draco::MESH_SEQUENTIAL_ENCODING);
+  }
   draco::EncoderBuffer buffer;
   const draco::Status status = encoder.EncodeMeshToBuffer(mesh, &buffer);
   EXPECT_TRUE(status.ok()) << status.error_msg();
@@ -82,9 +91,9 @@ Bytes encoded_box() {
 }
 
 // box_external.gltf with its three accessors decoded from one Draco stream, embedded.
-Json draco_box() {
+Json draco_box(bool as_exporters_write = false) {
   Json doc = Json::parse(read_bytes(kFixtures / "box_external.gltf"));
-  const Bytes stream = encoded_box();
+  const Bytes stream = encoded_box(as_exporters_write);
   for (Json& accessor : doc["accessors"]) accessor.erase("bufferView");
   doc["bufferViews"] = Json::array({{{"buffer", 0}, {"byteLength", stream.size()}}});
   doc["buffers"] =
@@ -94,6 +103,32 @@ Json draco_box() {
   doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
   doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
   return doc;
+}
+
+void append_u32(Bytes& out, std::size_t value) {
+  for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<std::uint8_t>(value >> shift));
+}
+
+// The same box as a .glb, the Draco stream its BIN chunk.
+Bytes glb_box() {
+  Json doc = draco_box();
+  const Bytes stream = encoded_box();
+  doc["buffers"][0].erase("uri");
+  std::string json = doc.dump();
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  Bytes bin = stream;
+  bin.resize((bin.size() + 3) / 4 * 4, 0);
+  Bytes out;
+  append_u32(out, 0x46546C67);
+  append_u32(out, 2);
+  append_u32(out, 12 + 8 + json.size() + 8 + bin.size());
+  append_u32(out, json.size());
+  append_u32(out, 0x4E4F534A);
+  out.insert(out.end(), json.begin(), json.end());
+  append_u32(out, bin.size());
+  append_u32(out, 0x004E4942);
+  out.insert(out.end(), bin.begin(), bin.end());
+  return out;
 }
 
 GltfScene load_text(const std::string& text, const std::string& name = "box_draco.gltf") {
@@ -123,6 +158,50 @@ TEST(GltfDraco, ADracoBoxLoadsAsTheBox) {
   const GltfScene loaded = load_text(text);
   expect_box(loaded.scene);
   EXPECT_EQ(loaded.warnings, std::vector<std::string>{});
+}
+
+// The loader rewrites the JSON (the indices accessor gets a view for tinygltf) and re-assembles
+// the .glb around the BIN chunk.
+TEST(GltfDraco, ADracoGlbLoadsAsTheBox) {
+  const Bytes glb = glb_box();
+  expect_box(load_gltf_from_memory(glb, "box_draco.glb", {}).scene);
+}
+
+// Whether `a` and `b` are the same triangle, up to a rotation of its corners (so the winding
+// is kept), within `tolerance`.
+bool same_triangle(const std::array<glm::vec3, 3>& a, const std::array<glm::vec3, 3>& b, float tolerance) {
+  for (int r = 0; r < 3; ++r) {
+    bool all = true;
+    for (int c = 0; c < 3; ++c)
+      all = all && glm::all(glm::lessThanEqual(glm::abs(a[c] - b[(c + r) % 3]), glm::vec3(tolerance)));
+    if (all) return true;
+  }
+  return false;
+}
+
+std::vector<std::array<glm::vec3, 3>> triangles_of(const Mesh& mesh) {
+  std::vector<std::array<glm::vec3, 3>> out;
+  for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    out.push_back({mesh.vertices[mesh.indices[i]].position, mesh.vertices[mesh.indices[i + 1]].position,
+                   mesh.vertices[mesh.indices[i + 2]].position});
+  }
+  return out;
+}
+
+// Edgebreaker reorders the vertices and 14-bit quantization moves them by under 1e-4 of the
+// box's size: every triangle of the box is still there, with its winding.
+TEST(GltfDraco, AnEdgebreakerQuantizedBoxHasTheBoxsTriangles) {
+  const Scene scene = load_text(draco_box(true).dump()).scene;
+  const Scene box = load_gltf_scene(kFixtures / "box.gltf");
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const auto decoded = triangles_of(scene.meshes[0]), expected = triangles_of(box.meshes[0]);
+  ASSERT_EQ(decoded.size(), expected.size());
+  for (std::size_t t = 0; t < expected.size(); ++t) {
+    EXPECT_TRUE(std::any_of(decoded.begin(), decoded.end(),
+                            [&](const auto& d) { return same_triangle(d, expected[t], 1e-3f); }))
+        << "triangle " << t << " is missing";
+  }
+  for (const auto& v : scene.meshes[0].vertices) EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-3f);
 }
 
 TEST(GltfDraco, TheCheckedInFixtureLoadsAsTheBox) { expect_box(load_gltf_scene(kFixtures / "box_draco.gltf")); }
