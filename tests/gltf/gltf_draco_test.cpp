@@ -91,9 +91,11 @@ Bytes encoded_box(bool as_exporters_write = false) {
 }
 
 // box_external.gltf with its three accessors decoded from one Draco stream, embedded.
-Json draco_box(bool as_exporters_write = false) {
+// `edit`: a change to the stream's bytes, for the broken cases.
+Json draco_box(bool as_exporters_write = false, void (*edit)(Bytes&) = nullptr) {
   Json doc = Json::parse(read_bytes(kFixtures / "box_external.gltf"));
-  const Bytes stream = encoded_box(as_exporters_write);
+  Bytes stream = encoded_box(as_exporters_write);
+  if (edit != nullptr) edit(stream);
   for (Json& accessor : doc["accessors"]) accessor.erase("bufferView");
   doc["bufferViews"] = Json::array({{{"buffer", 0}, {"byteLength", stream.size()}}});
   doc["buffers"] =
@@ -250,6 +252,10 @@ std::string bad_name(const ::testing::TestParamInfo<BadDraco>& info) { return in
 Json& primitive(Json& doc) { return doc["meshes"][0]["primitives"][0]; }
 Json& extension(Json& doc) { return primitive(doc)["extensions"]["KHR_draco_mesh_compression"]; }
 
+// The sequential box's header: "DRACO", version 2.2, mesh, sequential, flags 0 (bytes 0-10),
+// then varint faces (byte 11: 12) and points (byte 12: 24).
+void with_stream(Json& doc, void (*edit)(Bytes&)) { doc = draco_box(false, edit); }
+
 #define DRACO_PATH "meshes[0].primitives[0].extensions.KHR_draco_mesh_compression"
 
 INSTANTIATE_TEST_SUITE_P(
@@ -284,11 +290,12 @@ INSTANTIATE_TEST_SUITE_P(
                    d["bufferViews"][0]["byteOffset"] = 4;
                    d["bufferViews"][0]["byteLength"] = d["bufferViews"][0]["byteLength"].get<int>() - 4;
                  },
-                 DRACO_PATH ": not a Draco stream (libdraco: Not a Draco file.)"},
+                 DRACO_PATH ": not a Draco stream (it does not start with \"DRACO\")"},
         BadDraco{"vertex_count", [](Json& d) { d["accessors"][0]["count"] = 25; },
-                 DRACO_PATH ".attributes.POSITION: decodes to 24 vertices, but accessors[0] has count 25"},
+                 DRACO_PATH
+                 ".attributes.POSITION: the Draco stream declares 24 vertices, but accessors[0] has count 25"},
         BadDraco{"index_count", [](Json& d) { d["accessors"][2]["count"] = 33; },
-                 DRACO_PATH ": decodes to 36 indices, but accessors[2] has count 33"},
+                 DRACO_PATH ": the Draco stream declares 12 triangles, but accessors[2] has count 33"},
         BadDraco{"index_count_not_triangles", [](Json& d) { d["accessors"][2]["count"] = 35; },
                  DRACO_PATH ": the indices accessor's count 35 is not 3 x at most 16777216 triangles"},
         BadDraco{"vertex_count_huge", [](Json& d) { d["accessors"][1]["count"] = 1 << 25; },
@@ -302,6 +309,27 @@ INSTANTIATE_TEST_SUITE_P(
             "position_as_shorts", [](Json& d) { d["accessors"][0]["componentType"] = 5122; },
             DRACO_PATH
             ".attributes.POSITION: decodes to 3 float32 components a vertex, which do not fit accessors[0] (3 SHORT)"},
+        BadDraco{"old_version", [](Json& d) { with_stream(d, [](Bytes& b) { b[6] = 1; }); },
+                 DRACO_PATH ": Draco bitstream version 2.1; this loader reads 2.2 (Draco 1.3 and later)"},
+        BadDraco{"point_cloud", [](Json& d) { with_stream(d, [](Bytes& b) { b[7] = 0; }); },
+                 DRACO_PATH ": the Draco stream is not a triangle mesh (encoder type 0)"},
+        BadDraco{"metadata", [](Json& d) { with_stream(d, [](Bytes& b) { b[10] = 0x80; }); },
+                 DRACO_PATH ": the Draco stream carries metadata, which this loader does not read"},
+        BadDraco{"header_cut_short", [](Json& d) { d["bufferViews"][0]["byteLength"] = 12; },
+                 DRACO_PATH ": the Draco stream ends inside its header"},
+        BadDraco{"claims_four_billion_triangles",
+                 [](Json& d) {
+                   with_stream(d, [](Bytes& b) {
+                     b.erase(b.begin() + 11);
+                     b.insert(b.begin() + 11, {0xFF, 0xFF, 0xFF, 0xFF, 0x0F});
+                   });
+                 },
+                 DRACO_PATH ": the Draco stream declares 4294967295 triangles, but accessors[2] has count 36"},
+        BadDraco{"overlong_varint",
+                 [](Json& d) {
+                   with_stream(d, [](Bytes& b) { b.insert(b.begin() + 11, {0x80, 0x80, 0x80, 0x80, 0x80}); });
+                 },
+                 DRACO_PATH ": a count in the Draco header is longer than 5 bytes"},
         BadDraco{"float_indices", [](Json& d) { d["accessors"][2]["componentType"] = 5126; },
                  DRACO_PATH ": accessors[2] is not an unsigned integer scalar"}),
     bad_name);

@@ -1,5 +1,6 @@
 #include "draco_primitives.h"
 
+#include "draco_stream_header.h"
 #include "tilelight/base/error.h"
 
 #include <draco/compression/decode.h>
@@ -125,6 +126,27 @@ void check_counts(const tinygltf::Model& model, const DracoPrimitive& p, std::si
   if (total > kMaxDracoBytes) {
     throw Error(
         fmt::format("{}: {} decoded bytes in all, more than this loader decodes ({})", path, total, kMaxDracoBytes));
+  }
+}
+
+// The counts the stream declares, against the accessors', before libdraco allocates for them.
+void check_declared_counts(const tinygltf::Model& model, const DracoPrimitive& p, std::span<const char> bytes,
+                           const std::string& path) {
+  const DracoStreamCounts declared =
+      draco_stream_counts({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, path);
+  const tinygltf::Primitive& primitive = model.meshes[p.mesh].primitives[p.primitive];
+  const std::size_t indices = model.accessors[static_cast<std::size_t>(primitive.indices)].count;
+  if (declared.faces * 3 != indices) {
+    throw Error(fmt::format("{}: the Draco stream declares {} triangles, but accessors[{}] has count {}", path,
+                            declared.faces, primitive.indices, indices));
+  }
+  for (const auto& [name, id] : p.attributes) {
+    const int index = primitive.attributes.at(name);
+    const std::size_t count = model.accessors[static_cast<std::size_t>(index)].count;
+    if (declared.vertices_are_points ? declared.vertices != count : declared.vertices > count) {
+      throw Error(fmt::format("{}.attributes.{}: the Draco stream declares {} vertices, but accessors[{}] has count {}",
+                              path, name, declared.vertices, index, count));
+    }
   }
 }
 
@@ -276,7 +298,9 @@ void decode_draco_primitives(tinygltf::Model& model, const std::vector<DracoPrim
   for (const DracoPrimitive& p : primitives) {
     const std::string path = path_of(p.mesh, p.primitive);
     check_counts(model, p, total, path);
-    const std::unique_ptr<draco::Mesh> mesh = decode_mesh(compressed_bytes(model, p, path), path);
+    const std::span<const char> bytes = compressed_bytes(model, p, path);
+    check_declared_counts(model, p, bytes, path);
+    const std::unique_ptr<draco::Mesh> mesh = decode_mesh(bytes, path);
     const tinygltf::Primitive& primitive = model.meshes[p.mesh].primitives[p.primitive];
     decode_indices(model, *mesh, primitive.indices, path);
     for (const auto& [name, id] : p.attributes) {

@@ -6,7 +6,8 @@
 // extension's JSON (bufferView, the attributes map of glTF name -> Draco unique id, TRIANGLES,
 // an indices accessor), the compressed range inside its buffer as loaded, the accessors' counts
 // (at most kMaxDracoVertices vertices and kMaxDracoTriangles triangles a primitive, kMaxDracoBytes
-// decoded in all) before decoding; after it, a triangle mesh whose vertex and index counts are
+// decoded in all) and the counts the stream's header declares (draco_stream_header.h) before
+// decoding; after it, a triangle mesh whose vertex and index counts are
 // the accessors' counts (the glTF specification says they must match) and whose attributes have
 // the accessors' component count and type, every index within the vertices and its type.
 //
