@@ -98,7 +98,9 @@ INSTANTIATE_TEST_SUITE_P(
                  TilePrimitive::triangles},
         // KHR_texture_transform's test plates, and a spec-gloss box (its diffuse texture).
         GltfCase{"texture_transform_gpu", "textureTransform/TextureTransformTest.gltf", IndexPath::gpu, 0},
-        GltfCase{"spec_gloss_box_cpu", "BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf", IndexPath::cpu, 0}),
+        GltfCase{"spec_gloss_box_cpu", "BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf", IndexPath::cpu, 0},
+        // The engine again, its 34 primitives KHR_draco_mesh_compression streams (65,311 triangles).
+        GltfCase{"engine_draco_gpu", "draco/2CylinderEngine.gltf", IndexPath::gpu, 0}),
     case_name);
 
 // The textured quad of tests/fixtures/gltf: a 2x2 texture (red, green / blue, white) read
@@ -157,8 +159,8 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, GltfTexturedFrame,
                                            "textured_quad_quantized.gltf", "textured_quad_quantized_bytes.gltf"));
 
 // The geometry real files use (sparse accessors, KHR_mesh_quantization,
-// EXT_meshopt_compression) through the whole frame: classified == naive and dynamic == naive,
-// every tile drawn once, under validation.
+// EXT_meshopt_compression, KHR_draco_mesh_compression) through the whole frame: classified ==
+// naive and dynamic == naive, every tile drawn once, under validation.
 class GltfGeometryFrame : public VulkanTest, public ::testing::WithParamInterface<const char*> {};
 
 TEST_P(GltfGeometryFrame, ClassifiedEqualsNaivePerPixel) {
@@ -183,7 +185,8 @@ TEST_P(GltfGeometryFrame, ClassifiedEqualsNaivePerPixel) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, GltfGeometryFrame,
-                         ::testing::Values("box_sparse.gltf", "textured_quad_quantized.gltf", "box_meshopt.gltf"));
+                         ::testing::Values("box_sparse.gltf", "textured_quad_quantized.gltf", "box_meshopt.gltf",
+                                           "box_draco.gltf"));
 
 }  // namespace
 }  // namespace tilelight::test

@@ -140,6 +140,8 @@ TEST(TilelightScene, BadFilesExitOneNamingTheFileAndWriteNothing) {
       {kModels / "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", "not finite"},
       {kFixtures / "bad_sparse_index_range.gltf", "accessors[0].sparse.indices: index 24 at element 3 is out of range"},
       {kFixtures / "bad_quantized_not_listed.gltf", "needs KHR_mesh_quantization"},
+      {kFixtures / "bad_draco_stream.gltf",
+       "meshes[0].primitives[0].extensions.KHR_draco_mesh_compression: not a Draco stream"},
   };
   for (const BadScene& c : cases) {
     SCOPED_TRACE(c.file.string());

@@ -102,7 +102,6 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"SchemaFailures/sceneWrongType.gltf", "scene: expected a non-negative integer, got a string"},
         Broken{"TestNoRootNode/NoScene.gltf", "the file has no scene"},
         Broken{"TestNoRootNode/SceneWithoutNodes.gltf", "scenes[0] has no triangles to draw"},
-        Broken{"draco/2CylinderEngine.gltf", "requires the extension KHR_draco_mesh_compression"},
         Broken{"BoxTextured-glTF-techniqueWebGL/BoxTextured.gltf", "requires the extension KHR_technique_webgl"},
         Broken{"wrongTypes/badArray.gltf", "meshes[0].primitives: expected an array, got an object"},
         Broken{"wrongTypes/badExtension.gltf", "extensions.KHR_texture_transform: expected an object, got a string"},

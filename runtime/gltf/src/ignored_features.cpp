@@ -184,8 +184,8 @@ void extension_features(const Json& root, std::vector<std::string>& lines) {
 }  // namespace
 
 bool implemented_extension(std::string_view name) {
-  return name == "KHR_mesh_quantization" || name == "EXT_meshopt_compression" || name == "KHR_texture_transform" ||
-         name == "KHR_materials_pbrSpecularGlossiness";
+  return name == "KHR_mesh_quantization" || name == "EXT_meshopt_compression" || name == "KHR_draco_mesh_compression" ||
+         name == "KHR_texture_transform" || name == "KHR_materials_pbrSpecularGlossiness";
 }
 
 std::vector<std::string> ignored_features(const nlohmann::json& root) {

@@ -3,6 +3,7 @@
 #include "tilelight/gltf/load_gltf.h"
 
 #include "base_colour_textures.h"
+#include "draco_primitives.h"
 #include "external_files.h"
 #include "glb_container.h"
 #include "gltf_cameras.h"
@@ -79,22 +80,27 @@ std::string one_line(std::string text) {
 }
 
 // The parsed file, the features of it that are not drawn (ignored_features.h) and its
-// compressed buffer views, not yet decoded (meshopt_views.h).
+// compressed buffer views and primitives, not yet decoded (meshopt_views.h, draco_primitives.h).
 struct Parsed {
   tinygltf::Model model;
   std::vector<std::string> ignored;
   std::vector<MeshoptView> meshopt;
+  std::vector<DracoPrimitive> draco;
 };
 
 // The JSON checked before tinygltf reads it: types, glTF 1.0, external buffers present,
-// compressed views. Returns the JSON tinygltf is to read instead of `json`, or "" for `json`
-// itself: a meshopt fallback buffer is given bytes tinygltf can load.
+// compressed views and primitives. Returns the JSON tinygltf is to read instead of `json`, or ""
+// for `json` itself: a meshopt fallback buffer is given bytes tinygltf can load, a Draco
+// primitive's indices accessor a buffer view.
 std::string check_json(std::string_view json, const std::filesystem::path& base_dir, Parsed& parsed) {
   nlohmann::json root = check_json_schema(json);
   check_external_buffers(root, base_dir);
   parsed.ignored = ignored_features(root);
   parsed.meshopt = meshopt_views(root);
-  return empty_fallback_buffers(root) ? root.dump() : std::string();
+  parsed.draco = draco_primitives(root);
+  const bool fallbacks = empty_fallback_buffers(root);
+  const bool draco_indices = point_draco_indices_at_streams(root, parsed.draco);
+  return fallbacks || draco_indices ? root.dump() : std::string();
 }
 
 Parsed parse(std::span<const std::uint8_t> bytes, const std::filesystem::path& base_dir) {
@@ -126,6 +132,8 @@ Parsed parse(std::span<const std::uint8_t> bytes, const std::filesystem::path& b
   }
   if (!ok) throw Error(one_line(err));
   decode_meshopt_views(parsed.model, parsed.meshopt);
+  // After meshopt: a Draco stream may lie in a meshopt-decoded view.
+  decode_draco_primitives(parsed.model, parsed.draco);
   return parsed;
 }
 
