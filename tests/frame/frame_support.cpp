@@ -2,6 +2,8 @@
 
 #include "tilelight/app/cli.h"
 
+#include <gtest/gtest.h>
+
 #include <split_second_shaders.h>
 
 #include <fmt/format.h>
@@ -14,6 +16,16 @@
 #include <string>
 
 namespace tilelight::test {
+
+void expect_classified_and_dynamic_equal_naive(const TileRenderer& renderer) {
+  const RgbaImage naive = renderer.read_naive();
+  const FrameComparison classified = compare(renderer.read_classified(), naive, kEquivalenceTolerance);
+  EXPECT_EQ(classified.magenta_pixels, 0u) << "tiles left undrawn";
+  EXPECT_EQ(classified.pixels_over_tolerance, 0u)
+      << classified.first_difference << " (max difference " << classified.max_abs_difference << ")";
+  const FrameComparison dynamic = compare(renderer.read_dynamic(), naive, kEquivalenceTolerance);
+  EXPECT_EQ(dynamic.pixels_over_tolerance, 0u) << "dynamic vs naive: " << dynamic.first_difference;
+}
 
 FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, double tolerance) {
   FrameComparison result;

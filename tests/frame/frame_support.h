@@ -28,6 +28,10 @@ struct FrameComparison {
 
 FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, double tolerance);
 
+// The last frame's classified and dynamic images equal its naive one (kEquivalenceTolerance),
+// every tile drawn. Precondition: `renderer` runs the naive and dynamic passes.
+void expect_classified_and_dynamic_equal_naive(const TileRenderer& renderer);
+
 // The GPU's raw IDs against the CPU reference (which classifies every sample and counts every
 // tap), outside the bits the reference marks as near a threshold: SKY and SUN_LIGHT must be
 // equal; MSAA_EDGE, SHADOW_FADE and LIGHT_SCATTERING must be set wherever the reference sets them

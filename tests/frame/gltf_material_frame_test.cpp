@@ -68,12 +68,7 @@ glm::uvec2 pixel_of(const Scene& scene, glm::vec3 point) {
 // The classified frame equals the naive one, and so does the dynamic; the plain G-buffer stores
 // what the classified one does in RT0..RT3, bit for bit.
 void expect_equivalent_frames(TileRenderer& renderer) {
-  const RgbaImage naive = renderer.read_naive();
-  const FrameComparison classified = compare(renderer.read_classified(), naive, kEquivalenceTolerance);
-  EXPECT_EQ(classified.magenta_pixels, 0u) << "tiles left undrawn";
-  EXPECT_EQ(classified.pixels_over_tolerance, 0u) << classified.first_difference;
-  const FrameComparison dynamic = compare(renderer.read_dynamic(), naive, kEquivalenceTolerance);
-  EXPECT_EQ(dynamic.pixels_over_tolerance, 0u) << "dynamic vs naive: " << dynamic.first_difference;
+  expect_classified_and_dynamic_equal_naive(renderer);
   const GBufferSamples flagged = TileRendererTestSeam::read_gbuffer(renderer, GBufferKind::classified);
   const GBufferSamples plain = TileRendererTestSeam::read_gbuffer(renderer, GBufferKind::plain);
   ASSERT_EQ(flagged.values.size(), plain.values.size());
@@ -131,7 +126,18 @@ struct MaskCase {
 
 void PrintTo(const MaskCase& c, std::ostream* os) { *os << c.name; }
 
-class GltfAlphaMask : public VulkanTest, public ::testing::WithParamInterface<MaskCase> {};
+class GltfAlphaMask : public VulkanTest, public ::testing::WithParamInterface<MaskCase> {
+ protected:
+  static RendererOptions options() {
+    RendererOptions o;
+    o.width = kWidth;
+    o.height = kHeight;
+    o.msaa = GetParam().msaa;
+    o.light_pass = GetParam().light_pass;
+    o.path = GetParam().path;
+    return o;
+  }
+};
 
 // A 2 x 2 quad textured with a 2 x 1 image: its left texel red and opaque, its right one alpha 0.
 TEST_P(GltfAlphaMask, TheMaskedHalfShowsWhatLiesBehindIt) {
@@ -142,13 +148,7 @@ TEST_P(GltfAlphaMask, TheMaskedHalfShowsWhatLiesBehindIt) {
                     {{"index": {}}}}})",
                                               texture)));
   const Scene scene = scene_with_wall(file);
-  RendererOptions options;
-  options.width = kWidth;
-  options.height = kHeight;
-  options.msaa = GetParam().msaa;
-  options.light_pass = GetParam().light_pass;
-  options.path = GetParam().path;
-  TileRenderer renderer(context(), scene, options);
+  TileRenderer renderer(context(), scene, options());
   (void)renderer.render_frame();
   expect_equivalent_frames(renderer);
 
@@ -191,13 +191,7 @@ TEST_P(GltfAlphaMask, AMaskPiercingTheWallLeavesNoDifferingPixelUnflagged) {
                                               texture)),
                 false, node);
   const Scene scene = scene_with_wall(file);
-  RendererOptions options;
-  options.width = kWidth;
-  options.height = kHeight;
-  options.msaa = GetParam().msaa;
-  options.light_pass = GetParam().light_pass;
-  options.path = GetParam().path;
-  TileRenderer renderer(context(), scene, options);
+  TileRenderer renderer(context(), scene, options());
   (void)renderer.render_frame();
   expect_equivalent_frames(renderer);
   if (renderer.msaa_samples() == 1) return;

@@ -57,13 +57,7 @@ TEST_P(GltfFrames, ClassifiedEqualsNaivePerPixel) {
   TileRenderer renderer(context(), scene, options);
   const FrameResult frame = renderer.render_frame();
 
-  const RgbaImage naive = renderer.read_naive();
-  const FrameComparison classified = compare(renderer.read_classified(), naive, kEquivalenceTolerance);
-  EXPECT_EQ(classified.magenta_pixels, 0u) << "tiles left undrawn";
-  EXPECT_EQ(classified.pixels_over_tolerance, 0u)
-      << classified.first_difference << " (max difference " << classified.max_abs_difference << ")";
-  const FrameComparison dynamic = compare(renderer.read_dynamic(), naive, kEquivalenceTolerance);
-  EXPECT_EQ(dynamic.pixels_over_tolerance, 0u) << "dynamic vs naive: " << dynamic.first_difference;
+  expect_classified_and_dynamic_equal_naive(renderer);
   EXPECT_EQ(std::accumulate(frame.stats.class_tiles.begin(), frame.stats.class_tiles.end(), 0u),
             renderer.grid().tile_count());
 
@@ -170,12 +164,7 @@ TEST_P(GltfGeometryFrame, ClassifiedEqualsNaivePerPixel) {
   options.height = 96;
   TileRenderer renderer(context(), scene, options);
   const FrameResult frame = renderer.render_frame();
-  const RgbaImage naive = renderer.read_naive();
-  const FrameComparison classified = compare(renderer.read_classified(), naive, kEquivalenceTolerance);
-  EXPECT_EQ(classified.magenta_pixels, 0u) << "tiles left undrawn";
-  EXPECT_EQ(classified.pixels_over_tolerance, 0u) << classified.first_difference;
-  const FrameComparison dynamic = compare(renderer.read_dynamic(), naive, kEquivalenceTolerance);
-  EXPECT_EQ(dynamic.pixels_over_tolerance, 0u) << "dynamic vs naive: " << dynamic.first_difference;
+  expect_classified_and_dynamic_equal_naive(renderer);
   EXPECT_EQ(std::accumulate(frame.stats.class_tiles.begin(), frame.stats.class_tiles.end(), 0u),
             renderer.grid().tile_count());
   const std::vector<std::uint8_t> ids = renderer.raw_tile_ids();

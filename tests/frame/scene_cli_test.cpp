@@ -1,5 +1,6 @@
 // tilelight --scene: a glTF file rendered end to end, and bad files and flags answered with an
 // exit status and a message naming the file, writing nothing.
+#include "../fixtures/gltf/ignored_features_warnings.h"
 #include "frame_support.h"
 #include "tilelight/app/cli.h"
 #include "tilelight/gltf/load_gltf.h"
@@ -66,21 +67,8 @@ TEST(TilelightScene, WarnsOfEveryIgnoredFeatureOnStderrAndInTheReport) {
   const CliResult r =
       run_cli({"--scene", model.string(), "--width", "64", "--height", "48", "--validation", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string file = "warning: " + model.string() + ": ";
-  const std::vector<std::string> lines{
-      file + "2 animations ignored: drawn in the rest pose",
-      file + "1 skin ignored: meshes are drawn as stored, unskinned",
-      file + "1 camera cannot be chosen: orthographic, or placed by no node (--list-cameras says why)",
-      file + "morph targets (1 primitive) ignored: drawn in the base shape",
-      file + "points and lines (1 primitive) ignored: they have no surface",
-      file + "vertex colours (1 primitive) ignored",
-      file + "normalTexture (1 material) ignored",
-      file + "emissiveFactor (1 material) ignored",
-      file + "EXT_unknown_thing ignored",
-      file + "KHR_lights_punctual (2 lights) ignored: the sun alone lights the scene",
-      file + "KHR_materials_sheen (2 materials) ignored",
-      file + "1 material uses alphaMode BLEND: drawn as MASK at 0.5; a deferred G-buffer cannot blend",
-  };
+  const std::vector<std::string> lines = ignored_features_warnings(model.string());
+
   std::string stderr_text;
   for (const std::string& line : lines) stderr_text += line + "\n";
   EXPECT_EQ(r.err, stderr_text);

@@ -4,6 +4,7 @@
 // accessors are errors naming the element. TILELIGHT_WRITE_DRACO_FIXTURE=1 rewrites
 // tests/fixtures/gltf/box_draco.gltf (a checked-in copy) and the fuzz seeds
 // tests/fuzz/corpus/gltf/seed-box_draco.gltf and seed-bad_draco_*.gltf (one a broken case).
+#include "compressed_box_support.h"
 #include "tilelight/base/error.h"
 #include "tilelight/gltf/load_gltf.h"
 
@@ -25,27 +26,17 @@ namespace tilelight {
 namespace {
 
 using Json = nlohmann::json;
-using Bytes = std::vector<std::uint8_t>;
+using test::base64;
+using test::Bytes;
+using test::expect_box;
+using test::glb;
+using test::read_bytes;
+
+GltfScene load_text(const std::string& text) { return test::load_text(text, "box_draco.gltf"); }
 
 const std::filesystem::path kFixtures = TILELIGHT_GLTF_FIXTURES;
 const std::filesystem::path kCorpus = TILELIGHT_GLTF_CORPUS;
 const std::filesystem::path kAssimpModels = TILELIGHT_ASSIMP_GLTF2_MODELS;
-
-Bytes read_bytes(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), {}};
-}
-
-std::string base64(const Bytes& data) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < data.size(); i += 3) {
-    const std::uint32_t n =
-        data[i] << 16 | (i + 1 < data.size() ? data[i + 1] << 8 : 0) | (i + 2 < data.size() ? data[i + 2] : 0);
-    for (std::size_t k = 0; k < 4; ++k) out += k <= data.size() - i ? kDigits[(n >> (18 - 6 * k)) & 63] : '=';
-  }
-  return out;
-}
 
 constexpr std::uint32_t kVertices = 24, kIndices = 36;
 
@@ -107,48 +98,11 @@ Json draco_box(bool as_exporters_write = false, void (*edit)(Bytes&) = nullptr) 
   return doc;
 }
 
-void append_u32(Bytes& out, std::size_t value) {
-  for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<std::uint8_t>(value >> shift));
-}
-
 // The same box as a .glb, the Draco stream its BIN chunk.
 Bytes glb_box() {
   Json doc = draco_box();
-  const Bytes stream = encoded_box();
   doc["buffers"][0].erase("uri");
-  std::string json = doc.dump();
-  json.resize((json.size() + 3) / 4 * 4, ' ');
-  Bytes bin = stream;
-  bin.resize((bin.size() + 3) / 4 * 4, 0);
-  Bytes out;
-  append_u32(out, 0x46546C67);
-  append_u32(out, 2);
-  append_u32(out, 12 + 8 + json.size() + 8 + bin.size());
-  append_u32(out, json.size());
-  append_u32(out, 0x4E4F534A);
-  out.insert(out.end(), json.begin(), json.end());
-  append_u32(out, bin.size());
-  append_u32(out, 0x004E4942);
-  out.insert(out.end(), bin.begin(), bin.end());
-  return out;
-}
-
-GltfScene load_text(const std::string& text, const std::string& name = "box_draco.gltf") {
-  const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
-  return load_gltf_from_memory({bytes, text.size()}, name, {});
-}
-
-void expect_box(const Scene& scene) {
-  const Scene box = load_gltf_scene(kFixtures / "box.gltf");
-  ASSERT_EQ(scene.meshes.size(), 1u);
-  EXPECT_EQ(scene.meshes[0].indices, box.meshes[0].indices);
-  ASSERT_EQ(scene.meshes[0].vertices.size(), box.meshes[0].vertices.size());
-  for (std::size_t i = 0; i < box.meshes[0].vertices.size(); ++i) {
-    EXPECT_EQ(scene.meshes[0].vertices[i].position, box.meshes[0].vertices[i].position) << i;
-    EXPECT_EQ(scene.meshes[0].vertices[i].normal, box.meshes[0].vertices[i].normal) << i;
-  }
-  ASSERT_EQ(scene.instances.size(), box.instances.size());
-  for (std::size_t i = 0; i < box.instances.size(); ++i) EXPECT_EQ(scene.instances[i].model, box.instances[i].model);
+  return glb(doc.dump(), encoded_box());
 }
 
 TEST(GltfDraco, ADracoBoxLoadsAsTheBox) {

@@ -1,6 +1,7 @@
 // Nothing a file holds is dropped silently: every feature the renderer does not draw is one
 // warning line naming the file, glTF 1.0 is named as such, and a missing external file is
 // named by the path the loader looked at.
+#include "../fixtures/gltf/ignored_features_warnings.h"
 #include "tilelight/base/error.h"
 #include "tilelight/gltf/load_gltf.h"
 
@@ -28,21 +29,8 @@ std::string error_of(const std::filesystem::path& path) {
 TEST(GltfWarnings, EveryIgnoredFeatureIsOneLineNamingTheFile) {
   const std::filesystem::path path = kFixtures / "ignored_features.gltf";
   const GltfScene loaded = load_gltf(path);
-  const std::string file = "warning: " + path.string() + ": ";
-  const std::vector<std::string> expected{
-      file + "2 animations ignored: drawn in the rest pose",
-      file + "1 skin ignored: meshes are drawn as stored, unskinned",
-      file + "1 camera cannot be chosen: orthographic, or placed by no node (--list-cameras says why)",
-      file + "morph targets (1 primitive) ignored: drawn in the base shape",
-      file + "points and lines (1 primitive) ignored: they have no surface",
-      file + "vertex colours (1 primitive) ignored",
-      file + "normalTexture (1 material) ignored",
-      file + "emissiveFactor (1 material) ignored",
-      file + "EXT_unknown_thing ignored",
-      file + "KHR_lights_punctual (2 lights) ignored: the sun alone lights the scene",
-      file + "KHR_materials_sheen (2 materials) ignored",
-      file + "1 material uses alphaMode BLEND: drawn as MASK at 0.5; a deferred G-buffer cannot blend",
-  };
+  const std::vector<std::string> expected = test::ignored_features_warnings(path.string());
+
   EXPECT_EQ(loaded.warnings, expected);
   EXPECT_EQ(loaded.scene.triangle_count(), 24u) << "the box is drawn all the same";
 }
