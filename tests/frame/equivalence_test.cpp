@@ -105,15 +105,7 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
   ASSERT_EQ(renderer.msaa_samples(), c.msaa == 0 ? 4u : c.msaa);
   const FrameResult frame = renderer.render_frame();
 
-  const RgbaImage naive = renderer.read_naive();
-  const FrameComparison cmp = compare(renderer.read_classified(), naive, kEquivalenceTolerance);
-  EXPECT_EQ(cmp.magenta_pixels, 0u) << "tiles left undrawn";
-  EXPECT_EQ(cmp.pixels_over_tolerance, 0u)
-      << cmp.first_difference << " (max difference " << cmp.max_abs_difference << ")";
-  const FrameComparison dynamic = compare(renderer.read_dynamic(), naive, kEquivalenceTolerance);
-  EXPECT_EQ(dynamic.magenta_pixels, 0u) << "dynamic pass left pixels undrawn";
-  EXPECT_EQ(dynamic.pixels_over_tolerance, 0u)
-      << "dynamic vs naive: " << dynamic.first_difference << " (max difference " << dynamic.max_abs_difference << ")";
+  expect_classified_and_dynamic_equal_naive(renderer);
   EXPECT_GT(frame.timings.dynamic_light, 0.0);
   if (renderer.msaa_samples() == 1) {
     // One sample per pixel never differs from itself: no tile may need the MSAA-edge shader.

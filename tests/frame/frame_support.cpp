@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -24,7 +25,17 @@ void expect_classified_and_dynamic_equal_naive(const TileRenderer& renderer) {
   EXPECT_EQ(classified.pixels_over_tolerance, 0u)
       << classified.first_difference << " (max difference " << classified.max_abs_difference << ")";
   const FrameComparison dynamic = compare(renderer.read_dynamic(), naive, kEquivalenceTolerance);
-  EXPECT_EQ(dynamic.pixels_over_tolerance, 0u) << "dynamic vs naive: " << dynamic.first_difference;
+  EXPECT_EQ(dynamic.magenta_pixels, 0u) << "dynamic pass left pixels undrawn";
+  EXPECT_EQ(dynamic.pixels_over_tolerance, 0u)
+      << "dynamic vs naive: " << dynamic.first_difference << " (max difference " << dynamic.max_abs_difference << ")";
+}
+
+FrameResult render_equivalent_frame(TileRenderer& renderer) {
+  const FrameResult frame = renderer.render_frame();
+  expect_classified_and_dynamic_equal_naive(renderer);
+  EXPECT_EQ(std::accumulate(frame.stats.class_tiles.begin(), frame.stats.class_tiles.end(), 0u),
+            renderer.grid().tile_count());
+  return frame;
 }
 
 FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, double tolerance) {

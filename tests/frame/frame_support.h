@@ -32,6 +32,10 @@ FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, dou
 // every tile drawn. Precondition: `renderer` runs the naive and dynamic passes.
 void expect_classified_and_dynamic_equal_naive(const TileRenderer& renderer);
 
+// Renders a frame, then expect_classified_and_dynamic_equal_naive() and every tile drawn once
+// (the per-class tile counts add up to the grid).
+FrameResult render_equivalent_frame(TileRenderer& renderer);
+
 // The GPU's raw IDs against the CPU reference (which classifies every sample and counts every
 // tap), outside the bits the reference marks as near a threshold: SKY and SUN_LIGHT must be
 // equal; MSAA_EDGE, SHADOW_FADE and LIGHT_SCATTERING must be set wherever the reference sets them

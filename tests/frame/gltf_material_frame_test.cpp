@@ -156,7 +156,9 @@ TEST_P(GltfAlphaMask, TheMaskedHalfShowsWhatLiesBehindIt) {
   const GBufferSamples g = TileRendererTestSeam::read_gbuffer(renderer);
   EXPECT_TRUE(stores_albedo(g, pixel_of(scene, kept), glm::vec3(1, 0, 0))) << "the opaque half shows the quad";
   EXPECT_TRUE(stores_albedo(g, pixel_of(scene, hole), glm::vec3(0, 1, 0))) << "the masked half shows the wall";
-  if (renderer.msaa_samples() > 1) EXPECT_EQ(unflagged_differing_pixels(g), 0u);
+  if (renderer.msaa_samples() > 1) {
+    EXPECT_EQ(unflagged_differing_pixels(g), 0u);
+  }
 
   // The sun sees the quad's opaque half, and through its masked half something farther.
   const std::vector<float> shadow = TileRendererTestSeam::read_shadow_map(renderer);

@@ -39,7 +39,7 @@ class GltfBuilder {
   }
 
   // A material: the JSON object's members, e.g. R"("alphaMode": "MASK")". Returns its index.
-  int add_material(std::string members) {
+  int add_material(const std::string& members) {
     materials_.push_back("{" + members + "}");
     return static_cast<int>(materials_.size()) - 1;
   }

@@ -26,13 +26,9 @@ namespace tilelight {
 namespace {
 
 using Json = nlohmann::json;
-using test::base64;
-using test::Bytes;
-using test::expect_box;
-using test::glb;
-using test::read_bytes;
+using namespace test;  // compressed_box_support.h
 
-GltfScene load_text(const std::string& text) { return test::load_text(text, "box_draco.gltf"); }
+GltfScene load_box(const std::string& text) { return load_text(text, "box_draco.gltf"); }
 
 const std::filesystem::path kFixtures = TILELIGHT_GLTF_FIXTURES;
 const std::filesystem::path kCorpus = TILELIGHT_GLTF_CORPUS;
@@ -111,7 +107,7 @@ TEST(GltfDraco, ADracoBoxLoadsAsTheBox) {
     std::ofstream(kFixtures / "box_draco.gltf", std::ios::binary) << text;
     std::ofstream(kCorpus / "seed-box_draco.gltf", std::ios::binary) << text;
   }
-  const GltfScene loaded = load_text(text);
+  const GltfScene loaded = load_box(text);
   expect_box(loaded.scene);
   EXPECT_EQ(loaded.warnings, std::vector<std::string>{});
 }
@@ -147,7 +143,7 @@ std::vector<std::array<glm::vec3, 3>> triangles_of(const Mesh& mesh) {
 // Edgebreaker reorders the vertices and 14-bit quantization moves them by under 1e-4 of the
 // box's size: every triangle of the box is still there, with its winding.
 TEST(GltfDraco, AnEdgebreakerQuantizedBoxHasTheBoxsTriangles) {
-  const Scene scene = load_text(draco_box(true).dump()).scene;
+  const Scene scene = load_box(draco_box(true).dump()).scene;
   const Scene box = load_gltf_scene(kFixtures / "box.gltf");
   ASSERT_EQ(scene.meshes.size(), 1u);
   const auto decoded = triangles_of(scene.meshes[0]), expected = triangles_of(box.meshes[0]);
@@ -193,7 +189,7 @@ TEST_P(GltfDracoBadInput, IsAnErrorNamingTheElement) {
         << doc.dump(1) << "\n";
   }
   try {
-    (void)load_text(doc.dump());
+    (void)load_box(doc.dump());
     FAIL() << "loaded";
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()), std::string("box_draco.gltf: ") + GetParam().message);

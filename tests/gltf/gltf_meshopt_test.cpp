@@ -22,13 +22,9 @@ namespace tilelight {
 namespace {
 
 using Json = nlohmann::json;
-using test::base64;
-using test::Bytes;
-using test::expect_box;
-using test::glb;
-using test::read_bytes;
+using namespace test;  // compressed_box_support.h
 
-GltfScene load_text(const std::string& text) { return test::load_text(text, "box_meshopt.gltf"); }
+GltfScene load_box(const std::string& text) { return load_text(text, "box_meshopt.gltf"); }
 
 const std::filesystem::path kFixtures = TILELIGHT_GLTF_FIXTURES;
 
@@ -89,7 +85,7 @@ TEST(GltfMeshopt, ACompressedGltfLoadsAsTheBox) {
   if (std::getenv("TILELIGHT_WRITE_MESHOPT_FIXTURE") != nullptr) {
     std::ofstream(kFixtures / "box_meshopt.gltf", std::ios::binary) << text;
   }
-  const GltfScene loaded = load_text(text);
+  const GltfScene loaded = load_box(text);
   expect_box(loaded.scene);
   EXPECT_EQ(loaded.warnings, std::vector<std::string>{});
 }
@@ -129,7 +125,7 @@ TEST(GltfMeshopt, OctahedralFilteredNormalsLoadAsTheBoxNormals) {
   doc["buffers"][0]["byteLength"] = compressed.size();
   doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(compressed);
 
-  const Scene scene = load_text(doc.dump()).scene;
+  const Scene scene = load_box(doc.dump()).scene;
   const Scene box = load_gltf_scene(kFixtures / "box.gltf");
   ASSERT_EQ(scene.meshes.size(), 1u);
   ASSERT_EQ(scene.meshes[0].vertices.size(), box.meshes[0].vertices.size());
@@ -156,7 +152,7 @@ TEST_P(GltfMeshoptBadInput, IsAnErrorNamingTheView) {
   Json doc = Json::parse(embedded_box());
   GetParam().change(doc);
   try {
-    (void)load_text(doc.dump());
+    (void)load_box(doc.dump());
     FAIL() << "loaded";
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()), std::string("box_meshopt.gltf: ") + GetParam().message);
