@@ -31,7 +31,7 @@ void expect_classified_and_dynamic_equal_naive(const TileRenderer& renderer) {
 }
 
 FrameResult render_equivalent_frame(TileRenderer& renderer) {
-  const FrameResult frame = renderer.render_frame();
+  FrameResult frame = renderer.render_frame();
   expect_classified_and_dynamic_equal_naive(renderer);
   EXPECT_EQ(std::accumulate(frame.stats.class_tiles.begin(), frame.stats.class_tiles.end(), 0u),
             renderer.grid().tile_count());
