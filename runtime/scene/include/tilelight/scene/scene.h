@@ -6,6 +6,8 @@
 // a Camera. The layout is deterministic (a fixed seed), so every run and test sees the same
 // frame. Units are metres; y is up.
 
+#include "tilelight/scene/local_light.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -126,6 +128,8 @@ struct Scene {
   std::vector<Texture> textures;
   std::vector<Camera> cameras;  // cameras[0] is the default
   SunAndAtmosphere sun;
+  // Point, spot and box lights drawn after the sun (local_light.h); empty by default.
+  std::vector<LocalLight> local_lights;
   std::string source;  // the file the scene was loaded from (its name only); empty: the procedural scene
   // The file's coordinates -> the renderer's (a loaded scene is scaled and centred, see
   // runtime/gltf/src/scene_framing.h): a uniform scale then a translation. Identity for the
