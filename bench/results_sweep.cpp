@@ -140,20 +140,22 @@ class FittedScene {
 };
 
 // The procedural scene, or the --scene file (a bad one is an error naming the flag and file;
-// what it holds that is not drawn is a warning on stderr, as tilelight prints it).
-Scene sweep_scene(const SweepOptions& options) {
-  if (options.scene.empty()) return make_demo_scene();
+// what it holds that is not drawn is a warning on stderr, as tilelight prints it, kept for
+// results.json).
+GltfScene sweep_scene(const SweepOptions& options) {
+  if (options.scene.empty()) return GltfScene{make_demo_scene(), {}};
   try {
     GltfScene loaded = load_gltf(options.scene, GltfLoadOptions{options.scene_index});
     for (const std::string& warning : loaded.warnings) std::cerr << warning << '\n';
-    return std::move(loaded.scene);
+    return loaded;
   } catch (const Error& e) {
     throw Error(std::string("--scene ") + e.what());
   }
 }
 
 int run_sweep(const SweepOptions& options) {
-  FittedScene fitted(sweep_scene(options), options.view);  // a bad file fails before any Vulkan work
+  GltfScene loaded = sweep_scene(options);  // a bad file fails before any Vulkan work
+  FittedScene fitted(std::move(loaded.scene), options.view);
   const Scene& scene = fitted.scene();
   // So does a camera that cannot be drawn (exit 2, as tilelight's).
   for (const std::string& camera : options.cameras) {
@@ -184,8 +186,8 @@ int run_sweep(const SweepOptions& options) {
   const std::map<std::string, std::string> sections =
       report_comparisons(plan, measurements, run_line, context.device_name(), files);
   const SweepRun run{
-      context.device_name(), threads != nullptr ? threads : "", &options, &plan, &measurements, scene.source,
-      scene.triangle_count()};
+      context.device_name(),  threads != nullptr ? threads : "", &options, &plan, &measurements, scene.source,
+      scene.triangle_count(), std::move(loaded.warnings)};
   files.stage_text("results.json", results_json(run));
   files.commit();
   std::cerr << "wrote " << (files.folder() / "results.json").string() << " and one PNG per comparison\n";

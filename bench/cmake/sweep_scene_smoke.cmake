@@ -24,7 +24,7 @@ endif()
 
 # A placed camera inside the file's box: the view "eye".
 execute_process(COMMAND "${SWEEP}" --quick --only baselines --light-passes compute --scene "${SCENE}"
-  --eye 0.2,0.3,0.9 --target 0,0,0 --fov 70 --out "${OUT}/eye"
+  --eye 0.2,0.3,0.9 --target 0,0,0 --fov 70 --cull on,off --out "${OUT}/eye"
   RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "tilelight_sweep --eye exited with ${rc}\nstderr:\n${stderr}")
@@ -33,6 +33,15 @@ file(READ "${OUT}/eye/results.json" results)
 string(JSON camera GET "${results}" configurations 0 camera)
 if(NOT camera STREQUAL "eye")
   message(FATAL_ERROR "results.json: camera '${camera}', not 'eye'")
+endif()
+# --cull on,off: each view with and without batch culling, the second row labelled so.
+string(JSON cull0 GET "${results}" configurations 0 cull)
+string(JSON cull1 GET "${results}" configurations 1 cull)
+string(JSON culled1 GET "${results}" configurations 1 culled gbuffer_batches)
+string(JSON warnings TYPE "${results}" scene_warnings)
+string(FIND "${stdout}" "(no cull)" labelled)
+if(NOT cull0 OR cull1 OR NOT culled1 EQUAL 0 OR NOT warnings STREQUAL "ARRAY" OR labelled EQUAL -1)
+  message(FATAL_ERROR "--cull on,off: cull ${cull0} / ${cull1}, ${culled1} culled without culling, scene_warnings ${warnings}, stdout:\n${stdout}")
 endif()
 
 # A procedural camera with a file: a usage error, before any output.

@@ -36,6 +36,7 @@ Measurement finish(const Run& run, const RendererOptions& options, std::uint32_t
   m.primitives_coalesced = run.last.stats.primitives_coalesced;
   m.rectangles = run.last.stats.rectangles;
   m.primitive = run.renderer->tile_primitive();
+  m.culled = run.renderer->culled_batches();
   const std::vector<std::uint8_t> ids = run.renderer->raw_tile_ids();
   m.sky_tiles = static_cast<std::uint32_t>(
       std::count_if(ids.begin(), ids.end(), [](std::uint8_t id) { return (id & split_second::raw_bit::SKY) != 0; }));
@@ -77,6 +78,7 @@ std::string configuration_key(const RendererOptions& o) {
                   o.coalesce ? "coalesced" : "uncoalesced", o.primitive ? to_string(*o.primitive) : "auto", o.camera,
                   o.msaa == 0 ? std::string("auto") : std::to_string(o.msaa), to_string(o.light_pass));
   if (o.baselines != Baselines::both) key += fmt::format(" baselines {}", to_string(o.baselines));
+  if (!o.cull_batches) key += " no-cull";
   return key;
 }
 

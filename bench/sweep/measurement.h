@@ -26,6 +26,7 @@ struct Measurement {
   TilePrimitive primitive = TilePrimitive::triangles;  // what the tile pass drew (auto resolved)
   std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0, rectangles = 0;
   std::uint32_t sky_tiles = 0;              // tiles with the SKY property: cheap for every method
+  CulledBatches culled;                     // mesh batches the scene passes skipped
   app::MedianTimings timings;               // per field, the median over frame_timings
   std::vector<FrameTimings> frame_timings;  // every timed frame, in order
   app::Equivalence equivalence;             // classified vs naive

@@ -65,6 +65,8 @@ Json measurement_json(const Measurement& m, std::optional<double> bandwidth) {
   j["primitives"] = {
       {"uncoalesced", m.primitives_uncoalesced}, {"drawn", m.primitives_coalesced}, {"rectangles", m.rectangles}};
   j["baselines"] = to_string(o.baselines);
+  j["cull"] = o.cull_batches;
+  j["culled"] = {{"gbuffer_batches", m.culled.gbuffer}, {"shadow_batches", m.culled.shadow}};
   j["timings_ms"] = timings_json(m.timings);
   Json frames = Json::array();
   for (const FrameTimings& f : m.frame_timings) frames.push_back(timings_json(f));
@@ -97,6 +99,7 @@ std::string results_json(const SweepRun& run) {
   j["camera"] = run.plan->configurations.front().camera;
   j["scene"] = run.scene.empty() ? Json(nullptr) : Json(run.scene);
   j["scene_triangles"] = run.scene_triangles;
+  j["scene_warnings"] = run.scene_warnings;
   Json sizes = Json::array();
   for (const FrameSize& s : run.options->sizes) sizes.push_back(s.name);
   j["sizes"] = sizes;

@@ -18,13 +18,15 @@ struct SweepRun {
   const std::vector<Measurement>* measurements = nullptr;  // in plan->configurations order
   std::string scene;                                       // the --scene file's name; "" = the procedural scene
   std::uint64_t scene_triangles = 0;
+  std::vector<std::string> scene_warnings;  // the loader's lines, as printed on stderr
 };
 
 // {"device", "memory_bandwidth_bytes_per_s" (null: unknown, gbuffer_bound.h), "frames",
-//  "warmup_frames", "schedule", "camera", "scene" (null: procedural), "scene_triangles", "sizes",
-//  "lavapipe_threads",
+//  "warmup_frames", "schedule", "camera", "scene" (null: procedural), "scene_triangles",
+//  "scene_warnings" [lines, as tilelight's report.json], "sizes", "lavapipe_threads",
 //  "configurations": [{key, width, height, msaa_samples, tile_size, path, permutations,
 //                      coalesce, pipelines, tiles, rectangles {uncoalesced, coalesced}, baselines,
+//                      cull, culled {gbuffer_batches, shadow_batches},
 //                      timings_ms {...medians}, frame_timings_ms [{...} per frame],
 //                      classified_light_ms, speedup, speedup_over_dynamic,
 //                      frame_ratios {light_vs_naive, light_vs_dynamic, whole_frame_vs_naive,

@@ -79,6 +79,13 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
       ->delimiter(',')
       ->check(CLI::IsMember({"raster", "compute"}))
       ->capture_default_str();
+  std::vector<std::string> culls{"on"};
+  cli.add_option("--cull", culls,
+                 "batch culling in the baseline comparison: on, off (tilelight --no-cull); each view measured with "
+                 "each")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cli.add_option("--only", options.only,
                  "run only these comparisons: permutations, tile_size, index_path, coalescing, primitive, "
                  "resolution, stages, baselines (default: all)")
@@ -114,6 +121,8 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
   options.paths.clear();
   for (const std::string& p : paths) options.paths.push_back(p == "gpu" ? IndexPath::gpu : IndexPath::cpu);
   options.baselines = baselines == "all" ? Baselines::all : Baselines::both;
+  options.culls.clear();
+  for (const std::string& c : culls) options.culls.push_back(c == "on");
   options.msaa.clear();
   for (const std::string& m : msaa)
     options.msaa.push_back(m == "auto" ? 0u : static_cast<std::uint32_t>(std::stoul(m)));

@@ -34,6 +34,8 @@ struct SweepOptions {
   Baselines baselines = Baselines::both;
   // The light-pass kinds of the baseline comparison (tilelight --light-pass), each a row per view.
   std::vector<std::string> light_passes{"raster", "compute"};
+  // Batch culling in the baseline comparison (tilelight --no-cull is false), each a row per view.
+  std::vector<bool> culls{true};
   // The comparisons to run, by id (sweep_plan.h); empty = all.
   std::vector<std::string> only;
   std::string device;  // as tilelight --device: "" = lavapipe, an index or a name substring

@@ -79,6 +79,7 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
     IndexPath path;
     LightPass light_pass;
     Baselines baselines;
+    bool cull;
   };
   std::vector<View> views;
   for (const std::string& pass : options.light_passes) {
@@ -86,8 +87,10 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
       for (const FrameSize& size : options.sizes) {
         for (IndexPath path : options.paths) {
           for (const std::string& camera : options.cameras) {
-            views.push_back({msaa, size, camera, path, pass == "compute" ? LightPass::compute : LightPass::raster,
-                             options.baselines});
+            for (const bool cull : options.culls) {
+              views.push_back({msaa, size, camera, path, pass == "compute" ? LightPass::compute : LightPass::raster,
+                               options.baselines, cull});
+            }
           }
         }
       }
@@ -102,6 +105,7 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
                     o.path = v.path;
                     o.light_pass = v.light_pass;
                     o.baselines = v.baselines;
+                    o.cull_batches = v.cull;
                   });
   return b.take();
 }
@@ -118,8 +122,8 @@ std::string row_label(Facet facet, const Measurement& m) {
     case Facet::stages: return fmt::format("{}x{}", o.width, o.height);
     case Facet::baselines:
       // The index build only where it is not the default, so a CPU-only run keeps its labels.
-      return fmt::format("{} {}x {}x{} {}{}", to_string(o.light_pass), m.msaa_samples, o.width, o.height, o.camera,
-                         o.path == IndexPath::gpu ? " (GPU build)" : "");
+      return fmt::format("{} {}x {}x{} {}{}{}", to_string(o.light_pass), m.msaa_samples, o.width, o.height, o.camera,
+                         o.path == IndexPath::gpu ? " (GPU build)" : "", o.cull_batches ? "" : " (no cull)");
   }
   return m.key;
 }

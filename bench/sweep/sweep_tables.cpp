@@ -52,6 +52,15 @@ std::string min_median_max(const std::vector<double>& values) {
                      *std::max_element(values.begin(), values.end()));
 }
 
+// The camera column: its name, and "(no cull)" where batch culling was off (sweep --cull off).
+std::string camera_cell(const RendererOptions& o) { return o.cull_batches ? o.camera : o.camera + " (no cull)"; }
+
+// The row groups of the baseline tables: rows that differ only in their camera.
+std::string group_name(const RendererOptions& o, std::uint32_t msaa_samples) {
+  return fmt::format("{}, {}x MSAA, {}x{}, {} index build{}", to_string(o.light_pass), msaa_samples, o.width, o.height,
+                     o.path == IndexPath::gpu ? "GPU" : "CPU", o.cull_batches ? "" : ", no cull");
+}
+
 // Classified vs dynamic vs naive per row, then per MSAA mode and size the spread over cameras.
 std::string baselines_table(const std::vector<const Measurement*>& rows) {
   std::string out =
@@ -65,13 +74,12 @@ std::string baselines_table(const std::vector<const Measurement*>& rows) {
     const bool gpu = o.path == IndexPath::gpu;
     out += fmt::format(
         "| {} | {}x | {}x{} | {} | {:.0f} % | {} | {} | {} | {} ({}) | {} | {} | {:.2f}x | {:.2f}x | {}, {} |\n",
-        to_string(o.light_pass), m->msaa_samples, o.width, o.height, o.camera,
+        to_string(o.light_pass), m->msaa_samples, o.width, o.height, camera_cell(o),
         m->tiles > 0 ? 100.0 * m->sky_tiles / m->tiles : 0.0, ms(m->timings.naive_light), ms(m->timings.dynamic_light),
         ms(m->timings.classification), ms(m->index_build()), gpu ? "GPU" : "CPU", ms(m->timings.tiled_light),
         ms(m->classified_light()), m->speedup(), m->speedup_over_dynamic(), m->equivalence.pixels_different,
         m->dynamic_equivalence.pixels_different);
-    const std::string group = fmt::format("{}, {}x MSAA, {}x{}, {} index build", to_string(o.light_pass),
-                                          m->msaa_samples, o.width, o.height, gpu ? "GPU" : "CPU");
+    const std::string group = group_name(o, m->msaa_samples);
     if (groups.empty() || groups.back().first != group) groups.push_back({group, {}});
     groups.back().second.first.push_back(m->speedup());
     groups.back().second.second.push_back(m->speedup_over_dynamic());
@@ -141,14 +149,13 @@ std::string whole_frame_table(const std::vector<const Measurement*>& rows, std::
     const app::FrameRatios r = m->ratios();
     out +=
         fmt::format("| {} | {}x | {}x{} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}, {} |\n",
-                    to_string(o.light_pass), m->msaa_samples, o.width, o.height, index_build_name(o), o.camera,
+                    to_string(o.light_pass), m->msaa_samples, o.width, o.height, index_build_name(o), camera_cell(o),
                     ms_or_dash(m->classified_light()), ms_or_dash(t.naive_light), ms_or_dash(t.dynamic_light),
                     ms_or_dash(t.floor_light), ms_or_dash(t.frame_classified), ms_or_dash(t.frame_naive),
                     ms_or_dash(t.frame_dynamic), ratio_or_dash(r.light_vs_naive), ratio_or_dash(r.light_vs_dynamic),
                     ratio_or_dash(r.whole_frame_vs_naive), ratio_or_dash(r.whole_frame_vs_dynamic),
                     m->equivalence.pixels_different, m->dynamic_equivalence.pixels_different);
-    const std::string group = fmt::format("{}, {}x MSAA, {}x{}, {} index build", to_string(o.light_pass),
-                                          m->msaa_samples, o.width, o.height, index_build_name(o));
+    const std::string group = group_name(o, m->msaa_samples);
     if (groups.empty() || groups.back().name != group) {
       groups.push_back({group, 0, gbuffer_bytes(o.width, o.height, m->msaa_samples), {}, {}, {}, {}});
     }
