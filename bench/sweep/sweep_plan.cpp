@@ -50,6 +50,9 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
   base.light_pass = LightPass::raster;
   base.width = options.sizes.front().width;
   base.height = options.sizes.front().height;
+  // The design choices are measured from the first camera of the baseline comparison: the
+  // procedural scene's "default", a file's, or a placed --eye view (then the only one).
+  if (!options.cameras.empty()) base.camera = options.cameras.front();
   const std::string at = fmt::format(" ({}x{})", base.width, base.height);
   PlanBuilder b(base, options.only);
   b.compare<bool>(Facet::permutations, "permutations", "Optimised vs raw permutations" + at, {false, true},

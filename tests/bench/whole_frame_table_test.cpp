@@ -121,7 +121,7 @@ TEST(WholeFrameJson, RatiosTimingsAndLimit) {
   SweepPlan plan;
   const std::vector<Measurement> measurements{measurement("default", true), measurement("sky", false)};
   for (const Measurement& m : measurements) plan.configurations.push_back(m.options);
-  const SweepRun run{"NVIDIA H200", "", &options, &plan, &measurements, "", 0};
+  const SweepRun run{"NVIDIA H200", "", &options, &plan, &measurements, "", 0, {}};
   const nlohmann::json j = nlohmann::json::parse(results_json(run));
   EXPECT_EQ(j["memory_bandwidth_bytes_per_s"], 4.8e12);
   const nlohmann::json& with = j["configurations"][0];
@@ -190,6 +190,45 @@ TEST(SweepOptions, EyeAndTargetMakeTheViewEye) {
   EXPECT_FALSE(parse_sweep_options(5, argv, options, exit_code, out, err));
   EXPECT_EQ(exit_code, 2);
   EXPECT_NE(err.str().find("--eye: 1,2 is not X,Y,Z"), std::string::npos) << err.str();
+}
+
+// --cull on,off: every view of the baseline comparison with and without batch culling, the
+// second keyed and labelled as such; the design choices stay culled.
+TEST(SweepOptions, CullOnAndOffDoubleTheViews) {
+  SweepOptions options;
+  int exit_code = 0;
+  std::ostringstream out, err;
+  const char* argv[] = {"tilelight_sweep", "--cull", "on,off", "--cameras", "low", "--light-passes", "compute"};
+  ASSERT_TRUE(parse_sweep_options(7, argv, options, exit_code, out, err)) << err.str();
+  EXPECT_EQ(options.culls, (std::vector<bool>{true, false}));
+  const SweepPlan plan = make_sweep_plan(options);
+  const Comparison& baselines = plan.comparisons.back();
+  ASSERT_EQ(baselines.id, "baselines");
+  ASSERT_EQ(baselines.keys.size(), 2u * 3u * 2u);  // MSAA auto and 1, three sizes, culling on and off
+  EXPECT_EQ(baselines.keys[0], "1280x720 tile 4 cpu optimised coalesced auto camera low msaa auto compute");
+  EXPECT_EQ(baselines.keys[1], "1280x720 tile 4 cpu optimised coalesced auto camera low msaa auto compute no-cull");
+  for (const RendererOptions& o : plan.configurations) {
+    if (configuration_key(o).find("compute") == std::string::npos) {
+      EXPECT_TRUE(o.cull_batches);
+    }
+  }
+
+  const char* bad[] = {"tilelight_sweep", "--cull", "maybe"};
+  EXPECT_FALSE(parse_sweep_options(3, bad, options, exit_code, out, err));
+  EXPECT_EQ(exit_code, 2);
+  EXPECT_NE(err.str().find("--cull"), std::string::npos) << err.str();
+}
+
+// The design choices are measured from the first camera: a placed view when --eye is given.
+TEST(SweepOptions, DesignChoicesUseTheFirstCamera) {
+  SweepOptions options;
+  int exit_code = 0;
+  std::ostringstream out, err;
+  const char* argv[] = {"tilelight_sweep", "--eye", "1,2,3", "--target", "0,0,0", "--only", "tile_size"};
+  ASSERT_TRUE(parse_sweep_options(7, argv, options, exit_code, out, err)) << err.str();
+  const SweepPlan plan = make_sweep_plan(options);
+  ASSERT_EQ(plan.configurations.size(), 3u);
+  for (const RendererOptions& o : plan.configurations) EXPECT_EQ(o.camera, "eye");
 }
 
 }  // namespace
