@@ -8,8 +8,12 @@
 
 #include <gtest/gtest.h>
 #include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -127,6 +131,54 @@ TEST(GltfLightsAbsent, AFileWithoutLightsKeepsTheDemoSunAndHasNoLocalLights) {
   const Scene scene = load_gltf_scene(kFixtures / "box.gltf");
   EXPECT_TRUE(scene.local_lights.empty());
   EXPECT_EQ(scene.sun.sun_color, make_demo_sun().sun_color);
+}
+
+// lights.gltf changed by `edit`, loaded from memory as "edited.gltf".
+GltfScene load_edited(const std::function<void(nlohmann::json&)>& edit) {
+  nlohmann::json gltf = nlohmann::json::parse(std::ifstream(kFixtures / "lights.gltf"));
+  edit(gltf);
+  const std::string text = gltf.dump();
+  return load_gltf_from_memory(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()),
+                               "edited.gltf", {});
+}
+
+nlohmann::json& light_of_file(nlohmann::json& gltf, int index) {
+  return gltf["extensions"]["KHR_lights_punctual"]["lights"][index];
+}
+
+TEST(GltfLightsEdited, ALightTwoNodesReferenceIsPlacedTwiceAndOneNoNodeReferencesIsNot) {
+  const GltfScene twice =
+      load_edited([](nlohmann::json& g) { g["nodes"][7]["extensions"]["KHR_lights_punctual"]["light"] = 0; });
+  EXPECT_EQ(twice.scene.local_lights.size(), 5u) << "nodes[7] places light 0 a second time";
+  const GltfScene unplaced = load_edited([](nlohmann::json& g) { g["nodes"][3].erase("extensions"); });
+  EXPECT_EQ(unplaced.scene.local_lights.size(), 3u) << "the spot light is placed by no node";
+}
+
+TEST(GltfLightsEdited, APointLightOnANodeThatFlattensItsZAxisStillLoads) {
+  const GltfScene flat = load_edited([](nlohmann::json& g) { g["nodes"][2]["scale"] = {1, 1, 0}; });
+  EXPECT_EQ(flat.scene.local_lights.size(), 4u);
+}
+
+TEST(GltfLightsEdited, AFileWhoseOnlyLightIsTheSunHasNoLocalLightsAndNoWarning) {
+  const GltfScene sun_only = load_edited([](nlohmann::json& g) {
+    for (auto& node : g["nodes"]) {
+      if (node.contains("extensions") && node["extensions"]["KHR_lights_punctual"]["light"] != 2)
+        node.erase("extensions");
+    }
+  });
+  EXPECT_TRUE(sun_only.scene.local_lights.empty());
+  EXPECT_EQ(sun_only.warnings, std::vector<std::string>{});
+  EXPECT_NEAR(sun_only.scene.sun.sun_color.x, 2.0f, 1e-6f);
+}
+
+TEST(GltfLightsEdited, AnIntensityNoFloatHoldsIsNamed) {
+  try {
+    (void)load_edited([](nlohmann::json& g) { light_of_file(g, 0)["intensity"] = 1e39; });
+    FAIL() << "loaded";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "edited.gltf: " + kLights + "[0].intensity: 1e+39 is too large for a 32-bit float");
+  }
 }
 
 struct BadLight {

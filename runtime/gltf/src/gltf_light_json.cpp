@@ -41,7 +41,8 @@ double read_number(const Json& object, const char* key, const std::string& path,
   const std::string where = path + "." + key;
   if (!value->is_number()) throw Error(fmt::format("{}: expected a number, got {}", where, shown(*value)));
   const double v = value->get<double>();
-  if (!float_sized(v) || !valid(v)) throw Error(fmt::format("{}: {} is not {}", where, v, allowed));
+  if (!float_sized(v)) throw Error(fmt::format("{}: {} is too large for a 32-bit float", where, v));
+  if (!valid(v)) throw Error(fmt::format("{}: {} is not {}", where, v, allowed));
   return v;
 }
 
