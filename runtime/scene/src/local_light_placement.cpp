@@ -21,8 +21,9 @@ constexpr std::array<glm::vec3, 4> kColours{glm::vec3(1.0f, 0.72f, 0.42f), glm::
 
 // Gap 0 is the street; then 1 left, 1 right, 2 left... (-1, 1, -2, 2, ...).
 float gap_x(std::uint32_t gap) {
-  const auto step = static_cast<float>((gap + 1) / 2);
-  return kStreetX + kGapSpacing * (gap % 2 == 1 ? -step : step);
+  const std::uint32_t steps = (gap + 1) / 2;  // whole gaps from the street
+  const float offset = kGapSpacing * static_cast<float>(steps);
+  return kStreetX + (gap % 2 == 1 ? -offset : offset);
 }
 
 // The lamp's foot on the ground.
