@@ -38,7 +38,7 @@ struct LocalLight {
   glm::vec3 position{0.0f};
   // Spot: the cone's axis. Box: the direction its light travels. Normalised. Unused by points.
   glm::vec3 direction{0.0f, -1.0f, 0.0f};
-  glm::vec3 color{1.0f};  // linear RGB
+  glm::vec3 color{1.0f};   // linear RGB
   float intensity = 1.0f;  // >= 0, in the sun's scale (see above)
   // Point, spot: the distance where the light has faded to zero; > 0 and finite (a glTF light
   // without a range is bounded by the loader).
