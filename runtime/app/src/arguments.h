@@ -27,6 +27,9 @@ struct Arguments {
   std::string out = "tilelight-out";
   std::string scene;  // a glTF file; empty: the procedural scene
   std::optional<std::uint32_t> scene_index;
+  // --lights: local lights placed in the procedural scene (local_light_placement.h); given at all
+  // with --scene, even 0, is a usage error (render_run.cpp).
+  std::optional<std::uint32_t> lights;
   bool validation = false;
   bool no_coalesce = false;
   bool no_cull = false;

@@ -6,6 +6,7 @@
 #include "tilelight/app/camera_choice.h"
 #include "tilelight/app/failure.h"
 #include "tilelight/app/usage_error.h"
+#include "tilelight/scene/local_light_placement.h"
 
 #include <command_line/command_line.h>
 #include <CLI/CLI.hpp>
@@ -46,6 +47,15 @@ CLI::Option* add_choice(CLI::App& cli, const std::string& flag, T& value, const 
       ->default_str(name_of(names, value));
 }
 
+// --lights: the procedural scene's street lamps (a --scene file brings its own).
+void add_light_options(CLI::App& cli, Arguments& a) {
+  cli.add_option("--lights", a.lights,
+                 "local lights the procedural scene places along its streets, point, spot and box in turn "
+                 "(default 0); a --scene file is lit by its own KHR_lights_punctual lights")
+      ->type_name("N")
+      ->check(CLI::Range(0u, kMaxDemoLights));
+}
+
 void add_options(CLI::App& cli, Arguments& a) {
   cli.add_option("--width", a.width, "frame width in pixels")->capture_default_str();
   cli.add_option("--height", a.height, "frame height in pixels")->capture_default_str();
@@ -66,6 +76,7 @@ void add_options(CLI::App& cli, Arguments& a) {
                      "file's gltf:N, or --eye)");
   cli.add_option("--scene-index", a.scene_index, "which scene of the --scene file (default: the file's own choice)")
       ->needs(scene);
+  add_light_options(cli, a);
   cli.add_option("--frames", a.frames, "timed frames (after one warm-up frame); timings are medians over them")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -6,10 +6,13 @@
 #include "tilelight/app/output_files.h"
 #include "tilelight/app/process_stats.h"
 #include "tilelight/app/report.h"
+#include "tilelight/app/usage_error.h"
 #include "tilelight/gltf/load_gltf.h"
 #include "tilelight/picture/png.h"
 #include "tilelight/picture/tile_class_image.h"
 #include "tilelight/render/tile_renderer.h"
+#include "tilelight/scene/local_light_counts.h"
+#include "tilelight/scene/local_light_placement.h"
 #include "tilelight/scene/scene.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
@@ -39,10 +42,27 @@ RgbaImage display_encoded(const RgbaImage& linear) {
   return out;
 }
 
+// --lights places lights in the procedural scene; a --scene file has its own (or none).
+void refuse_lights_with_scene(const Arguments& a) {
+  if (!a.lights || a.scene.empty()) return;
+  throw UsageError("--lights",
+                   fmt::format("--lights {}: the procedural scene's lights, not --scene {}'s; the file's own "
+                               "lights (KHR_lights_punctual) are used",
+                               *a.lights, a.scene));
+}
+
+// The procedural scene with the --lights it asks for.
+GltfScene procedural_scene(const Arguments& a) {
+  GltfScene procedural{make_demo_scene(), {}};
+  add_demo_lights(procedural.scene, a.lights.value_or(0));
+  return procedural;
+}
+
 // The procedural scene, or the --scene file with its warnings. A bad file is an error about
 // the flag's value: "--scene FILE: what is wrong".
 GltfScene load_scene(const Arguments& a) {
-  if (a.scene.empty()) return {make_demo_scene(), {}};
+  refuse_lights_with_scene(a);
+  if (a.scene.empty()) return procedural_scene(a);
   try {
     return load_gltf(a.scene, GltfLoadOptions{a.scene_index});
   } catch (const Error& e) {
@@ -138,6 +158,7 @@ FrameReport make_report(const Arguments& a, const ChosenCamera& camera, const Co
                 a.light_pass};
   report.run.scene = scene.source;
   report.run.scene_triangles = scene.triangle_count();
+  report.run.local_lights = count_local_lights(scene.local_lights);
   report.run.camera_pose = camera.pose;
   count_tiles(report, frames.raw_ids);
   report.primitives_uncoalesced = timed.last.stats.primitives_uncoalesced;

@@ -139,6 +139,9 @@ std::string report_json(const FrameReport& r) {
   j["scene_triangles"] = r.run.scene_triangles;
   // The lines "warning: FILE: ..." printed on stderr; [] for the procedural scene.
   j["scene_warnings"] = r.run.scene_warnings;
+  // The scene's local lights by type: --lights N's, or a --scene file's KHR_lights_punctual ones.
+  j["local_lights"] = {
+      {"point", r.run.local_lights.point}, {"spot", r.run.local_lights.spot}, {"box", r.run.local_lights.box}};
   j["load_ms"] = std::round(r.load_ms * 100.0) / 100.0;
   // Mesh batches wholly outside a pass's clip volume, not drawn (--no-cull: 0, and "cull": false).
   j["cull"] = r.run.cull;

@@ -37,6 +37,11 @@ class BaseColourTextures {
   // tilelight::Error naming the material, texture, sampler or image at fault.
   std::optional<BaseColourTexture> of_material(int material);
 
+  // glTF texture `texture_index` as a scene texture, decoded on first use (a light's globe map).
+  // Throws tilelight::Error naming "`user`.index" when the texture does not exist, or the
+  // texture, sampler or image at fault.
+  std::uint32_t of_texture(int texture_index, const std::string& user) { return scene_texture(texture_index, user); }
+
   std::vector<Texture> take_textures() { return std::move(textures_); }
 
  private:

@@ -7,6 +7,8 @@
 #include "external_files.h"
 #include "glb_container.h"
 #include "gltf_cameras.h"
+#include "gltf_light_json.h"
+#include "gltf_lights.h"
 #include "gltf_material.h"
 #include "ignored_features.h"
 #include "json_schema.h"
@@ -79,11 +81,13 @@ std::string one_line(std::string text) {
   return text.empty() ? "tinygltf rejected the file without saying why" : text;
 }
 
-// The parsed file, the features of it that are not drawn (ignored_features.h) and its
-// compressed buffer views and primitives, not yet decoded (meshopt_views.h, draco_primitives.h).
+// The parsed file, the features of it that are not drawn (ignored_features.h), its lights
+// (gltf_light_json.h) and its compressed buffer views and primitives, not yet decoded
+// (meshopt_views.h, draco_primitives.h).
 struct Parsed {
   tinygltf::Model model;
   std::vector<std::string> ignored;
+  FileLights lights;
   std::vector<MeshoptView> meshopt;
   std::vector<DracoPrimitive> draco;
 };
@@ -96,6 +100,7 @@ std::string check_json(std::string_view json, const std::filesystem::path& base_
   nlohmann::json root = check_json_schema(json);
   check_external_buffers(root, base_dir);
   parsed.ignored = ignored_features(root);
+  parsed.lights = read_file_lights(root);
   parsed.meshopt = meshopt_views(root);
   parsed.draco = draco_primitives(root);
   const bool fallbacks = empty_fallback_buffers(root);
@@ -176,7 +181,9 @@ void apply_material(Mesh& mesh, const MaterialLook& look, const std::optional<Ba
   }
 }
 
-Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
+// The scene, and the warnings its lights give (gltf_lights.h).
+GltfScene build_scene(const Parsed& parsed, const std::filesystem::path& base_dir, const GltfLoadOptions& options) {
+  const tinygltf::Model& model = parsed.model;
   const std::size_t scene_index = chosen_scene(model, options);
   const std::vector<PlacedMesh> placed = place_meshes(model, scene_index);
 
@@ -228,10 +235,12 @@ Scene build_scene(const tinygltf::Model& model, const std::filesystem::path& bas
     scene.instances.insert(scene.instances.end(), instances_of_mesh[m].begin(), instances_of_mesh[m].end());
     scene.batches.push_back({m, first, static_cast<std::uint32_t>(instances_of_mesh[m].size())});
   }
-  scene.textures = textures.take_textures();
   fit_scene(scene, scene_bounds(scene));
   add_file_cameras(model, scene);
-  return scene;
+  // After the framing, which the lights follow; before the textures go, as globe maps add some.
+  std::vector<std::string> light_warnings = add_file_lights(model, scene_index, parsed.lights, textures, scene);
+  scene.textures = textures.take_textures();
+  return GltfScene{std::move(scene), std::move(light_warnings)};
 }
 
 GltfScene load(std::span<const std::uint8_t> bytes, const std::string& name, const std::string& source,
@@ -242,12 +251,14 @@ GltfScene load(std::span<const std::uint8_t> bytes, const std::string& name, con
       throw Error(fmt::format("{} bytes, more than this loader reads ({})", bytes.size(), kMaxFileBytes));
     }
     const Parsed parsed = parse(bytes, base_dir);
-    GltfScene loaded{build_scene(parsed.model, base_dir, options), {}};
+    GltfScene built = build_scene(parsed, base_dir, options);
+    GltfScene loaded{std::move(built.scene), {}};
     loaded.scene.source = source;
     for (const std::string& line : parsed.ignored) loaded.warnings.push_back("warning: " + name + ": " + line);
     for (const std::string& line : material_warnings(parsed.model)) {
       loaded.warnings.push_back("warning: " + name + ": " + line);
     }
+    for (const std::string& line : built.warnings) loaded.warnings.push_back("warning: " + name + ": " + line);
     return loaded;
   } catch (const Error& e) {
     throw Error(name + ": " + e.what());

@@ -3,6 +3,7 @@
 
 #include "tilelight/app/frame_ratios.h"
 #include "tilelight/render/tile_renderer.h"
+#include "tilelight/scene/local_light.h"
 
 #include <array>
 #include <cstdint>
@@ -36,7 +37,8 @@ struct RunDescription {
   CameraPose camera_pose;
   // What the --scene file holds that is not drawn, as printed on stderr (load_gltf.h's GltfScene::warnings).
   std::vector<std::string> scene_warnings;
-  bool cull = true;  // RendererOptions::cull_batches (--no-cull: false)
+  LocalLightCounts local_lights;  // the scene's point, spot and box lights (--lights, or the file's)
+  bool cull = true;               // RendererOptions::cull_batches (--no-cull: false)
 };
 
 // Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).

@@ -9,9 +9,11 @@
 // views, a truncated .glb, non-finite positions, a node graph that is not a set of trees, no
 // triangles at all) throws tilelight::Error whose message starts with the file's name and says
 // what is wrong and where ("Box.gltf: accessors[2]: ..."). No partial scene is ever returned.
-// What the file holds that the renderer ignores (animations, lights, material extensions...)
-// is no error: load_gltf() returns one warning line per feature beside the scene.
-// docs/scene-input.md has the details: what is loaded, what is ignored, the scale.
+// What the file holds that the renderer ignores (animations, material extensions...) is no
+// error: load_gltf() returns one warning line per feature beside the scene. Its
+// KHR_lights_punctual lights become Scene::local_lights and the sun (one more warning line while
+// the local light passes are not built).
+// docs/scene-input.md has the details: what is loaded, what is ignored, the scale, the lights.
 
 #include "tilelight/scene/scene.h"
 
