@@ -8,14 +8,16 @@
 #include "scenes/hall_scene.h"
 
 #include "tilelight/base/atomic_write.h"
-#include "tilelight/base/error.h"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <exception>
 #include <iostream>
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   using namespace tilelight;
   CLI::App app{
       "tilelight_make_hall: writes a generated stone hall (columns, arches, walls with windows, a\n"
@@ -38,17 +40,23 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  const bench::HallScene hall = bench::make_hall(options);
+  const std::vector<std::uint8_t> glb = bench::encode_hall_glb(hall);
+  write_file_atomically(out, glb);
+  const auto v = [](glm::vec3 p) { return fmt::format("{:g},{:g},{:g}", p.x, p.y, p.z); };
+  std::cout << fmt::format("{}: {} triangles in {} meshes, {:.1f} MB\n", out, hall.triangle_count(), hall.meshes.size(),
+                           static_cast<double>(glb.size()) / 1e6)
+            << fmt::format("a view from inside: --eye {} --target {}\n", v(hall.suggested_eye),
+                           v(hall.suggested_target));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
   try {
-    const bench::HallScene hall = bench::make_hall(options);
-    const std::vector<std::uint8_t> glb = bench::encode_hall_glb(hall);
-    write_file_atomically(out, glb);
-    const auto v = [](glm::vec3 p) { return fmt::format("{:g},{:g},{:g}", p.x, p.y, p.z); };
-    std::cout << fmt::format("{}: {} triangles in {} meshes, {:.1f} MB\n", out, hall.triangle_count(),
-                             hall.meshes.size(), static_cast<double>(glb.size()) / 1e6)
-              << fmt::format("a view from inside: --eye {} --target {}\n", v(hall.suggested_eye),
-                             v(hall.suggested_target));
-    return 0;
-  } catch (const Error& e) {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
     std::cerr << "tilelight_make_hall: error: " << e.what() << '\n';
     return 1;
   }

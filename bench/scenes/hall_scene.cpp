@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 
 namespace tilelight::bench {
 namespace {
@@ -88,6 +89,11 @@ class MeshBuilder {
   HallMesh& mesh_;
 };
 
+HallMesh& add_mesh(HallScene& hall, HallMesh mesh) {
+  hall.meshes.push_back(std::move(mesh));
+  return hall.meshes.back();
+}
+
 // Column radius at height y and angle theta: plinth, torus, tapering fluted shaft, flared capital.
 float column_radius(float y, float theta) {
   if (y < 0.5f) return 0.85f;
@@ -159,20 +165,20 @@ void bay(const HallOptions& options, std::uint32_t k, float z0, HallScene& hall)
     hall.meshes.push_back(
         column(options, {side * kColumnX, 0.0f, zc}, tag + (side < 0 ? " column west" : " column east")));
 
-  HallMesh& floor = hall.meshes.emplace_back(HallMesh{tag + " floor", floor_tiles, {}, {}, {}});
+  HallMesh& floor = add_mesh(hall, HallMesh{tag + " floor", floor_tiles, {}, {}, {}});
   MeshBuilder(floor).box({-kHalfWidth, -0.3f, z0}, {kHalfWidth, 0.0f, z1});
 
-  HallMesh& walls = hall.meshes.emplace_back(HallMesh{tag + " walls", plaster, {}, {}, {}});
+  HallMesh& walls = add_mesh(hall, HallMesh{tag + " walls", plaster, {}, {}, {}});
   MeshBuilder wall_builder(walls);
   for (float side : {-1.0f, 1.0f}) side_wall(wall_builder, side, z0, z1);
 
-  HallMesh& roof = hall.meshes.emplace_back(HallMesh{tag + " ceiling", ceiling, {}, {}, {}});
+  HallMesh& roof = add_mesh(hall, HallMesh{tag + " ceiling", ceiling, {}, {}, {}});
   MeshBuilder roof_builder(roof);
   roof_builder.box({-kHalfWidth, kCeiling, z0}, {-kSkylightHalfWidth, kCeiling + 0.5f, z1});
   roof_builder.box({kSkylightHalfWidth, kCeiling, z0}, {kHalfWidth, kCeiling + 0.5f, z1});
   roof_builder.box({-kSkylightHalfWidth, kCeiling - 0.4f, z0}, {kSkylightHalfWidth, kCeiling + 0.5f, z0 + 0.4f});
 
-  HallMesh& benches = hall.meshes.emplace_back(HallMesh{tag + " benches", wood, {}, {}, {}});
+  HallMesh& benches = add_mesh(hall, HallMesh{tag + " benches", wood, {}, {}, {}});
   MeshBuilder bench_builder(benches);
   for (float side : {-1.0f, 1.0f}) {
     const float xa = side * 1.0f, xb = side * 4.5f;
@@ -183,7 +189,7 @@ void bay(const HallOptions& options, std::uint32_t k, float z0, HallScene& hall)
   }
 
   if (k + 1 < options.bays) {  // the arches to the next bay's columns
-    HallMesh& arches = hall.meshes.emplace_back(HallMesh{tag + " arches", stone, {}, {}, {}});
+    HallMesh& arches = add_mesh(hall, HallMesh{tag + " arches", stone, {}, {}, {}});
     MeshBuilder arch_builder(arches);
     for (float side : {-1.0f, 1.0f}) arch(arch_builder, side * kColumnX, zc);
   }
@@ -208,7 +214,7 @@ HallScene make_hall(const HallOptions& options) {
   const float start = -0.5f * length;
   for (std::uint32_t k = 0; k < options.bays; ++k) bay(options, k, start + kBayLength * static_cast<float>(k), hall);
   for (float z : {start - 0.4f, -start}) {  // the end walls close the hall
-    HallMesh& end = hall.meshes.emplace_back(HallMesh{z < 0 ? "south wall" : "north wall", plaster, {}, {}, {}});
+    HallMesh& end = add_mesh(hall, HallMesh{z < 0 ? "south wall" : "north wall", plaster, {}, {}, {}});
     MeshBuilder(end).box({-kHalfWidth, 0.0f, z}, {kHalfWidth, kCeiling + 0.5f, z + 0.4f});
   }
   hall.suggested_eye = {1.5f, 1.7f, start + length / 3.0f};
