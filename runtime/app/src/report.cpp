@@ -21,7 +21,7 @@ namespace {
 double round3(double value) { return std::round(value * 1000.0) / 1000.0; }
 
 // Every timed stage and whole frame, by its report.json name, in the report's order.
-constexpr std::array<std::pair<const char*, double FrameTimings::*>, 13> kStages{{
+constexpr std::array<std::pair<const char*, double FrameTimings::*>, 14> kStages{{
     {"gbuffer", &FrameTimings::gbuffer},
     {"gbuffer_plain", &FrameTimings::gbuffer_plain},
     {"shadow_map", &FrameTimings::shadow_map},
@@ -32,6 +32,7 @@ constexpr std::array<std::pair<const char*, double FrameTimings::*>, 13> kStages
     {"naive_light", &FrameTimings::naive_light},
     {"dynamic_light", &FrameTimings::dynamic_light},
     {"floor_light", &FrameTimings::floor_light},
+    {"local_lights", &FrameTimings::local_lights},
     {"frame_classified", &FrameTimings::frame_classified},
     {"frame_naive", &FrameTimings::frame_naive},
     {"frame_dynamic", &FrameTimings::frame_dynamic},

@@ -171,12 +171,17 @@ VkPipelineDepthStencilStateCreateInfo depth_state(const GraphicsPipelineDesc& de
   return depth;
 }
 
-// Every colour attachment written whole, without blending.
-std::vector<VkPipelineColorBlendAttachmentState> opaque_attachments(std::uint32_t count) {
+// Every colour attachment written whole: replaced, or with `additive` added to (ONE, ONE).
+std::vector<VkPipelineColorBlendAttachmentState> blend_attachments(std::uint32_t count, bool additive) {
   std::vector<VkPipelineColorBlendAttachmentState> blend(count);
   for (VkPipelineColorBlendAttachmentState& b : blend) {
     b.colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    if (!additive) continue;
+    b.blendEnable = VK_TRUE;
+    b.srcColorBlendFactor = b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    b.srcAlphaBlendFactor = b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
   }
   return blend;
 }
@@ -200,7 +205,8 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = desc.samples;
   const VkPipelineDepthStencilStateCreateInfo depth = depth_state(desc);
-  const std::vector<VkPipelineColorBlendAttachmentState> blend = opaque_attachments(desc.color_attachments);
+  const std::vector<VkPipelineColorBlendAttachmentState> blend =
+      blend_attachments(desc.color_attachments, desc.additive_blend);
   VkPipelineColorBlendStateCreateInfo color_blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   color_blend.attachmentCount = desc.color_attachments;
   color_blend.pAttachments = blend.data();

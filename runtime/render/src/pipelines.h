@@ -68,6 +68,9 @@ struct GraphicsPipelineDesc {
   // projection of camera_matrices()); back: single-sided meshes.
   VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  // Colour written as ONE * source + ONE * destination (the local lights add into the light
+  // target); otherwise replaced.
+  bool additive_blend = false;
   std::string name;
 };
 

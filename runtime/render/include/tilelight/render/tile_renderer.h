@@ -110,7 +110,12 @@ struct FrameTimings {  // milliseconds
   double tiled_light = 0, naive_light = 0;
   double dynamic_light = 0;  // the per-pixel-branching pass; 0 when it did not run (RendererOptions::baselines)
   double floor_light = 0;    // the floor pass; 0 when it did not run
-  // Whole frames: shadow map + G-buffer + [classification + index build] + light pass. The
+  // The local lights added into the classified light target after its global pass (each
+  // baseline adds them into its own target too, and its frame below includes that); 0 without
+  // local lights.
+  double local_lights = 0;
+  // Whole frames: shadow map + G-buffer + [classification + index build] + light pass + local
+  // lights. The
   // classified frame is end to end (first to last GPU timestamp), so the CPU path's wait for the
   // host's index build is in it; a baseline frame is the sum of its passes. 0 where it did not run.
   double frame_classified = 0, frame_naive = 0, frame_dynamic = 0;
