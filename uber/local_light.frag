@@ -2,7 +2,7 @@
 // local_light.frag -- one local light added into the light target (Tabula Rasa, §19.7): the
 // deferred local-light uber-shader of permutations/local_lights.json. The runtime draws each
 // light with its own permutation, over the whole frame (the full-screen reference) or over its
-// volume mesh, blended ONE + ONE after the global pass. The shading is local_light.glsl's; this
+// volume mesh (local_light_volume.vert), blended ONE + ONE after the global pass. The shading is local_light.glsl's; this
 // file reads the G-buffer as the global pass does (gbuffer.glsl, set 0 of lighting_params.glsl)
 // and says which light, from what.
 //
@@ -23,6 +23,7 @@
 
 #include "gbuffer.glsl"
 #include "local_light.glsl"
+#include "local_light_draw.glsl"
 #include "sample_mean.glsl"
 #include "world_position.glsl"
 
@@ -33,20 +34,10 @@
 #error "BACK_COLOUR is a box light's: such a permutation is impossible"
 #endif
 
-// Every light of the frame (the runtime's LocalLightBlock array, std430).
-layout(set = 1, binding = 0, std430) readonly buffer LocalLights {
-    LocalLightData lights[];
-} local_lights;
-
 #ifdef GLOBE
 // The light's globe map: a scene texture, in the set layout of the material textures.
 layout(set = 2, binding = 0) uniform sampler2D globe_map;
 #endif
-
-// Which light this draw adds.
-layout(push_constant) uniform LocalLightDraw {
-    uint light_index;
-} draw;
 
 // Whether the bound G-buffer has coverage flags (the classified path's): the runtime sets it as
 // it does for the tile pass; the baselines' plain G-buffer is compared sample by sample instead.

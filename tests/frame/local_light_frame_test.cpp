@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace tilelight::test {
@@ -212,6 +213,62 @@ INSTANTIATE_TEST_SUITE_P(Passes, LocalLightsEquivalence, ::testing::Values(Light
                          [](const ::testing::TestParamInfo<LightPass>& info) {
                            return std::string(to_string(info.param));
                          });
+
+// ---------------------------------------------------------------------------------------------
+// The volume pass (the default) against the full-screen reference: the same final light
+// targets, bit for bit, for every light, at 4x and 1x.
+
+struct VolumeCase {
+  const char* name;
+  LightCase light;
+  std::optional<Camera> camera;  // empty: the default camera
+};
+
+void PrintTo(const VolumeCase& c, std::ostream* os) { *os << c.name; }
+
+// The default camera with its far plane at 18 m: the point light 16 m ahead reaches 24 m, so its
+// volume crosses the far plane (depth clamp, or no depth test for it).
+Camera short_sighted_camera() {
+  Camera camera = make_demo_scene().camera("default");
+  camera.far_plane = 18.0f;
+  return camera;
+}
+
+std::vector<VolumeCase> volume_cases() {
+  std::vector<VolumeCase> cases;
+  for (const LightCase& c : kLightCases) cases.push_back({c.name, c, std::nullopt});
+  cases.push_back({"point_beyond_far_plane", {"point", point_light({0.0f, 2.0f, 6.0f}, 8.0f)}, short_sighted_camera()});
+  return cases;
+}
+
+using VolumeFrameCase = std::tuple<VolumeCase, std::uint32_t>;  // case, MSAA
+
+class LocalLightVolumes : public VulkanTest, public ::testing::WithParamInterface<VolumeFrameCase> {};
+
+TEST_P(LocalLightVolumes, EqualTheFullScreenReferencePerPixel) {
+  const auto& [c, msaa] = GetParam();
+  const Scene scene = scene_with(c.light);
+  RendererOptions options = small_options(msaa);
+  options.camera_pose = c.camera;
+  options.local_light_pass = LocalLightPass::fullscreen;
+  TileRenderer reference(context(), scene, options);
+  reference.render_frame();
+  options.local_light_pass = LocalLightPass::volumes;
+  TileRenderer volumes(context(), scene, options);
+  render_equivalent_frame(volumes);
+  const FrameComparison classified = compare(volumes.read_classified(), reference.read_classified(), 0.0);
+  EXPECT_EQ(classified.pixels_over_tolerance, 0u) << classified.first_difference;
+  const FrameComparison naive = compare(volumes.read_naive(), reference.read_naive(), 0.0);
+  EXPECT_EQ(naive.pixels_over_tolerance, 0u) << naive.first_difference;
+}
+
+std::string volume_case_name(const ::testing::TestParamInfo<VolumeFrameCase>& info) {
+  return std::string(std::get<0>(info.param).name) + "_msaa" + std::to_string(std::get<1>(info.param));
+}
+
+INSTANTIATE_TEST_SUITE_P(Lights, LocalLightVolumes,
+                         ::testing::Combine(::testing::ValuesIn(volume_cases()), ::testing::Values(4u, 1u)),
+                         volume_case_name);
 
 }  // namespace
 }  // namespace tilelight::test

@@ -24,6 +24,12 @@ const uint LOCAL_LIGHT_TYPE_POINT = 0u;
 const uint LOCAL_LIGHT_TYPE_SPOT = 1u;
 const uint LOCAL_LIGHT_TYPE_BOX = 2u;
 
+// The mesh that encloses a light's nonzero region (the runtime picks it: a spot too wide for a
+// cone gets the sphere).
+const uint LOCAL_LIGHT_VOLUME_SPHERE = 0u;
+const uint LOCAL_LIGHT_VOLUME_CONE = 1u;
+const uint LOCAL_LIGHT_VOLUME_BOX = 2u;
+
 // The inverse-square term's floor (1 cm squared): a surface at the light's origin stays finite.
 const float LOCAL_LIGHT_MIN_DISTANCE_SQUARED = 1e-4;
 // The specular lobe's guards, as the sun's (sun_lighting.glsl): half floats cap the power.
@@ -38,7 +44,7 @@ struct LocalLightData {
     vec4 frame_x;               // xyz the frame's x axis (spot, box); w tan(outer cone angle)
     vec4 frame_y;               // xyz the frame's y axis; w unused
     vec4 box_half_extent;       // xyz half sizes along x, y, z; w unused
-    uvec4 kind;                 // x LOCAL_LIGHT_TYPE_*; yzw unused
+    uvec4 kind;                 // x LOCAL_LIGHT_TYPE_*; y LOCAL_LIGHT_VOLUME_*; zw unused
 };
 
 // Where the light comes from at a surface point, and how much of it arrives.
@@ -148,6 +154,26 @@ vec3 local_light_surface_radiance(LocalLightData light, bool back_colour, vec3 t
         return light.back_radiance_falloff.rgb * tint * albedo * (incidence.attenuation * -n_dot_l);
     }
     return vec3(0.0);
+}
+
+// A vertex of the light's volume in world space, from a vertex of its unit mesh (the runtime's
+// local_light_volumes.cpp, each already enlarged to enclose its shape with a margin): the sphere
+// (radius 1) scaled by the range; the cone (apex at the origin, axis +z, height 1, radius 1 at
+// z = 1) by the range along the axis and range * tan(outer) across it; the box (-1..1) by its
+// half extents; the last two in the light's frame.
+vec3 local_light_volume_position(LocalLightData light, vec3 unit)
+{
+    vec3 x = light.frame_x.xyz, y = light.frame_y.xyz, z = light.direction_inner.xyz;
+    float range = light.position_range.w;
+    if (light.kind.y == LOCAL_LIGHT_VOLUME_BOX) {
+        vec3 q = unit * light.box_half_extent.xyz;
+        return light.position_range.xyz + q.x * x + q.y * y + q.z * z;
+    }
+    if (light.kind.y == LOCAL_LIGHT_VOLUME_CONE) {
+        float radius = range * light.frame_x.w;
+        return light.position_range.xyz + (unit.x * radius) * x + (unit.y * radius) * y + (unit.z * range) * z;
+    }
+    return light.position_range.xyz + unit * range;
 }
 
 #endif // UBER_LOCAL_LIGHT_GLSL

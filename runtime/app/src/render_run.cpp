@@ -58,6 +58,7 @@ RendererOptions renderer_options(const Arguments& a, const ChosenCamera& camera)
   options.tile_size = a.tile_size;
   options.path = a.path;
   options.light_pass = a.light_pass;
+  options.local_light_pass = a.local_light_pass;
   options.raw_permutations = a.raw_permutations;
   options.coalesce = !a.no_coalesce;
   options.cull_batches = !a.no_cull;

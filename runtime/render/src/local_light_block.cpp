@@ -1,5 +1,7 @@
 #include "local_light_block.h"
 
+#include "local_light_volumes.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -27,7 +29,7 @@ LocalLightBlock make_local_light_block(const LocalLight& light) {
   block.frame_x = glm::vec4(x, std::tan(outer));
   block.frame_y = glm::vec4(y, 0.0f);
   block.box_half_extent = glm::vec4(light.box_half_extent, 0.0f);
-  block.kind = glm::uvec4(static_cast<std::uint32_t>(light.type), 0u, 0u, 0u);
+  block.kind = glm::uvec4(static_cast<std::uint32_t>(light.type), static_cast<std::uint32_t>(volume_of(light)), 0u, 0u);
   return block;
 }
 

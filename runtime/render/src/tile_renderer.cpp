@@ -191,8 +191,9 @@ struct TileRenderer::Impl {
     classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());
     if (runs_floor()) floor_target = std::make_unique<FloorTarget>(ctx, *targets);
     light_pass = create_light_pass();
-    local_lights = std::make_unique<LocalLightPasses>(ctx, scene, *targets, lighting->params(),
-                                                      scene_passes->textures(), descriptor_pool.get());
+    local_lights =
+        std::make_unique<LocalLightPasses>(ctx, scene, *targets, lighting->params(), scene_passes->textures(),
+                                           descriptor_pool.get(), opts.local_light_pass);
 
     frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
     tile_queries = TimestampQueries(ctx, "tile pass timestamps", kTileTimestamps);
@@ -246,7 +247,7 @@ struct TileRenderer::Impl {
   // The local lights into one light target, then their stamp; nothing at all without lights.
   void record_local_lights(VkCommandBuffer cmd, LocalLightTarget target, bool tagged_gbuffer, std::string_view stamp) {
     if (!has_local_lights()) return;
-    local_lights->record_full_screen(cmd, *targets, target, tagged_gbuffer);
+    local_lights->record(cmd, *targets, target, tagged_gbuffer);
     tile_queries.write(cmd, std::string(stamp));
   }
 
