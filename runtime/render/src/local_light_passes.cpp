@@ -118,19 +118,6 @@ VkImageView set0_view(const RenderTargets& targets, std::uint32_t binding) {
               ", which lighting_params.glsl does not declare for this G-buffer");
 }
 
-// Whether any point of the light's volume may lie beyond the far plane (clip z > w): the
-// corners of a box around it, with room for the mesh's margin. Conservative.
-bool may_cross_far_plane(const LocalLight& light, const glm::mat4& view_proj) {
-  const float reach = 1.1f * (light.type == LocalLightType::box ? glm::length(light.box_half_extent) : light.range);
-  for (std::uint32_t i = 0; i < 8; ++i) {
-    const glm::vec3 corner =
-        light.position + reach * glm::vec3((i & 1u) ? 1.0f : -1.0f, (i & 2u) ? 1.0f : -1.0f, (i & 4u) ? 1.0f : -1.0f);
-    const glm::vec4 clip = view_proj * glm::vec4(corner, 1.0f);
-    if (clip.z > clip.w) return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 LocalLightPasses::LocalLightPasses(const Context& context, const Scene& scene, const RenderTargets& targets,

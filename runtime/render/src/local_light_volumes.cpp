@@ -93,6 +93,17 @@ LightVolume volume_of(const LocalLight& light) {
   return LightVolume::sphere;
 }
 
+bool may_cross_far_plane(const LocalLight& light, const glm::mat4& view_proj) {
+  const float reach = 1.1f * (light.type == LocalLightType::box ? glm::length(light.box_half_extent) : light.range);
+  for (std::uint32_t i = 0; i < 8; ++i) {
+    const glm::vec3 corner =
+        light.position + reach * glm::vec3((i & 1u) ? 1.0f : -1.0f, (i & 2u) ? 1.0f : -1.0f, (i & 4u) ? 1.0f : -1.0f);
+    const glm::vec4 clip = view_proj * glm::vec4(corner, 1.0f);
+    if (clip.z > clip.w) return true;
+  }
+  return false;
+}
+
 VolumeMeshes make_volume_meshes() {
   VolumeMeshes m;
   auto add = [&m](LightVolume volume, void (*build)(VolumeMeshes&)) {

@@ -41,4 +41,10 @@ struct VolumeMeshes {
 
 VolumeMeshes make_volume_meshes();
 
+// Whether any point of the light's volume may lie beyond the far plane of `view_proj` (world ->
+// Vulkan clip space): some corner of a box around the volume, with room for the mesh's margin,
+// has clip z > w. Conservative; the volume pass draws such a light without the depth test where
+// the device cannot clamp depth.
+bool may_cross_far_plane(const LocalLight& light, const glm::mat4& view_proj);
+
 }  // namespace tilelight
