@@ -22,6 +22,7 @@ TEST(LocalLightCli, BothPassesRunAndTheReportHasTheirTiming) {
     ASSERT_EQ(r.exit_code, 0) << pass << ": " << r.err;
     std::ifstream file(out / "report.json");
     const nlohmann::json report = nlohmann::json::parse(file);
+    EXPECT_EQ(report["local_light_pass"], pass);
     // The procedural scene has no local lights (yet): the pass records nothing and costs 0.
     ASSERT_TRUE(report["timings_ms"].contains("local_lights")) << pass;
     EXPECT_EQ(report["timings_ms"]["local_lights"].get<double>(), 0.0) << pass;

@@ -137,6 +137,7 @@ FrameReport make_report(const Arguments& a, const ChosenCamera& camera, const Co
                                                             : std::string(to_string(renderer.tile_primitive())),
                 a.baseline,
                 a.light_pass};
+  report.run.local_light_pass = a.local_light_pass;
   report.run.scene = scene.source;
   report.run.scene_triangles = scene.triangle_count();
   report.run.camera_pose = camera.pose;

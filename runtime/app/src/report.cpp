@@ -148,6 +148,7 @@ std::string report_json(const FrameReport& r) {
   j["primitive"] = r.run.primitive;
   j["baselines"] = name_of(baseline_names(), r.run.baselines);
   j["light_pass"] = name_of(light_pass_names(), r.run.light_pass);
+  j["local_light_pass"] = name_of(local_light_pass_names(), r.run.local_light_pass);
   j["frames"] = r.run.frames;
   j["lavapipe_threads"] =
       r.run.lavapipe_threads.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.run.lavapipe_threads);

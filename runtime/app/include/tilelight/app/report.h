@@ -36,7 +36,8 @@ struct RunDescription {
   CameraPose camera_pose;
   // What the --scene file holds that is not drawn, as printed on stderr (load_gltf.h's GltfScene::warnings).
   std::vector<std::string> scene_warnings;
-  bool cull = true;  // RendererOptions::cull_batches (--no-cull: false)
+  bool cull = true;                                           // RendererOptions::cull_batches (--no-cull: false)
+  LocalLightPass local_light_pass = LocalLightPass::volumes;  // --local-light-pass
 };
 
 // Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).
