@@ -32,6 +32,7 @@
 #define UBER_LIGHT_PASS_GLSL
 
 #include "gbuffer.glsl"
+#include "sample_mean.glsl"
 #include "light_scattering.glsl"
 #include "shadow_fade.glsl"
 #include "sun_lighting.glsl"
@@ -103,17 +104,6 @@ vec3 shade_sample(ivec2 pixel, int sample_index)
 // Whether the bound G-buffer is the classified path's, with coverage flags (RT4): the tile passes
 // set it (specialization constant 2); the baselines run on the plain G-buffer, which has none.
 layout(constant_id = 2) const bool TAGGED_GBUFFER = false;
-
-// One step of the running mean of a pixel's samples: `mean` of samples 0 .. s - 1, and sample
-// s's colour. A component equal to the mean so far is kept as it is (a select, no arithmetic),
-// so a pixel whose samples all shade alike averages to exactly its sample-0 colour for any
-// sample count, Inf included; a plain sum would not (v + v + v rounds, Inf - Inf is NaN). That
-// is what lets a pixel whose samples are equal shade sample 0 alone. Every pass that averages
-// samples goes through here, in sample order, so they round alike.
-vec3 add_sample_to_mean(vec3 mean, vec3 colour, int s)
-{
-    return mix(mean + (colour - mean) / float(s + 1), mean, equal(colour, mean));
-}
 
 // The average of every sample, given sample 0's colour. (With one sample per pixel there is
 // nothing to add: the loop runs no pass.)

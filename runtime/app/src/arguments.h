@@ -23,6 +23,7 @@ struct Arguments {
   std::string primitive = "auto";
   Baselines baseline = RendererOptions{}.baselines;
   LightPass light_pass = RendererOptions{}.light_pass;
+  LocalLightPass local_light_pass = RendererOptions{}.local_light_pass;
   std::string device = "auto";
   std::string out = "tilelight-out";
   std::string scene;  // a glTF file; empty: the procedural scene

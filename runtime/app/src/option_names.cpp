@@ -35,4 +35,10 @@ const OptionNames<LightPass>& light_pass_names() {
   return names;
 }
 
+const OptionNames<LocalLightPass>& local_light_pass_names() {
+  static const OptionNames<LocalLightPass> names{{to_string(LocalLightPass::volumes), LocalLightPass::volumes},
+                                                 {to_string(LocalLightPass::fullscreen), LocalLightPass::fullscreen}};
+  return names;
+}
+
 }  // namespace tilelight::app

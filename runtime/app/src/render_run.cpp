@@ -78,6 +78,7 @@ RendererOptions renderer_options(const Arguments& a, const ChosenCamera& camera)
   options.tile_size = a.tile_size;
   options.path = a.path;
   options.light_pass = a.light_pass;
+  options.local_light_pass = a.local_light_pass;
   options.raw_permutations = a.raw_permutations;
   options.coalesce = !a.no_coalesce;
   options.cull_batches = !a.no_cull;
@@ -156,6 +157,7 @@ FrameReport make_report(const Arguments& a, const ChosenCamera& camera, const Co
                                                             : std::string(to_string(renderer.tile_primitive())),
                 a.baseline,
                 a.light_pass};
+  report.run.local_light_pass = a.local_light_pass;
   report.run.scene = scene.source;
   report.run.scene_triangles = scene.triangle_count();
   report.run.local_lights = count_local_lights(scene.local_lights);

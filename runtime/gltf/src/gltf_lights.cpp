@@ -146,12 +146,6 @@ std::vector<std::string> add_file_lights(const tinygltf::Model& model, std::size
     if (source.kind == FileLightKind::directional) continue;
     scene.local_lights.push_back(local_light(source, at, scene, textures));
   }
-  if (!scene.local_lights.empty()) {
-    // Until the local light passes land (issue 38); the line goes with them.
-    warnings.push_back(
-        fmt::format("{} KHR_lights_punctual lights loaded but not drawn: the local light passes are not built yet",
-                    scene.local_lights.size()));
-  }
   return warnings;
 }
 

@@ -153,6 +153,7 @@ VkPipelineVertexInputStateCreateInfo vertex_input_state(const GraphicsPipelineDe
 // depth bias.
 VkPipelineRasterizationStateCreateInfo rasterization_state(const GraphicsPipelineDesc& desc) {
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.depthClampEnable = desc.depth_clamp ? VK_TRUE : VK_FALSE;
   raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.cullMode = desc.cull_mode;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
@@ -168,15 +169,26 @@ VkPipelineDepthStencilStateCreateInfo depth_state(const GraphicsPipelineDesc& de
   depth.depthTestEnable = desc.depth_test ? VK_TRUE : VK_FALSE;
   depth.depthWriteEnable = desc.depth_write ? VK_TRUE : VK_FALSE;
   depth.depthCompareOp = desc.depth_compare;
+  if (desc.stencil) {
+    depth.stencilTestEnable = VK_TRUE;
+    depth.front = depth.back = *desc.stencil;
+  }
   return depth;
 }
 
-// Every colour attachment written whole, without blending.
-std::vector<VkPipelineColorBlendAttachmentState> opaque_attachments(std::uint32_t count) {
+// Every colour attachment written whole: replaced, or with `additive` added to (ONE, ONE); with
+// `write` false, not at all.
+std::vector<VkPipelineColorBlendAttachmentState> blend_attachments(std::uint32_t count, bool additive, bool write) {
   std::vector<VkPipelineColorBlendAttachmentState> blend(count);
   for (VkPipelineColorBlendAttachmentState& b : blend) {
+    if (!write) continue;  // no write mask: the attachment keeps its contents
     b.colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    if (!additive) continue;
+    b.blendEnable = VK_TRUE;
+    b.srcColorBlendFactor = b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    b.srcAlphaBlendFactor = b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
   }
   return blend;
 }
@@ -200,7 +212,8 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = desc.samples;
   const VkPipelineDepthStencilStateCreateInfo depth = depth_state(desc);
-  const std::vector<VkPipelineColorBlendAttachmentState> blend = opaque_attachments(desc.color_attachments);
+  const std::vector<VkPipelineColorBlendAttachmentState> blend =
+      blend_attachments(desc.color_attachments, desc.additive_blend, desc.color_write);
   VkPipelineColorBlendStateCreateInfo color_blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   color_blend.attachmentCount = desc.color_attachments;
   color_blend.pAttachments = blend.data();

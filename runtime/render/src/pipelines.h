@@ -68,6 +68,16 @@ struct GraphicsPipelineDesc {
   // projection of camera_matrices()); back: single-sided meshes.
   VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  // Stencil test and writes, the same for front and back faces; none: no stencil test.
+  std::optional<VkStencilOpState> stencil;
+  // Fragment depth clamped to the viewport's range instead of primitives clipped at the near and
+  // far planes (the device's depthClamp feature: the caller checks it).
+  bool depth_clamp = false;
+  // false: the colour attachments are left as they are (a pass that writes depth and stencil only).
+  bool color_write = true;
+  // Colour written as ONE * source + ONE * destination (the local lights add into the light
+  // target); otherwise replaced.
+  bool additive_blend = false;
   std::string name;
 };
 

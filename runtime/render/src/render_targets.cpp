@@ -87,6 +87,30 @@ UniqueFramebuffer create_framebuffer(const Context& context, VkRenderPass pass, 
   return owned;
 }
 
+// The G-buffer's depth-stencil format: kGBufferDepthFormat where the device can render it
+// multisampled and sample it, else the fallback (Image then says what the device lacks).
+VkFormat choose_gbuffer_depth_format(const Context& context) {
+  VkFormatProperties properties{};
+  vkGetPhysicalDeviceFormatProperties(context.physical_device(), kGBufferDepthFormat, &properties);
+  constexpr VkFormatFeatureFlags kNeeded =
+      VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+  return (properties.optimalTilingFeatures & kNeeded) == kNeeded ? kGBufferDepthFormat : kGBufferDepthFallbackFormat;
+}
+
+// A view of the stencil aspect alone: sampled as an unsigned integer texture.
+UniqueImageView create_stencil_view(const Context& context, const Image& image) {
+  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  info.image = image.handle();
+  info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  info.format = image.format();
+  info.subresourceRange = {VK_IMAGE_ASPECT_STENCIL_BIT, 0, 1, 0, 1};
+  VkImageView view = VK_NULL_HANDLE;
+  check(vkCreateImageView(context.device(), &info, nullptr, &view), "vkCreateImageView", "G-buffer stencil view");
+  UniqueImageView owned(view, {context.device()});
+  context.name_object(view, "G-buffer stencil view");
+  return owned;
+}
+
 Image gbuffer_image(const Context& context, VkExtent2D extent, VkFormat format, VkSampleCountFlagBits samples,
                     std::string name) {
   return Image(context, {extent, format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, samples,
@@ -104,9 +128,11 @@ RenderTargets::RenderTargets(const Context& context, VkExtent2D extent, VkSample
   rt3_ = gbuffer_image(context, extent, kGBufferRt3Format, samples, "G-buffer RT3 (surface depth)");
   if (has_coverage_flags())
     flags_ = gbuffer_image(context, extent, kGBufferTagFormat, samples, "G-buffer RT4 (coverage flags)");
-  // Only the depth test reads it, within the pass: nothing samples it, nothing keeps it.
-  depth_ = Image(context, {extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, samples,
-                           VK_IMAGE_ASPECT_DEPTH_BIT, "G-buffer depth"});
+  // The depth test reads the depth within the pass; the local-light passes sample the stencil.
+  depth_ = Image(context, {extent, choose_gbuffer_depth_format(context),
+                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, samples,
+                           VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT, "G-buffer depth and stencil"});
+  stencil_view_ = create_stencil_view(context, depth_);
   shadow_map_ = Image(context, {{shadow_map_size, shadow_map_size},
                                 kDepthFormat,
                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
@@ -159,8 +185,12 @@ void RenderTargets::create_gbuffer_passes(const Context& context) {
       attachments.push_back(attachment(kGBufferTagFormat, samples_, read_only));
       views.push_back(flags_.view());
     }
-    attachments.push_back(attachment(kDepthFormat, samples_, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                                     VK_ATTACHMENT_STORE_OP_DONT_CARE));
+    // The depth ends with the pass; the stencil (cleared to 0: needs no lighting) is kept for
+    // the local lights. Both paths' G-buffers pay for it alike.
+    VkAttachmentDescription depth = attachment(depth_.format(), samples_, read_only, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+    depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_STORE;
+    attachments.push_back(depth);
     views.push_back(depth_.view());
     UniqueRenderPass pass =
         create_render_pass(context, attachments, true, kShaderReadStages, VK_ACCESS_SHADER_READ_BIT, name);
@@ -169,6 +199,18 @@ void RenderTargets::create_gbuffer_passes(const Context& context) {
   };
   std::tie(plain_gbuffer_pass_, plain_gbuffer_framebuffer_) = create(false, "G-buffer pass (plain)");
   if (has_coverage_flags()) std::tie(gbuffer_pass_, gbuffer_framebuffer_) = create(true, "G-buffer pass (classified)");
+}
+
+VkStencilOpState gbuffer_stencil_marking() {
+  VkStencilOpState s{};
+  s.failOp = VK_STENCIL_OP_KEEP;
+  s.passOp = VK_STENCIL_OP_REPLACE;
+  s.depthFailOp = VK_STENCIL_OP_KEEP;
+  s.compareOp = VK_COMPARE_OP_ALWAYS;
+  s.compareMask = 0xFF;
+  s.writeMask = 0xFF;
+  s.reference = kStencilLit;
+  return s;
 }
 
 GraphicsPipelineDesc RenderTargets::gbuffer_pipeline_desc(VkPipelineLayout layout, std::string name,

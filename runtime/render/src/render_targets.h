@@ -24,7 +24,17 @@ inline constexpr VkFormat kGBufferRt1Format = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kGBufferRt2Format = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kGBufferRt3Format = VK_FORMAT_R32_SFLOAT;  // surface depth + sun bit
 inline constexpr VkFormat kGBufferTagFormat = VK_FORMAT_R8_UINT;     // RT4: coverage flags
-inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;       // the shadow map
+// The G-buffer's depth and stencil: D32 with 8 stencil bits where the device has it (with
+// multisampling and sampling), else 24-bit depth (gbuffer_depth_format()). The stencil marks the
+// pixels that need lighting (§19.7.2): every material writes kStencilLit, the sky leaves 0.
+inline constexpr VkFormat kGBufferDepthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
+inline constexpr VkFormat kGBufferDepthFallbackFormat = VK_FORMAT_D24_UNORM_S8_UINT;
+inline constexpr std::uint32_t kStencilLit = 1;
+
+// The stencil state of a G-buffer material: kStencilLit written wherever it passes the depth
+// test (no extra draw: the marking rides on the materials' own draws).
+VkStencilOpState gbuffer_stencil_marking();
 inline constexpr VkFormat kLightFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
 class RenderTargets {
@@ -51,6 +61,10 @@ class RenderTargets {
   const Image& coverage_flags() const { return flags_; }
   bool has_coverage_flags() const { return samples_ != VK_SAMPLE_COUNT_1_BIT; }
   const Image& shadow_map() const { return shadow_map_; }
+  // The G-buffer's depth-stencil format, and a view of its stencil alone, which the passes after
+  // the G-buffer sample (SHADER_READ_ONLY_OPTIMAL, like the colour targets).
+  VkFormat gbuffer_depth_format() const { return depth_.format(); }
+  VkImageView gbuffer_stencil_view() const { return stencil_view_.get(); }
   const Image& classified() const { return classified_; }
   const Image& naive() const { return naive_; }
   const Image& dynamic() const { return dynamic_; }
@@ -85,6 +99,7 @@ class RenderTargets {
   VkSampleCountFlagBits samples_;
   std::uint32_t shadow_map_size_;
   Image rt0_, rt1_, rt2_, rt3_, flags_, depth_, shadow_map_, classified_, naive_, dynamic_;
+  UniqueImageView stencil_view_;
   UniqueRenderPass gbuffer_pass_, plain_gbuffer_pass_, shadow_pass_, light_pass_;
   UniqueFramebuffer gbuffer_framebuffer_, plain_gbuffer_framebuffer_, shadow_framebuffer_, classified_framebuffer_,
       naive_framebuffer_, dynamic_framebuffer_;

@@ -182,6 +182,7 @@ ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Contex
     materials.vertex_attributes =
         scene_attributes_where([masked](std::uint32_t location) { return masked || location != 9; });
     materials.depth_write = true;
+    materials.stencil = gbuffer_stencil_marking();  // needs lighting (the sky leaves 0)
     materials.cull_mode = culled_kind(kind) ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
     pipelines.materials[kind] = create_graphics_pipeline(context, materials);
   }

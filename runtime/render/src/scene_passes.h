@@ -33,6 +33,8 @@ class ScenePasses {
   // Batches the G-buffer passes and the shadow-map pass skip (0 without culling).
   std::uint32_t culled_gbuffer_batches() const { return gbuffer_batches_.culled; }
   std::uint32_t culled_shadow_batches() const { return shadow_batches_.culled; }
+  // The scene's textures (the local lights' globe maps bind their sets).
+  const SceneTextures& textures() const { return textures_; }
 
   // Shadow map pass, then the classified path's G-buffer pass (geometry, then sky at the far
   // plane), with the coverage flags where the targets have them.

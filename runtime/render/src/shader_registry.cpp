@@ -2,6 +2,8 @@
 
 #include "tilelight/vulkan/error.h"
 
+#include <local_lights_1x_shaders.h>
+#include <local_lights_shaders.h>
 #include <split_second_1x_shaders.h>
 #include <split_second_compute_1x_shaders.h>
 #include <split_second_compute_shaders.h>
@@ -34,6 +36,12 @@ const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples) {
 const shadergen::Registry& compute_shaders_for(VkSampleCountFlagBits gbuffer_samples) {
   return gbuffer_samples == VK_SAMPLE_COUNT_1_BIT ? split_second_compute_1x::registry()
                                                   : split_second_compute::registry();
+}
+
+static_assert(local_lights::kRawPruned == local_lights_1x::kRawPruned);
+
+const shadergen::Registry& local_light_shaders_for(VkSampleCountFlagBits gbuffer_samples) {
+  return gbuffer_samples == VK_SAMPLE_COUNT_1_BIT ? local_lights_1x::registry() : local_lights::registry();
 }
 
 const shadergen::Permutation& companion_shader(const shadergen::Registry& registry, std::string_view name) {

@@ -26,6 +26,10 @@ const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples);
 // those of shaders_for() (static_asserted).
 const shadergen::Registry& compute_shaders_for(VkSampleCountFlagBits gbuffer_samples);
 
+// The local-light passes (permutations/local_lights.json: uber/local_light.frag and its vertex
+// shaders), for a G-buffer of `gbuffer_samples` samples per pixel. Same raw IDs in both builds.
+const shadergen::Registry& local_light_shaders_for(VkSampleCountFlagBits gbuffer_samples);
+
 // The companion shader `name` of `registry` (its SPIR-V and reflection); throws tilelight::Error
 // naming both when there is none.
 const shadergen::Permutation& companion_shader(const shadergen::Registry& registry, std::string_view name);

@@ -3,6 +3,7 @@
 #include "descriptors.h"
 #include "floor_target.h"
 #include "lighting_interface.h"
+#include "local_light_passes.h"
 #include "picture_readback.h"
 #include "render_targets.h"
 #include "scene_passes.h"
@@ -106,9 +107,9 @@ std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Regist
   return pruned;
 }
 
-// Descriptor sets one renderer allocates from its pool, at most 9: the scene's, lighting set 0,
-// the tile-ID output, the GPU index build, the GPU tile-list build, and the compute light pass's
-// four targets (classified, naive, dynamic, floor).
+// Descriptor sets one renderer allocates from its pool, at most 11: the scene's, lighting set 0,
+// the tile-ID output, the GPU index build, the GPU tile-list build, the compute light pass's
+// four targets (classified, naive, dynamic, floor), and the local lights' sets 0 and 1.
 // The base colour textures have a pool of their own (scene_textures.cpp).
 constexpr std::uint32_t kMaxDescriptorSets = 16;
 
@@ -119,8 +120,11 @@ constexpr Seconds kReleaseGrace{10.0};
 // Timestamps of submit B, by label (the baselines' depend on which ran).
 constexpr std::string_view kTileStart = "start", kTiled = "tiled", kGBufferPlain = "gbuffer_plain";
 constexpr std::string_view kNaive = "naive", kDynamic = "dynamic", kFloor = "floor";
-// Submit B writes at most: start, tiled, gbuffer_plain, naive, dynamic, floor.
-constexpr std::uint32_t kTileTimestamps = 6;
+// The local lights added after each light pass: into the classified, naive and dynamic targets.
+constexpr std::string_view kLocal = "local", kNaiveLocal = "naive_local", kDynamicLocal = "dynamic_local";
+// Submit B writes at most: start, tiled, local, gbuffer_plain, naive, naive_local, dynamic,
+// dynamic_local, floor.
+constexpr std::uint32_t kTileTimestamps = 9;
 
 std::size_t index_of(const std::vector<Timestamp>& stamps, std::string_view label) {
   for (std::size_t i = 0; i < stamps.size(); ++i) {
@@ -155,6 +159,7 @@ struct TileRenderer::Impl {
   std::unique_ptr<TileClassification> classification;
   std::unique_ptr<FloorTarget> floor_target;              // Baselines::floor and all
   std::unique_ptr<TileLightPass> light_pass;              // LightPass x IndexPath
+  std::unique_ptr<LocalLightPasses> local_lights;         // after each light pass, into its target
   std::function<void(VkCommandBuffer)> gbuffer_override;  // replaces the scene's G-buffers when set
 
   UniqueCommandBuffer frame_commands;  // submit A, re-recorded each frame
@@ -186,6 +191,9 @@ struct TileRenderer::Impl {
     classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());
     if (runs_floor()) floor_target = std::make_unique<FloorTarget>(ctx, *targets);
     light_pass = create_light_pass();
+    local_lights =
+        std::make_unique<LocalLightPasses>(ctx, scene, *targets, lighting->params(), scene_passes->textures(),
+                                           descriptor_pool.get(), opts.local_light_pass);
 
     frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
     tile_queries = TimestampQueries(ctx, "tile pass timestamps", kTileTimestamps);
@@ -228,8 +236,24 @@ struct TileRenderer::Impl {
     tile_queries.write(cmd, std::string(kTileStart));
     light_pass->record_tiled(cmd, *targets);
     tile_queries.write(cmd, std::string(kTiled));
+    // Before the baselines' plain G-buffer replaces the classified one it reads.
+    record_local_lights(cmd, LocalLightTarget::classified, true, kLocal);
     if (runs_any_baseline()) record_baselines(cmd);
     end_commands(cmd, "tile pass");
+  }
+
+  bool has_local_lights() const { return local_lights->light_count() > 0; }
+
+  // The local lights into one light target, then their stamp; nothing at all without lights.
+  void record_local_lights(VkCommandBuffer cmd, LocalLightTarget target, bool tagged_gbuffer, std::string_view stamp) {
+    if (!has_local_lights()) return;
+    local_lights->record(cmd, *targets, target, tagged_gbuffer);
+    tile_queries.write(cmd, std::string(stamp));
+  }
+
+  // The local lights' part of a frame whose light pass ended at a stamp: 0 without lights.
+  double local_ms(const std::vector<Timestamp>& stamps, std::string_view stamp) const {
+    return has_local_lights() ? pass_ms(stamps, stamp) : 0.0;
   }
 
   // The baselines' whole frame after the classified one: the plain G-buffer (what lighting
@@ -242,10 +266,12 @@ struct TileRenderer::Impl {
     if (runs_naive()) {
       light_pass->record_baseline(cmd, *targets, BaselinePass::naive);
       tile_queries.write(cmd, std::string(kNaive));
+      record_local_lights(cmd, LocalLightTarget::naive, false, kNaiveLocal);
     }
     if (runs_dynamic()) {
       light_pass->record_baseline(cmd, *targets, BaselinePass::dynamic);
       tile_queries.write(cmd, std::string(kDynamic));
+      record_local_lights(cmd, LocalLightTarget::dynamic, false, kDynamicLocal);
     }
     if (runs_floor()) {
       light_pass->record_baseline(cmd, *targets, BaselinePass::floor);
@@ -361,8 +387,10 @@ struct TileRenderer::Impl {
     t.classification = between(frame_stamps, 2);
     if (!light_pass->host_builds()) t.index_build_gpu = between(frame_stamps, 3);
     t.tiled_light = pass_ms(tile_stamps, kTiled);
+    t.local_lights = local_ms(tile_stamps, kLocal);
     // End to end across both submissions: the CPU path's wait for the host is part of it.
-    t.frame_classified = tile_queries.span_ms(frame_stamps.front(), tile_stamps[index_of(tile_stamps, kTiled)]);
+    const std::string_view last = has_local_lights() ? kLocal : kTiled;
+    t.frame_classified = tile_queries.span_ms(frame_stamps.front(), tile_stamps[index_of(tile_stamps, last)]);
     if (runs_any_baseline()) read_baseline_timings(tile_stamps, t);
   }
 
@@ -372,11 +400,11 @@ struct TileRenderer::Impl {
     t.gbuffer_plain = pass_ms(stamps, kGBufferPlain);
     if (runs_naive()) {
       t.naive_light = pass_ms(stamps, kNaive);
-      t.frame_naive = t.shadow_map + t.gbuffer_plain + t.naive_light;
+      t.frame_naive = t.shadow_map + t.gbuffer_plain + t.naive_light + local_ms(stamps, kNaiveLocal);
     }
     if (runs_dynamic()) {
       t.dynamic_light = pass_ms(stamps, kDynamic);
-      t.frame_dynamic = t.shadow_map + t.gbuffer_plain + t.dynamic_light;
+      t.frame_dynamic = t.shadow_map + t.gbuffer_plain + t.dynamic_light + local_ms(stamps, kDynamicLocal);
     }
     if (runs_floor()) t.floor_light = pass_ms(stamps, kFloor);
   }

@@ -39,6 +39,7 @@ struct RunDescription {
   std::vector<std::string> scene_warnings;
   LocalLightCounts local_lights;  // the scene's point, spot and box lights (--lights, or the file's)
   bool cull = true;               // RendererOptions::cull_batches (--no-cull: false)
+  LocalLightPass local_light_pass = LocalLightPass::volumes;  // --local-light-pass
 };
 
 // Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).

@@ -50,6 +50,17 @@ enum class LightPass { raster, compute };
 // "raster" | "compute", as tilelight's --light-pass spells it.
 constexpr const char* to_string(LightPass pass) { return pass == LightPass::compute ? "compute" : "raster"; }
 
+// How each local light is added into the light targets (docs/local-lights.md): drawn as its
+// light volume (a sphere, cone or box, tested against the scene's depth and stencil: the
+// Tabula Rasa chapter's §19.7.1), or as a full-screen pass (the chapter's baseline, and the
+// per-pixel reference the volumes must equal).
+enum class LocalLightPass { volumes, fullscreen };
+
+// "volumes" | "fullscreen", as tilelight's --local-light-pass spells it.
+constexpr const char* to_string(LocalLightPass pass) {
+  return pass == LocalLightPass::fullscreen ? "fullscreen" : "volumes";
+}
+
 // The full-screen passes the classified frame is measured against: naive (the uber-shader with
 // every feature, on every sample of every pixel), dynamic (every feature compiled in, each taken
 // only where the pixel needs it: per-pixel branching) and floor (reads the G-buffer and writes
@@ -87,6 +98,7 @@ struct RendererOptions {
   LightPass light_pass = LightPass::compute;  // tilelight's default (docs/results.md g4)
   bool raw_permutations = false;              // draw the 96 raw permutations instead of the 32 optimised ones
   bool coalesce = true;
+  LocalLightPass local_light_pass = LocalLightPass::volumes;  // the scene's local lights, if any
   // The scene passes skip mesh batches wholly outside their clip volume (the camera's for the
   // G-buffer, the sun's for the shadow map); no pixel changes. Off: every batch is drawn.
   bool cull_batches = true;
@@ -110,7 +122,12 @@ struct FrameTimings {  // milliseconds
   double tiled_light = 0, naive_light = 0;
   double dynamic_light = 0;  // the per-pixel-branching pass; 0 when it did not run (RendererOptions::baselines)
   double floor_light = 0;    // the floor pass; 0 when it did not run
-  // Whole frames: shadow map + G-buffer + [classification + index build] + light pass. The
+  // The local lights added into the classified light target after its global pass (each
+  // baseline adds them into its own target too, and its frame below includes that); 0 without
+  // local lights.
+  double local_lights = 0;
+  // Whole frames: shadow map + G-buffer + [classification + index build] + light pass + local
+  // lights. The
   // classified frame is end to end (first to last GPU timestamp), so the CPU path's wait for the
   // host's index build is in it; a baseline frame is the sum of its passes. 0 where it did not run.
   double frame_classified = 0, frame_naive = 0, frame_dynamic = 0;

@@ -1,0 +1,386 @@
+#include "local_light_passes.h"
+
+#include "descriptors.h"
+#include "local_light_block.h"
+#include "local_light_permutation.h"
+#include "pipelines.h"
+#include "reflected_layout.h"
+#include "shader_registry.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
+
+#include <shadergen/vulkan.h>
+
+#include <array>
+#include <cstring>
+#include <string>
+
+namespace tilelight {
+namespace {
+
+// lighting_params.glsl's set 0, as local_light.frag reads it.
+constexpr std::uint32_t kParamsBinding = 0;
+constexpr std::uint32_t kFirstGBufferBinding = 1;  // RT0..RT3 at 1..4
+constexpr std::uint32_t kShadowMapBinding = 5;
+constexpr std::uint32_t kCoverageFlagsBinding = 6;
+constexpr std::uint32_t kStencilBinding = 7;  // local_light_resolve.frag: the G-buffer's stencil
+constexpr std::uint32_t kLightsSet = 1;
+constexpr std::uint32_t kGlobeSet = 2;
+constexpr std::uint32_t kTaggedConstant = 2;  // TAGGED_GBUFFER (local_light.frag)
+
+// The push constants of every draw (local_light_draw.glsl): 68 bytes, as the reflection says.
+struct DrawConstants {
+  glm::mat4 view_proj;
+  std::uint32_t light_index;
+};
+constexpr std::uint32_t kDrawConstantBytes = 68;
+
+// One colour attachment, the light target, loaded and stored: the lights add to what the global
+// pass wrote, which left it (as this pass leaves it) in TRANSFER_SRC_OPTIMAL for the read-back.
+// With `depth_format` (the volumes), attachment 1 is the resolved depth and stencil, cleared
+// (depth 1, stencil 0: no lighting) and dropped at the end.
+UniqueRenderPass create_additive_pass(const Context& context, VkFormat depth_format) {
+  VkAttachmentDescription target{};
+  target.format = kLightFormat;
+  target.samples = VK_SAMPLE_COUNT_1_BIT;
+  target.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  target.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  target.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  target.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  target.initialLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  target.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  VkAttachmentDescription depth{};
+  depth.format = depth_format;
+  depth.samples = VK_SAMPLE_COUNT_1_BIT;
+  depth.loadOp = depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  const bool volumes = depth_format != VK_FORMAT_UNDEFINED;
+  const std::array<VkAttachmentDescription, 2> attachments{target, depth};
+  const VkAttachmentReference colour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference depth_stencil{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &colour;
+  subpass.pDepthStencilAttachment = volumes ? &depth_stencil : nullptr;
+  // In: after the global pass's writes (draws, or compute and its barrier to the transfer
+  // stage), and after the G-buffer's writes, which its own pass made visible to fragment reads.
+  // Out: to the read-back (transfer) as the global pass's own dependency does.
+  // The resolved depth-stencil is written again by the next target's pass: its tests too.
+  constexpr VkPipelineStageFlags kTests =
+      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  constexpr VkPipelineStageFlags kBefore = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                           kTests;
+  constexpr VkPipelineStageFlags kOutput = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  constexpr VkAccessFlags kBlend = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  constexpr VkAccessFlags kDepthStencil =
+      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  const std::array<VkSubpassDependency, 2> dependencies{{
+      {VK_SUBPASS_EXTERNAL, 0, kBefore, kOutput | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | kTests,
+       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+       kBlend | kDepthStencil, 0},
+      {0, VK_SUBPASS_EXTERNAL, kOutput, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+       VK_ACCESS_TRANSFER_READ_BIT, 0},
+  }};
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = volumes ? 2 : 1;
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = static_cast<std::uint32_t>(dependencies.size());
+  info.pDependencies = dependencies.data();
+  VkRenderPass pass = VK_NULL_HANDLE;
+  check(vkCreateRenderPass(context.device(), &info, nullptr, &pass), "vkCreateRenderPass", "local-light pass");
+  UniqueRenderPass owned(pass, {context.device()});
+  context.name_object(pass, "local-light pass");
+  return owned;
+}
+
+// The image view set 0's binding `binding` reads, as lighting_params.glsl (and
+// local_light_resolve.frag, the stencil) declare it.
+VkImageView set0_view(const RenderTargets& targets, std::uint32_t binding) {
+  switch (binding) {
+    case kFirstGBufferBinding: return targets.rt0().view();
+    case kFirstGBufferBinding + 1: return targets.rt1().view();
+    case kFirstGBufferBinding + 2: return targets.rt2().view();
+    case kFirstGBufferBinding + 3: return targets.rt3().view();
+    case kShadowMapBinding: return targets.shadow_map().view();
+    case kCoverageFlagsBinding:
+      if (targets.has_coverage_flags()) return targets.coverage_flags().view();
+      break;
+    case kStencilBinding: return targets.gbuffer_stencil_view();
+    default: break;
+  }
+  throw Error("local_lights.json's set 0 has binding " + std::to_string(binding) +
+              ", which lighting_params.glsl does not declare for this G-buffer");
+}
+
+}  // namespace
+
+LocalLightPasses::LocalLightPasses(const Context& context, const Scene& scene, const RenderTargets& targets,
+                                   const LightingParamsBlock& params, const SceneTextures& textures,
+                                   VkDescriptorPool pool, LocalLightPass pass)
+    : shaders_(&local_light_shaders_for(targets.samples())), params_block_(params), pass_(pass) {
+  if (scene.local_lights.empty()) return;  // nothing to draw: no sets, no pipelines
+  const bool multisampled = targets.samples() != VK_SAMPLE_COUNT_1_BIT;
+  view_proj_ = glm::inverse(params.inv_view_proj);
+  const bool depth_clamp = context.features().depth_clamp;
+  for (std::uint32_t i = 0; i < scene.local_lights.size(); ++i) {
+    const LocalLight& light = scene.local_lights[i];
+    Draw draw{i, local_light_raw_id(light, multisampled), VK_NULL_HANDLE, volume_of(light),
+              depth_clamp || !may_cross_far_plane(light, view_proj_)};
+    if (light.extras.globe_texture) {
+      if (*light.extras.globe_texture >= scene.textures.size()) {
+        throw Error("local light " + std::to_string(i) + ": globe texture " +
+                    std::to_string(*light.extras.globe_texture) + " is not one of the scene's " +
+                    std::to_string(scene.textures.size()) + " textures");
+      }
+      draw.globe = textures.set_of(light.extras.globe_texture);
+    }
+    draws_.push_back(draw);
+  }
+  const bool volumes = pass == LocalLightPass::volumes;
+  render_pass_ = create_additive_pass(context, volumes ? targets.gbuffer_depth_format() : VK_FORMAT_UNDEFINED);
+  if (volumes) {
+    resolved_depth_ =
+        Image(context, {targets.extent(), targets.gbuffer_depth_format(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                        VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT,
+                        "local lights: resolved depth and stencil"});
+  }
+  create_framebuffers(context, targets);
+  create_sets(context, targets, pool, textures, scene.local_lights);
+  if (volumes) {
+    create_volume_meshes(context);
+    create_volume_pipelines(context, targets, depth_clamp);
+  } else {
+    create_full_screen_pipelines(context, targets);
+  }
+}
+
+void LocalLightPasses::create_volume_meshes(const Context& context) {
+  meshes_ = make_volume_meshes();
+  volume_vertices_ = Buffer(context, {meshes_.vertices.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                      MemoryUse::HostUpload, "light volume meshes (vertices)"});
+  volume_vertices_.write_values(std::span<const glm::vec3>(meshes_.vertices));
+  volume_indices_ = Buffer(context, {meshes_.indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                     MemoryUse::HostUpload, "light volume meshes (indices)"});
+  volume_indices_.write_values(std::span<const std::uint32_t>(meshes_.indices));
+}
+
+void LocalLightPasses::create_volume_pipelines(const Context& context, const RenderTargets& targets, bool depth_clamp) {
+  const shadergen::Registry& registry = *shaders_;
+  GraphicsPipelineDesc resolve;
+  resolve.layout = layout_.get();
+  resolve.render_pass = render_pass_.get();
+  resolve.vertex_spirv = companion_spirv(registry, "full_screen");
+  resolve.fragment_spirv = companion_spirv(registry, "resolve");
+  resolve.color_write = false;
+  resolve.depth_test = true;
+  resolve.depth_write = true;
+  resolve.depth_compare = VK_COMPARE_OP_ALWAYS;
+  resolve.stencil = gbuffer_stencil_marking();  // REPLACE with kStencilLit where not discarded
+  resolve.name = "local lights: resolve depth and stencil";
+  resolve_ = create_graphics_pipeline(context, resolve);
+
+  // Shade where the stencil is marked and the volume's back face is at or behind the surface.
+  VkStencilOpState lit{};
+  lit.failOp = lit.passOp = lit.depthFailOp = VK_STENCIL_OP_KEEP;
+  lit.compareOp = VK_COMPARE_OP_EQUAL;
+  lit.compareMask = 0xFF;
+  lit.reference = kStencilLit;
+  auto create = [&](std::uint32_t raw_id, bool tagged, bool depth_tested) {
+    GraphicsPipelineDesc desc;
+    desc.layout = layout_.get();
+    desc.render_pass = render_pass_.get();
+    desc.vertex_spirv = companion_spirv(registry, "volume");
+    desc.fragment_spirv = registry.raw[raw_id].spirv;
+    desc.fragment_constants.set(kTaggedConstant, tagged ? 1u : 0u);
+    desc.vertex_bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}};
+    desc.cull_mode = VK_CULL_MODE_FRONT_BIT;  // inverted winding: the camera may be inside
+    desc.depth_test = depth_tested;
+    desc.depth_compare = VK_COMPARE_OP_GREATER_OR_EQUAL;
+    desc.depth_clamp = depth_clamp;
+    desc.stencil = lit;
+    desc.additive_blend = true;
+    desc.name = "local light volume raw " + std::to_string(raw_id) + (tagged ? " (tagged G-buffer)" : "") +
+                (depth_tested ? "" : " (no depth test)");
+    return create_graphics_pipeline(context, desc);
+  };
+  for (const Draw& draw : draws_) {
+    const std::uint32_t key = draw.raw_id * 2 + (draw.depth_tested ? 1 : 0);
+    if (volume_.contains(key)) continue;
+    PipelinePair& pair = volume_[key];
+    pair.plain = create(draw.raw_id, false, draw.depth_tested);
+    if (targets.has_coverage_flags()) pair.tagged = create(draw.raw_id, true, draw.depth_tested);
+  }
+}
+
+void LocalLightPasses::create_sets(const Context& context, const RenderTargets& targets, VkDescriptorPool pool,
+                                   const SceneTextures& textures, const std::vector<LocalLight>& lights) {
+  const shadergen::Registry& registry = *shaders_;
+  const std::vector<VkDescriptorSetLayoutBinding> set0 =
+      merged_set_bindings({registry.pipeline_layout}, 0, "local-light set 0");
+  const std::vector<VkDescriptorSetLayoutBinding> set1 =
+      merged_set_bindings({registry.pipeline_layout}, kLightsSet, "local-light set 1");
+  check_storage_buffers(set1, 1, "local-light set 1 (the lights)");
+  // The globe map is bound with the scene texture's own set: its layout must be that one's.
+  const std::vector<VkDescriptorSetLayoutBinding> set2 =
+      merged_set_bindings({registry.pipeline_layout}, kGlobeSet, "local-light set 2");
+  const std::array<VkDescriptorType, 1> globe_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+  check_bindings(set2, globe_types, "local-light set 2 (the globe map)");
+  set0_layout_ = create_descriptor_set_layout(context, set0, "local-light set 0 layout");
+  set1_layout_ = create_descriptor_set_layout(context, set1, "local-light set 1 layout");
+  const std::array<VkDescriptorSetLayout, 3> sets{set0_layout_.get(), set1_layout_.get(), textures.set_layout()};
+  const std::vector<VkPushConstantRange> push = shadergen::vk::push_constant_ranges(registry);
+  if (push_constant_bytes(push) != kDrawConstantBytes) {
+    throw Error("local_lights.json's shaders push " + std::to_string(push_constant_bytes(push)) +
+                " bytes; the runtime pushes " + std::to_string(kDrawConstantBytes) + " (local_light_draw.glsl)");
+  }
+  push_stages_ = push.front().stageFlags;
+  layout_ = create_pipeline_layout(context, sets, push, "local-light pipeline layout");
+
+  params_ = Buffer(context, {sizeof(LightingParamsBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::HostUpload,
+                             "local-light lighting parameters"});
+  params_.write_values(std::span<const LightingParamsBlock>(&params_block_, 1));
+  sampler_ = Sampler(context, {.name = "local lights: G-buffer (texelFetch)"});
+  set0_ = allocate_descriptor_set(context, pool, set0_layout_.get(), "local-light set 0");
+  for (const VkDescriptorSetLayoutBinding& b : set0) {
+    if (b.binding == kParamsBinding) {
+      write_buffer_descriptor(context, set0_, kParamsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
+    } else {
+      write_image_descriptor(context, set0_, b.binding, sampler_.handle(), set0_view(targets, b.binding),
+                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    }
+  }
+
+  const std::vector<LocalLightBlock> blocks = make_local_light_blocks(lights);
+  lights_ = Buffer(context, {blocks.size() * sizeof(LocalLightBlock), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                             MemoryUse::HostUpload, "local lights"});
+  lights_.write_values(std::span<const LocalLightBlock>(blocks));
+  set1_ = allocate_descriptor_set(context, pool, set1_layout_.get(), "local-light set 1");
+  write_buffer_descriptor(context, set1_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights_.handle());
+}
+
+void LocalLightPasses::create_full_screen_pipelines(const Context& context, const RenderTargets& targets) {
+  const shadergen::Registry& registry = *shaders_;
+  auto create = [&](std::uint32_t raw_id, bool tagged) {
+    GraphicsPipelineDesc desc;
+    desc.layout = layout_.get();
+    desc.render_pass = render_pass_.get();
+    desc.vertex_spirv = companion_spirv(registry, "full_screen");
+    desc.fragment_spirv = registry.raw[raw_id].spirv;
+    desc.fragment_constants.set(kTaggedConstant, tagged ? 1u : 0u);
+    desc.additive_blend = true;
+    desc.name = "local light full-screen raw " + std::to_string(raw_id) + (tagged ? " (tagged G-buffer)" : "");
+    return create_graphics_pipeline(context, desc);
+  };
+  for (const Draw& draw : draws_) {
+    if (full_screen_.contains(draw.raw_id)) continue;
+    PipelinePair& pair = full_screen_[draw.raw_id];
+    pair.plain = create(draw.raw_id, false);
+    if (targets.has_coverage_flags()) pair.tagged = create(draw.raw_id, true);
+  }
+}
+
+std::uint32_t LocalLightPasses::pipeline_count() const {
+  std::uint32_t count = 0;
+  for (const auto& [id, pair] : full_screen_) count += (pair.plain ? 1 : 0) + (pair.tagged ? 1 : 0);
+  for (const auto& [id, pair] : volume_) count += (pair.plain ? 1 : 0) + (pair.tagged ? 1 : 0);
+  return count + (resolve_ ? 1 : 0);
+}
+
+void LocalLightPasses::create_framebuffers(const Context& context, const RenderTargets& targets) {
+  const std::array<std::pair<const Image*, const char*>, 3> images{
+      {{&targets.classified(), "classified"}, {&targets.naive(), "naive"}, {&targets.dynamic(), "dynamic"}}};
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const std::array<VkImageView, 2> views{images[i].first->view(), resolved_depth_.view()};
+    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    info.renderPass = render_pass_.get();
+    info.attachmentCount = pass_ == LocalLightPass::volumes ? 2 : 1;
+    info.pAttachments = views.data();
+    info.width = targets.extent().width;
+    info.height = targets.extent().height;
+    info.layers = 1;
+    const std::string name = std::string("local lights into the light target (") + images[i].second + ")";
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    check(vkCreateFramebuffer(context.device(), &info, nullptr, &framebuffer), "vkCreateFramebuffer", name);
+    framebuffers_[i] = UniqueFramebuffer(framebuffer, {context.device()});
+    context.name_object(framebuffer, name);
+  }
+}
+
+void LocalLightPasses::bind(VkCommandBuffer cmd, const RenderTargets& targets, LocalLightTarget target) const {
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = render_pass_.get();
+  begin.framebuffer = framebuffers_[static_cast<std::size_t>(target)].get();
+  begin.renderArea = {{0, 0}, targets.extent()};
+  std::array<VkClearValue, 2> clears{};
+  clears[1].depthStencil = {1.0f, 0};  // no surface, no lighting: what the resolve leaves for sky
+  begin.clearValueCount = pass_ == LocalLightPass::volumes ? 2 : 0;
+  begin.pClearValues = clears.data();
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  set_viewport_and_scissor(cmd, targets.extent());
+  const std::array<VkDescriptorSet, 2> sets{set0_, set1_};
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 2, sets.data(), 0, nullptr);
+}
+
+void LocalLightPasses::record(VkCommandBuffer cmd, const RenderTargets& targets, LocalLightTarget target,
+                              bool tagged_gbuffer) const {
+  if (draws_.empty()) return;
+  if (pass_ == LocalLightPass::volumes) {
+    record_volumes(cmd, targets, target, tagged_gbuffer);
+  } else {
+    record_full_screen(cmd, targets, target, tagged_gbuffer);
+  }
+}
+
+void LocalLightPasses::push_draw(VkCommandBuffer cmd, const Draw& draw) const {
+  if (draw.globe != VK_NULL_HANDLE) {
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), kGlobeSet, 1, &draw.globe, 0, nullptr);
+  }
+  const DrawConstants constants{view_proj_, draw.light};
+  std::array<std::byte, kDrawConstantBytes> bytes{};
+  std::memcpy(bytes.data(), &constants, bytes.size());
+  vkCmdPushConstants(cmd, layout_.get(), push_stages_, 0, kDrawConstantBytes, bytes.data());
+}
+
+void LocalLightPasses::record_volumes(VkCommandBuffer cmd, const RenderTargets& targets, LocalLightTarget target,
+                                      bool tagged_gbuffer) const {
+  bind(cmd, targets, target);
+  // First the depth and stencil the volumes are tested against (depth and stencil only)...
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, resolve_.get());
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  // ... then each light's volume, in the same subpass: the tests see the resolve's writes.
+  const VkDeviceSize offset = 0;
+  const VkBuffer vertices = volume_vertices_.handle();
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+  vkCmdBindIndexBuffer(cmd, volume_indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+  const bool tagged = tagged_gbuffer && targets.has_coverage_flags();
+  for (const Draw& draw : draws_) {
+    const PipelinePair& pair = volume_.at(draw.raw_id * 2 + (draw.depth_tested ? 1 : 0));
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tagged ? pair.tagged.get() : pair.plain.get());
+    push_draw(cmd, draw);
+    const VolumeMesh& mesh = meshes_.meshes[static_cast<std::uint32_t>(draw.volume)];
+    vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, 0, 0);
+  }
+  vkCmdEndRenderPass(cmd);
+}
+
+void LocalLightPasses::record_full_screen(VkCommandBuffer cmd, const RenderTargets& targets, LocalLightTarget target,
+                                          bool tagged_gbuffer) const {
+  bind(cmd, targets, target);
+  const bool tagged = tagged_gbuffer && targets.has_coverage_flags();
+  for (const Draw& draw : draws_) {
+    const PipelinePair& pair = full_screen_.at(draw.raw_id);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tagged ? pair.tagged.get() : pair.plain.get());
+    push_draw(cmd, draw);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+  }
+  vkCmdEndRenderPass(cmd);
+}
+
+}  // namespace tilelight
