@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "base/phase_clock.h"
 #include "cache/remote_cache.h"
 #include "compile/layout_check.h"
 #include "compile/reflection.h"
-#include "shadergen/build_summary.h"
 #include "shadergen/diagnostic.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
