@@ -60,8 +60,9 @@ std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan&
 GlslSource source_of(const CompiledDomain& d, const CompileJob& job) {
   GlslSource source{d.path_of(job), job.stage, d.spec.include_dirs, d.defines_of(job), {}, d.spec.target_env};
   for (const std::string& fixed : d.spec.defines) {
-    bool own = std::any_of(source.defines.begin(), source.defines.end(),
-                           [&](const std::string& d) { return define_name(d) == define_name(fixed); });
+    bool own = std::any_of(source.defines.begin(), source.defines.end(), [&](const std::string& own_define) {
+      return define_name(own_define) == define_name(fixed);
+    });
     if (!own) source.fixed_defines.push_back(fixed);
   }
   return source;
