@@ -57,6 +57,11 @@ Result<PermutationPlan> expand(const DomainSpec& spec);
 // none for a valued feature whose field holds no value).
 std::vector<std::string> raw_defines(const DomainSpec& spec, std::uint32_t raw_id);
 
+// The index into spec.impossible of the first rule that prunes `raw_id`, or -1 when none does.
+// Every check of a raw ID against the impossible rules goes through here (expand(), a variants
+// file's lines), so they agree on which rule is named.
+int first_impossible_rule(const DomainSpec& spec, std::uint32_t raw_id);
+
 // The optimised ID the rules give for a raw ID (ignores pruning).
 std::uint32_t apply_rules(const DomainSpec& spec, std::uint32_t raw_id);
 

@@ -167,6 +167,25 @@ struct CompanionShader {
   Permutation shader;
 };
 
+// Where the record of ID `id` is in `list`, or nullopt: constant time when the list is
+// enumerated (list[i].id == i), else a binary search. Precondition: `list` ascends by `id`.
+// Generic over the record so that shadergen's own plan (spec/permutations.h) searches the same
+// way as a registry does; `List` is a span or vector of records with an `id` member.
+template <class List>
+constexpr std::optional<std::size_t> position_by_id(const List& list, std::uint32_t id) {
+  if (id < list.size() && list[id].id == id) return id;  // enumerated: the ID is the position
+  std::size_t low = 0, high = list.size();
+  while (low < high) {
+    const std::size_t middle = low + (high - low) / 2;
+    if (list[middle].id < id)
+      low = middle + 1;
+    else
+      high = middle;
+  }
+  if (low == list.size() || list[low].id != id) return std::nullopt;
+  return low;
+}
+
 // Everything one domain spec produced.
 struct Registry {
   std::string_view name;  // domain name from the spec
@@ -198,7 +217,7 @@ struct Registry {
   // one outside the domain, pruned (no shader) or not built (not in a variants file) is "none".
 
   // Where `raw_id` is in `raw`, or nullopt: constant time when enumerated, else a binary search.
-  constexpr std::optional<std::size_t> raw_position(std::uint32_t raw_id) const { return position_in(raw, raw_id); }
+  constexpr std::optional<std::size_t> raw_position(std::uint32_t raw_id) const { return position_by_id(raw, raw_id); }
   // The raw permutation `raw_id` names, or nullptr when it is out of range, pruned or not built.
   constexpr const Permutation* find_raw(std::uint32_t raw_id) const {
     std::optional<std::size_t> at = raw_position(raw_id);
@@ -207,7 +226,7 @@ struct Registry {
   }
   // The optimised permutation `id`, or nullptr when the registry has none of that ID.
   constexpr const Permutation* find_optimised(std::uint32_t id) const {
-    std::optional<std::size_t> at = position_in(optimised, id);
+    std::optional<std::size_t> at = position_by_id(optimised, id);
     return at ? &optimised[*at] : nullptr;
   }
   // True when the domain is collapsed: raw IDs are drawn through the lookup table.
@@ -236,20 +255,6 @@ struct Registry {
     std::optional<std::uint32_t> id = optimised_id(raw_id);
     if (!id) return nullptr;
     return collapsed() ? find_optimised(*id) : find_raw(*id);
-  }
-  // Where the permutation of ID `id` is in `list` (ascending by ID), or nullopt.
-  static constexpr std::optional<std::size_t> position_in(std::span<const Permutation> list, std::uint32_t id) {
-    if (id < list.size() && list[id].id == id) return id;  // enumerated: the ID is the position
-    std::size_t low = 0, high = list.size();
-    while (low < high) {
-      const std::size_t middle = low + (high - low) / 2;
-      if (list[middle].id < id)
-        low = middle + 1;
-      else
-        high = middle;
-    }
-    if (low == list.size() || list[low].id != id) return std::nullopt;
-    return low;
   }
   // Returns the companion called `name`, or nullptr.
   const CompanionShader* companion(std::string_view wanted) const {

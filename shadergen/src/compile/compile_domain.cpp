@@ -42,32 +42,27 @@ std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan&
   std::vector<CompileJob> jobs;
   const bool raw_too = spec.compile == CompileSet::all;
   for (const RawPermutation& raw : plan.raw)
-    if (raw_too && !raw.pruned)
-      jobs.push_back({JobKind::raw, raw.id, raw_defines(spec, raw.id), spec.uber.stage, spec.uber.path, {}});
+    if (raw_too && !raw.pruned) jobs.push_back({JobKind::raw, raw.id, spec.uber.stage});
   for (const OptimisedPermutation& optimised : plan.optimised)
-    jobs.push_back({JobKind::optimised, optimised.id, optimised.defines, spec.uber.stage, spec.uber.path, {}});
+    jobs.push_back({JobKind::optimised, optimised.id, spec.uber.stage});
   if (spec.program_vertex) {
     const ShaderFile& vertex = *spec.program_vertex;
     for (const RawPermutation& raw : plan.raw)
-      if (raw_too && !raw.pruned)
-        jobs.push_back({JobKind::raw, raw.id, raw_defines(spec, raw.id), vertex.stage, vertex.path, {}, true});
-    for (const OptimisedPermutation& o : plan.optimised)
-      jobs.push_back({JobKind::optimised, o.id, o.defines, vertex.stage, vertex.path, {}, true});
+      if (raw_too && !raw.pruned) jobs.push_back({JobKind::raw, raw.id, vertex.stage, true});
+    for (const OptimisedPermutation& o : plan.optimised) jobs.push_back({JobKind::optimised, o.id, vertex.stage, true});
   }
-  for (std::size_t i = 0; i < spec.companions.size(); ++i) {
-    const CompanionSpec& companion = spec.companions[i];
-    jobs.push_back({JobKind::companion, static_cast<std::uint32_t>(i), companion.defines, companion.file.stage,
-                    companion.file.path, companion.name});
-  }
+  for (std::size_t i = 0; i < spec.companions.size(); ++i)
+    jobs.push_back({JobKind::companion, static_cast<std::uint32_t>(i), spec.companions[i].file.stage});
   return jobs;
 }
 
 // The domain's fixed defines, less those the job sets itself (a companion's own value wins).
-GlslSource source_of(const DomainSpec& spec, const CompileJob& job) {
-  GlslSource source{job.path, job.stage, spec.include_dirs, job.defines, {}, spec.target_env};
-  for (const std::string& fixed : spec.defines) {
-    bool own = std::any_of(job.defines.begin(), job.defines.end(),
-                           [&](const std::string& d) { return define_name(d) == define_name(fixed); });
+GlslSource source_of(const CompiledDomain& d, const CompileJob& job) {
+  GlslSource source{d.path_of(job), job.stage, d.spec.include_dirs, d.defines_of(job), {}, d.spec.target_env};
+  for (const std::string& fixed : d.spec.defines) {
+    bool own = std::any_of(source.defines.begin(), source.defines.end(), [&](const std::string& own_define) {
+      return define_name(own_define) == define_name(fixed);
+    });
     if (!own) source.fixed_defines.push_back(fixed);
   }
   return source;
@@ -287,7 +282,7 @@ class DomainCompiler {
         d_.jobs.size(), options_.jobs,
         [&](std::size_t i) {
           auto start = Clock::now();
-          auto preprocessed = preprocess(source_of(d_.spec, d_.jobs[i]));
+          auto preprocessed = preprocess(source_of(d_, d_.jobs[i]));
           if (preprocessed) {
             keys[i] = cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(preprocessed->text));
             std::lock_guard lock(shared_mutex);
@@ -308,7 +303,7 @@ class DomainCompiler {
     std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
     dependencies.insert(includes.begin(), includes.end());
     for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
-      dependencies.insert(d_.jobs[i].path.lexically_normal());
+      dependencies.insert(d_.path_of(d_.jobs[i]).lexically_normal());
       if (!keys[i]) {
         failures.push_back({i, keys[i].errors(), {}});
         continue;
@@ -316,7 +311,7 @@ class DomainCompiler {
       assign_source(i, *keys[i], by_key);
     }
     d_.dependencies.assign(dependencies.begin(), dependencies.end());
-    if (!failures.empty()) return group_failures(d_.jobs, failures, options_.verbose);
+    if (!failures.empty()) return group_failures(d_, failures, options_.verbose);
     reads_.reset();
     if (consistent) {
       reads_.emplace();
@@ -367,8 +362,8 @@ class DomainCompiler {
         failures.size(), options_.jobs,
         [&](std::size_t i) {
           const CompileJob& job = d_.jobs[failures[i].job];
-          if (auto text = preprocess(source_of(d_.spec, job)))
-            failures[i].lines = live_lines(text->text, job.path.lexically_normal().string());
+          if (auto text = preprocess(source_of(d_, job)))
+            failures[i].lines = live_lines(text->text, d_.path_of(job).lexically_normal().string());
         },
         options_.cancelled);
     return failures;
@@ -377,7 +372,7 @@ class DomainCompiler {
   // Compiles, optimises and validates a source, and keeps the blob in the local cache.
   Result<CachedBlob> compile_fresh(SourceRecord& record) {
     auto start = Clock::now();
-    auto words = compile(source_of(d_.spec, d_.jobs[record.first_job]));
+    auto words = compile(source_of(d_, d_.jobs[record.first_job]));
     if (!words) return std::move(words).take_errors();
     auto optimised = optimise_and_validate(std::move(words).value(), d_.spec.target_env);
     if (!optimised) return std::move(optimised).take_errors();
@@ -426,7 +421,7 @@ class DomainCompiler {
       const auto& result = results[static_cast<std::size_t>(d_.jobs[j].source)];
       if (!result) failures.push_back({j, result.errors(), {}});
     }
-    if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)), options_.verbose);
+    if (!failures.empty()) return group_failures(d_, with_lines(std::move(failures)), options_.verbose);
     if (!spill_errors_.empty()) return spill_errors_;
     store_blobs(results);
     distinct_index_.clear();
@@ -558,7 +553,7 @@ class DomainCompiler {
       if (source >= range.first && source < range.last && !fates[source - range.first])
         failures.push_back({j, fates[source - range.first].errors(), {}});
     }
-    if (!failures.empty()) return group_failures(d_.jobs, with_lines(std::move(failures)), options_.verbose);
+    if (!failures.empty()) return group_failures(d_, with_lines(std::move(failures)), options_.verbose);
     ShardOutcome outcome{shard.index, shard.count, static_cast<std::uint32_t>(total), 0, 0};
     for (const auto& fate : fates) {
       outcome.on_server += *fate == ShardFate::on_server;
@@ -579,7 +574,7 @@ class DomainCompiler {
     if (options_.verbose) {
       const CompileJob& job = d_.jobs[record.first_job];
       std::string defines;
-      for (const std::string& d : job.defines) {
+      for (const std::string& d : d_.defines_of(job)) {
         defines += ' ';
         defines += d;
       }
@@ -587,7 +582,7 @@ class DomainCompiler {
           (record.remote_hit  ? "remote   "
            : record.cache_hit ? "cached   "
                               : "compiled ") +
-          job.label() + (defines.empty() ? "" : ":" + defines));
+          d_.label_of(job) + (defines.empty() ? "" : ":" + defines));
     } else if (total >= 8 && finished % (total / 4) == 0 && finished != total) {
       log(std::to_string(finished) + "/" + std::to_string(total) + " sources done");
     }
@@ -662,12 +657,13 @@ class DomainCompiler {
     for (const CompileJob& job : d_.jobs) {
       if (job.kind == JobKind::companion && !d_.spec.companions[job.id].shared_layout) continue;
       if (!seen.insert(job.blob).second) continue;
-      std::string label = job.label();
-      if (job.kind != JobKind::companion && !job.defines.empty()) {
+      std::string label = d_.label_of(job);
+      std::vector<std::string> defines = d_.defines_of(job);
+      if (job.kind != JobKind::companion && !defines.empty()) {
         label += " (";
-        for (std::size_t i = 0; i < job.defines.size(); ++i) {
+        for (std::size_t i = 0; i < defines.size(); ++i) {
           if (i) label += ' ';
-          label += job.defines[i];
+          label += defines[i];
         }
         label += ")";
       }
@@ -704,8 +700,7 @@ class DomainCompiler {
     }
     Diagnostics errors;
     for (const std::string& problem : order) {
-      Diagnostic error =
-          make_error(problem + " (" + where_it_occurs(d_.jobs, problems[problem], options_.verbose) + ")");
+      Diagnostic error = make_error(problem + " (" + where_it_occurs(d_, problems[problem], options_.verbose) + ")");
       error.file = d_.spec.spec_path.string();
       errors.push_back(std::move(error));
     }

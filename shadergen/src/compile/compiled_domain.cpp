@@ -2,11 +2,25 @@
 
 namespace shadergen {
 
-std::string CompileJob::label() const {
-  switch (kind) {
-    case JobKind::raw: return "raw " + std::to_string(id) + (vertex_half ? " vertex" : "");
-    case JobKind::optimised: return "optimised " + std::to_string(id) + (vertex_half ? " vertex" : "");
-    case JobKind::companion: return "companion " + name;
+std::vector<std::string> CompiledDomain::defines_of(const CompileJob& job) const {
+  switch (job.kind) {
+    case JobKind::raw: return raw_defines(spec, job.id);
+    case JobKind::optimised: return plan.find_optimised(job.id)->defines;
+    case JobKind::companion: return spec.companions[job.id].defines;
+  }
+  return {};
+}
+
+const std::filesystem::path& CompiledDomain::path_of(const CompileJob& job) const {
+  if (job.kind == JobKind::companion) return spec.companions[job.id].file.path;
+  return job.vertex_half ? spec.program_vertex->path : spec.uber.path;
+}
+
+std::string CompiledDomain::label_of(const CompileJob& job) const {
+  switch (job.kind) {
+    case JobKind::raw: return "raw " + std::to_string(job.id) + (job.vertex_half ? " vertex" : "");
+    case JobKind::optimised: return "optimised " + std::to_string(job.id) + (job.vertex_half ? " vertex" : "");
+    case JobKind::companion: return "companion " + spec.companions[job.id].name;
   }
   return {};
 }

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "base/phase_clock.h"
 #include "cache/remote_cache.h"
 #include "compile/layout_check.h"
 #include "compile/reflection.h"
-#include "shadergen/build_summary.h"
 #include "shadergen/diagnostic.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
@@ -29,16 +29,15 @@ struct Blob {
 
 enum class JobKind { raw, optimised, companion };
 
-// One thing to compile: a raw or optimised permutation or a companion shader.
+// One thing to compile: a raw or optimised permutation or a companion shader. It holds no
+// strings: its defines, shader file and label follow from its kind and ID, and CompiledDomain
+// computes them when needed (defines_of(), path_of(), label_of()), so that what a build keeps
+// grows by a few words per permutation (issue 34).
 struct CompileJob {
   JobKind kind = JobKind::raw;
   std::uint32_t id = 0;  // raw/optimised ID, or companion index
-  std::vector<std::string> defines;
   Stage stage = Stage::fragment;
-  std::filesystem::path path;
-  std::string label() const;  // "raw 37", "optimised 5", "companion tile" needs the name:
-  std::string name;           // companion name (empty otherwise)
-  bool vertex_half = false;   // the vertex half of a "program" permutation
+  bool vertex_half = false;  // the vertex half of a "program" permutation
   // Filled while compiling:
   int source = -1;  // index of its distinct preprocessed source
   int blob = -1;    // index into CompiledDomain::blobs
@@ -78,6 +77,16 @@ struct CompiledDomain {
   std::vector<PhaseTime> phases;                    // preprocess (or input check), compile or load, reflect, layout
   std::optional<RemoteCacheStats> remote;           // with a remote cache only
   std::optional<ShardOutcome> shard;                // a shard's build only (then `blobs` is empty)
+
+  // What a job is compiled from. Precondition: `job` is one of `jobs` (its ID is in `plan`, or
+  // it indexes spec.companions).
+  // Its GLSL defines ("NAME" or "NAME=VALUE"): a raw ID's from the spec's features
+  // (raw_defines()), an optimised ID's from the plan, a companion's from the spec.
+  std::vector<std::string> defines_of(const CompileJob& job) const;
+  // Its shader file: the uber-shader, the "program" form's vertex shader, or the companion's.
+  const std::filesystem::path& path_of(const CompileJob& job) const;
+  // "raw 37", "optimised 5 vertex", "companion tile".
+  std::string label_of(const CompileJob& job) const;
 
   // Blob of raw ID `id`, or nullptr when pruned. Likewise for optimised IDs and companions.
   const Blob* raw_blob(std::uint32_t id) const;

@@ -18,33 +18,38 @@ std::string join(const std::vector<std::string>& items, std::string_view separat
   return text;
 }
 
-std::string describe_job(const CompileJob& job) {
-  std::string text = job.label();
-  if (job.kind != JobKind::companion) text += job.defines.empty() ? " (no defines)" : " with " + join(job.defines, " ");
-  return text;
+std::string describe_job(const CompiledDomain& domain, const CompileJob& job) {
+  std::string text = domain.label_of(job);
+  if (job.kind == JobKind::companion) return text;
+  std::vector<std::string> defines = domain.defines_of(job);
+  return text + (defines.empty() ? " (no defines)" : " with " + join(defines, " "));
 }
 
-bool has_all(const CompileJob& job, const std::set<std::string>& defines) {
-  return std::all_of(defines.begin(), defines.end(), [&](const std::string& d) {
-    return std::find(job.defines.begin(), job.defines.end(), d) != job.defines.end();
-  });
+std::set<std::string> define_set(const CompiledDomain& domain, const CompileJob& job) {
+  std::vector<std::string> defines = domain.defines_of(job);
+  return std::set<std::string>(defines.begin(), defines.end());
+}
+
+bool has_all(const CompiledDomain& domain, const CompileJob& job, const std::set<std::string>& defines) {
+  return std::ranges::includes(define_set(domain, job), defines);
 }
 
 // "those with SOFT_SHADOW" when the failing raw IDs are exactly the ones with a set of
 // defines; otherwise nothing (the example permutation still names one).
-std::string pattern(const std::vector<CompileJob>& jobs, const std::set<std::size_t>& failing_raw) {
+std::string pattern(const CompiledDomain& domain, const std::set<std::size_t>& failing_raw) {
   if (failing_raw.empty()) return {};
+  const std::vector<CompileJob>& jobs = domain.jobs;
   std::set<std::uint32_t> ids;
   for (std::size_t index : failing_raw) ids.insert(jobs[index].id);
-  std::set<std::string> common(jobs[*failing_raw.begin()].defines.begin(), jobs[*failing_raw.begin()].defines.end());
+  std::set<std::string> common = define_set(domain, jobs[*failing_raw.begin()]);
   for (std::size_t index : failing_raw) {
-    std::set<std::string> mine(jobs[index].defines.begin(), jobs[index].defines.end());
+    std::set<std::string> mine = define_set(domain, jobs[index]);
     std::set<std::string> kept;
     std::set_intersection(common.begin(), common.end(), mine.begin(), mine.end(), std::inserter(kept, kept.end()));
     common = std::move(kept);
   }
   for (const CompileJob& job : jobs)
-    if (job.kind == JobKind::raw && has_all(job, common) && !ids.count(job.id)) return {};
+    if (job.kind == JobKind::raw && !ids.count(job.id) && has_all(domain, job, common)) return {};
   if (common.empty()) return "all of them";
   return "those with " + join(std::vector<std::string>(common.begin(), common.end()), " and ");
 }
@@ -65,8 +70,8 @@ std::string halves(const std::vector<CompileJob>& jobs, const std::set<std::size
 
 }  // namespace
 
-std::string where_it_occurs(const std::vector<CompileJob>& jobs, const std::set<std::size_t>& failing,
-                            bool every_example) {
+std::string where_it_occurs(const CompiledDomain& domain, const std::set<std::size_t>& failing, bool every_example) {
+  const std::vector<CompileJob>& jobs = domain.jobs;
   // Permutations are counted by ID: a program's two shaders of one raw ID are one permutation.
   std::set<std::uint32_t> raw_total, optimised_total, raw_ids, optimised_ids;
   for (const CompileJob& job : jobs) {
@@ -79,14 +84,14 @@ std::string where_it_occurs(const std::vector<CompileJob>& jobs, const std::set<
     const CompileJob& job = jobs[index];
     if (job.kind == JobKind::raw) raw.insert(index), raw_ids.insert(job.id);
     if (job.kind == JobKind::optimised) optimised_ids.insert(job.id);
-    if (job.kind == JobKind::companion) companions.push_back(job.label());
+    if (job.kind == JobKind::companion) companions.push_back(domain.label_of(job));
   }
   std::vector<std::string> parts;
   std::string half = halves(jobs, failing);
   if (!raw.empty()) {
     std::string text =
         std::to_string(raw_ids.size()) + " of " + std::to_string(raw_total.size()) + " raw permutations" + half;
-    std::string p = pattern(jobs, raw);
+    std::string p = pattern(domain, raw);
     if (!p.empty()) text += ": " + p;
     parts.push_back(text);
   }
@@ -97,14 +102,15 @@ std::string where_it_occurs(const std::vector<CompileJob>& jobs, const std::set<
   const CompileJob& example = jobs[*failing.begin()];
   std::string text = "in " + join(parts, "; ");
   // With no shared define set, -v lists every permutation; otherwise one example says enough.
-  bool listed = every_example && failing.size() > 1 && pattern(jobs, raw).empty();
+  bool listed = every_example && failing.size() > 1 && pattern(domain, raw).empty();
   if (listed) {
     std::vector<std::string> all;
     all.reserve(failing.size());
-    for (std::size_t index : failing) all.push_back(describe_job(jobs[index]));
+    for (std::size_t index : failing) all.push_back(describe_job(domain, jobs[index]));
     return text + "; namely " + join(all, ", ");
   }
-  return text + (failing.size() > 1 || example.kind != JobKind::companion ? "; e.g. " + describe_job(example) : "");
+  return text +
+         (failing.size() > 1 || example.kind != JobKind::companion ? "; e.g. " + describe_job(domain, example) : "");
 }
 
 LiveLines live_lines(std::string_view text, const std::string& main_file) {
@@ -154,8 +160,7 @@ std::vector<const Diagnostic*> kept_messages(const JobFailure& failure) {
 
 }  // namespace
 
-Diagnostics group_failures(const std::vector<CompileJob>& jobs, const std::vector<JobFailure>& failures,
-                           bool every_example) {
+Diagnostics group_failures(const CompiledDomain& domain, const std::vector<JobFailure>& failures, bool every_example) {
   // Key on the whole located message so the same error at the same line groups together.
   std::map<std::string, Group> groups;
   std::vector<std::string> order;
@@ -192,7 +197,7 @@ Diagnostics group_failures(const std::vector<CompileJob>& jobs, const std::vecto
     const Diagnostic& error = groups.at(key).error;
     const std::set<std::size_t>& failing = groups.at(key).failing;
     Diagnostic grouped = error;
-    grouped.message += " (" + where_it_occurs(jobs, failing, every_example) + ")";
+    grouped.message += " (" + where_it_occurs(domain, failing, every_example) + ")";
     out.push_back(std::move(grouped));
   }
   return out;

@@ -37,14 +37,14 @@ LiveLines live_lines(std::string_view preprocessed, const std::string& main_file
 // preprocessed text holds an error's line, word for word, counts as hitting that error too.
 // With `every_example` (the CLI's -v), an error whose permutations share no define set lists
 // them all ("namely raw 1 with A, raw 6 with B C") instead of one example.
-Diagnostics group_failures(const std::vector<CompileJob>& jobs, const std::vector<JobFailure>& failures,
+Diagnostics group_failures(const CompiledDomain& domain, const std::vector<JobFailure>& failures,
                            bool every_example = false);
 
 // Where a problem occurs, for the parentheses after it: "in 4 of 8 raw permutations (vertex
 // shader): those with FOG; e.g. raw 2 vertex with FOG". Permutations are counted by ID, so a
 // program's two shaders count once, and the failing half is named. `failing` holds indices into
-// `jobs`; precondition: not empty.
-std::string where_it_occurs(const std::vector<CompileJob>& jobs, const std::set<std::size_t>& failing,
+// `domain.jobs`; precondition: not empty.
+std::string where_it_occurs(const CompiledDomain& domain, const std::set<std::size_t>& failing,
                             bool every_example = false);
 
 }  // namespace shadergen

@@ -314,7 +314,7 @@ Json remote_counts(const RemoteCacheStats& remote) {
 Json permutation_timing(const CompiledDomain& d, const CompileJob& job) {
   const SourceRecord& source = d.sources[static_cast<std::size_t>(job.source)];
   const Blob& blob = d.blobs[static_cast<std::size_t>(job.blob)];
-  Json entry{{"permutation", job.label()},
+  Json entry{{"permutation", d.label_of(job)},
              {"source", job.source},
              {"compiled_here", source.first_job == static_cast<std::size_t>(&job - d.jobs.data())},
              {"cache_hit", source.cache_hit},

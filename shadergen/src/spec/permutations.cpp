@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "shadergen/registry.h"
+
 namespace shadergen {
 
 std::uint32_t apply_rules(const DomainSpec& spec, std::uint32_t raw_id) {
@@ -31,6 +33,12 @@ std::string describe_raw(const DomainSpec& spec, std::uint32_t raw_id) {
   return text.empty() ? "(none)" : text;
 }
 
+int first_impossible_rule(const DomainSpec& spec, std::uint32_t raw_id) {
+  for (std::size_t i = 0; i < spec.impossible.size(); ++i)
+    if (spec.impossible[i].when.expression.evaluate(raw_id)) return static_cast<int>(i);
+  return -1;
+}
+
 namespace {
 
 int first_unvalued_feature(const DomainSpec& spec, std::uint32_t raw_id) {
@@ -38,12 +46,6 @@ int first_unvalued_feature(const DomainSpec& spec, std::uint32_t raw_id) {
     const RawFeature& f = spec.raw_features[i];
     if (f.valued() && f.index_in(raw_id) >= f.values.size()) return static_cast<int>(i);
   }
-  return -1;
-}
-
-int first_impossible_rule(const DomainSpec& spec, std::uint32_t raw_id) {
-  for (std::size_t i = 0; i < spec.impossible.size(); ++i)
-    if (spec.impossible[i].when.expression.evaluate(raw_id)) return static_cast<int>(i);
   return -1;
 }
 
@@ -161,15 +163,6 @@ std::vector<std::uint32_t> optimised_ids(const DomainSpec& spec, const std::vect
   return ids;
 }
 
-template <class Permutation>
-std::optional<std::size_t> position_in(const std::vector<Permutation>& list, std::uint32_t id) {
-  if (id < list.size() && list[id].id == id) return id;  // enumerated: the ID is the position
-  auto it = std::lower_bound(list.begin(), list.end(), id,
-                             [](const Permutation& p, std::uint32_t wanted) { return p.id < wanted; });
-  if (it == list.end() || it->id != id) return std::nullopt;
-  return static_cast<std::size_t>(it - list.begin());
-}
-
 }  // namespace
 
 std::vector<std::string> raw_defines(const DomainSpec& spec, std::uint32_t raw_id) {
@@ -183,9 +176,9 @@ std::vector<std::string> raw_defines(const DomainSpec& spec, std::uint32_t raw_i
   return defines;
 }
 
-std::optional<std::size_t> PermutationPlan::raw_position(std::uint32_t id) const { return position_in(raw, id); }
+std::optional<std::size_t> PermutationPlan::raw_position(std::uint32_t id) const { return position_by_id(raw, id); }
 std::optional<std::size_t> PermutationPlan::optimised_position(std::uint32_t id) const {
-  return position_in(optimised, id);
+  return position_by_id(optimised, id);
 }
 const RawPermutation* PermutationPlan::find_raw(std::uint32_t id) const {
   std::optional<std::size_t> at = raw_position(id);

@@ -5,6 +5,7 @@
 
 #include "base/sha256.h"
 #include "base/untrusted_text.h"
+#include "shadergen/permutations.h"
 #include "spec/combination_text.h"
 
 namespace shadergen {
@@ -18,7 +19,10 @@ Diagnostic file_error(const DomainSpec& spec, const std::string& problem) {
 }
 
 // The line without its comment, its line ending and the blanks around it; `first` is the
-// offset of what is left within the line.
+// offset of what is left within the line. parse_combination() trims blanks as well, but this
+// trim stays: a blank or comment-only line must be skipped (the parser reads "" as "(none)",
+// raw ID 0), the parser leaves a CRLF file's '\r', and an impossible line's error quotes the
+// trimmed text at the column where it starts.
 std::string_view content_of(std::string_view line, std::size_t& first) {
   if (std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
   first = 0;
@@ -42,11 +46,10 @@ class VariantsReader {
       error(number, first + parsed.position, describe_combination_error(parsed, table_.features()));
       return;
     }
-    for (const ImpossibleSet& rule : spec_.impossible)
-      if (rule.when.expression.evaluate(parsed.raw_id)) {
-        error(number, first, impossible(content, rule));
-        return;
-      }
+    if (int rule = first_impossible_rule(spec_, parsed.raw_id); rule >= 0) {
+      error(number, first, impossible(content, spec_.impossible[static_cast<std::size_t>(rule)]));
+      return;
+    }
     ids_.push_back(parsed.raw_id);
   }
 

@@ -19,7 +19,6 @@ endif()
 set(areas base spec cache compile output driver cli)
 # shadergen/<name>.h -> the area whose sources define what it declares.
 set(public_area_diagnostic base)
-set(public_area_build_summary base)
 set(public_area_registry base)
 set(public_area_vulkan base)
 set(public_area_expression spec)
