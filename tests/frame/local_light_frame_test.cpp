@@ -210,8 +210,8 @@ TEST_P(LocalLightsEquivalence, ClassifiedEqualsNaiveWithLightsOn) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Passes, LocalLightsEquivalence, ::testing::Values(LightPass::compute, LightPass::raster),
-                         [](const ::testing::TestParamInfo<LightPass>& info) {
-                           return std::string(to_string(info.param));
+                         [](const ::testing::TestParamInfo<LightPass>& pass) {
+                           return std::string(to_string(pass.param));
                          });
 
 // ---------------------------------------------------------------------------------------------
