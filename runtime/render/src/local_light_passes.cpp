@@ -118,6 +118,24 @@ VkImageView set0_view(const RenderTargets& targets, std::uint32_t binding) {
               ", which lighting_params.glsl does not declare for this G-buffer");
 }
 
+// What every local-light pipeline shares: the layout and render pass, the light's permutation
+// with or without the coverage flags (`tagged`), blended ONE + ONE into the light target.
+// `vertex`: the domain's companion drawing it ("full_screen" or "volume").
+GraphicsPipelineDesc light_pipeline_desc(const shadergen::Registry& registry, VkPipelineLayout layout,
+                                         VkRenderPass render_pass, const char* vertex, std::uint32_t raw_id,
+                                         bool tagged) {
+  GraphicsPipelineDesc desc;
+  desc.layout = layout;
+  desc.render_pass = render_pass;
+  desc.vertex_spirv = companion_spirv(registry, vertex);
+  desc.fragment_spirv = registry.raw[raw_id].spirv;
+  desc.fragment_constants.set(kTaggedConstant, tagged ? 1u : 0u);
+  desc.additive_blend = true;
+  desc.name =
+      std::string("local light ") + vertex + " raw " + std::to_string(raw_id) + (tagged ? " (tagged G-buffer)" : "");
+  return desc;
+}
+
 }  // namespace
 
 LocalLightPasses::LocalLightPasses(const Context& context, const Scene& scene, const RenderTargets& targets,
@@ -192,12 +210,8 @@ void LocalLightPasses::create_volume_pipelines(const Context& context, const Ren
   lit.compareMask = 0xFF;
   lit.reference = kStencilLit;
   auto create = [&](std::uint32_t raw_id, bool tagged, bool depth_tested) {
-    GraphicsPipelineDesc desc;
-    desc.layout = layout_.get();
-    desc.render_pass = render_pass_.get();
-    desc.vertex_spirv = companion_spirv(registry, "volume");
-    desc.fragment_spirv = registry.raw[raw_id].spirv;
-    desc.fragment_constants.set(kTaggedConstant, tagged ? 1u : 0u);
+    GraphicsPipelineDesc desc =
+        light_pipeline_desc(registry, layout_.get(), render_pass_.get(), "volume", raw_id, tagged);
     desc.vertex_bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}};
     desc.cull_mode = VK_CULL_MODE_FRONT_BIT;  // inverted winding: the camera may be inside
@@ -205,9 +219,7 @@ void LocalLightPasses::create_volume_pipelines(const Context& context, const Ren
     desc.depth_compare = VK_COMPARE_OP_GREATER_OR_EQUAL;
     desc.depth_clamp = depth_clamp;
     desc.stencil = lit;
-    desc.additive_blend = true;
-    desc.name = "local light volume raw " + std::to_string(raw_id) + (tagged ? " (tagged G-buffer)" : "") +
-                (depth_tested ? "" : " (no depth test)");
+    if (!depth_tested) desc.name += " (no depth test)";
     return create_graphics_pipeline(context, desc);
   };
   for (const Draw& draw : draws_) {
@@ -268,15 +280,8 @@ void LocalLightPasses::create_sets(const Context& context, const RenderTargets& 
 void LocalLightPasses::create_full_screen_pipelines(const Context& context, const RenderTargets& targets) {
   const shadergen::Registry& registry = *shaders_;
   auto create = [&](std::uint32_t raw_id, bool tagged) {
-    GraphicsPipelineDesc desc;
-    desc.layout = layout_.get();
-    desc.render_pass = render_pass_.get();
-    desc.vertex_spirv = companion_spirv(registry, "full_screen");
-    desc.fragment_spirv = registry.raw[raw_id].spirv;
-    desc.fragment_constants.set(kTaggedConstant, tagged ? 1u : 0u);
-    desc.additive_blend = true;
-    desc.name = "local light full-screen raw " + std::to_string(raw_id) + (tagged ? " (tagged G-buffer)" : "");
-    return create_graphics_pipeline(context, desc);
+    return create_graphics_pipeline(
+        context, light_pipeline_desc(registry, layout_.get(), render_pass_.get(), "full_screen", raw_id, tagged));
   };
   for (const Draw& draw : draws_) {
     if (full_screen_.contains(draw.raw_id)) continue;
