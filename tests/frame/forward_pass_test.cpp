@@ -23,19 +23,24 @@
 //  5. A point light in front of A brightens it: with the light, A's pixel is again the blend of the
 //     opaque A and the background, both lit by the light, and brighter than without it: the light
 //     (one of the K chosen on the CPU) reaches the forward shader.
+// And tilelight's report.json: `forward` counts the blended instances (and K), timings_ms.forward
+// is the pass's time, present (0) without blended materials.
 #include "frame_support.h"
 #include "gltf_builder.h"
 #include "tilelight/gltf/load_gltf.h"
 #include "tilelight_testing/test_support.h"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <glm/glm.hpp>
 
 #include <array>
 #include <cmath>
-#include <optional>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 namespace tilelight::test {
 namespace {
@@ -179,6 +184,34 @@ TEST_P(ForwardPassFrame, ALocalLightReachesTheGlass) {
   const glm::uvec2 only_a = pixel_of(blended, {-1.2f, 0.2f, 0});
   EXPECT_TRUE(near(rgb_at(glass, only_a), over(rgb_at(lit_a, only_a), kAlphaA, rgb_at(background, only_a)), "A, lit"));
   EXPECT_GT(rgb_at(glass, only_a).r, rgb_at(unlit_glass, only_a).r + 0.05f) << "the light brightens the glass";
+}
+
+// report.json of one tilelight run on `scene_args` (none: the procedural scene), written to `out`.
+nlohmann::json report_of(const std::filesystem::path& out, std::vector<std::string> scene_args) {
+  std::vector<std::string> args{"--width", "64",           "--height", "48",        "--frames",
+                                "1",       "--validation", "--out",    out.string()};
+  args.insert(args.end(), scene_args.begin(), scene_args.end());
+  const CliResult r = run_cli(args);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream file(out / "report.json");
+  return nlohmann::json::parse(file);
+}
+
+TEST(ForwardPassCli, TheReportCountsTheBlendedInstancesAndTimesThePass) {
+  GltfBuilder file;
+  file.add_quad({-2, -2}, {2, 2}, -1, file.add_material(material({0, 1, 0}, 1, false)));
+  file.add_quad({-1, -1}, {1, 1}, 0, file.add_material(material({1, 0, 0}, 0.5f, true)));
+  const std::filesystem::path dir = scratch_dir();  // emptied by each call
+  const std::filesystem::path path = dir / "glass.gltf";
+  std::ofstream(path) << file.json();
+  const nlohmann::json report = report_of(dir / "with_glass", {"--scene", path.string()});
+  EXPECT_EQ(report["forward"], nlohmann::json({{"instances", 1}, {"max_lights", 8}}));
+  EXPECT_GT(report["timings_ms"]["forward"].get<double>(), 0.0);
+  EXPECT_EQ(report["equivalence"]["pixels_different"], 0) << report["equivalence"];
+
+  const nlohmann::json none = report_of(dir / "procedural", {});
+  EXPECT_EQ(none["forward"]["instances"], 0);
+  EXPECT_EQ(none["timings_ms"]["forward"].get<double>(), 0.0);
 }
 
 std::string msaa_name(const ::testing::TestParamInfo<std::uint32_t>& param_info) {
