@@ -1,6 +1,7 @@
 // The forward pass for alpha-blended materials (issue 38 item 5; docs/local-lights.md, "Forward
 // pass for blended materials"): golden-image checks on a file the test builds (gltf_builder.h),
-// on lavapipe under the validation layer (any message fails), at 4x and 1x MSAA.
+// on lavapipe under the validation layer (any message fails), at 4x and 1x MSAA (compute light
+// pass) and 4x with the raster light pass.
 //
 // The scene, in the file's coordinates, seen straight down the z axis: an opaque green wall at
 // z = -1 (4 x 4), an opaque white blocker at z = 0.8 over x 1.1..1.9, y -0.5..0.5, and two
@@ -122,7 +123,16 @@ glm::vec3 over(glm::vec3 glass, float alpha, glm::vec3 background) { return glas
   return ::testing::AssertionSuccess();
 }
 
-class ForwardPassFrame : public VulkanTest, public ::testing::WithParamInterface<std::uint32_t> {
+struct FrameCase {
+  std::uint32_t msaa;
+  LightPass light_pass;
+};
+
+void PrintTo(const FrameCase& c, std::ostream* os) {
+  *os << "msaa " << c.msaa << (c.light_pass == LightPass::compute ? ", compute" : ", raster");
+}
+
+class ForwardPassFrame : public VulkanTest, public ::testing::WithParamInterface<FrameCase> {
  protected:
   // The classified light target of one frame of `scene`; with the blended quads, also checks
   // that it equals the naive and dynamic targets per pixel.
@@ -130,7 +140,8 @@ class ForwardPassFrame : public VulkanTest, public ::testing::WithParamInterface
     RendererOptions options;
     options.width = kWidth;
     options.height = kHeight;
-    options.msaa = GetParam();
+    options.msaa = GetParam().msaa;
+    options.light_pass = GetParam().light_pass;
     TileRenderer renderer(context(), scene, options);
     (void)renderer.render_frame();
     EXPECT_EQ(renderer.forward_instances(), expected_blended);
@@ -214,11 +225,15 @@ TEST(ForwardPassCli, TheReportCountsTheBlendedInstancesAndTimesThePass) {
   EXPECT_EQ(none["timings_ms"]["forward"].get<double>(), 0.0);
 }
 
-std::string msaa_name(const ::testing::TestParamInfo<std::uint32_t>& param_info) {
-  return fmt::format("msaa{}", param_info.param);
+std::string case_name(const ::testing::TestParamInfo<FrameCase>& param_info) {
+  return fmt::format("msaa{}_{}", param_info.param.msaa,
+                     param_info.param.light_pass == LightPass::compute ? "compute" : "raster");
 }
 
-INSTANTIATE_TEST_SUITE_P(Msaa, ForwardPassFrame, ::testing::Values(4u, 1u), msaa_name);
+INSTANTIATE_TEST_SUITE_P(Modes, ForwardPassFrame,
+                         ::testing::Values(FrameCase{4, LightPass::compute}, FrameCase{1, LightPass::compute},
+                                           FrameCase{4, LightPass::raster}),
+                         case_name);
 
 }  // namespace
 }  // namespace tilelight::test
