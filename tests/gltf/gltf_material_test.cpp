@@ -1,5 +1,5 @@
-// Materials as the loader hands them to the renderer: alphaMode MASK and its cutoff, BLEND drawn
-// as MASK at 0.5 with a warning, doubleSided, KHR_texture_transform baked into the uvs,
+// Materials as the loader hands them to the renderer: alphaMode MASK and its cutoff, BLEND for the
+// forward pass (no mask, no warning), doubleSided, KHR_texture_transform baked into the uvs,
 // KHR_materials_pbrSpecularGlossiness's diffuse as the base colour, mirrored instances rewound,
 // and bad values named. Each file is built by the test (gltf_builder.h).
 #include "gltf_builder.h"
@@ -60,22 +60,26 @@ TEST(GltfMaterial, DoubleSidedIsHonoured) {
   EXPECT_FALSE(load_one(R"("doubleSided": false)").meshes[0].double_sided);
 }
 
-TEST(GltfMaterial, BlendIsDrawnAsMaskAtOneHalfWithOneWarning) {
+// BLEND meshes go to the forward pass: blended, not masked (glTF: alphaCutoff does not apply),
+// with the base colour factor's alpha on the instance, and nothing to warn about.
+TEST(GltfMaterial, BlendIsBlendedWithoutAMaskOrAWarning) {
   GltfBuilder file;
-  file.add_quad({-1, -1}, {0, 1}, 0, file.add_material(R"("alphaMode": "BLEND", "alphaCutoff": 0.9)"));
+  file.add_quad({-1, -1}, {0, 1}, 0,
+                file.add_material(R"("alphaMode": "BLEND", "alphaCutoff": 0.9, "pbrMetallicRoughness":
+                    {"baseColorFactor": [1, 0, 0, 0.25]})"));
   file.add_quad({0, -1}, {1, 1}, 0, file.add_material(R"("alphaMode": "BLEND")"));
   const Scene scene = load(file);
   ASSERT_EQ(scene.meshes.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_TRUE(scene.meshes[i].alpha_mask);
-    EXPECT_EQ(scene.instances[i].alpha_mask, glm::vec2(1.0f, 0.5f)) << "BLEND ignores alphaCutoff";
+    EXPECT_TRUE(scene.meshes[i].blend);
+    EXPECT_FALSE(scene.meshes[i].alpha_mask);
+    EXPECT_EQ(scene.instances[i].alpha_mask.y, 0.0f) << "BLEND ignores alphaCutoff";
   }
-  EXPECT_EQ(load_with_warnings(file).warnings,
-            std::vector<std::string>{"warning: m.gltf: 2 materials use alphaMode BLEND: drawn as MASK at 0.5; "
-                                     "a deferred G-buffer cannot blend"});
-  EXPECT_EQ(load_with_warnings(one_quad(R"("alphaMode": "BLEND")")).warnings,
-            std::vector<std::string>{"warning: m.gltf: 1 material uses alphaMode BLEND: drawn as MASK at 0.5; a "
-                                     "deferred G-buffer cannot blend"});
+  EXPECT_EQ(scene.instances[0].alpha_mask.x, 0.25f) << "the base colour factor's alpha";
+  EXPECT_EQ(scene.instances[1].alpha_mask.x, 1.0f);
+  EXPECT_TRUE(load_with_warnings(file).warnings.empty());
+  EXPECT_FALSE(load_one(R"("alphaMode": "MASK")").meshes[0].blend);
+  EXPECT_FALSE(load_one(R"("alphaMode": "OPAQUE")").meshes[0].blend);
 }
 
 // Offset (0.5, 0.25) after scale (0.5, 2): uv (u, v) -> (0.5 u + 0.5, 2 v + 0.25).

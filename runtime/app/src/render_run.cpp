@@ -158,6 +158,7 @@ FrameReport make_report(const Arguments& a, const ChosenCamera& camera, const Co
                 a.baseline,
                 a.light_pass};
   report.run.local_light_pass = a.local_light_pass;
+  report.run.forward_instances = renderer.forward_instances();
   report.run.scene = scene.source;
   report.run.scene_triangles = scene.triangle_count();
   report.run.local_lights = count_local_lights(scene.local_lights);

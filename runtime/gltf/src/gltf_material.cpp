@@ -75,7 +75,7 @@ void apply_specular_glossiness(MaterialLook& look, const tinygltf::Value& extens
 
 void apply_alpha_mode(MaterialLook& look, const tinygltf::Material& material, const std::string& name) {
   if (material.alphaMode == "BLEND") {
-    look.alpha_mask = look.blend = true;  // alpha_cutoff stays 0.5
+    look.blend = true;  // alphaCutoff does not apply (glTF)
     return;
   }
   if (material.alphaMode == "MASK") {
@@ -178,14 +178,6 @@ std::optional<BaseColourTextureRef> base_colour_texture_ref(const tinygltf::Mode
 void transform_uvs(Mesh& mesh, const glm::mat3& uv_transform) {
   if (uv_transform == glm::mat3(1.0f)) return;  // untouched, to the bit
   for (MeshVertex& v : mesh.vertices) v.uv = glm::vec2(uv_transform * glm::vec3(v.uv, 1.0f));
-}
-
-std::vector<std::string> material_warnings(const tinygltf::Model& model) {
-  const auto blend = std::count_if(model.materials.begin(), model.materials.end(),
-                                   [](const tinygltf::Material& m) { return m.alphaMode == "BLEND"; });
-  if (blend == 0) return {};
-  return {fmt::format("{} material{} use{} alphaMode BLEND: drawn as MASK at 0.5; a deferred G-buffer cannot blend",
-                      blend, blend == 1 ? "" : "s", blend == 1 ? "s" : "")};
 }
 
 Instance material_instance(const MaterialLook& look, const glm::mat4& world, std::uint32_t motion_id) {

@@ -19,9 +19,9 @@ struct MaterialLook {
   glm::vec4 base_colour{1.0f};  // linear RGBA factor, each in 0..1
   float spec_amount = 0.05f;    // Instance::albedo_spec.a
   float spec_power = 4.0f;      // Instance::material.x
-  bool alpha_mask = false;      // alphaMode MASK, or BLEND drawn as MASK
+  bool alpha_mask = false;      // alphaMode MASK
   float alpha_cutoff = 0.5f;    // with alpha_mask
-  bool blend = false;           // alphaMode BLEND (drawn as MASK at 0.5)
+  bool blend = false;           // alphaMode BLEND (the forward pass)
   bool double_sided = false;
 };
 
@@ -46,9 +46,6 @@ std::optional<BaseColourTextureRef> base_colour_texture_ref(const tinygltf::Mode
 // Applies a base colour texture's uv transform to every vertex of a mesh: a transform affine in
 // uv commutes with interpolation, so it is done once here rather than per fragment.
 void transform_uvs(Mesh& mesh, const glm::mat3& uv_transform);
-
-// What the file's materials ask for that the renderer draws otherwise (no file name): BLEND.
-std::vector<std::string> material_warnings(const tinygltf::Model& model);
 
 // The Instance of a placed primitive with material `material`.
 Instance material_instance(const MaterialLook& look, const glm::mat4& world, std::uint32_t motion_id);

@@ -171,6 +171,7 @@ bool mirrors(const glm::mat4& m) { return glm::determinant(glm::mat3(m)) < 0.0f;
 void apply_material(Mesh& mesh, const MaterialLook& look, const std::optional<BaseColourTexture>& texture,
                     bool mirrored) {
   mesh.alpha_mask = look.alpha_mask;
+  mesh.blend = look.blend;
   mesh.double_sided = look.double_sided;
   if (texture) {
     mesh.base_colour_texture = texture->texture;
@@ -255,9 +256,6 @@ GltfScene load(std::span<const std::uint8_t> bytes, const std::string& name, con
     GltfScene loaded{std::move(built.scene), {}};
     loaded.scene.source = source;
     for (const std::string& line : parsed.ignored) loaded.warnings.push_back("warning: " + name + ": " + line);
-    for (const std::string& line : material_warnings(parsed.model)) {
-      loaded.warnings.push_back("warning: " + name + ": " + line);
-    }
     for (const std::string& line : built.warnings) loaded.warnings.push_back("warning: " + name + ": " + line);
     return loaded;
   } catch (const Error& e) {

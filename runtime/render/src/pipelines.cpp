@@ -178,12 +178,22 @@ VkPipelineDepthStencilStateCreateInfo depth_state(const GraphicsPipelineDesc& de
 
 // Every colour attachment written whole: replaced, or with `additive` added to (ONE, ONE); with
 // `write` false, not at all.
-std::vector<VkPipelineColorBlendAttachmentState> blend_attachments(std::uint32_t count, bool additive, bool write) {
+std::vector<VkPipelineColorBlendAttachmentState> blend_attachments(std::uint32_t count, bool additive, bool alpha,
+                                                                   bool write) {
   std::vector<VkPipelineColorBlendAttachmentState> blend(count);
   for (VkPipelineColorBlendAttachmentState& b : blend) {
     if (!write) continue;  // no write mask: the attachment keeps its contents
     b.colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    if (alpha) {
+      b.blendEnable = VK_TRUE;
+      b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+      b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+      b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+      b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+      b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
+      continue;
+    }
     if (!additive) continue;
     b.blendEnable = VK_TRUE;
     b.srcColorBlendFactor = b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
@@ -213,7 +223,7 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
   multisample.rasterizationSamples = desc.samples;
   const VkPipelineDepthStencilStateCreateInfo depth = depth_state(desc);
   const std::vector<VkPipelineColorBlendAttachmentState> blend =
-      blend_attachments(desc.color_attachments, desc.additive_blend, desc.color_write);
+      blend_attachments(desc.color_attachments, desc.additive_blend, desc.alpha_blend, desc.color_write);
   VkPipelineColorBlendStateCreateInfo color_blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   color_blend.attachmentCount = desc.color_attachments;
   color_blend.pAttachments = blend.data();

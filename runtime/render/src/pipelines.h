@@ -78,6 +78,9 @@ struct GraphicsPipelineDesc {
   // Colour written as ONE * source + ONE * destination (the local lights add into the light
   // target); otherwise replaced.
   bool additive_blend = false;
+  // Colour written as SRC_ALPHA * source + ONE_MINUS_SRC_ALPHA * destination, the destination's
+  // alpha kept (the forward pass's blended materials over the light target).
+  bool alpha_blend = false;
   std::string name;
 };
 

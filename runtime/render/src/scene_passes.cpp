@@ -108,9 +108,12 @@ ScenePasses::ScenePasses(const Context& context, const Scene& scene, const Camer
     buffers.index_count = static_cast<std::uint32_t>(mesh.indices.size());
     buffers.base_colour = textures_.set_of(mesh.base_colour_texture);
     buffers.kind = batch_kind(mesh);
+    buffers.blend = mesh.blend;
     meshes_.push_back(std::move(buffers));
   }
-  for (const MeshBatch& batch : batches_) kind_drawn_[meshes_[batch.mesh].kind] = true;
+  for (const MeshBatch& batch : batches_) {
+    if (!meshes_[batch.mesh].blend) kind_drawn_[meshes_[batch.mesh].kind] = true;
+  }
   instances_ = upload_buffer<Instance>(context, scene.instances, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene instances");
   const SceneParamsBlock block = make_scene_params(scene, camera, targets.extent().width, targets.extent().height);
   params_ = upload_buffer<SceneParamsBlock>(context, std::span(&block, 1), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
@@ -213,7 +216,7 @@ void ScenePasses::draw_batches(VkCommandBuffer cmd, bool textured, std::size_t k
     const MeshBatch& batch = batches_[i];
     if (!selection.drawn[i]) continue;
     const MeshBuffers& mesh = meshes_[batch.mesh];
-    if (mesh.kind != kind) continue;
+    if (mesh.kind != kind || mesh.blend) continue;  // blended meshes: the forward pass's alone
     if (textured) {
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 1, 1, &mesh.base_colour, 0, nullptr);
     }

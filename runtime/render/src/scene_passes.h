@@ -1,5 +1,6 @@
 #pragma once
 // The scene passes: the sun shadow map (depth only) and the G-buffer (materials, then sky).
+// Blended meshes (Mesh::blend) are in neither: the forward pass draws them (forward_pass.h).
 // Meshes, instances and base colour textures are uploaded once; the camera is fixed per renderer.
 
 #include "render_targets.h"
@@ -64,6 +65,7 @@ class ScenePasses {
     std::uint32_t index_count = 0;
     VkDescriptorSet base_colour = VK_NULL_HANDLE;  // set 1 of the G-buffer pass and of masked shadows
     std::size_t kind = 0;                          // batch_kind() of the mesh
+    bool blend = false;  // Mesh::blend: neither in the G-buffer nor in the shadow map (forward_pass.h)
   };
   // The batches whose mesh is of kind `kind` and that `selection` draws, in scene order. With
   // `textured`, each binds its mesh's base colour texture first (the G-buffer pass, masked

@@ -2,6 +2,8 @@
 
 #include "tilelight/vulkan/error.h"
 
+#include <forward_1x_shaders.h>
+#include <forward_shaders.h>
 #include <local_lights_1x_shaders.h>
 #include <local_lights_shaders.h>
 #include <split_second_1x_shaders.h>
@@ -42,6 +44,10 @@ static_assert(local_lights::kRawPruned == local_lights_1x::kRawPruned);
 
 const shadergen::Registry& local_light_shaders_for(VkSampleCountFlagBits gbuffer_samples) {
   return gbuffer_samples == VK_SAMPLE_COUNT_1_BIT ? local_lights_1x::registry() : local_lights::registry();
+}
+
+const shadergen::Registry& forward_shaders_for(VkSampleCountFlagBits gbuffer_samples) {
+  return gbuffer_samples == VK_SAMPLE_COUNT_1_BIT ? forward_1x::registry() : forward::registry();
 }
 
 const shadergen::Permutation& companion_shader(const shadergen::Registry& registry, std::string_view name) {

@@ -30,6 +30,10 @@ const shadergen::Registry& compute_shaders_for(VkSampleCountFlagBits gbuffer_sam
 // shaders), for a G-buffer of `gbuffer_samples` samples per pixel. Same raw IDs in both builds.
 const shadergen::Registry& local_light_shaders_for(VkSampleCountFlagBits gbuffer_samples);
 
+// The forward pass for blended materials (permutations/forward.json: uber/forward.frag, its
+// vertex shader and depth copy), for a G-buffer of `gbuffer_samples` samples per pixel.
+const shadergen::Registry& forward_shaders_for(VkSampleCountFlagBits gbuffer_samples);
+
 // The companion shader `name` of `registry` (its SPIR-V and reflection); throws tilelight::Error
 // naming both when there is none.
 const shadergen::Permutation& companion_shader(const shadergen::Registry& registry, std::string_view name);

@@ -2,6 +2,7 @@
 
 #include "descriptors.h"
 #include "floor_target.h"
+#include "forward_pass.h"
 #include "lighting_interface.h"
 #include "local_light_passes.h"
 #include "picture_readback.h"
@@ -109,7 +110,8 @@ std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Regist
 
 // Descriptor sets one renderer allocates from its pool, at most 11: the scene's, lighting set 0,
 // the tile-ID output, the GPU index build, the GPU tile-list build, the compute light pass's
-// four targets (classified, naive, dynamic, floor), and the local lights' sets 0 and 1.
+// four targets (classified, naive, dynamic, floor), the local lights' sets 0 and 1, and the
+// forward pass's sets 0 and 1.
 // The base colour textures have a pool of their own (scene_textures.cpp).
 constexpr std::uint32_t kMaxDescriptorSets = 16;
 
@@ -122,9 +124,11 @@ constexpr std::string_view kTileStart = "start", kTiled = "tiled", kGBufferPlain
 constexpr std::string_view kNaive = "naive", kDynamic = "dynamic", kFloor = "floor";
 // The local lights added after each light pass: into the classified, naive and dynamic targets.
 constexpr std::string_view kLocal = "local", kNaiveLocal = "naive_local", kDynamicLocal = "dynamic_local";
-// Submit B writes at most: start, tiled, local, gbuffer_plain, naive, naive_local, dynamic,
-// dynamic_local, floor.
-constexpr std::uint32_t kTileTimestamps = 9;
+// The blended materials' forward pass after the local lights, into the same targets.
+constexpr std::string_view kForward = "forward", kNaiveForward = "naive_forward", kDynamicForward = "dynamic_forward";
+// Submit B writes at most: start, tiled, local, forward, gbuffer_plain, naive, naive_local,
+// naive_forward, dynamic, dynamic_local, dynamic_forward, floor.
+constexpr std::uint32_t kTileTimestamps = 12;
 
 std::size_t index_of(const std::vector<Timestamp>& stamps, std::string_view label) {
   for (std::size_t i = 0; i < stamps.size(); ++i) {
@@ -160,6 +164,7 @@ struct TileRenderer::Impl {
   std::unique_ptr<FloorTarget> floor_target;              // Baselines::floor and all
   std::unique_ptr<TileLightPass> light_pass;              // LightPass x IndexPath
   std::unique_ptr<LocalLightPasses> local_lights;         // after each light pass, into its target
+  std::unique_ptr<ForwardPass> forward;                   // blended materials, after the local lights
   std::function<void(VkCommandBuffer)> gbuffer_override;  // replaces the scene's G-buffers when set
 
   UniqueCommandBuffer frame_commands;  // submit A, re-recorded each frame
@@ -194,6 +199,8 @@ struct TileRenderer::Impl {
     local_lights =
         std::make_unique<LocalLightPasses>(ctx, scene, *targets, lighting->params(), scene_passes->textures(),
                                            descriptor_pool.get(), opts.local_light_pass);
+    forward = std::make_unique<ForwardPass>(ctx, scene, camera, *targets, lighting->params(), scene_passes->textures(),
+                                            descriptor_pool.get());
 
     frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
     tile_queries = TimestampQueries(ctx, "tile pass timestamps", kTileTimestamps);
@@ -238,6 +245,7 @@ struct TileRenderer::Impl {
     tile_queries.write(cmd, std::string(kTiled));
     // Before the baselines' plain G-buffer replaces the classified one it reads.
     record_local_lights(cmd, LocalLightTarget::classified, true, kLocal);
+    record_forward(cmd, LocalLightTarget::classified, kForward);
     if (runs_any_baseline()) record_baselines(cmd);
     end_commands(cmd, "tile pass");
   }
@@ -256,6 +264,19 @@ struct TileRenderer::Impl {
     return has_local_lights() ? pass_ms(stamps, stamp) : 0.0;
   }
 
+  bool has_forward() const { return forward->instance_count() > 0; }
+
+  // The blended materials into one light target, then their stamp; nothing without any.
+  void record_forward(VkCommandBuffer cmd, LocalLightTarget target, std::string_view stamp) {
+    if (!has_forward()) return;
+    forward->record(cmd, *targets, target);
+    tile_queries.write(cmd, std::string(stamp));
+  }
+
+  double forward_ms(const std::vector<Timestamp>& stamps, std::string_view stamp) const {
+    return has_forward() ? pass_ms(stamps, stamp) : 0.0;
+  }
+
   // The baselines' whole frame after the classified one: the plain G-buffer (what lighting
   // reads, no classification data) into the same targets, then each baseline that runs.
   void record_baselines(VkCommandBuffer cmd) {
@@ -267,11 +288,13 @@ struct TileRenderer::Impl {
       light_pass->record_baseline(cmd, *targets, BaselinePass::naive);
       tile_queries.write(cmd, std::string(kNaive));
       record_local_lights(cmd, LocalLightTarget::naive, false, kNaiveLocal);
+      record_forward(cmd, LocalLightTarget::naive, kNaiveForward);
     }
     if (runs_dynamic()) {
       light_pass->record_baseline(cmd, *targets, BaselinePass::dynamic);
       tile_queries.write(cmd, std::string(kDynamic));
       record_local_lights(cmd, LocalLightTarget::dynamic, false, kDynamicLocal);
+      record_forward(cmd, LocalLightTarget::dynamic, kDynamicForward);
     }
     if (runs_floor()) {
       light_pass->record_baseline(cmd, *targets, BaselinePass::floor);
@@ -388,8 +411,9 @@ struct TileRenderer::Impl {
     if (!light_pass->host_builds()) t.index_build_gpu = between(frame_stamps, 3);
     t.tiled_light = pass_ms(tile_stamps, kTiled);
     t.local_lights = local_ms(tile_stamps, kLocal);
+    t.forward = forward_ms(tile_stamps, kForward);
     // End to end across both submissions: the CPU path's wait for the host is part of it.
-    const std::string_view last = has_local_lights() ? kLocal : kTiled;
+    const std::string_view last = has_forward() ? kForward : has_local_lights() ? kLocal : kTiled;
     t.frame_classified = tile_queries.span_ms(frame_stamps.front(), tile_stamps[index_of(tile_stamps, last)]);
     if (runs_any_baseline()) read_baseline_timings(tile_stamps, t);
   }
@@ -400,11 +424,13 @@ struct TileRenderer::Impl {
     t.gbuffer_plain = pass_ms(stamps, kGBufferPlain);
     if (runs_naive()) {
       t.naive_light = pass_ms(stamps, kNaive);
-      t.frame_naive = t.shadow_map + t.gbuffer_plain + t.naive_light + local_ms(stamps, kNaiveLocal);
+      t.frame_naive = t.shadow_map + t.gbuffer_plain + t.naive_light + local_ms(stamps, kNaiveLocal) +
+                      forward_ms(stamps, kNaiveForward);
     }
     if (runs_dynamic()) {
       t.dynamic_light = pass_ms(stamps, kDynamic);
-      t.frame_dynamic = t.shadow_map + t.gbuffer_plain + t.dynamic_light + local_ms(stamps, kDynamicLocal);
+      t.frame_dynamic = t.shadow_map + t.gbuffer_plain + t.dynamic_light + local_ms(stamps, kDynamicLocal) +
+                        forward_ms(stamps, kDynamicForward);
     }
     if (runs_floor()) t.floor_light = pass_ms(stamps, kFloor);
   }
@@ -436,6 +462,7 @@ CulledBatches TileRenderer::culled_batches() const {
   return {impl_->scene_passes->culled_gbuffer_batches(), impl_->scene_passes->culled_shadow_batches()};
 }
 double TileRenderer::scene_upload_ms() const { return impl_->scene_upload_ms; }
+std::size_t TileRenderer::forward_instances() const { return impl_->forward->instance_count(); }
 const LightingParamsBlock& TileRenderer::lighting_params() const { return impl_->lighting->params(); }
 
 std::vector<std::uint8_t> TileRenderer::raw_tile_ids() const {

@@ -40,6 +40,7 @@ struct RunDescription {
   LocalLightCounts local_lights;  // the scene's point, spot and box lights (--lights, or the file's)
   bool cull = true;               // RendererOptions::cull_batches (--no-cull: false)
   LocalLightPass local_light_pass = LocalLightPass::volumes;  // --local-light-pass
+  std::uint64_t forward_instances = 0;                        // blended instances (TileRenderer::forward_instances())
 };
 
 // Milliseconds per stage, each the median over the frames (FrameTimings' stages, of one frame).

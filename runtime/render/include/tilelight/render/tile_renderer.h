@@ -89,6 +89,10 @@ constexpr const char* to_string(Baselines b) {
   return "?";
 }
 
+// The most local lights the forward pass lights one blended instance with: the K most important
+// (Tabula Rasa §19.3.3; docs/local-lights.md, "Forward pass for blended materials").
+inline constexpr std::uint32_t kForwardMaxLights = 8;
+
 struct RendererOptions {
   std::uint32_t width = 1280;
   std::uint32_t height = 720;
@@ -126,8 +130,11 @@ struct FrameTimings {  // milliseconds
   // baseline adds them into its own target too, and its frame below includes that); 0 without
   // local lights.
   double local_lights = 0;
+  // The forward pass of the blended materials into the classified light target, after its local
+  // lights (each baseline's frame includes its own); 0 without blended materials.
+  double forward = 0;
   // Whole frames: shadow map + G-buffer + [classification + index build] + light pass + local
-  // lights. The
+  // lights + forward pass. The
   // classified frame is end to end (first to last GPU timestamp), so the CPU path's wait for the
   // host's index build is in it; a baseline frame is the sum of its passes. 0 where it did not run.
   double frame_classified = 0, frame_naive = 0, frame_dynamic = 0;
@@ -182,6 +189,9 @@ class TileRenderer {
   // Host milliseconds to put the scene on the GPU: meshes, instances, textures (with their
   // mip chains) and the scene passes' pipelines, once, when this renderer was made.
   double scene_upload_ms() const;
+  // Blended instances the forward pass draws into each light target (0: no forward pass); each
+  // is lit by at most kForwardMaxLights local lights.
+  std::size_t forward_instances() const;
 
   // Results of the last frame.
   std::vector<std::uint8_t> raw_tile_ids() const;  // row-major, tiles_x * tiles_y

@@ -63,6 +63,11 @@ struct Mesh {
   // alpha.x) is below the instance's cutoff (alpha.y) are discarded, in the G-buffer and the sun
   // shadow map. Masked meshes are drawn with pipelines of their own, after the opaque ones.
   bool alpha_mask = false;
+  // glTF's alphaMode BLEND: drawn by the forward pass after the deferred ones, blended over the
+  // light target with the base colour's alpha (texture alpha times the instance's alpha_mask.x),
+  // back to front (docs/local-lights.md, "Forward pass for blended materials"). Not in the
+  // G-buffer, and casts no sun shadow. Never together with alpha_mask.
+  bool blend = false;
   // false: back faces are culled in the G-buffer (glTF's single-sided materials; their triangles
   // wind counter-clockwise seen from the front). true (the procedural scene's meshes): both sides
   // are drawn, and a back face stores the flipped normal.
@@ -75,7 +80,7 @@ struct Instance {
   glm::vec4 albedo_spec;  // rgb albedo, a specular amount (0..1)
   glm::vec4 material;     // x specular power, y motion ID (1..127; 0 is the sky), z checker scale (0 = none),
                           // w 1 when the mesh has flat_faces, else 0
-  glm::vec2 alpha_mask{1.0f, 0.0f};  // x base colour factor alpha, y alpha cutoff: read by masked meshes only
+  glm::vec2 alpha_mask{1.0f, 0.0f};  // x base colour factor alpha, y alpha cutoff: read by masked and blended meshes
 };
 
 // One mesh drawn with a contiguous range of the instance buffer.

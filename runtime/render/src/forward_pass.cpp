@@ -1,0 +1,326 @@
+#include "forward_pass.h"
+
+#include "descriptors.h"
+#include "local_light_block.h"
+#include "pipelines.h"
+#include "reflected_layout.h"
+#include "shader_registry.h"
+#include "tilelight/vulkan/context.h"
+#include "tilelight/vulkan/error.h"
+
+#include <shadergen/vulkan.h>
+
+#include <cstring>
+#include <string>
+
+namespace tilelight {
+namespace {
+
+// lighting_params.glsl's set 0 and forward_params.glsl's block.
+constexpr std::uint32_t kParamsBinding = 0;
+constexpr std::uint32_t kFirstGBufferBinding = 1;  // RT0..RT3 at 1..4
+constexpr std::uint32_t kShadowMapBinding = 5;
+constexpr std::uint32_t kForwardBinding = 8;
+constexpr std::uint32_t kLightsSet = 1;
+constexpr std::uint32_t kBaseColourSet = 2;
+constexpr std::uint32_t kLocalLightsBit = 1;  // permutations/forward.json: LOCAL_LIGHTS, bit 0
+
+// forward_params.glsl's ForwardParams (std140).
+struct ForwardParamsBlock {
+  glm::mat4 view_proj;
+  glm::vec4 ambient_sky;
+  glm::vec4 ambient_ground;
+};
+
+// forward_params.glsl's ForwardDraw: the light count, then the indices four to a uvec4.
+struct DrawConstants {
+  glm::uvec4 light_count;
+  std::array<std::uint32_t, kForwardMaxLights> lights;
+};
+constexpr std::uint32_t kDrawConstantBytes = sizeof(DrawConstants);
+static_assert(kDrawConstantBytes == 48);
+
+// Colour attachment 0, the light target, loaded and stored (TRANSFER_SRC_OPTIMAL before and
+// after, as the local lights leave it); attachment 1 this pass's single-sampled depth, cleared
+// to 1 and dropped at the end. Dependencies as the local lights' pass (local_light_passes.cpp).
+UniqueRenderPass create_forward_render_pass(const Context& context, VkFormat depth_format) {
+  VkAttachmentDescription target{};
+  target.format = kLightFormat;
+  target.samples = VK_SAMPLE_COUNT_1_BIT;
+  target.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  target.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  target.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  target.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  target.initialLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  target.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  VkAttachmentDescription depth{};
+  depth.format = depth_format;
+  depth.samples = VK_SAMPLE_COUNT_1_BIT;
+  depth.loadOp = depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  const std::array<VkAttachmentDescription, 2> attachments{target, depth};
+  const VkAttachmentReference colour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &colour;
+  subpass.pDepthStencilAttachment = &depth_ref;
+  // In: after the light target's writes (global pass draws or compute, local lights) and the
+  // previous target's forward pass's depth tests (the depth image is reused). Out: the read-back.
+  constexpr VkPipelineStageFlags kTests =
+      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  constexpr VkPipelineStageFlags kBefore = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                           kTests;
+  constexpr VkPipelineStageFlags kOutput = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  constexpr VkAccessFlags kBlend = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  constexpr VkAccessFlags kDepth =
+      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  const std::array<VkSubpassDependency, 2> dependencies{{
+      {VK_SUBPASS_EXTERNAL, 0, kBefore, kOutput | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | kTests,
+       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+       kBlend | kDepth, 0},
+      {0, VK_SUBPASS_EXTERNAL, kOutput, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+       VK_ACCESS_TRANSFER_READ_BIT, 0},
+  }};
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = static_cast<std::uint32_t>(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = static_cast<std::uint32_t>(dependencies.size());
+  info.pDependencies = dependencies.data();
+  VkRenderPass pass = VK_NULL_HANDLE;
+  check(vkCreateRenderPass(context.device(), &info, nullptr, &pass), "vkCreateRenderPass", "forward pass");
+  UniqueRenderPass owned(pass, {context.device()});
+  context.name_object(pass, "forward pass");
+  return owned;
+}
+
+// The image view set 0's binding `binding` reads (lighting_params.glsl's numbering).
+VkImageView set0_view(const RenderTargets& targets, std::uint32_t binding) {
+  switch (binding) {
+    case kFirstGBufferBinding: return targets.rt0().view();
+    case kFirstGBufferBinding + 1: return targets.rt1().view();
+    case kFirstGBufferBinding + 2: return targets.rt2().view();
+    case kFirstGBufferBinding + 3: return targets.rt3().view();
+    case kShadowMapBinding: return targets.shadow_map().view();
+    default: break;
+  }
+  throw Error("forward.json's set 0 has binding " + std::to_string(binding) +
+              ", which the forward pass does not bind (lighting_params.glsl, forward_params.glsl)");
+}
+
+// MeshVertex and Instance as scene.vert reads them (scene_passes.cpp binds the same layout);
+// forward.vert reads every attribute.
+std::vector<VkVertexInputBindingDescription> forward_bindings() {
+  return {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(Instance), VK_VERTEX_INPUT_RATE_INSTANCE}};
+}
+
+std::vector<VkVertexInputAttributeDescription> forward_attributes() {
+  std::vector<VkVertexInputAttributeDescription> a{{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
+                                                   {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)},
+                                                   {8, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv)}};
+  for (std::uint32_t column = 0; column < 4; ++column) {
+    a.push_back({2 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
+                 static_cast<std::uint32_t>(offsetof(Instance, model) + column * sizeof(glm::vec4))});
+  }
+  a.push_back({6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, albedo_spec)});
+  a.push_back({7, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, material)});
+  a.push_back({9, 1, VK_FORMAT_R32G32_SFLOAT, offsetof(Instance, alpha_mask)});
+  return a;
+}
+
+template <typename T>
+Buffer upload_values(const Context& context, std::span<const T> data, VkBufferUsageFlags usage, std::string name) {
+  Buffer buffer(context, {std::max<VkDeviceSize>(data.size_bytes(), 4), usage, MemoryUse::HostUpload, std::move(name)});
+  buffer.write_values(data);
+  return buffer;
+}
+
+}  // namespace
+
+ForwardPass::ForwardPass(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
+                         const LightingParamsBlock& params, const SceneTextures& textures, VkDescriptorPool pool)
+    : shaders_(&forward_shaders_for(targets.samples())),
+      draws_(plan_forward_draws(scene, camera.position)),
+      params_block_(params) {
+  if (draws_.empty()) return;  // nothing blended: no buffers, sets or pipelines
+  upload(context, scene, textures, make_scene_params(scene, camera, targets.extent().width, targets.extent().height));
+  render_pass_ = create_forward_render_pass(context, targets.gbuffer_depth_format());
+  depth_ = Image(
+      context, {targets.extent(), targets.gbuffer_depth_format(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT, "forward pass: depth"});
+  create_framebuffers(context, targets);
+  create_sets(context, targets, pool, textures);
+  create_pipelines(context);
+}
+
+void ForwardPass::upload(const Context& context, const Scene& scene, const SceneTextures& textures,
+                         const SceneParamsBlock& scene_params) {
+  meshes_.resize(scene.meshes.size());
+  std::vector<Instance> instances;
+  for (const ForwardDraw& draw : draws_) {
+    instances.push_back(scene.instances[draw.instance]);
+    MeshBuffers& buffers = meshes_[draw.mesh];
+    if (buffers.index_count != 0) continue;
+    const Mesh& mesh = scene.meshes[draw.mesh];
+    buffers.vertices = upload_values<MeshVertex>(context, mesh.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                                 "blended mesh " + mesh.name + " vertices");
+    buffers.indices = upload_values<std::uint32_t>(context, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                                   "blended mesh " + mesh.name + " indices");
+    buffers.index_count = static_cast<std::uint32_t>(mesh.indices.size());
+    buffers.base_colour = textures.set_of(mesh.base_colour_texture);
+    buffers.culled = !mesh.double_sided;
+  }
+  instances_ = upload_values<Instance>(context, instances, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                       "blended instances (back to front)");
+  const ForwardParamsBlock block{scene_params.view_proj, scene_params.ambient_sky, scene_params.ambient_ground};
+  forward_params_ = upload_values<ForwardParamsBlock>(context, std::span(&block, 1), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                                      "forward parameters");
+  params_ = upload_values<LightingParamsBlock>(context, std::span(&params_block_, 1),
+                                               VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "forward lighting parameters");
+  // At least one block: set 1 binds the buffer even where no instance reads a light.
+  std::vector<LocalLightBlock> blocks = make_local_light_blocks(scene.local_lights);
+  if (blocks.empty()) blocks.push_back(LocalLightBlock{});
+  lights_ =
+      upload_values<LocalLightBlock>(context, blocks, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "forward pass: local lights");
+}
+
+void ForwardPass::create_sets(const Context& context, const RenderTargets& targets, VkDescriptorPool pool,
+                              const SceneTextures& textures) {
+  const shadergen::Registry& registry = *shaders_;
+  const std::vector<VkDescriptorSetLayoutBinding> set0 =
+      merged_set_bindings({registry.pipeline_layout}, 0, "forward set 0");
+  const std::vector<VkDescriptorSetLayoutBinding> set1 =
+      merged_set_bindings({registry.pipeline_layout}, kLightsSet, "forward set 1");
+  check_storage_buffers(set1, 1, "forward set 1 (the local lights)");
+  // The base colour texture is bound with the scene texture's own set: its layout must be that one's.
+  const std::vector<VkDescriptorSetLayoutBinding> set2 =
+      merged_set_bindings({registry.pipeline_layout}, kBaseColourSet, "forward set 2");
+  const std::array<VkDescriptorType, 1> texture_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+  check_bindings(set2, texture_types, "forward set 2 (the base colour texture)");
+  set0_layout_ = create_descriptor_set_layout(context, set0, "forward set 0 layout");
+  set1_layout_ = create_descriptor_set_layout(context, set1, "forward set 1 layout");
+  const std::array<VkDescriptorSetLayout, 3> sets{set0_layout_.get(), set1_layout_.get(), textures.set_layout()};
+  const std::vector<VkPushConstantRange> push = shadergen::vk::push_constant_ranges(registry);
+  if (push_constant_bytes(push) != kDrawConstantBytes) {
+    throw Error("forward.json's shaders push " + std::to_string(push_constant_bytes(push)) +
+                " bytes; the runtime pushes " + std::to_string(kDrawConstantBytes) + " (forward_params.glsl)");
+  }
+  push_stages_ = push.front().stageFlags;
+  layout_ = create_pipeline_layout(context, sets, push, "forward pipeline layout");
+
+  sampler_ = Sampler(context, {.name = "forward pass: G-buffer and shadow map (texelFetch)"});
+  set0_ = allocate_descriptor_set(context, pool, set0_layout_.get(), "forward set 0");
+  for (const VkDescriptorSetLayoutBinding& b : set0) {
+    if (b.binding == kParamsBinding) {
+      write_buffer_descriptor(context, set0_, b.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
+    } else if (b.binding == kForwardBinding) {
+      write_buffer_descriptor(context, set0_, b.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, forward_params_.handle());
+    } else {
+      write_image_descriptor(context, set0_, b.binding, sampler_.handle(), set0_view(targets, b.binding),
+                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    }
+  }
+  set1_ = allocate_descriptor_set(context, pool, set1_layout_.get(), "forward set 1");
+  write_buffer_descriptor(context, set1_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights_.handle());
+}
+
+void ForwardPass::create_framebuffers(const Context& context, const RenderTargets& targets) {
+  const std::array<std::pair<const Image*, const char*>, 3> images{
+      {{&targets.classified(), "classified"}, {&targets.naive(), "naive"}, {&targets.dynamic(), "dynamic"}}};
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const std::array<VkImageView, 2> views{images[i].first->view(), depth_.view()};
+    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    info.renderPass = render_pass_.get();
+    info.attachmentCount = static_cast<std::uint32_t>(views.size());
+    info.pAttachments = views.data();
+    info.width = targets.extent().width;
+    info.height = targets.extent().height;
+    info.layers = 1;
+    const std::string name = std::string("forward pass into the light target (") + images[i].second + ")";
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    check(vkCreateFramebuffer(context.device(), &info, nullptr, &framebuffer), "vkCreateFramebuffer", name);
+    framebuffers_[i] = UniqueFramebuffer(framebuffer, {context.device()});
+    context.name_object(framebuffer, name);
+  }
+}
+
+void ForwardPass::create_pipelines(const Context& context) {
+  const shadergen::Registry& registry = *shaders_;
+  GraphicsPipelineDesc depth;
+  depth.layout = layout_.get();
+  depth.render_pass = render_pass_.get();
+  depth.vertex_spirv = companion_spirv(registry, "full_screen");
+  depth.fragment_spirv = companion_spirv(registry, "depth");
+  depth.color_write = false;
+  depth.depth_test = true;
+  depth.depth_write = true;
+  depth.depth_compare = VK_COMPARE_OP_ALWAYS;
+  depth.name = "forward pass: depth from the G-buffer";
+  depth_pipeline_ = create_graphics_pipeline(context, depth);
+
+  for (const ForwardDraw& draw : draws_) {
+    const std::uint32_t raw_id = draw.light_count > 0 ? kLocalLightsBit : 0;
+    const bool culled = meshes_[draw.mesh].culled;
+    UniquePipeline& pipeline = pipelines_[raw_id][culled ? 1 : 0];
+    if (pipeline) continue;
+    GraphicsPipelineDesc desc;
+    desc.layout = layout_.get();
+    desc.render_pass = render_pass_.get();
+    desc.vertex_spirv = companion_spirv(registry, "vertex");
+    desc.fragment_spirv = registry.raw[raw_id].spirv;
+    desc.vertex_bindings = forward_bindings();
+    desc.vertex_attributes = forward_attributes();
+    desc.depth_test = true;
+    desc.depth_write = false;  // blended surfaces hide nothing behind them
+    desc.depth_compare = VK_COMPARE_OP_LESS;
+    desc.cull_mode = culled ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+    desc.alpha_blend = true;
+    desc.name = std::string("forward raw ") + std::to_string(raw_id) + (culled ? ", single-sided" : "");
+    pipeline = create_graphics_pipeline(context, desc);
+  }
+}
+
+void ForwardPass::record(VkCommandBuffer cmd, const RenderTargets& targets, LocalLightTarget target) const {
+  if (draws_.empty()) return;
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = render_pass_.get();
+  begin.framebuffer = framebuffers_[static_cast<std::size_t>(target)].get();
+  begin.renderArea = {{0, 0}, targets.extent()};
+  std::array<VkClearValue, 2> clears{};
+  clears[1].depthStencil = {1.0f, 0};
+  begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
+  begin.pClearValues = clears.data();
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  set_viewport_and_scissor(cmd, targets.extent());
+  const std::array<VkDescriptorSet, 2> sets{set0_, set1_};
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 2, sets.data(), 0, nullptr);
+  // First the depth the geometry is tested against, then the geometry, in the same subpass.
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_pipeline_.get());
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  for (std::uint32_t i = 0; i < draws_.size(); ++i) {
+    const ForwardDraw& draw = draws_[i];
+    const MeshBuffers& mesh = meshes_[draw.mesh];
+    const std::uint32_t raw_id = draw.light_count > 0 ? kLocalLightsBit : 0;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_[raw_id][mesh.culled ? 1 : 0].get());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), kBaseColourSet, 1, &mesh.base_colour,
+                            0, nullptr);
+    DrawConstants constants{glm::uvec4(draw.light_count, 0, 0, 0), draw.lights};
+    std::array<std::byte, kDrawConstantBytes> bytes{};
+    std::memcpy(bytes.data(), &constants, bytes.size());
+    vkCmdPushConstants(cmd, layout_.get(), push_stages_, 0, kDrawConstantBytes, bytes.data());
+    const std::array<VkBuffer, 2> buffers{mesh.vertices.handle(), instances_.handle()};
+    const std::array<VkDeviceSize, 2> offsets{0, 0};
+    vkCmdBindVertexBuffers(cmd, 0, static_cast<std::uint32_t>(buffers.size()), buffers.data(), offsets.data());
+    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, i);
+  }
+  vkCmdEndRenderPass(cmd);
+}
+
+}  // namespace tilelight
