@@ -43,10 +43,22 @@ LocalShadowFaceBlock perspective_face(glm::vec3 eye, glm::vec3 forward, glm::vec
   return face;
 }
 
+// A perspective face's tangent of its half angle, its border included.
+float perspective_tan_half(const LocalLight& light, std::uint32_t face_size) {
+  const bool cube = light.type != LocalLightType::spot || spot_needs_cube(light);
+  return bordered(cube ? 1.0f : std::tan(spot_half_angle(light)), face_size);
+}
+
+// The texel of the box's orthographic face: square, the longer side sets it.
+float box_texel(const LocalLight& light, std::uint32_t face_size) {
+  const float half = bordered(std::max(light.box_half_extent.x, light.box_half_extent.y), face_size);
+  return 2.0f * half / static_cast<float>(face_size);
+}
+
 std::vector<LocalShadowFaceBlock> cube_faces(const LocalLight& light, std::uint32_t face_size) {
-  const float tan_half = bordered(1.0f, face_size);
+  const float tan_half = perspective_tan_half(light, face_size);
   const glm::vec3 eye =
-      snap_to_grid(light.position, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 2.0f * tan_half / static_cast<float>(face_size));
+      snap_to_grid(light.position, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, shadow_snap_cell(light, face_size));
   // The order local_shadow_cube_face() numbers them in; any up vector not along the axis.
   const std::array<std::pair<glm::vec3, glm::vec3>, 6> axes{{{{1, 0, 0}, {0, 1, 0}},
                                                              {{-1, 0, 0}, {0, 1, 0}},
@@ -65,8 +77,8 @@ LocalShadowFaceBlock spot_face(const LocalLight& light, std::uint32_t face_size)
   const glm::vec3 z = light.direction;
   const glm::vec3 x = local_light_frame_x(z);
   const glm::vec3 y = glm::cross(z, x);
-  const float tan_half = bordered(std::tan(spot_half_angle(light)), face_size);
-  const glm::vec3 eye = snap_to_grid(light.position, x, y, z, 2.0f * tan_half / static_cast<float>(face_size));
+  const float tan_half = perspective_tan_half(light, face_size);
+  const glm::vec3 eye = snap_to_grid(light.position, x, y, z, shadow_snap_cell(light, face_size));
   return perspective_face(eye, z, y, tan_half, light.range, face_size);
 }
 
@@ -77,13 +89,12 @@ LocalShadowFaceBlock box_face(const LocalLight& light, std::uint32_t face_size) 
   const glm::vec3 x = local_light_frame_x(z);
   const glm::vec3 y = glm::cross(z, x);
   const glm::vec3 h = light.box_half_extent;
-  const float half_x = bordered(h.x, face_size), half_y = bordered(h.y, face_size);
-  const float texel = 2.0f * std::max(half_x, half_y) / static_cast<float>(face_size);
+  const float texel = box_texel(light, face_size);
   const glm::vec3 eye = snap_to_grid(light.position, x, y, z, texel);
   const glm::mat4 view = glm::lookAtRH(eye, eye + z, y);
   const float depth = h.z * 1.02f + texel;
   // The face is square in texels: the longer side sets the texel, the shorter is covered too.
-  const float half = std::max(half_x, half_y);
+  const float half = texel * static_cast<float>(face_size) * 0.5f;
   const glm::mat4 proj = glm::orthoRH_ZO(-half, half, -half, half, -depth, depth);
   LocalShadowFaceBlock face{};
   face.view_proj = proj * view;
@@ -101,6 +112,11 @@ std::uint32_t shadow_face_count(const LocalLight& light) {
     case LocalLightType::box: return 1;
   }
   return 0;
+}
+
+float shadow_snap_cell(const LocalLight& light, std::uint32_t face_size) {
+  if (light.type == LocalLightType::box) return box_texel(light, face_size);
+  return 2.0f * perspective_tan_half(light, face_size) / static_cast<float>(face_size) * near_plane(light.range);
 }
 
 glm::vec3 snap_to_grid(glm::vec3 position, glm::vec3 x, glm::vec3 y, glm::vec3 z, float step) {

@@ -10,10 +10,11 @@
 // beyond its shape, so the jittered taps of a point inside the shape stay inside the face.
 //
 // Snapping (the Tabula Rasa chapter's Listing 19-2 idea, done our own way): a face's eye is
-// moved to the nearest corner of a grid of texel-sized cells in the light's frame: the texel's
-// footprint at 1 m for a perspective face, the texel itself for an orthographic one. A light that
-// moves by less than a cell inside one cell keeps bit-identical matrices, so its shadows do not
-// shimmer.
+// moved to the corner of its cell of a grid of texel-sized cells in the light's frame (the
+// world's axes for a cube): the texel itself for an orthographic face, the texel's footprint at
+// the near plane for a perspective one (nothing nearer is drawn, so the snap moves no receiver by
+// more than a texel, which the faces' border absorbs). A light that moves within one cell keeps
+// bit-identical matrices, so its shadows do not shimmer.
 
 #include "tilelight/scene/local_light.h"
 
@@ -43,6 +44,9 @@ std::uint32_t shadow_face_count(const LocalLight& light);
 // The faces' blocks of one light, their rects' xy left 0 (the pool places them).
 // Preconditions: `face_size` > 2 * kFaceBorderTexels; the light is valid (local_light.h).
 std::vector<LocalShadowFaceBlock> shadow_faces(const LocalLight& light, std::uint32_t face_size);
+
+// The spacing of the light's snapping grid (above), in metres.
+float shadow_snap_cell(const LocalLight& light, std::uint32_t face_size);
 
 // `position` moved to the corner of its cell of a grid of spacing `step` along the orthonormal
 // axes x, y, z (through the world origin). Precondition: step > 0.
