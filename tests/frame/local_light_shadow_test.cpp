@@ -245,6 +245,40 @@ TEST_P(LocalLightShadowFrame, DarkensWhereACasterBlocksTheLightOnly) {
 INSTANTIATE_TEST_SUITE_P(Lights, LocalLightShadowFrame, ::testing::ValuesIn(kShadowCases),
                          [](const ::testing::TestParamInfo<ShadowCase>& info) { return std::string(info.param.name); });
 
+// An alpha-masked caster discards where the G-buffer does: a cube whose every texel is below
+// its cutoff casts nothing into a local light's map (nor the sun's, nor shows): the frame equals
+// the one without it.
+class LocalLightShadowCasters : public VulkanTest {};
+
+TEST_F(LocalLightShadowCasters, AMasksHolesLetTheLocalLightThrough) {
+  Scene masked = scene_with({point_light()});
+  Mesh cube = masked.meshes[mesh_named(masked, "cube")];
+  cube.name = "transparent cube";
+  cube.alpha_mask = true;
+  Texture clear;
+  clear.name = "alpha 0";
+  clear.width = clear.height = 1;
+  clear.rgba = {255, 255, 255, 0};
+  clear.sampling.magnify = clear.sampling.minify = TextureFilter::nearest;
+  clear.sampling.mipmapped = false;
+  masked.textures.push_back(clear);
+  cube.base_colour_texture = static_cast<std::uint32_t>(masked.textures.size() - 1);
+  masked.meshes.push_back(cube);
+  masked.batches.back().mesh = static_cast<std::uint32_t>(masked.meshes.size() - 1);
+  masked.instances.back().alpha_mask = {1.0f, 0.5f};
+
+  Scene without = make_demo_scene();
+  without.local_lights = {point_light()};
+  RendererOptions options = shadow_options(1);
+  options.baselines = Baselines::none;
+  TileRenderer a(context(), masked, options);
+  a.render_frame();
+  TileRenderer b(context(), without, options);
+  b.render_frame();
+  const FrameComparison same = compare(a.read_classified(), b.read_classified(), 0.0);
+  EXPECT_EQ(same.pixels_over_tolerance, 0u) << same.first_difference;
+}
+
 // ---------------------------------------------------------------------------------------------
 // The volume pass against the full-screen reference with shadows on, bit for bit, in the
 // classified and naive targets (and classified == naive == dynamic within each renderer), for
