@@ -242,8 +242,9 @@ TEST_P(LocalLightShadowFrame, DarkensWhereACasterBlocksTheLightOnly) {
   EXPECT_GE(darkened, blocked_darkened);
 }
 
-INSTANTIATE_TEST_SUITE_P(Lights, LocalLightShadowFrame, ::testing::ValuesIn(kShadowCases),
-                         [](const ::testing::TestParamInfo<ShadowCase>& info) { return std::string(info.param.name); });
+std::string shadow_case_name(const ::testing::TestParamInfo<ShadowCase>& shadow_case) { return shadow_case.param.name; }
+
+INSTANTIATE_TEST_SUITE_P(Lights, LocalLightShadowFrame, ::testing::ValuesIn(kShadowCases), shadow_case_name);
 
 // An alpha-masked caster discards where the G-buffer does: a cube whose every texel is below
 // its cutoff casts nothing into a local light's map (nor the sun's, nor shows): the frame equals
@@ -373,7 +374,9 @@ TEST_F(LocalLightShadowSettings, CachedMapsGiveTheFrameRebuiltMapsGive) {
     const FrameResult a = cached.render_frame();
     rebuilt.render_frame();
     // The cached renderer renders its maps in its first frame only.
-    if (frame == 1) EXPECT_EQ(a.timings.local_light_shadows, 0.0);
+    if (frame == 1) {
+      EXPECT_EQ(a.timings.local_light_shadows, 0.0);
+    }
     const FrameComparison same = compare(cached.read_classified(), rebuilt.read_classified(), 0.0);
     EXPECT_EQ(same.pixels_over_tolerance, 0u) << "frame " << frame << ": " << same.first_difference;
   }
