@@ -73,6 +73,24 @@ TEST(LocalLightCli, ShadowsAndTheirCacheAreReported) {
   }
 }
 
+// 100 lamps (point, spot, box in turn: 8 faces per 3) need 268 faces; the default cap (256 MiB at
+// 512²) holds 256: the first 96 lamps get maps, the last 4 are drawn unshadowed, with one warning.
+TEST(LocalLightCli, LightsBeyondThePoolsCapAreWarnedAboutAndCounted) {
+  const fs::path out = scratch_dir() / "local_light_shadow_cap";
+  const CliResult r = run_cli({"--width", "32", "--height", "24", "--frames", "1", "--lights", "100", "--baseline",
+                               "none", "--validation", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err,
+            "warning: 4 local light(s) cast shadows but are drawn unshadowed: the shadow-map pool's cap of 256 MiB "
+            "holds 256 faces of 512x512 (report.json local_light_shadows)\n");
+  std::ifstream file(out / "report.json");
+  const nlohmann::json pool = nlohmann::json::parse(file)["local_light_shadows"];
+  EXPECT_EQ(pool["maps"], 96);
+  EXPECT_EQ(pool["faces"], 256);
+  EXPECT_EQ(pool["unshadowed"], 4);
+  EXPECT_EQ(pool["bytes"], 256ull << 20);
+}
+
 TEST(LocalLightCli, UnknownShadowSettingsAreUsageErrorsNamingTheValue) {
   const CliResult shadows = run_cli({"--local-light-shadows", "maybe"});
   EXPECT_EQ(shadows.exit_code, 2);
