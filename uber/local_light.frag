@@ -10,6 +10,7 @@
 //   LIGHT_TYPE   POINT, SPOT or BOX: the light's attenuation and direction.
 //   GLOBE        the light's colour is filtered by its globe map (set 2).
 //   BACK_COLOUR  surfaces facing away receive the back colour (box lights only: a rule).
+//   SHADOWED     the light's shadow map (set 3; local_shadow.glsl) dims its direct term.
 //   MSAA_EDGE    where a pixel's samples may differ, every sample is shaded and averaged
 //                (sample_mean.glsl), as the global pass does; elsewhere sample 0 alone. The
 //                runtime picks it for every light of a multisampled G-buffer.
@@ -37,6 +38,31 @@
 #ifdef GLOBE
 // The light's globe map: a scene texture, in the set layout of the material textures.
 layout(set = 2, binding = 0) uniform sampler2D globe_map;
+#endif
+
+#ifdef SHADOWED
+#include "local_shadow.glsl"
+// Every shadowed light's faces in one depth atlas, and each face's transform and place in it.
+layout(set = 3, binding = 0) uniform sampler2D local_shadow_atlas;
+layout(set = 3, binding = 1, std430) readonly buffer LocalShadowFaces {
+    LocalShadowFace faces[];
+} local_shadow_faces;
+
+// The light's shadow over `world_pos`, only where its direct term lands: elsewhere 1 (it
+// multiplies nothing or zero). A cube's face by the direction from its eye.
+float local_light_visibility(LocalLightData light, ivec2 pixel, vec3 world_pos, vec3 normal)
+{
+    LocalLightIncidence incidence = local_light_incidence(light, world_pos);
+    vec3 n = normalize(normal);
+    if (!(incidence.attenuation > 0.0) || !(dot(n, incidence.to_light) > 0.0)) {
+        return 1.0;
+    }
+    uint face = light.kind.z;
+    if (light.kind.w == 6u) {
+        face += local_shadow_cube_face(world_pos - local_shadow_faces.faces[face].eye_offset.xyz);
+    }
+    return local_shadow_visibility(local_shadow_atlas, local_shadow_faces.faces[face], pixel, world_pos, n);
+}
 #endif
 
 // Whether the bound G-buffer has coverage flags (the classified path's): the runtime sets it as
@@ -71,8 +97,13 @@ vec3 shade_local_sample(LocalLightData light, ivec2 pixel, int sample_index)
 #else
     const bool back_colour = false;
 #endif
-    return local_light_surface_radiance(light, back_colour, tint, g.albedo, g.normal, world_pos,
-                                        params.camera_pos.xyz, g.spec_amount, g.spec_power);
+#ifdef SHADOWED
+    float visibility = local_light_visibility(light, pixel, world_pos, g.normal);
+#else
+    const float visibility = 1.0;
+#endif
+    return local_light_surface_radiance_visible(light, back_colour, tint, g.albedo, g.normal, world_pos,
+                                                params.camera_pos.xyz, g.spec_amount, g.spec_power, visibility);
 }
 
 bool local_pixel_needs_other_samples(ivec2 pixel)

@@ -44,7 +44,8 @@ struct LocalLightData {
     vec4 frame_x;               // xyz the frame's x axis (spot, box); w tan(outer cone angle)
     vec4 frame_y;               // xyz the frame's y axis; w unused
     vec4 box_half_extent;       // xyz half sizes along x, y, z; w unused
-    uvec4 kind;                 // x LOCAL_LIGHT_TYPE_*; y LOCAL_LIGHT_VOLUME_*; zw unused
+    uvec4 kind;                 // x LOCAL_LIGHT_TYPE_*; y LOCAL_LIGHT_VOLUME_*; z its first shadow face,
+                                // w its shadow faces (0 unshadowed, 1, or 6: a cube)
 };
 
 // Where the light comes from at a surface point, and how much of it arrives.
@@ -129,10 +130,14 @@ vec2 local_light_globe_uv(LocalLightData light, vec3 world_pos)
 
 // Lambert + Blinn-Phong (the sun's model, sun_lighting.glsl) with the lobe scaled by N.L, and
 // with `back_colour` the back colour (§19.4.1) on surfaces facing away, diffuse only. `tint`
-// multiplies the light's colour (the globe map's texel; vec3(1) without one). Exactly vec3(0)
-// where the attenuation is 0, and finite for any stored surface.
-vec3 local_light_surface_radiance(LocalLightData light, bool back_colour, vec3 tint, vec3 albedo, vec3 normal,
-                                  vec3 world_pos, vec3 camera_pos, float spec_amount, float spec_power)
+// multiplies the light's colour (the globe map's texel; vec3(1) without one); `visibility` (0..1,
+// the shadow map's verdict, local_shadow.glsl) the direct term only: the back colour stands for
+// light arriving from elsewhere, which the light's map does not see. Exactly vec3(0) where the
+// attenuation is 0, and finite for any stored surface. A visibility of 1 gives the unshadowed
+// result bit for bit (x * 1.0 == x).
+vec3 local_light_surface_radiance_visible(LocalLightData light, bool back_colour, vec3 tint, vec3 albedo, vec3 normal,
+                                          vec3 world_pos, vec3 camera_pos, float spec_amount, float spec_power,
+                                          float visibility)
 {
     LocalLightIncidence incidence = local_light_incidence(light, world_pos);
     if (!(incidence.attenuation > 0.0)) {
@@ -147,13 +152,21 @@ vec3 local_light_surface_radiance(LocalLightData light, bool back_colour, vec3 t
         float n_dot_h = dot(n, h);
         float power = spec_power > 0.0 ? min(spec_power, LOCAL_LIGHT_MAX_SPEC_POWER) : 0.0;
         float highlight = n_dot_h > 0.0 ? pow(clamp(n_dot_h, LOCAL_LIGHT_MIN_N_DOT_H, 1.0), power) : 0.0;
-        vec3 radiance = light.radiance_outer.rgb * tint * (incidence.attenuation * n_dot_l);
+        vec3 radiance = light.radiance_outer.rgb * tint * (incidence.attenuation * visibility * n_dot_l);
         return radiance * (albedo + spec_amount * highlight);
     }
     if (back_colour && n_dot_l < 0.0) {
         return light.back_radiance_falloff.rgb * tint * albedo * (incidence.attenuation * -n_dot_l);
     }
     return vec3(0.0);
+}
+
+// The same, unshadowed.
+vec3 local_light_surface_radiance(LocalLightData light, bool back_colour, vec3 tint, vec3 albedo, vec3 normal,
+                                  vec3 world_pos, vec3 camera_pos, float spec_amount, float spec_power)
+{
+    return local_light_surface_radiance_visible(light, back_colour, tint, albedo, normal, world_pos, camera_pos,
+                                                spec_amount, spec_power, 1.0);
 }
 
 // A vertex of the light's volume in world space, from a vertex of its unit mesh (the runtime's

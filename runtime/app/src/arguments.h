@@ -24,6 +24,8 @@ struct Arguments {
   Baselines baseline = RendererOptions{}.baselines;
   LightPass light_pass = RendererOptions{}.light_pass;
   LocalLightPass local_light_pass = RendererOptions{}.local_light_pass;
+  bool local_light_shadows = RendererOptions{}.local_light_shadows;            // --local-light-shadows
+  bool local_light_shadow_cache = RendererOptions{}.local_light_shadow_cache;  // --local-light-shadow-cache
   std::string device = "auto";
   std::string out = "tilelight-out";
   std::string scene;  // a glTF file; empty: the procedural scene

@@ -102,6 +102,11 @@ void add_options(CLI::App& cli, Arguments& a) {
   add_choice(cli, "--local-light-pass", a.local_light_pass, local_light_pass_names(),
              "how the scene's local lights are added: volumes (each light's sphere, cone or box, depth- and "
              "stencil-tested) or fullscreen (one full-screen pass per light: the reference)");
+  add_choice(cli, "--local-light-shadows", a.local_light_shadows, on_off_names(),
+             "shadow maps for the local lights that cast shadows: on or off (every light unshadowed)");
+  add_choice(cli, "--local-light-shadow-cache", a.local_light_shadow_cache, on_off_names(),
+             "on: the local lights' shadow maps are rendered once and kept (the scene is static); off: rendered "
+             "again every frame (timings_ms.local_light_shadows)");
   cli.add_option("--device", a.device,
                  "Vulkan device: auto (a discrete GPU, else an integrated one, else lavapipe), an index or a "
                  "name substring (llvmpipe: lavapipe, the CPU driver)")

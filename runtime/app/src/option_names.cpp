@@ -41,4 +41,9 @@ const OptionNames<LocalLightPass>& local_light_pass_names() {
   return names;
 }
 
+const OptionNames<bool>& on_off_names() {
+  static const OptionNames<bool> names{{"on", true}, {"off", false}};
+  return names;
+}
+
 }  // namespace tilelight::app

@@ -21,6 +21,7 @@ const OptionNames<bool>& permutation_names();  // RendererOptions::raw_permutati
 const OptionNames<Baselines>& baseline_names();
 const OptionNames<LightPass>& light_pass_names();
 const OptionNames<LocalLightPass>& local_light_pass_names();
+const OptionNames<bool>& on_off_names();  // "on" true, "off" false
 
 // The name of `value` in `names`. Precondition: it has one (every enumerator has).
 template <typename T>

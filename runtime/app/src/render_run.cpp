@@ -79,6 +79,8 @@ RendererOptions renderer_options(const Arguments& a, const ChosenCamera& camera)
   options.path = a.path;
   options.light_pass = a.light_pass;
   options.local_light_pass = a.local_light_pass;
+  options.local_light_shadows = a.local_light_shadows;
+  options.local_light_shadow_cache = a.local_light_shadow_cache;
   options.raw_permutations = a.raw_permutations;
   options.coalesce = !a.no_coalesce;
   options.cull_batches = !a.no_cull;
@@ -234,6 +236,14 @@ int render_run(const Arguments& a, std::ostream& out, std::ostream& err, std::st
   OutputFiles files(a.out);  // proves --out writable before the long part
   stage = fmt::format("creating the renderer ({}x{})", a.width, a.height);
   const std::unique_ptr<TileRenderer> renderer = make_renderer(context, scene, options);
+  const LocalLightShadowPool shadow_pool = renderer->local_light_shadow_pool();
+  if (shadow_pool.unshadowed != 0) {
+    err << fmt::format(
+        "warning: {} local light(s) cast shadows but are drawn unshadowed: the shadow-map pool's cap of {} MiB "
+        "holds {} faces of {}x{} (report.json local_light_shadows)\n",
+        shadow_pool.unshadowed, shadow_pool.cap_bytes >> 20, shadow_pool.faces, shadow_pool.face_size,
+        shadow_pool.face_size);
+  }
 
   const TimedFrames timed = render_frames(*renderer, a.frames, stage);
   stage = "reading back the frames";
@@ -246,6 +256,7 @@ int render_run(const Arguments& a, std::ostream& out, std::ostream& err, std::st
   report.run.cull = options.cull_batches;
   report.load_ms = parse_ms + renderer->scene_upload_ms();
   report.culled = renderer->culled_batches();
+  report.local_light_shadows = shadow_pool;
   write_outputs(files, report, frames, a.tile_size);
 
   out << timing_table(report);

@@ -21,7 +21,7 @@ namespace {
 double round3(double value) { return std::round(value * 1000.0) / 1000.0; }
 
 // Every timed stage and whole frame, by its report.json name, in the report's order.
-constexpr std::array<std::pair<const char*, double FrameTimings::*>, 15> kStages{{
+constexpr std::array<std::pair<const char*, double FrameTimings::*>, 16> kStages{{
     {"gbuffer", &FrameTimings::gbuffer},
     {"gbuffer_plain", &FrameTimings::gbuffer_plain},
     {"shadow_map", &FrameTimings::shadow_map},
@@ -34,6 +34,7 @@ constexpr std::array<std::pair<const char*, double FrameTimings::*>, 15> kStages
     {"floor_light", &FrameTimings::floor_light},
     {"local_lights", &FrameTimings::local_lights},
     {"forward", &FrameTimings::forward},
+    {"local_light_shadows", &FrameTimings::local_light_shadows},
     {"frame_classified", &FrameTimings::frame_classified},
     {"frame_naive", &FrameTimings::frame_naive},
     {"frame_dynamic", &FrameTimings::frame_dynamic},
@@ -155,6 +156,13 @@ std::string report_json(const FrameReport& r) {
   j["local_light_pass"] = name_of(local_light_pass_names(), r.run.local_light_pass);
   // The forward pass of the blended materials: instances drawn per light target, and K.
   j["forward"] = {{"instances", r.run.forward_instances}, {"max_lights", kForwardMaxLights}};
+  // The local lights' shadow maps (docs/local-lights.md, "Shadows"): the pool's faces and memory,
+  // its cap, and the lights that cast shadows but got no map (over the cap).
+  const LocalLightShadowPool& shadows = r.local_light_shadows;
+  j["local_light_shadows"] = {{"enabled", shadows.enabled},     {"cached", shadows.cached},
+                              {"maps", shadows.maps},           {"faces", shadows.faces},
+                              {"face_size", shadows.face_size}, {"bytes", shadows.bytes},
+                              {"cap_bytes", shadows.cap_bytes}, {"unshadowed", shadows.unshadowed}};
   j["frames"] = r.run.frames;
   j["lavapipe_threads"] =
       r.run.lavapipe_threads.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.run.lavapipe_threads);

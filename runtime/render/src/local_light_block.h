@@ -22,7 +22,8 @@ struct LocalLightBlock {
   glm::vec4 frame_x;  // w: tan(outer cone angle)
   glm::vec4 frame_y;
   glm::vec4 box_half_extent;
-  glm::uvec4 kind;  // x: 0 point, 1 spot, 2 box (LocalLightType); y: its LightVolume
+  glm::uvec4 kind;  // x: 0 point, 1 spot, 2 box (LocalLightType); y: its LightVolume; z, w: its shadow
+                    // faces, first and count (0: none; LocalLightPasses fills them)
 };
 static_assert(sizeof(LocalLightBlock) == 128, "std430 layout of LocalLightData (local_light.glsl)");
 

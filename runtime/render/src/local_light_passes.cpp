@@ -26,6 +26,7 @@ constexpr std::uint32_t kCoverageFlagsBinding = 6;
 constexpr std::uint32_t kStencilBinding = 7;  // local_light_resolve.frag: the G-buffer's stencil
 constexpr std::uint32_t kLightsSet = 1;
 constexpr std::uint32_t kGlobeSet = 2;
+constexpr std::uint32_t kShadowSet = 3;       // the atlas (binding 0) and its faces (binding 1)
 constexpr std::uint32_t kTaggedConstant = 2;  // TAGGED_GBUFFER (local_light.frag)
 
 // The push constants of every draw (local_light_draw.glsl): 68 bytes, as the reflection says.
@@ -140,7 +141,7 @@ GraphicsPipelineDesc light_pipeline_desc(const shadergen::Registry& registry, Vk
 
 LocalLightPasses::LocalLightPasses(const Context& context, const Scene& scene, const RenderTargets& targets,
                                    const LightingParamsBlock& params, const SceneTextures& textures,
-                                   VkDescriptorPool pool, LocalLightPass pass)
+                                   VkDescriptorPool pool, LocalLightPass pass, const LocalLightShadows& shadows)
     : shaders_(&local_light_shaders_for(targets.samples())), params_block_(params), pass_(pass) {
   if (scene.local_lights.empty()) return;  // nothing to draw: no sets, no pipelines
   const bool multisampled = targets.samples() != VK_SAMPLE_COUNT_1_BIT;
@@ -148,7 +149,8 @@ LocalLightPasses::LocalLightPasses(const Context& context, const Scene& scene, c
   const bool depth_clamp = context.features().depth_clamp;
   for (std::uint32_t i = 0; i < scene.local_lights.size(); ++i) {
     const LocalLight& light = scene.local_lights[i];
-    Draw draw{i, local_light_raw_id(light, multisampled), VK_NULL_HANDLE, volume_of(light),
+    const bool shadowed = shadows.plan().first_face[i] != kNoShadow;
+    Draw draw{i, local_light_raw_id(light, multisampled, shadowed), VK_NULL_HANDLE, volume_of(light),
               depth_clamp || !may_cross_far_plane(light, view_proj_)};
     if (light.extras.globe_texture) {
       if (*light.extras.globe_texture >= scene.textures.size()) {
@@ -169,7 +171,7 @@ LocalLightPasses::LocalLightPasses(const Context& context, const Scene& scene, c
                         "local lights: resolved depth and stencil"});
   }
   create_framebuffers(context, targets);
-  create_sets(context, targets, pool, textures, scene.local_lights);
+  create_sets(context, targets, pool, textures, scene.local_lights, shadows);
   if (volumes) {
     create_volume_meshes(context);
     create_volume_pipelines(context, targets, depth_clamp);
@@ -232,7 +234,8 @@ void LocalLightPasses::create_volume_pipelines(const Context& context, const Ren
 }
 
 void LocalLightPasses::create_sets(const Context& context, const RenderTargets& targets, VkDescriptorPool pool,
-                                   const SceneTextures& textures, const std::vector<LocalLight>& lights) {
+                                   const SceneTextures& textures, const std::vector<LocalLight>& lights,
+                                   const LocalLightShadows& shadows) {
   const shadergen::Registry& registry = *shaders_;
   const std::vector<VkDescriptorSetLayoutBinding> set0 =
       merged_set_bindings({registry.pipeline_layout}, 0, "local-light set 0");
@@ -244,9 +247,17 @@ void LocalLightPasses::create_sets(const Context& context, const RenderTargets& 
       merged_set_bindings({registry.pipeline_layout}, kGlobeSet, "local-light set 2");
   const std::array<VkDescriptorType, 1> globe_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
   check_bindings(set2, globe_types, "local-light set 2 (the globe map)");
+  // The shadow atlas and its faces: what create_shadow_set() writes.
+  const std::vector<VkDescriptorSetLayoutBinding> set3 =
+      merged_set_bindings({registry.pipeline_layout}, kShadowSet, "local-light set 3");
+  const std::array<VkDescriptorType, 2> shadow_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+  check_bindings(set3, shadow_types, "local-light set 3 (the shadow atlas and its faces)");
   set0_layout_ = create_descriptor_set_layout(context, set0, "local-light set 0 layout");
   set1_layout_ = create_descriptor_set_layout(context, set1, "local-light set 1 layout");
-  const std::array<VkDescriptorSetLayout, 3> sets{set0_layout_.get(), set1_layout_.get(), textures.set_layout()};
+  set3_layout_ = create_descriptor_set_layout(context, set3, "local-light set 3 layout");
+  const std::array<VkDescriptorSetLayout, 4> sets{set0_layout_.get(), set1_layout_.get(), textures.set_layout(),
+                                                  set3_layout_.get()};
   const std::vector<VkPushConstantRange> push = shadergen::vk::push_constant_ranges(registry);
   if (push_constant_bytes(push) != kDrawConstantBytes) {
     throw Error("local_lights.json's shaders push " + std::to_string(push_constant_bytes(push)) +
@@ -269,12 +280,27 @@ void LocalLightPasses::create_sets(const Context& context, const RenderTargets& 
     }
   }
 
-  const std::vector<LocalLightBlock> blocks = make_local_light_blocks(lights);
+  std::vector<LocalLightBlock> blocks = make_local_light_blocks(lights);
+  // Where each light's shadow faces are (local_light.glsl's kind.z and kind.w).
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const bool shadowed = shadows.plan().first_face[i] != kNoShadow;
+    blocks[i].kind.z = shadowed ? shadows.plan().first_face[i] : 0u;
+    blocks[i].kind.w = shadows.plan().face_count[i];
+  }
   lights_ = Buffer(context, {blocks.size() * sizeof(LocalLightBlock), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                              MemoryUse::HostUpload, "local lights"});
   lights_.write_values(std::span<const LocalLightBlock>(blocks));
   set1_ = allocate_descriptor_set(context, pool, set1_layout_.get(), "local-light set 1");
   write_buffer_descriptor(context, set1_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights_.handle());
+  if (shadows.has_maps()) create_shadow_set(context, pool, shadows);
+}
+
+void LocalLightPasses::create_shadow_set(const Context& context, VkDescriptorPool pool,
+                                         const LocalLightShadows& shadows) {
+  set3_ = allocate_descriptor_set(context, pool, set3_layout_.get(), "local-light set 3 (shadows)");
+  write_image_descriptor(context, set3_, 0, sampler_.handle(), shadows.atlas_view(),
+                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  write_buffer_descriptor(context, set3_, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, shadows.faces_buffer());
 }
 
 void LocalLightPasses::create_full_screen_pipelines(const Context& context, const RenderTargets& targets) {
@@ -331,6 +357,9 @@ void LocalLightPasses::bind(VkCommandBuffer cmd, const RenderTargets& targets, L
   set_viewport_and_scissor(cmd, targets.extent());
   const std::array<VkDescriptorSet, 2> sets{set0_, set1_};
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 2, sets.data(), 0, nullptr);
+  if (set3_ != VK_NULL_HANDLE) {
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), kShadowSet, 1, &set3_, 0, nullptr);
+  }
 }
 
 void LocalLightPasses::record(VkCommandBuffer cmd, const RenderTargets& targets, LocalLightTarget target,

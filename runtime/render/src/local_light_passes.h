@@ -15,8 +15,11 @@
 // Descriptor sets, from the domain's merged reflection: set 0 the G-buffer and the lighting
 // parameters (lighting_params.glsl's bindings, a set of its own: the layout is this domain's),
 // set 1 the lights (one LocalLightBlock each), set 2 a globe map (the scene texture's set,
-// SceneTextures), and push constants: the camera's transform and the light's index.
+// SceneTextures), set 3 the shadow atlas and its faces (LocalLightShadows; bound where some
+// light has a map, whose SHADOWED permutation reads it), and push constants: the camera's
+// transform and the light's index.
 
+#include "local_light_shadows.h"
 #include "local_light_volumes.h"
 #include "render_targets.h"
 #include "scene_textures.h"
@@ -48,10 +51,11 @@ enum class LocalLightTarget { classified, naive, dynamic };
 class LocalLightPasses {
  public:
   // Builds a pipeline for each permutation the scene's local lights need (none without lights).
-  // Throws tilelight::Error for a globe map that is not one of the scene's textures.
+  // Throws tilelight::Error for a globe map that is not one of the scene's textures. `shadows`
+  // says which lights have maps (it outlives this).
   LocalLightPasses(const Context& context, const Scene& scene, const RenderTargets& targets,
                    const LightingParamsBlock& params, const SceneTextures& textures, VkDescriptorPool pool,
-                   LocalLightPass pass);
+                   LocalLightPass pass, const LocalLightShadows& shadows);
 
   std::size_t light_count() const { return draws_.size(); }
   std::uint32_t pipeline_count() const;
@@ -73,7 +77,9 @@ class LocalLightPasses {
     UniquePipeline plain, tagged;  // TAGGED_GBUFFER off and on (on only with coverage flags)
   };
   void create_sets(const Context& context, const RenderTargets& targets, VkDescriptorPool pool,
-                   const SceneTextures& textures, const std::vector<LocalLight>& lights);
+                   const SceneTextures& textures, const std::vector<LocalLight>& lights,
+                   const LocalLightShadows& shadows);
+  void create_shadow_set(const Context& context, VkDescriptorPool pool, const LocalLightShadows& shadows);
   void create_full_screen_pipelines(const Context& context, const RenderTargets& targets);
   void create_volume_pipelines(const Context& context, const RenderTargets& targets, bool depth_clamp);
   void create_volume_meshes(const Context& context);
@@ -99,9 +105,10 @@ class LocalLightPasses {
   // Per LocalLightTarget: the framebuffers of this pass (the global pass's own are of a
   // render pass that clears).
   std::array<UniqueFramebuffer, 3> framebuffers_;
-  UniqueDescriptorSetLayout set0_layout_, set1_layout_;
+  UniqueDescriptorSetLayout set0_layout_, set1_layout_, set3_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set0_ = VK_NULL_HANDLE, set1_ = VK_NULL_HANDLE;
+  VkDescriptorSet set3_ = VK_NULL_HANDLE;              // the shadow atlas and faces; none without maps
   VkShaderStageFlags push_stages_ = 0;                 // the stages that read the light index
   std::map<std::uint32_t, PipelinePair> full_screen_;  // by raw ID
   UniquePipeline resolve_;                             // volumes: depth and stencil from the G-buffer

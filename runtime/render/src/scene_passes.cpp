@@ -228,6 +228,25 @@ void ScenePasses::draw_batches(VkCommandBuffer cmd, bool textured, std::size_t k
   }
 }
 
+void ScenePasses::draw_casters(VkCommandBuffer cmd, bool masked, const std::vector<bool>& drawn,
+                               VkPipelineLayout layout, std::uint32_t texture_set) const {
+  for (std::size_t i = 0; i < batches_.size(); ++i) {
+    const MeshBatch& batch = batches_[i];
+    const MeshBuffers& mesh = meshes_[batch.mesh];
+    // Blended meshes cast no shadow, local or the sun's (docs/local-lights.md, forward pass).
+    if (!drawn[i] || mesh.blend || masked_kind(mesh.kind) != masked) continue;
+    if (masked) {
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, texture_set, 1, &mesh.base_colour, 0,
+                              nullptr);
+    }
+    const std::array<VkBuffer, 2> buffers{mesh.vertices.handle(), instances_.handle()};
+    const std::array<VkDeviceSize, 2> offsets{0, 0};
+    vkCmdBindVertexBuffers(cmd, 0, static_cast<std::uint32_t>(buffers.size()), buffers.data(), offsets.data());
+    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, mesh.index_count, batch.instance_count, 0, 0, batch.first_instance);
+  }
+}
+
 void ScenePasses::record_shadow_map(VkCommandBuffer cmd, const RenderTargets& targets) const {
   VkClearValue clear{};
   clear.depthStencil = {1.0f, 0};

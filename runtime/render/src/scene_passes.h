@@ -45,6 +45,15 @@ class ScenePasses {
   // into the same targets, bit-identical in every target lighting reads.
   void record_gbuffer_plain(VkCommandBuffer cmd, const RenderTargets& targets) const;
 
+  // The local lights' shadow maps (local_light_shadows.cpp): every batch `drawn` keeps whose mesh
+  // is alpha-masked (`masked`) or not, with the caller's pipeline bound, in scene order; a masked
+  // mesh's base colour texture is bound as set `texture_set` of `layout` first. Precondition:
+  // `drawn` has one entry per batch of the scene.
+  void draw_casters(VkCommandBuffer cmd, bool masked, const std::vector<bool>& drawn, VkPipelineLayout layout,
+                    std::uint32_t texture_set) const;
+  // Whether the scene has masked (or unmasked) meshes in some batch.
+  bool draws_casters(bool masked) const { return kind_drawn_[masked ? 2 : 0] || kind_drawn_[masked ? 3 : 1]; }
+
  private:
   // What a batch's pipelines depend on (batch_kind()): alpha-masked or not, single-sided (back
   // faces culled) or not. Batches are drawn kind by kind, each in scene order, so the procedural

@@ -5,6 +5,7 @@
 #include "forward_pass.h"
 #include "lighting_interface.h"
 #include "local_light_passes.h"
+#include "local_light_shadows.h"
 #include "picture_readback.h"
 #include "render_targets.h"
 #include "scene_passes.h"
@@ -108,9 +109,9 @@ std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Regist
   return pruned;
 }
 
-// Descriptor sets one renderer allocates from its pool, at most 11: the scene's, lighting set 0,
+// Descriptor sets one renderer allocates from its pool, at most 12: the scene's, lighting set 0,
 // the tile-ID output, the GPU index build, the GPU tile-list build, the compute light pass's
-// four targets (classified, naive, dynamic, floor), the local lights' sets 0 and 1, and the
+// four targets (classified, naive, dynamic, floor), the local lights' sets 0, 1 and 3, and the
 // forward pass's sets 0 and 1.
 // The base colour textures have a pool of their own (scene_textures.cpp).
 constexpr std::uint32_t kMaxDescriptorSets = 16;
@@ -126,9 +127,18 @@ constexpr std::string_view kNaive = "naive", kDynamic = "dynamic", kFloor = "flo
 constexpr std::string_view kLocal = "local", kNaiveLocal = "naive_local", kDynamicLocal = "dynamic_local";
 // The blended materials' forward pass after the local lights, into the same targets.
 constexpr std::string_view kForward = "forward", kNaiveForward = "naive_forward", kDynamicForward = "dynamic_forward";
+// Submit A's stamp after the local lights' shadow maps, in the frames that render them.
+constexpr std::string_view kLocalShadows = "local_shadows";
 // Submit B writes at most: start, tiled, local, forward, gbuffer_plain, naive, naive_local,
 // naive_forward, dynamic, dynamic_local, dynamic_forward, floor.
 constexpr std::uint32_t kTileTimestamps = 12;
+
+bool wrote(const std::vector<Timestamp>& stamps, std::string_view label) {
+  for (const Timestamp& stamp : stamps) {
+    if (stamp.label == label) return true;
+  }
+  return false;
+}
 
 std::size_t index_of(const std::vector<Timestamp>& stamps, std::string_view label) {
   for (std::size_t i = 0; i < stamps.size(); ++i) {
@@ -163,6 +173,7 @@ struct TileRenderer::Impl {
   std::unique_ptr<TileClassification> classification;
   std::unique_ptr<FloorTarget> floor_target;              // Baselines::floor and all
   std::unique_ptr<TileLightPass> light_pass;              // LightPass x IndexPath
+  std::unique_ptr<LocalLightShadows> local_shadows;       // before the sun's map, first frame (or each)
   std::unique_ptr<LocalLightPasses> local_lights;         // after each light pass, into its target
   std::unique_ptr<ForwardPass> forward;                   // blended materials, after the local lights
   std::function<void(VkCommandBuffer)> gbuffer_override;  // replaces the scene's G-buffers when set
@@ -196,9 +207,13 @@ struct TileRenderer::Impl {
     classification = std::make_unique<TileClassification>(ctx, grid, *targets, *lighting, descriptor_pool.get());
     if (runs_floor()) floor_target = std::make_unique<FloorTarget>(ctx, *targets);
     light_pass = create_light_pass();
+    local_shadows = std::make_unique<LocalLightShadows>(
+        ctx, scene, *scene_passes, scene_passes->textures().set_layout(),
+        LocalShadowOptions{opts.local_light_shadows, opts.local_light_shadow_cache, opts.local_light_shadow_face_size,
+                           opts.local_light_shadow_cap_bytes});
     local_lights =
         std::make_unique<LocalLightPasses>(ctx, scene, *targets, lighting->params(), scene_passes->textures(),
-                                           descriptor_pool.get(), opts.local_light_pass);
+                                           descriptor_pool.get(), opts.local_light_pass, *local_shadows);
     forward = std::make_unique<ForwardPass>(ctx, scene, camera, *targets, lighting->params(), scene_passes->textures(),
                                             descriptor_pool.get());
 
@@ -326,6 +341,10 @@ struct TileRenderer::Impl {
     begin_commands(cmd, "frame");
     frame_queries.reset(cmd);
     frame_queries.write(cmd, "start");
+    if (local_shadows->renders_this_frame()) {
+      local_shadows->record(cmd);
+      frame_queries.write(cmd, std::string(kLocalShadows));
+    }
     scene_passes->record_shadow_map(cmd, *targets);
     frame_queries.write(cmd, "shadow");
     record_classified_gbuffer(cmd);
@@ -402,13 +421,14 @@ struct TileRenderer::Impl {
 
   // One query-pool read per pool; stamps are in the order they were written.
   void read_timings(FrameTimings& t) const {
-    const std::vector<Timestamp> frame_stamps = frame_queries.read();  // start shadow gbuffer classified [built]
+    // start [local_shadows] shadow gbuffer classified [built]
+    const std::vector<Timestamp> frame_stamps = frame_queries.read();
     const std::vector<Timestamp> tile_stamps = tile_queries.read();  // start tiled [gbuffer_plain naive dynamic floor]
-    auto between = [](const std::vector<Timestamp>& stamps, std::size_t i) { return stamps[i + 1].ms - stamps[i].ms; };
-    t.shadow_map = between(frame_stamps, 0);
-    t.gbuffer = between(frame_stamps, 1);
-    t.classification = between(frame_stamps, 2);
-    if (!light_pass->host_builds()) t.index_build_gpu = between(frame_stamps, 3);
+    t.local_light_shadows = wrote(frame_stamps, kLocalShadows) ? pass_ms(frame_stamps, kLocalShadows) : 0.0;
+    t.shadow_map = pass_ms(frame_stamps, "shadow");
+    t.gbuffer = pass_ms(frame_stamps, "gbuffer");
+    t.classification = pass_ms(frame_stamps, "classified");
+    if (!light_pass->host_builds()) t.index_build_gpu = pass_ms(frame_stamps, "built");
     t.tiled_light = pass_ms(tile_stamps, kTiled);
     t.local_lights = local_ms(tile_stamps, kLocal);
     t.forward = forward_ms(tile_stamps, kForward);
@@ -418,19 +438,19 @@ struct TileRenderer::Impl {
     if (runs_any_baseline()) read_baseline_timings(tile_stamps, t);
   }
 
-  // A baseline frame is the sum of its passes: the shadow map (shared), the plain G-buffer, its
-  // light pass.
+  // A baseline frame is the sum of its passes: the shadow maps (shared: the local lights' where
+  // this frame rendered them, and the sun's), the plain G-buffer, its light pass.
   void read_baseline_timings(const std::vector<Timestamp>& stamps, FrameTimings& t) const {
     t.gbuffer_plain = pass_ms(stamps, kGBufferPlain);
     if (runs_naive()) {
       t.naive_light = pass_ms(stamps, kNaive);
-      t.frame_naive = t.shadow_map + t.gbuffer_plain + t.naive_light + local_ms(stamps, kNaiveLocal) +
-                      forward_ms(stamps, kNaiveForward);
+      t.frame_naive = t.local_light_shadows + t.shadow_map + t.gbuffer_plain + t.naive_light +
+                      local_ms(stamps, kNaiveLocal) + forward_ms(stamps, kNaiveForward);
     }
     if (runs_dynamic()) {
       t.dynamic_light = pass_ms(stamps, kDynamic);
-      t.frame_dynamic = t.shadow_map + t.gbuffer_plain + t.dynamic_light + local_ms(stamps, kDynamicLocal) +
-                        forward_ms(stamps, kDynamicForward);
+      t.frame_dynamic = t.local_light_shadows + t.shadow_map + t.gbuffer_plain + t.dynamic_light +
+                        local_ms(stamps, kDynamicLocal) + forward_ms(stamps, kDynamicForward);
     }
     if (runs_floor()) t.floor_light = pass_ms(stamps, kFloor);
   }
@@ -460,6 +480,17 @@ std::uint32_t TileRenderer::pipeline_count() const { return impl_->light_pass->p
 LightPass TileRenderer::light_pass() const { return impl_->options.light_pass; }
 CulledBatches TileRenderer::culled_batches() const {
   return {impl_->scene_passes->culled_gbuffer_batches(), impl_->scene_passes->culled_shadow_batches()};
+}
+LocalLightShadowPool TileRenderer::local_light_shadow_pool() const {
+  const LocalShadowPlan& plan = impl_->local_shadows->plan();
+  return {impl_->options.local_light_shadows,
+          impl_->options.local_light_shadow_cache,
+          plan.maps,
+          plan.faces,
+          plan.face_size,
+          plan.bytes,
+          plan.cap_bytes,
+          plan.unshadowed};
 }
 double TileRenderer::scene_upload_ms() const { return impl_->scene_upload_ms; }
 std::size_t TileRenderer::forward_instances() const { return impl_->forward->instance_count(); }

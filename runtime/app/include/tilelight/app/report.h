@@ -69,7 +69,8 @@ struct FrameReport {
   // Host milliseconds from the scene file (or the procedural scene's generation) to the scene on
   // the GPU: parse and decode (load_gltf), then TileRenderer::scene_upload_ms().
   double load_ms = 0;
-  CulledBatches culled;  // mesh batches the scene passes skipped (--no-cull: 0)
+  CulledBatches culled;                      // mesh batches the scene passes skipped (--no-cull: 0)
+  LocalLightShadowPool local_light_shadows;  // the local lights' shadow-map pool
   std::uint32_t tiles = 0;
   // Per raw feature, named by its shader define (the generated registry's), in the spec's order.
   std::vector<std::pair<std::string, std::uint32_t>> raw_property_tiles;

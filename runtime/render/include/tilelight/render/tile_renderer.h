@@ -103,6 +103,14 @@ struct RendererOptions {
   bool raw_permutations = false;              // draw the 96 raw permutations instead of the 32 optimised ones
   bool coalesce = true;
   LocalLightPass local_light_pass = LocalLightPass::volumes;  // the scene's local lights, if any
+  // Local lights' shadow maps (docs/local-lights.md, "Shadows"): whether lights that cast shadows
+  // get maps; whether the maps are kept once rendered (static maps: the first frame renders
+  // them) or rendered every frame; each face's size in texels (> 6, square) and the pool's cap
+  // on the atlas's bytes (4 per texel). Lights beyond the cap are drawn unshadowed.
+  bool local_light_shadows = true;
+  bool local_light_shadow_cache = true;
+  std::uint32_t local_light_shadow_face_size = 512;
+  std::uint64_t local_light_shadow_cap_bytes = 256ull << 20;
   // The scene passes skip mesh batches wholly outside their clip volume (the camera's for the
   // G-buffer, the sun's for the shadow map); no pixel changes. Off: every batch is drawn.
   bool cull_batches = true;
@@ -133,6 +141,9 @@ struct FrameTimings {  // milliseconds
   // The forward pass of the blended materials into the classified light target, after its local
   // lights (each baseline's frame includes its own); 0 without blended materials.
   double forward = 0;
+  // Rendering the local lights' shadow maps in this frame (submit A, before the sun's map); 0 in
+  // a frame that rendered none: every frame after the first with the cache on, or without maps.
+  double local_light_shadows = 0;
   // Whole frames: shadow map + G-buffer + [classification + index build] + light pass + local
   // lights + forward pass. The
   // classified frame is end to end (first to last GPU timestamp), so the CPU path's wait for the
@@ -162,6 +173,18 @@ struct CulledBatches {
   std::uint32_t shadow = 0;   // outside the sun's shadow-map volume
 };
 
+// The local lights' shadow-map pool (report.json's local_light_shadows).
+struct LocalLightShadowPool {
+  bool enabled = false;          // RendererOptions::local_light_shadows
+  bool cached = true;            // RendererOptions::local_light_shadow_cache
+  std::uint32_t maps = 0;        // lights with a map
+  std::uint32_t faces = 0;       // their faces (6 per point light, 1 per spot or box)
+  std::uint32_t face_size = 0;   // texels per side
+  std::uint64_t bytes = 0;       // the atlas's memory (its depth texels)
+  std::uint64_t cap_bytes = 0;   // the pool's cap
+  std::uint32_t unshadowed = 0;  // lights that cast shadows but got no map (over the cap)
+};
+
 // Which of the frame's two G-buffers: the classified path's (with its coverage flags) or the
 // baselines' plain one.
 enum class GBufferKind { classified, plain };
@@ -186,6 +209,8 @@ class TileRenderer {
   LightPass light_pass() const;
   // Mesh batches the scene passes skip (RendererOptions::cull_batches; 0 without it).
   CulledBatches culled_batches() const;
+  // The local lights' shadow maps: how many, how large, and the lights left without.
+  LocalLightShadowPool local_light_shadow_pool() const;
   // Host milliseconds to put the scene on the GPU: meshes, instances, textures (with their
   // mip chains) and the scene passes' pipelines, once, when this renderer was made.
   double scene_upload_ms() const;
