@@ -46,7 +46,8 @@ double median_of(const std::vector<FrameTimings>& frames, double FrameTimings::*
 }
 
 std::string configuration_name(const BenchConfiguration& c) {
-  return fmt::format("{} lights, {}", c.lights, to_string(c.renderer.local_light_pass));
+  return fmt::format("{} lights, shadows {}, {}", c.lights, to_string(c.shadows),
+                     to_string(c.renderer.local_light_pass));
 }
 
 // The procedural scene with `lights` lamps, one per light count, kept for the run.
@@ -82,15 +83,17 @@ std::vector<Run> measure(const Context& context, std::map<std::uint32_t, Scene>&
   return runs;
 }
 
-// Medians, and each image against the first pass's image of the same light count.
+// Medians, and each image against the first pass's image of the same light count and shadows.
 std::vector<BenchRow> rows_of(const std::vector<Run>& runs) {
   std::vector<BenchRow> rows;
-  std::map<std::uint32_t, RgbaImage> reference;  // by light count: the first pass's image
+  std::map<std::pair<std::uint32_t, ShadowMode>, RgbaImage> reference;  // the first pass's image
   for (const Run& run : runs) {
     BenchRow row{run.configuration, median_of(run.timings, &FrameTimings::local_lights),
-                 median_of(run.timings, &FrameTimings::frame_classified)};
+                 median_of(run.timings, &FrameTimings::local_light_shadows),
+                 median_of(run.timings, &FrameTimings::frame_classified), run.renderer->local_light_shadow_pool()};
     RgbaImage image = run.renderer->read_classified();
-    const auto [it, first] = reference.try_emplace(run.configuration.lights, std::move(image));
+    const auto [it, first] =
+        reference.try_emplace({run.configuration.lights, run.configuration.shadows}, std::move(image));
     if (!first) {
       const app::Equivalence e = app::compare_frames(image, it->second);
       row.pixels_different = e.pixels_different;
@@ -114,15 +117,22 @@ std::string results_json(const BenchOptions& options, const std::string& device,
   for (std::size_t i = 0; i < rows.size(); ++i) {
     nlohmann::json frames = nlohmann::json::array();
     for (const FrameTimings& f : runs[i].timings) {
-      frames.push_back({{"local_lights", f.local_lights}, {"frame_classified", f.frame_classified}});
+      frames.push_back({{"local_lights", f.local_lights},
+                        {"local_light_shadows", f.local_light_shadows},
+                        {"frame_classified", f.frame_classified}});
     }
     const BenchRow& r = rows[i];
-    j["configurations"].push_back({{"lights", r.configuration.lights},
-                                   {"local_light_pass", to_string(r.configuration.renderer.local_light_pass)},
-                                   {"median_ms", {{"local_lights", r.local_lights_ms}, {"frame", r.frame_ms}}},
-                                   {"frames_ms", frames},
-                                   {"pixels_different", r.pixels_different},
-                                   {"max_abs_difference", r.max_abs_difference}});
+    j["configurations"].push_back(
+        {{"lights", r.configuration.lights},
+         {"shadows", to_string(r.configuration.shadows)},
+         {"local_light_pass", to_string(r.configuration.renderer.local_light_pass)},
+         {"shadow_maps",
+          {{"maps", r.pool.maps}, {"faces", r.pool.faces}, {"bytes", r.pool.bytes}, {"unshadowed", r.pool.unshadowed}}},
+         {"median_ms",
+          {{"local_lights", r.local_lights_ms}, {"local_light_shadows", r.shadow_maps_ms}, {"frame", r.frame_ms}}},
+         {"frames_ms", frames},
+         {"pixels_different", r.pixels_different},
+         {"max_abs_difference", r.max_abs_difference}});
   }
   return j.dump(2) + "\n";
 }
@@ -131,20 +141,23 @@ plot::BarChart chart_of(const BenchOptions& options, const std::vector<BenchRow>
   plot::BarChart chart;
   chart.title = fmt::format("Local lights: volumes vs full-screen ({}x{}, {} camera)", options.width, options.height,
                             options.camera);
-  chart.category_axis = "lights";
+  chart.category_axis = "lights, shadows";
   chart.value_axis = "median time of the local-light pass (ms)";
   for (const LocalLightPass pass : options.passes) chart.series.push_back(to_string(pass));
   for (const std::uint32_t lights : options.lights) {
-    chart.categories.push_back(std::to_string(lights));
-    std::vector<double> values;
-    for (const LocalLightPass pass : options.passes) {
-      for (const BenchRow& r : rows) {
-        if (r.configuration.lights == lights && r.configuration.renderer.local_light_pass == pass) {
-          values.push_back(r.local_lights_ms);
+    for (const ShadowMode shadows : options.shadows) {
+      chart.categories.push_back(fmt::format("{}, shadows {}", lights, to_string(shadows)));
+      std::vector<double> values;
+      for (const LocalLightPass pass : options.passes) {
+        for (const BenchRow& r : rows) {
+          const BenchConfiguration& c = r.configuration;
+          if (c.lights == lights && c.shadows == shadows && c.renderer.local_light_pass == pass) {
+            values.push_back(r.local_lights_ms);
+          }
         }
       }
+      chart.values.push_back(std::move(values));
     }
-    chart.values.push_back(std::move(values));
   }
   chart.decimals = 1;
   return chart;

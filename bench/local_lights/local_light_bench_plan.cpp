@@ -14,12 +14,29 @@ LocalLightPass pass_named(const std::string& name) {
   return name == "fullscreen" ? LocalLightPass::fullscreen : LocalLightPass::volumes;
 }
 
-// The row of `rows` measured with `lights` lights and `pass`, or nullptr.
-const BenchRow* find_row(const std::vector<BenchRow>& rows, std::uint32_t lights, LocalLightPass pass) {
+ShadowMode shadow_mode_named(const std::string& name) {
+  if (name == "cached") return ShadowMode::cached;
+  return name == "rebuilt" ? ShadowMode::rebuilt : ShadowMode::off;
+}
+
+// The row of `rows` measured with `lights` lights, `shadows` and `pass`, or nullptr.
+const BenchRow* find_row(const std::vector<BenchRow>& rows, std::uint32_t lights, ShadowMode shadows,
+                         LocalLightPass pass) {
   for (const BenchRow& row : rows) {
-    if (row.configuration.lights == lights && row.configuration.renderer.local_light_pass == pass) return &row;
+    const BenchConfiguration& c = row.configuration;
+    if (c.lights == lights && c.shadows == shadows && c.renderer.local_light_pass == pass) return &row;
   }
   return nullptr;
+}
+
+// "off", or the lights with maps and their faces ("21 (46 faces)"), with the lights left
+// unshadowed by the pool's cap.
+std::string maps_cell(const BenchRow* row) {
+  if (row == nullptr || row->configuration.shadows == ShadowMode::off) return "off";
+  const LocalLightShadowPool& p = row->pool;
+  std::string cell = fmt::format("{} ({} faces)", p.maps, p.faces);
+  if (p.unshadowed > 0) cell += fmt::format(", {} over the cap", p.unshadowed);
+  return cell;
 }
 
 std::string ms_cell(const BenchRow* row, double BenchRow::*field) {
@@ -32,6 +49,15 @@ std::string ratio_cell(const BenchRow* slow, const BenchRow* fast, double BenchR
 }
 
 }  // namespace
+
+const char* to_string(ShadowMode mode) {
+  switch (mode) {
+    case ShadowMode::off: return "off";
+    case ShadowMode::cached: return "cached";
+    case ShadowMode::rebuilt: return "rebuilt";
+  }
+  return "?";
+}
 
 bool parse_bench_options(int argc, const char* const* argv, BenchOptions& options, int& exit_code, std::ostream& out,
                          std::ostream& err) {
@@ -49,6 +75,12 @@ bool parse_bench_options(int argc, const char* const* argv, BenchOptions& option
   cli.add_option("--passes", passes, "local-light passes: volumes, fullscreen (tilelight --local-light-pass)")
       ->delimiter(',')
       ->check(CLI::IsMember({"volumes", "fullscreen"}))
+      ->capture_default_str();
+  std::vector<std::string> shadows{"off", "cached", "rebuilt"};
+  cli.add_option("--shadows", shadows,
+                 "local-light shadows: off, cached (static maps rendered once), rebuilt (every frame)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"off", "cached", "rebuilt"}))
       ->capture_default_str();
   std::string size = "720p";
   CLI::Option* size_option =
@@ -69,11 +101,13 @@ bool parse_bench_options(int argc, const char* const* argv, BenchOptions& option
   cli.add_option("--device", options.device, "as tilelight --device: an index or a name substring (default lavapipe)");
   cli.add_option("--out", options.out, "output folder")->capture_default_str();
   bool quick = false;
-  cli.add_flag("--quick", quick, "2 and 4 lights at 96x54, one frame: proves the benchmark runs");
+  cli.add_flag("--quick", quick,
+               "2 and 4 lights, shadows off and rebuilt, at 96x54, one frame: proves the benchmark runs");
   try {
     cli.parse(argc, argv);
     if (quick) {
       if (cli.count("--lights") == 0) options.lights = {2, 4};
+      if (cli.count("--shadows") == 0) shadows = {"off", "rebuilt"};
       if (size_option->count() == 0) size = "96x54";
       if (frames->count() == 0) options.frames = 1;
     }
@@ -91,6 +125,8 @@ bool parse_bench_options(int argc, const char* const* argv, BenchOptions& option
   }
   options.passes.clear();
   for (const std::string& p : passes) options.passes.push_back(pass_named(p));
+  options.shadows.clear();
+  for (const std::string& m : shadows) options.shadows.push_back(shadow_mode_named(m));
   options.msaa = msaa == "auto" ? 0 : static_cast<std::uint32_t>(std::stoul(msaa));
   options.light_pass = light_pass == "raster" ? LightPass::raster : LightPass::compute;
   return true;
@@ -99,17 +135,22 @@ bool parse_bench_options(int argc, const char* const* argv, BenchOptions& option
 std::vector<BenchConfiguration> bench_configurations(const BenchOptions& options) {
   std::vector<BenchConfiguration> configurations;
   for (const std::uint32_t lights : options.lights) {
-    for (const LocalLightPass pass : options.passes) {
-      BenchConfiguration c;
-      c.lights = lights;
-      c.renderer.width = options.width;
-      c.renderer.height = options.height;
-      c.renderer.camera = options.camera;
-      c.renderer.msaa = options.msaa;
-      c.renderer.light_pass = options.light_pass;
-      c.renderer.local_light_pass = pass;
-      c.renderer.baselines = Baselines::none;
-      configurations.push_back(std::move(c));
+    for (const ShadowMode shadows : options.shadows) {
+      for (const LocalLightPass pass : options.passes) {
+        BenchConfiguration c;
+        c.lights = lights;
+        c.shadows = shadows;
+        c.renderer.local_light_shadows = shadows != ShadowMode::off;
+        c.renderer.local_light_shadow_cache = shadows != ShadowMode::rebuilt;
+        c.renderer.width = options.width;
+        c.renderer.height = options.height;
+        c.renderer.camera = options.camera;
+        c.renderer.msaa = options.msaa;
+        c.renderer.light_pass = options.light_pass;
+        c.renderer.local_light_pass = pass;
+        c.renderer.baselines = Baselines::none;
+        configurations.push_back(std::move(c));
+      }
     }
   }
   return configurations;
@@ -117,19 +158,24 @@ std::vector<BenchConfiguration> bench_configurations(const BenchOptions& options
 
 std::string markdown_table(const BenchOptions& options, const std::vector<BenchRow>& rows) {
   const LocalLightPass first = options.passes.front();
-  const LocalLightPass second = options.passes.size() > 1 ? options.passes[1] : first;
+  const bool two = options.passes.size() > 1;
+  const LocalLightPass second = two ? options.passes[1] : first;
   std::string table = fmt::format(
-      "| lights | {0} local lights (ms) | {1} local lights (ms) | {1} / {0} | {0} whole frame (ms) | {1} whole frame "
-      "(ms) | {1} / {0}, whole frame | pixels differ |\n|---|---|---|---|---|---|---|---|\n",
+      "| lights | shadows | maps | shadow maps (ms) | {0} local lights (ms) | {1} local lights (ms) | {1} / {0} | {0} "
+      "whole frame (ms) | {1} whole frame (ms) | {1} / {0}, whole frame | pixels differ |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n",
       to_string(first), to_string(second));
   for (const std::uint32_t lights : options.lights) {
-    const BenchRow* a = find_row(rows, lights, first);
-    const BenchRow* b = options.passes.size() > 1 ? find_row(rows, lights, second) : nullptr;
-    table +=
-        fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", lights, ms_cell(a, &BenchRow::local_lights_ms),
-                    ms_cell(b, &BenchRow::local_lights_ms), ratio_cell(b, a, &BenchRow::local_lights_ms),
-                    ms_cell(a, &BenchRow::frame_ms), ms_cell(b, &BenchRow::frame_ms),
-                    ratio_cell(b, a, &BenchRow::frame_ms), b != nullptr ? std::to_string(b->pixels_different) : "—");
+    for (const ShadowMode shadows : options.shadows) {
+      const BenchRow* a = find_row(rows, lights, shadows, first);
+      const BenchRow* b = two ? find_row(rows, lights, shadows, second) : nullptr;
+      table +=
+          fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", lights, to_string(shadows),
+                      maps_cell(a), ms_cell(a, &BenchRow::shadow_maps_ms), ms_cell(a, &BenchRow::local_lights_ms),
+                      ms_cell(b, &BenchRow::local_lights_ms), ratio_cell(b, a, &BenchRow::local_lights_ms),
+                      ms_cell(a, &BenchRow::frame_ms), ms_cell(b, &BenchRow::frame_ms),
+                      ratio_cell(b, a, &BenchRow::frame_ms), b != nullptr ? std::to_string(b->pixels_different) : "—");
+    }
   }
   return table;
 }
