@@ -12,8 +12,9 @@
 // Output: the lit colour with alpha = base colour alpha (factor times texture), blended
 // SRC_ALPHA, ONE_MINUS_SRC_ALPHA over the light target by the pipeline.
 //
-// Switch (one raw feature):
-//   LOCAL_LIGHTS  the instance has local lights to add (without it, none are read).
+// Switches (raw features):
+//   LOCAL_LIGHTS   the instance has local lights to add (without it, none are read).
+//   LOCAL_SHADOWS  some of them have shadow maps (only with LOCAL_LIGHTS: a rule).
 
 #extension GL_GOOGLE_include_directive : require
 
@@ -29,6 +30,9 @@
 layout(set = 1, binding = 0, std430) readonly buffer ForwardLocalLights {
     LocalLightData lights[];
 } local_lights;
+#endif
+#ifdef LOCAL_SHADOWS
+#include "local_shadow_bindings.glsl"
 #endif
 
 // The mesh's base colour texture (sRGB, read in linear light), or 1x1 white without one.
@@ -59,8 +63,13 @@ vec3 forward_local_lights(vec3 albedo, vec3 normal)
     for (uint i = 0u; i < count; ++i) {
         LocalLightData light = local_lights.lights[draw.light_indices[i / 4u][i % 4u]];
         bool back_colour = light.kind.x == LOCAL_LIGHT_TYPE_BOX;  // 0 where the box has none
-        sum += local_light_surface_radiance(light, back_colour, vec3(1.0), albedo, normal, in_world_pos,
-                                            params.camera_pos.xyz, in_albedo_spec.a, in_material.x);
+#ifdef LOCAL_SHADOWS
+        float visibility = local_light_visibility(light, ivec2(gl_FragCoord.xy), in_world_pos, normal);
+#else
+        const float visibility = 1.0;
+#endif
+        sum += local_light_surface_radiance_visible(light, back_colour, vec3(1.0), albedo, normal, in_world_pos,
+                                                    params.camera_pos.xyz, in_albedo_spec.a, in_material.x, visibility);
     }
     return sum;
 }

@@ -41,28 +41,8 @@ layout(set = 2, binding = 0) uniform sampler2D globe_map;
 #endif
 
 #ifdef SHADOWED
-#include "local_shadow.glsl"
-// Every shadowed light's faces in one depth atlas, and each face's transform and place in it.
-layout(set = 3, binding = 0) uniform sampler2D local_shadow_atlas;
-layout(set = 3, binding = 1, std430) readonly buffer LocalShadowFaces {
-    LocalShadowFace faces[];
-} local_shadow_faces;
-
-// The light's shadow over `world_pos`, only where its direct term lands: elsewhere 1 (it
-// multiplies nothing or zero). A cube's face by the direction from its eye.
-float local_light_visibility(LocalLightData light, ivec2 pixel, vec3 world_pos, vec3 normal)
-{
-    LocalLightIncidence incidence = local_light_incidence(light, world_pos);
-    vec3 n = normalize(normal);
-    if (!(incidence.attenuation > 0.0) || !(dot(n, incidence.to_light) > 0.0)) {
-        return 1.0;
-    }
-    uint face = light.kind.z;
-    if (light.kind.w == 6u) {
-        face += local_shadow_cube_face(world_pos - local_shadow_faces.faces[face].eye_offset.xyz);
-    }
-    return local_shadow_visibility(local_shadow_atlas, local_shadow_faces.faces[face], pixel, world_pos, n);
-}
+// Set 3: the shadow atlas and its faces; local_light_visibility().
+#include "local_shadow_bindings.glsl"
 #endif
 
 // Whether the bound G-buffer has coverage flags (the classified path's): the runtime sets it as

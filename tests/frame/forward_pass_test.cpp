@@ -24,6 +24,10 @@
 //  5. A point light in front of A brightens it: with the light, A's pixel is again the blend of the
 //     opaque A and the background, both lit by the light, and brighter than without it: the light
 //     (one of the K chosen on the CPU) reaches the forward shader.
+//  6. With a thin opaque caster between that light and A (its shadow on A away from where the
+//     camera sees the caster), a pixel of A in the shadow is again that blend, where the opaque A
+//     is darker there than without the caster: the light's shadow map reaches the forward shader
+//     (LOCAL_SHADOWS), read as the deferred local-light pass reads it.
 // And tilelight's report.json: `forward` counts the blended instances (and K), timings_ms.forward
 // is the pass's time, present (0) without blended materials.
 #include "frame_support.h"
@@ -58,9 +62,15 @@ std::string material(glm::vec3 colour, float alpha, bool blended) {
                      blended ? "BLEND" : "OPAQUE", colour.r, colour.g, colour.b, blended ? alpha : 1.0f);
 }
 
-Scene build_scene(Glass glass, bool with_light) {
+// A's pixel in the caster's shadow (test 6): the light at x -1.2, z 0.6 and the caster at z 0.5
+// over x -1.3..-1.25 throw its shadow on A (z 0) over x -1.8..-1.5.
+constexpr glm::vec3 kInCastersShadow{-1.65f, 0.2f, 0};
+
+Scene build_scene(Glass glass, bool with_light, bool with_caster = false) {
   GltfBuilder file;
   file.add_quad({-2, -2}, {2, 2}, -1, file.add_material(material({0, 1, 0}, 1, false)));
+  if (with_caster)
+    file.add_quad({-1.3f, -0.1f}, {-1.25f, 0.1f}, 0.5f, file.add_material(material({1, 1, 1}, 1, false)));
   file.add_quad({1.1f, -0.5f}, {1.9f, 0.5f}, 0.8f, file.add_material(material({1, 1, 1}, 1, false)));
   const auto add_a = [&](bool blended) {
     file.add_quad({-1.8f, -1}, {0.5f, 1}, 0, file.add_material(material({1, 0, 0}, kAlphaA, blended)));
@@ -195,6 +205,20 @@ TEST_P(ForwardPassFrame, ALocalLightReachesTheGlass) {
   const glm::uvec2 only_a = pixel_of(blended, {-1.2f, 0.2f, 0});
   EXPECT_TRUE(near(rgb_at(glass, only_a), over(rgb_at(lit_a, only_a), kAlphaA, rgb_at(background, only_a)), "A, lit"));
   EXPECT_GT(rgb_at(glass, only_a).r, rgb_at(unlit_glass, only_a).r + 0.05f) << "the light brightens the glass";
+}
+
+TEST_P(ForwardPassFrame, ALocalLightsShadowFallsOnTheGlass) {
+  const Scene blended = build_scene(Glass::blended, true, true);
+  const RgbaImage background = render(build_scene(Glass::none, true, true));
+  const RgbaImage lit_a = render(build_scene(Glass::opaque_a, true, true));
+  const RgbaImage lit_a_uncast = render(build_scene(Glass::opaque_a, true, false));
+  const RgbaImage glass = render(blended, 2);
+
+  const glm::uvec2 shadowed = pixel_of(blended, kInCastersShadow);
+  ASSERT_LT(rgb_at(lit_a, shadowed).r + 0.05f, rgb_at(lit_a_uncast, shadowed).r)
+      << "the caster shadows the opaque A there (the deferred local-light pass)";
+  EXPECT_TRUE(near(rgb_at(glass, shadowed), over(rgb_at(lit_a, shadowed), kAlphaA, rgb_at(background, shadowed)),
+                   "A, in the caster's shadow"));
 }
 
 // report.json of one tilelight run on `scene_args` (none: the procedural scene), written to `out`.

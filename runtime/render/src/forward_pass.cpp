@@ -1,6 +1,7 @@
 #include "forward_pass.h"
 
 #include "descriptors.h"
+#include "light_target_pass.h"
 #include "local_light_block.h"
 #include "pipelines.h"
 #include "reflected_layout.h"
@@ -23,7 +24,9 @@ constexpr std::uint32_t kShadowMapBinding = 5;
 constexpr std::uint32_t kForwardBinding = 8;
 constexpr std::uint32_t kLightsSet = 1;
 constexpr std::uint32_t kBaseColourSet = 2;
-constexpr std::uint32_t kLocalLightsBit = 1;  // permutations/forward.json: LOCAL_LIGHTS, bit 0
+constexpr std::uint32_t kShadowSet = 3;
+constexpr std::uint32_t kLocalLightsBit = 1;   // permutations/forward.json: LOCAL_LIGHTS, bit 0
+constexpr std::uint32_t kLocalShadowsBit = 2;  // LOCAL_SHADOWS, bit 1
 
 // forward_params.glsl's ForwardParams (std140).
 struct ForwardParamsBlock {
@@ -39,66 +42,6 @@ struct DrawConstants {
 };
 constexpr std::uint32_t kDrawConstantBytes = sizeof(DrawConstants);
 static_assert(kDrawConstantBytes == 48);
-
-// Colour attachment 0, the light target, loaded and stored (TRANSFER_SRC_OPTIMAL before and
-// after, as the local lights leave it); attachment 1 this pass's single-sampled depth, cleared
-// to 1 and dropped at the end. Dependencies as the local lights' pass (local_light_passes.cpp).
-UniqueRenderPass create_forward_render_pass(const Context& context, VkFormat depth_format) {
-  VkAttachmentDescription target{};
-  target.format = kLightFormat;
-  target.samples = VK_SAMPLE_COUNT_1_BIT;
-  target.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-  target.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  target.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  target.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  target.initialLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  target.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  VkAttachmentDescription depth{};
-  depth.format = depth_format;
-  depth.samples = VK_SAMPLE_COUNT_1_BIT;
-  depth.loadOp = depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-  const std::array<VkAttachmentDescription, 2> attachments{target, depth};
-  const VkAttachmentReference colour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  const VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-  VkSubpassDescription subpass{};
-  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  subpass.colorAttachmentCount = 1;
-  subpass.pColorAttachments = &colour;
-  subpass.pDepthStencilAttachment = &depth_ref;
-  // In: after the light target's writes (global pass draws or compute, local lights) and the
-  // previous target's forward pass's depth tests (the depth image is reused). Out: the read-back.
-  constexpr VkPipelineStageFlags kTests =
-      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  constexpr VkPipelineStageFlags kBefore = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                                           kTests;
-  constexpr VkPipelineStageFlags kOutput = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  constexpr VkAccessFlags kBlend = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  constexpr VkAccessFlags kDepth =
-      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  const std::array<VkSubpassDependency, 2> dependencies{{
-      {VK_SUBPASS_EXTERNAL, 0, kBefore, kOutput | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | kTests,
-       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-       kBlend | kDepth, 0},
-      {0, VK_SUBPASS_EXTERNAL, kOutput, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-       VK_ACCESS_TRANSFER_READ_BIT, 0},
-  }};
-  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  info.attachmentCount = static_cast<std::uint32_t>(attachments.size());
-  info.pAttachments = attachments.data();
-  info.subpassCount = 1;
-  info.pSubpasses = &subpass;
-  info.dependencyCount = static_cast<std::uint32_t>(dependencies.size());
-  info.pDependencies = dependencies.data();
-  VkRenderPass pass = VK_NULL_HANDLE;
-  check(vkCreateRenderPass(context.device(), &info, nullptr, &pass), "vkCreateRenderPass", "forward pass");
-  UniqueRenderPass owned(pass, {context.device()});
-  context.name_object(pass, "forward pass");
-  return owned;
-}
 
 // The image view set 0's binding `binding` reads (lighting_params.glsl's numbering).
 VkImageView set0_view(const RenderTargets& targets, std::uint32_t binding) {
@@ -144,23 +87,33 @@ Buffer upload_values(const Context& context, std::span<const T> data, VkBufferUs
 }  // namespace
 
 ForwardPass::ForwardPass(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
-                         const LightingParamsBlock& params, const SceneTextures& textures, VkDescriptorPool pool)
+                         const LightingParamsBlock& params, const SceneTextures& textures, VkDescriptorPool pool,
+                         const LocalLightShadows& shadows)
     : shaders_(&forward_shaders_for(targets.samples())),
       draws_(plan_forward_draws(scene, camera.position)),
       params_block_(params) {
   if (draws_.empty()) return;  // nothing blended: no buffers, sets or pipelines
-  upload(context, scene, textures, make_scene_params(scene, camera, targets.extent().width, targets.extent().height));
-  render_pass_ = create_forward_render_pass(context, targets.gbuffer_depth_format());
+  upload(context, scene, textures, make_scene_params(scene, camera, targets.extent().width, targets.extent().height),
+         shadows);
+  render_pass_ = create_light_target_pass(context, targets.gbuffer_depth_format(), "forward pass");
   depth_ = Image(
       context, {targets.extent(), targets.gbuffer_depth_format(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                 VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT, "forward pass: depth"});
   create_framebuffers(context, targets);
-  create_sets(context, targets, pool, textures);
+  create_sets(context, targets, pool, textures, shadows);
   create_pipelines(context);
 }
 
+std::uint32_t ForwardPass::raw_id_of(const ForwardDraw& draw) const {
+  if (draw.light_count == 0) return 0;
+  for (std::uint32_t i = 0; i < draw.light_count; ++i) {
+    if (light_has_map_[draw.lights[i]]) return kLocalLightsBit | kLocalShadowsBit;
+  }
+  return kLocalLightsBit;
+}
+
 void ForwardPass::upload(const Context& context, const Scene& scene, const SceneTextures& textures,
-                         const SceneParamsBlock& scene_params) {
+                         const SceneParamsBlock& scene_params, const LocalLightShadows& shadows) {
   meshes_.resize(scene.meshes.size());
   std::vector<Instance> instances;
   for (const ForwardDraw& draw : draws_) {
@@ -185,13 +138,15 @@ void ForwardPass::upload(const Context& context, const Scene& scene, const Scene
                                                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "forward lighting parameters");
   // At least one block: set 1 binds the buffer even where no instance reads a light.
   std::vector<LocalLightBlock> blocks = make_local_light_blocks(scene.local_lights);
+  shadows.place_faces_in(blocks);
+  for (const LocalLightBlock& light : blocks) light_has_map_.push_back(light.kind.w != 0);
   if (blocks.empty()) blocks.push_back(LocalLightBlock{});
   lights_ =
       upload_values<LocalLightBlock>(context, blocks, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "forward pass: local lights");
 }
 
 void ForwardPass::create_sets(const Context& context, const RenderTargets& targets, VkDescriptorPool pool,
-                              const SceneTextures& textures) {
+                              const SceneTextures& textures, const LocalLightShadows& shadows) {
   const shadergen::Registry& registry = *shaders_;
   const std::vector<VkDescriptorSetLayoutBinding> set0 =
       merged_set_bindings({registry.pipeline_layout}, 0, "forward set 0");
@@ -203,9 +158,17 @@ void ForwardPass::create_sets(const Context& context, const RenderTargets& targe
       merged_set_bindings({registry.pipeline_layout}, kBaseColourSet, "forward set 2");
   const std::array<VkDescriptorType, 1> texture_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
   check_bindings(set2, texture_types, "forward set 2 (the base colour texture)");
+  // The local lights' shadow maps: the set LocalLightShadows::allocate_set() writes.
+  const std::vector<VkDescriptorSetLayoutBinding> set3 =
+      merged_set_bindings({registry.pipeline_layout}, kShadowSet, "forward set 3");
+  const std::array<VkDescriptorType, 2> shadow_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+  check_bindings(set3, shadow_types, "forward set 3 (the local lights' shadow atlas and its faces)");
   set0_layout_ = create_descriptor_set_layout(context, set0, "forward set 0 layout");
   set1_layout_ = create_descriptor_set_layout(context, set1, "forward set 1 layout");
-  const std::array<VkDescriptorSetLayout, 3> sets{set0_layout_.get(), set1_layout_.get(), textures.set_layout()};
+  set3_layout_ = create_descriptor_set_layout(context, set3, "forward set 3 layout");
+  const std::array<VkDescriptorSetLayout, 4> sets{set0_layout_.get(), set1_layout_.get(), textures.set_layout(),
+                                                  set3_layout_.get()};
   const std::vector<VkPushConstantRange> push = shadergen::vk::push_constant_ranges(registry);
   if (push_constant_bytes(push) != kDrawConstantBytes) {
     throw Error("forward.json's shaders push " + std::to_string(push_constant_bytes(push)) +
@@ -228,6 +191,9 @@ void ForwardPass::create_sets(const Context& context, const RenderTargets& targe
   }
   set1_ = allocate_descriptor_set(context, pool, set1_layout_.get(), "forward set 1");
   write_buffer_descriptor(context, set1_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights_.handle());
+  if (shadows.has_maps()) {
+    set3_ = shadows.allocate_set(context, pool, set3_layout_.get(), sampler_.handle(), "forward set 3 (shadows)");
+  }
 }
 
 void ForwardPass::create_framebuffers(const Context& context, const RenderTargets& targets) {
@@ -265,7 +231,7 @@ void ForwardPass::create_pipelines(const Context& context) {
   depth_pipeline_ = create_graphics_pipeline(context, depth);
 
   for (const ForwardDraw& draw : draws_) {
-    const std::uint32_t raw_id = draw.light_count > 0 ? kLocalLightsBit : 0;
+    const std::uint32_t raw_id = raw_id_of(draw);
     const bool culled = meshes_[draw.mesh].culled;
     UniquePipeline& pipeline = pipelines_[raw_id][culled ? 1 : 0];
     if (pipeline) continue;
@@ -300,13 +266,16 @@ void ForwardPass::record(VkCommandBuffer cmd, const RenderTargets& targets, Loca
   set_viewport_and_scissor(cmd, targets.extent());
   const std::array<VkDescriptorSet, 2> sets{set0_, set1_};
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 2, sets.data(), 0, nullptr);
+  if (set3_ != VK_NULL_HANDLE) {
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), kShadowSet, 1, &set3_, 0, nullptr);
+  }
   // First the depth the geometry is tested against, then the geometry, in the same subpass.
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_pipeline_.get());
   vkCmdDraw(cmd, 3, 1, 0, 0);
   for (std::uint32_t i = 0; i < draws_.size(); ++i) {
     const ForwardDraw& draw = draws_[i];
     const MeshBuffers& mesh = meshes_[draw.mesh];
-    const std::uint32_t raw_id = draw.light_count > 0 ? kLocalLightsBit : 0;
+    const std::uint32_t raw_id = raw_id_of(draw);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_[raw_id][mesh.culled ? 1 : 0].get());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), kBaseColourSet, 1, &mesh.base_colour,
                             0, nullptr);

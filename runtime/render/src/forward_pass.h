@@ -15,10 +15,13 @@
 // Descriptor sets, from the domain's merged reflection: set 0 the lighting parameters, RT3 and
 // the shadow map (lighting_params.glsl's bindings) and the forward block (binding 8,
 // forward_params.glsl), set 1 the scene's local lights (one LocalLightBlock each), set 2 the
-// mesh's base colour texture (the scene textures' own set); push constants: the draw's lights.
+// mesh's base colour texture (the scene textures' own set), set 3 the local lights' shadow atlas
+// and faces (LocalLightShadows, where some light has a map); push constants: the draw's lights.
+// An instance whose chosen lights include one with a map is drawn with LOCAL_SHADOWS.
 
 #include "forward_selection.h"
 #include "local_light_passes.h"
+#include "local_light_shadows.h"
 #include "render_targets.h"
 #include "scene_textures.h"
 #include "tilelight/scene/scene.h"
@@ -46,8 +49,10 @@ class ForwardPass {
  public:
   // Uploads the blended meshes and instances and builds the pipelines they need (nothing when
   // the scene has no blended mesh). `camera` is the one the frame is drawn from (the sort).
+  // `shadows`: the local lights' maps (rendered before this pass records, every frame they are).
   ForwardPass(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
-              const LightingParamsBlock& params, const SceneTextures& textures, VkDescriptorPool pool);
+              const LightingParamsBlock& params, const SceneTextures& textures, VkDescriptorPool pool,
+              const LocalLightShadows& shadows);
 
   // Blended instances drawn per light target (0: the pass records nothing).
   std::size_t instance_count() const { return draws_.size(); }
@@ -64,9 +69,11 @@ class ForwardPass {
     bool culled = false;                           // single-sided: back faces culled
   };
   void upload(const Context& context, const Scene& scene, const SceneTextures& textures,
-              const SceneParamsBlock& scene_params);
+              const SceneParamsBlock& scene_params, const LocalLightShadows& shadows);
   void create_sets(const Context& context, const RenderTargets& targets, VkDescriptorPool pool,
-                   const SceneTextures& textures);
+                   const SceneTextures& textures, const LocalLightShadows& shadows);
+  // The draw's permutation: LOCAL_LIGHTS with lights, LOCAL_SHADOWS where one of them has a map.
+  std::uint32_t raw_id_of(const ForwardDraw& draw) const;
   void create_framebuffers(const Context& context, const RenderTargets& targets);
   void create_pipelines(const Context& context);
 
@@ -79,13 +86,15 @@ class ForwardPass {
   UniqueRenderPass render_pass_;
   Image depth_;                                    // the single-sampled depth the geometry is tested against
   std::array<UniqueFramebuffer, 3> framebuffers_;  // per LocalLightTarget
-  UniqueDescriptorSetLayout set0_layout_, set1_layout_;
+  UniqueDescriptorSetLayout set0_layout_, set1_layout_, set3_layout_;
   UniquePipelineLayout layout_;
   VkDescriptorSet set0_ = VK_NULL_HANDLE, set1_ = VK_NULL_HANDLE;
+  VkDescriptorSet set3_ = VK_NULL_HANDLE;  // the shadow maps; only where some light has one
+  std::vector<bool> light_has_map_;        // per scene light
   VkShaderStageFlags push_stages_ = 0;
   UniquePipeline depth_pipeline_;
-  // By [LOCAL_LIGHTS raw bit][culled]: only those some draw uses.
-  std::array<std::array<UniquePipeline, 2>, 2> pipelines_;
+  // By [raw ID (LOCAL_LIGHTS bit 0, LOCAL_SHADOWS bit 1)][culled]: only those some draw uses.
+  std::array<std::array<UniquePipeline, 2>, 4> pipelines_;
 };
 
 }  // namespace tilelight

@@ -1,6 +1,7 @@
 #include "local_light_passes.h"
 
 #include "descriptors.h"
+#include "light_target_pass.h"
 #include "local_light_block.h"
 #include "local_light_permutation.h"
 #include "pipelines.h"
@@ -35,70 +36,6 @@ struct DrawConstants {
   std::uint32_t light_index;
 };
 constexpr std::uint32_t kDrawConstantBytes = 68;
-
-// One colour attachment, the light target, loaded and stored: the lights add to what the global
-// pass wrote, which left it (as this pass leaves it) in TRANSFER_SRC_OPTIMAL for the read-back.
-// With `depth_format` (the volumes), attachment 1 is the resolved depth and stencil, cleared
-// (depth 1, stencil 0: no lighting) and dropped at the end.
-UniqueRenderPass create_additive_pass(const Context& context, VkFormat depth_format) {
-  VkAttachmentDescription target{};
-  target.format = kLightFormat;
-  target.samples = VK_SAMPLE_COUNT_1_BIT;
-  target.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-  target.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  target.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  target.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  target.initialLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  target.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  VkAttachmentDescription depth{};
-  depth.format = depth_format;
-  depth.samples = VK_SAMPLE_COUNT_1_BIT;
-  depth.loadOp = depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-  const bool volumes = depth_format != VK_FORMAT_UNDEFINED;
-  const std::array<VkAttachmentDescription, 2> attachments{target, depth};
-  const VkAttachmentReference colour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  const VkAttachmentReference depth_stencil{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-  VkSubpassDescription subpass{};
-  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  subpass.colorAttachmentCount = 1;
-  subpass.pColorAttachments = &colour;
-  subpass.pDepthStencilAttachment = volumes ? &depth_stencil : nullptr;
-  // In: after the global pass's writes (draws, or compute and its barrier to the transfer
-  // stage), and after the G-buffer's writes, which its own pass made visible to fragment reads.
-  // Out: to the read-back (transfer) as the global pass's own dependency does.
-  // The resolved depth-stencil is written again by the next target's pass: its tests too.
-  constexpr VkPipelineStageFlags kTests =
-      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  constexpr VkPipelineStageFlags kBefore = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                                           kTests;
-  constexpr VkPipelineStageFlags kOutput = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  constexpr VkAccessFlags kBlend = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  constexpr VkAccessFlags kDepthStencil =
-      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  const std::array<VkSubpassDependency, 2> dependencies{{
-      {VK_SUBPASS_EXTERNAL, 0, kBefore, kOutput | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | kTests,
-       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-       kBlend | kDepthStencil, 0},
-      {0, VK_SUBPASS_EXTERNAL, kOutput, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-       VK_ACCESS_TRANSFER_READ_BIT, 0},
-  }};
-  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  info.attachmentCount = volumes ? 2 : 1;
-  info.pAttachments = attachments.data();
-  info.subpassCount = 1;
-  info.pSubpasses = &subpass;
-  info.dependencyCount = static_cast<std::uint32_t>(dependencies.size());
-  info.pDependencies = dependencies.data();
-  VkRenderPass pass = VK_NULL_HANDLE;
-  check(vkCreateRenderPass(context.device(), &info, nullptr, &pass), "vkCreateRenderPass", "local-light pass");
-  UniqueRenderPass owned(pass, {context.device()});
-  context.name_object(pass, "local-light pass");
-  return owned;
-}
 
 // The image view set 0's binding `binding` reads, as lighting_params.glsl (and
 // local_light_resolve.frag, the stencil) declare it.
@@ -163,7 +100,8 @@ LocalLightPasses::LocalLightPasses(const Context& context, const Scene& scene, c
     draws_.push_back(draw);
   }
   const bool volumes = pass == LocalLightPass::volumes;
-  render_pass_ = create_additive_pass(context, volumes ? targets.gbuffer_depth_format() : VK_FORMAT_UNDEFINED);
+  render_pass_ = create_light_target_pass(context, volumes ? targets.gbuffer_depth_format() : VK_FORMAT_UNDEFINED,
+                                          "local-light pass");
   if (volumes) {
     resolved_depth_ =
         Image(context, {targets.extent(), targets.gbuffer_depth_format(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
@@ -281,26 +219,15 @@ void LocalLightPasses::create_sets(const Context& context, const RenderTargets& 
   }
 
   std::vector<LocalLightBlock> blocks = make_local_light_blocks(lights);
-  // Where each light's shadow faces are (local_light.glsl's kind.z and kind.w).
-  for (std::size_t i = 0; i < blocks.size(); ++i) {
-    const bool shadowed = shadows.plan().first_face[i] != kNoShadow;
-    blocks[i].kind.z = shadowed ? shadows.plan().first_face[i] : 0u;
-    blocks[i].kind.w = shadows.plan().face_count[i];
-  }
+  shadows.place_faces_in(blocks);
   lights_ = Buffer(context, {blocks.size() * sizeof(LocalLightBlock), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                              MemoryUse::HostUpload, "local lights"});
   lights_.write_values(std::span<const LocalLightBlock>(blocks));
   set1_ = allocate_descriptor_set(context, pool, set1_layout_.get(), "local-light set 1");
   write_buffer_descriptor(context, set1_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights_.handle());
-  if (shadows.has_maps()) create_shadow_set(context, pool, shadows);
-}
-
-void LocalLightPasses::create_shadow_set(const Context& context, VkDescriptorPool pool,
-                                         const LocalLightShadows& shadows) {
-  set3_ = allocate_descriptor_set(context, pool, set3_layout_.get(), "local-light set 3 (shadows)");
-  write_image_descriptor(context, set3_, 0, sampler_.handle(), shadows.atlas_view(),
-                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-  write_buffer_descriptor(context, set3_, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, shadows.faces_buffer());
+  if (shadows.has_maps()) {
+    set3_ = shadows.allocate_set(context, pool, set3_layout_.get(), sampler_.handle(), "local-light set 3 (shadows)");
+  }
 }
 
 void LocalLightPasses::create_full_screen_pipelines(const Context& context, const RenderTargets& targets) {

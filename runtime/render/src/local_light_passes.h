@@ -79,7 +79,6 @@ class LocalLightPasses {
   void create_sets(const Context& context, const RenderTargets& targets, VkDescriptorPool pool,
                    const SceneTextures& textures, const std::vector<LocalLight>& lights,
                    const LocalLightShadows& shadows);
-  void create_shadow_set(const Context& context, VkDescriptorPool pool, const LocalLightShadows& shadows);
   void create_full_screen_pipelines(const Context& context, const RenderTargets& targets);
   void create_volume_pipelines(const Context& context, const RenderTargets& targets, bool depth_clamp);
   void create_volume_meshes(const Context& context);

@@ -1,5 +1,6 @@
 #include "local_light_shadows.h"
 
+#include "descriptors.h"
 #include "pipelines.h"
 #include "reflected_layout.h"
 #include "scene_passes.h"
@@ -201,6 +202,23 @@ void LocalLightShadows::record(VkCommandBuffer cmd) {
   }
   vkCmdEndRenderPass(cmd);
   rendered_ = true;
+}
+
+void LocalLightShadows::place_faces_in(std::vector<LocalLightBlock>& blocks) const {
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const bool shadowed = plan_.first_face[i] != kNoShadow;
+    blocks[i].kind.z = shadowed ? plan_.first_face[i] : 0u;
+    blocks[i].kind.w = plan_.face_count[i];
+  }
+}
+
+VkDescriptorSet LocalLightShadows::allocate_set(const Context& context, VkDescriptorPool pool,
+                                                VkDescriptorSetLayout layout, VkSampler sampler,
+                                                std::string_view name) const {
+  const VkDescriptorSet set = allocate_descriptor_set(context, pool, layout, name);
+  write_image_descriptor(context, set, 0, sampler, atlas_view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  write_buffer_descriptor(context, set, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, faces_buffer());
+  return set;
 }
 
 }  // namespace tilelight

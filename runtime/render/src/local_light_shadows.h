@@ -9,6 +9,7 @@
 // Static maps: the scene does not move, so the faces are rendered in the first frame and kept;
 // with `cache` off they are rendered again every frame (the figure to compare).
 
+#include "local_light_block.h"
 #include "local_shadow_transforms.h"
 #include "tilelight/scene/scene.h"
 #include "tilelight/vulkan/buffer.h"
@@ -18,6 +19,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 namespace tilelight {
@@ -46,6 +48,14 @@ class LocalLightShadows {
   // record()) and the faces' blocks (one LocalShadowFaceBlock per face).
   VkImageView atlas_view() const { return atlas_.view(); }
   VkBuffer faces_buffer() const { return faces_.handle(); }
+  // Where each light's faces are, in the blocks the shaders read (local_shadow_bindings.glsl):
+  // kind.z its first face, kind.w its face count (0 without a map). `blocks`: one per light of
+  // the scene, in its order (make_local_light_blocks()).
+  void place_faces_in(std::vector<LocalLightBlock>& blocks) const;
+  // A descriptor set of `layout`, set 3 of a pass that reads the maps (the atlas at binding 0,
+  // read through `sampler` with texelFetch; the faces at binding 1). Preconditions: has_maps().
+  VkDescriptorSet allocate_set(const Context& context, VkDescriptorPool pool, VkDescriptorSetLayout layout,
+                               VkSampler sampler, std::string_view name) const;
 
   // Whether this frame renders the maps: the first frame, and every frame without the cache.
   bool renders_this_frame() const { return has_maps() && (!options_.cache || !rendered_); }

@@ -215,7 +215,7 @@ struct TileRenderer::Impl {
         std::make_unique<LocalLightPasses>(ctx, scene, *targets, lighting->params(), scene_passes->textures(),
                                            descriptor_pool.get(), opts.local_light_pass, *local_shadows);
     forward = std::make_unique<ForwardPass>(ctx, scene, camera, *targets, lighting->params(), scene_passes->textures(),
-                                            descriptor_pool.get());
+                                            descriptor_pool.get(), *local_shadows);
 
     frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
     tile_queries = TimestampQueries(ctx, "tile pass timestamps", kTileTimestamps);
