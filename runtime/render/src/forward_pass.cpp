@@ -5,6 +5,7 @@
 #include "local_light_block.h"
 #include "pipelines.h"
 #include "reflected_layout.h"
+#include "scene_vertex_input.h"
 #include "shader_registry.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
@@ -24,7 +25,6 @@ constexpr std::uint32_t kShadowMapBinding = 5;
 constexpr std::uint32_t kForwardBinding = 8;
 constexpr std::uint32_t kLightsSet = 1;
 constexpr std::uint32_t kBaseColourSet = 2;
-constexpr std::uint32_t kShadowSet = 3;
 constexpr std::uint32_t kLocalLightsBit = 1;   // permutations/forward.json: LOCAL_LIGHTS, bit 0
 constexpr std::uint32_t kLocalShadowsBit = 2;  // LOCAL_SHADOWS, bit 1
 
@@ -55,26 +55,6 @@ VkImageView set0_view(const RenderTargets& targets, std::uint32_t binding) {
   }
   throw Error("forward.json's set 0 has binding " + std::to_string(binding) +
               ", which the forward pass does not bind (lighting_params.glsl, forward_params.glsl)");
-}
-
-// MeshVertex and Instance as scene.vert reads them (scene_passes.cpp binds the same layout);
-// forward.vert reads every attribute.
-std::vector<VkVertexInputBindingDescription> forward_bindings() {
-  return {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(Instance), VK_VERTEX_INPUT_RATE_INSTANCE}};
-}
-
-std::vector<VkVertexInputAttributeDescription> forward_attributes() {
-  std::vector<VkVertexInputAttributeDescription> a{{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
-                                                   {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)},
-                                                   {8, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv)}};
-  for (std::uint32_t column = 0; column < 4; ++column) {
-    a.push_back({2 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
-                 static_cast<std::uint32_t>(offsetof(Instance, model) + column * sizeof(glm::vec4))});
-  }
-  a.push_back({6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, albedo_spec)});
-  a.push_back({7, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, material)});
-  a.push_back({9, 1, VK_FORMAT_R32G32_SFLOAT, offsetof(Instance, alpha_mask)});
-  return a;
 }
 
 template <typename T>
@@ -158,12 +138,7 @@ void ForwardPass::create_sets(const Context& context, const RenderTargets& targe
       merged_set_bindings({registry.pipeline_layout}, kBaseColourSet, "forward set 2");
   const std::array<VkDescriptorType, 1> texture_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
   check_bindings(set2, texture_types, "forward set 2 (the base colour texture)");
-  // The local lights' shadow maps: the set LocalLightShadows::allocate_set() writes.
-  const std::vector<VkDescriptorSetLayoutBinding> set3 =
-      merged_set_bindings({registry.pipeline_layout}, kShadowSet, "forward set 3");
-  const std::array<VkDescriptorType, 2> shadow_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
-  check_bindings(set3, shadow_types, "forward set 3 (the local lights' shadow atlas and its faces)");
+  const std::vector<VkDescriptorSetLayoutBinding> set3 = LocalLightShadows::set_bindings(registry, "forward");
   set0_layout_ = create_descriptor_set_layout(context, set0, "forward set 0 layout");
   set1_layout_ = create_descriptor_set_layout(context, set1, "forward set 1 layout");
   set3_layout_ = create_descriptor_set_layout(context, set3, "forward set 3 layout");
@@ -240,8 +215,8 @@ void ForwardPass::create_pipelines(const Context& context) {
     desc.render_pass = render_pass_.get();
     desc.vertex_spirv = companion_spirv(registry, "vertex");
     desc.fragment_spirv = registry.raw[raw_id].spirv;
-    desc.vertex_bindings = forward_bindings();
-    desc.vertex_attributes = forward_attributes();
+    desc.vertex_bindings = scene_vertex_bindings();
+    desc.vertex_attributes = scene_vertex_attributes();  // forward.vert reads every one
     desc.depth_test = true;
     desc.depth_write = false;  // blended surfaces hide nothing behind them
     desc.depth_compare = VK_COMPARE_OP_LESS;
@@ -267,7 +242,8 @@ void ForwardPass::record(VkCommandBuffer cmd, const RenderTargets& targets, Loca
   const std::array<VkDescriptorSet, 2> sets{set0_, set1_};
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 2, sets.data(), 0, nullptr);
   if (set3_ != VK_NULL_HANDLE) {
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), kShadowSet, 1, &set3_, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), LocalLightShadows::kSet, 1, &set3_, 0,
+                            nullptr);
   }
   // First the depth the geometry is tested against, then the geometry, in the same subpass.
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_pipeline_.get());

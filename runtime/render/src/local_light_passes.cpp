@@ -27,7 +27,6 @@ constexpr std::uint32_t kCoverageFlagsBinding = 6;
 constexpr std::uint32_t kStencilBinding = 7;  // local_light_resolve.frag: the G-buffer's stencil
 constexpr std::uint32_t kLightsSet = 1;
 constexpr std::uint32_t kGlobeSet = 2;
-constexpr std::uint32_t kShadowSet = 3;       // the atlas (binding 0) and its faces (binding 1)
 constexpr std::uint32_t kTaggedConstant = 2;  // TAGGED_GBUFFER (local_light.frag)
 
 // The push constants of every draw (local_light_draw.glsl): 68 bytes, as the reflection says.
@@ -185,12 +184,7 @@ void LocalLightPasses::create_sets(const Context& context, const RenderTargets& 
       merged_set_bindings({registry.pipeline_layout}, kGlobeSet, "local-light set 2");
   const std::array<VkDescriptorType, 1> globe_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
   check_bindings(set2, globe_types, "local-light set 2 (the globe map)");
-  // The shadow atlas and its faces: what create_shadow_set() writes.
-  const std::vector<VkDescriptorSetLayoutBinding> set3 =
-      merged_set_bindings({registry.pipeline_layout}, kShadowSet, "local-light set 3");
-  const std::array<VkDescriptorType, 2> shadow_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
-  check_bindings(set3, shadow_types, "local-light set 3 (the shadow atlas and its faces)");
+  const std::vector<VkDescriptorSetLayoutBinding> set3 = LocalLightShadows::set_bindings(registry, "local-light");
   set0_layout_ = create_descriptor_set_layout(context, set0, "local-light set 0 layout");
   set1_layout_ = create_descriptor_set_layout(context, set1, "local-light set 1 layout");
   set3_layout_ = create_descriptor_set_layout(context, set3, "local-light set 3 layout");
@@ -285,7 +279,8 @@ void LocalLightPasses::bind(VkCommandBuffer cmd, const RenderTargets& targets, L
   const std::array<VkDescriptorSet, 2> sets{set0_, set1_};
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 2, sets.data(), 0, nullptr);
   if (set3_ != VK_NULL_HANDLE) {
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), kShadowSet, 1, &set3_, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), LocalLightShadows::kSet, 1, &set3_, 0,
+                            nullptr);
   }
 }
 

@@ -4,6 +4,7 @@
 #include "pipelines.h"
 #include "reflected_layout.h"
 #include "scene_passes.h"
+#include "scene_vertex_input.h"
 #include "shader_registry.h"
 #include "tilelight/scene/batch_culling.h"
 #include "tilelight/vulkan/context.h"
@@ -22,25 +23,6 @@ constexpr std::uint32_t kTextureSet = 1;                 // shadow_mask.frag's b
 // The casters' rasteriser bias (as the sun's, DepthBias): a constant and a multiple of each
 // triangle's depth slope, with the receiver's normal offset against acne.
 constexpr DepthBias kCasterDepthBias{2.0f, 2.0f};
-
-// What local_shadow_caster.vert reads of the scene's buffers (ScenePasses' bindings 0 and 1):
-// the position, the model matrix, and for a mask the uv and the alpha factor and cutoff.
-std::vector<VkVertexInputBindingDescription> caster_bindings() {
-  return {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(Instance), VK_VERTEX_INPUT_RATE_INSTANCE}};
-}
-
-std::vector<VkVertexInputAttributeDescription> caster_attributes(bool masked) {
-  std::vector<VkVertexInputAttributeDescription> a{{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)}};
-  for (std::uint32_t column = 0; column < 4; ++column) {
-    a.push_back({2 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
-                 static_cast<std::uint32_t>(offsetof(Instance, model) + column * sizeof(glm::vec4))});
-  }
-  if (masked) {
-    a.push_back({8, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv)});
-    a.push_back({9, 1, VK_FORMAT_R32G32_SFLOAT, offsetof(Instance, alpha_mask)});
-  }
-  return a;
-}
 
 std::uint32_t max_atlas_texels(const Context& context) {
   const DeviceLimits& limits = context.limits();
@@ -162,8 +144,8 @@ void LocalLightShadows::create_pipelines(const Context& context, VkDescriptorSet
     desc.render_pass = render_pass_.get();
     desc.vertex_spirv = companion_spirv(registry, masked ? "shadow_caster_masked" : "shadow_caster");
     if (masked) desc.fragment_spirv = companion_spirv(registry, "shadow_caster_mask");
-    desc.vertex_bindings = caster_bindings();
-    desc.vertex_attributes = caster_attributes(masked);
+    desc.vertex_bindings = scene_vertex_bindings();  // ScenePasses' buffers
+    desc.vertex_attributes = shadow_caster_attributes(masked);
     desc.color_attachments = 0;
     desc.depth_test = true;
     desc.depth_write = true;
@@ -210,6 +192,17 @@ void LocalLightShadows::place_faces_in(std::vector<LocalLightBlock>& blocks) con
     blocks[i].kind.z = shadowed ? plan_.first_face[i] : 0u;
     blocks[i].kind.w = plan_.face_count[i];
   }
+}
+
+std::vector<VkDescriptorSetLayoutBinding> LocalLightShadows::set_bindings(const shadergen::Registry& registry,
+                                                                          std::string_view pass) {
+  const std::string what = std::string(pass) + " set 3";
+  const std::vector<VkDescriptorSetLayoutBinding> bindings =
+      merged_set_bindings({registry.pipeline_layout}, kSet, what);
+  const std::array<VkDescriptorType, 2> types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                              VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+  check_bindings(bindings, types, what + " (the shadow atlas and its faces)");
+  return bindings;
 }
 
 VkDescriptorSet LocalLightShadows::allocate_set(const Context& context, VkDescriptorPool pool,

@@ -22,6 +22,10 @@
 #include <string_view>
 #include <vector>
 
+namespace shadergen {
+struct Registry;
+}
+
 namespace tilelight {
 
 class Context;
@@ -52,6 +56,12 @@ class LocalLightShadows {
   // kind.z its first face, kind.w its face count (0 without a map). `blocks`: one per light of
   // the scene, in its order (make_local_light_blocks()).
   void place_faces_in(std::vector<LocalLightBlock>& blocks) const;
+  // The set number of the maps in the passes that read them (local_shadow_bindings.glsl).
+  static constexpr std::uint32_t kSet = 3;
+  // Set kSet of `registry`'s merged layout, checked to be what allocate_set() writes: a sampled
+  // image at binding 0, a storage buffer at 1. Throws tilelight::Error naming `pass` otherwise.
+  static std::vector<VkDescriptorSetLayoutBinding> set_bindings(const shadergen::Registry& registry,
+                                                                std::string_view pass);
   // A descriptor set of `layout`, set 3 of a pass that reads the maps (the atlas at binding 0,
   // read through `sampler` with texelFetch; the faces at binding 1). Preconditions: has_maps().
   VkDescriptorSet allocate_set(const Context& context, VkDescriptorPool pool, VkDescriptorSetLayout layout,

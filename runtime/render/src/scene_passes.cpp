@@ -3,6 +3,7 @@
 #include "descriptors.h"
 #include "pipelines.h"
 #include "reflected_layout.h"
+#include "scene_vertex_input.h"
 #include "shader_registry.h"
 #include "tilelight/scene/uniform_blocks.h"
 #include "tilelight/vulkan/context.h"
@@ -31,30 +32,12 @@ Buffer upload_buffer(const Context& context, std::span<const T> data, VkBufferUs
   return buffer;
 }
 
-std::vector<VkVertexInputBindingDescription> scene_bindings() {
-  return {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(Instance), VK_VERTEX_INPUT_RATE_INSTANCE}};
-}
-
-std::vector<VkVertexInputAttributeDescription> scene_attributes() {
-  std::vector<VkVertexInputAttributeDescription> a{{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
-                                                   {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)},
-                                                   {8, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv)}};
-  for (std::uint32_t column = 0; column < 4; ++column) {
-    a.push_back({2 + column, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
-                 static_cast<std::uint32_t>(offsetof(Instance, model) + column * sizeof(glm::vec4))});
-  }
-  a.push_back({6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, albedo_spec)});
-  a.push_back({7, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Instance, material)});
-  a.push_back({9, 1, VK_FORMAT_R32G32_SFLOAT, offsetof(Instance, alpha_mask)});
-  return a;
-}
-
-// The attributes of scene_attributes() whose locations `wanted` accepts: a pipeline gets only those
+// The attributes of scene_vertex_attributes() whose locations `wanted` accepts: a pipeline gets only those
 // its vertex shader reads (unused attributes are a validation performance warning).
 template <typename Wanted>
 std::vector<VkVertexInputAttributeDescription> scene_attributes_where(Wanted wanted) {
   std::vector<VkVertexInputAttributeDescription> kept;
-  for (const VkVertexInputAttributeDescription& a : scene_attributes()) {
+  for (const VkVertexInputAttributeDescription& a : scene_vertex_attributes()) {
     if (wanted(a.location)) kept.push_back(a);
   }
   return kept;
@@ -151,11 +134,8 @@ void ScenePasses::create_shadow_pipelines(const Context& context, const shaderge
     shadow.render_pass = targets.shadow_pass();
     shadow.vertex_spirv = companion_spirv(shaders, masked ? "shadow_masked" : "shadow");
     if (masked) shadow.fragment_spirv = companion_spirv(shaders, "shadow_mask");
-    shadow.vertex_bindings = scene_bindings();
-    // Only what shadow.vert reads: position and the model matrix, and for a mask its uv and alpha.
-    shadow.vertex_attributes = scene_attributes_where([masked](std::uint32_t location) {
-      return location == 0 || (location >= 2 && location <= 5) || (masked && location >= 8);
-    });
+    shadow.vertex_bindings = scene_vertex_bindings();
+    shadow.vertex_attributes = shadow_caster_attributes(masked);
     shadow.color_attachments = 0;
     shadow.depth_test = true;
     shadow.depth_write = true;
@@ -181,7 +161,7 @@ ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Contex
     const char* fragment = masked ? (with_flags ? "gbuffer_masked_flagged" : "gbuffer_masked")
                                   : (with_flags ? "gbuffer_flagged" : "gbuffer");
     materials.fragment_spirv = companion_spirv(shaders, fragment);
-    materials.vertex_bindings = scene_bindings();
+    materials.vertex_bindings = scene_vertex_bindings();
     materials.vertex_attributes =
         scene_attributes_where([masked](std::uint32_t location) { return masked || location != 9; });
     materials.depth_write = true;
