@@ -1,6 +1,7 @@
 #include "forward_pass.h"
 
 #include "descriptors.h"
+#include "light_target_layout.h"
 #include "light_target_pass.h"
 #include "local_light_block.h"
 #include "pipelines.h"
@@ -23,7 +24,6 @@ constexpr std::uint32_t kParamsBinding = 0;
 constexpr std::uint32_t kFirstGBufferBinding = 1;  // RT0..RT3 at 1..4
 constexpr std::uint32_t kShadowMapBinding = 5;
 constexpr std::uint32_t kForwardBinding = 8;
-constexpr std::uint32_t kLightsSet = 1;
 constexpr std::uint32_t kBaseColourSet = 2;
 constexpr std::uint32_t kLocalLightsBit = 1;   // permutations/forward.json: LOCAL_LIGHTS, bit 0
 constexpr std::uint32_t kLocalShadowsBit = 2;  // LOCAL_SHADOWS, bit 1
@@ -128,33 +128,12 @@ void ForwardPass::upload(const Context& context, const Scene& scene, const Scene
 void ForwardPass::create_sets(const Context& context, const RenderTargets& targets, VkDescriptorPool pool,
                               const SceneTextures& textures, const LocalLightShadows& shadows) {
   const shadergen::Registry& registry = *shaders_;
-  const std::vector<VkDescriptorSetLayoutBinding> set0 =
-      merged_set_bindings({registry.pipeline_layout}, 0, "forward set 0");
-  const std::vector<VkDescriptorSetLayoutBinding> set1 =
-      merged_set_bindings({registry.pipeline_layout}, kLightsSet, "forward set 1");
-  check_storage_buffers(set1, 1, "forward set 1 (the local lights)");
-  // The base colour texture is bound with the scene texture's own set: its layout must be that one's.
-  const std::vector<VkDescriptorSetLayoutBinding> set2 =
-      merged_set_bindings({registry.pipeline_layout}, kBaseColourSet, "forward set 2");
-  const std::array<VkDescriptorType, 1> texture_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
-  check_bindings(set2, texture_types, "forward set 2 (the base colour texture)");
-  const std::vector<VkDescriptorSetLayoutBinding> set3 = LocalLightShadows::set_bindings(registry, "forward");
-  set0_layout_ = create_descriptor_set_layout(context, set0, "forward set 0 layout");
-  set1_layout_ = create_descriptor_set_layout(context, set1, "forward set 1 layout");
-  set3_layout_ = create_descriptor_set_layout(context, set3, "forward set 3 layout");
-  const std::array<VkDescriptorSetLayout, 4> sets{set0_layout_.get(), set1_layout_.get(), textures.set_layout(),
-                                                  set3_layout_.get()};
-  const std::vector<VkPushConstantRange> push = shadergen::vk::push_constant_ranges(registry);
-  if (push_constant_bytes(push) != kDrawConstantBytes) {
-    throw Error("forward.json's shaders push " + std::to_string(push_constant_bytes(push)) +
-                " bytes; the runtime pushes " + std::to_string(kDrawConstantBytes) + " (forward_params.glsl)");
-  }
-  push_stages_ = push.front().stageFlags;
-  layout_ = create_pipeline_layout(context, sets, push, "forward pipeline layout");
+  layout_ = create_light_target_layout(context, registry, textures.set_layout(), kDrawConstantBytes, "forward",
+                                       "forward_params.glsl");
 
   sampler_ = Sampler(context, {.name = "forward pass: G-buffer and shadow map (texelFetch)"});
-  set0_ = allocate_descriptor_set(context, pool, set0_layout_.get(), "forward set 0");
-  for (const VkDescriptorSetLayoutBinding& b : set0) {
+  set0_ = allocate_descriptor_set(context, pool, layout_.set0_layout.get(), "forward set 0");
+  for (const VkDescriptorSetLayoutBinding& b : layout_.set0) {
     if (b.binding == kParamsBinding) {
       write_buffer_descriptor(context, set0_, b.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
     } else if (b.binding == kForwardBinding) {
@@ -164,10 +143,11 @@ void ForwardPass::create_sets(const Context& context, const RenderTargets& targe
                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     }
   }
-  set1_ = allocate_descriptor_set(context, pool, set1_layout_.get(), "forward set 1");
+  set1_ = allocate_descriptor_set(context, pool, layout_.set1_layout.get(), "forward set 1");
   write_buffer_descriptor(context, set1_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights_.handle());
   if (shadows.has_maps()) {
-    set3_ = shadows.allocate_set(context, pool, set3_layout_.get(), sampler_.handle(), "forward set 3 (shadows)");
+    set3_ =
+        shadows.allocate_set(context, pool, layout_.set3_layout.get(), sampler_.handle(), "forward set 3 (shadows)");
   }
 }
 
@@ -194,7 +174,7 @@ void ForwardPass::create_framebuffers(const Context& context, const RenderTarget
 void ForwardPass::create_pipelines(const Context& context) {
   const shadergen::Registry& registry = *shaders_;
   GraphicsPipelineDesc depth;
-  depth.layout = layout_.get();
+  depth.layout = layout_.pipeline.get();
   depth.render_pass = render_pass_.get();
   depth.vertex_spirv = companion_spirv(registry, "full_screen");
   depth.fragment_spirv = companion_spirv(registry, "depth");
@@ -211,7 +191,7 @@ void ForwardPass::create_pipelines(const Context& context) {
     UniquePipeline& pipeline = pipelines_[raw_id][culled ? 1 : 0];
     if (pipeline) continue;
     GraphicsPipelineDesc desc;
-    desc.layout = layout_.get();
+    desc.layout = layout_.pipeline.get();
     desc.render_pass = render_pass_.get();
     desc.vertex_spirv = companion_spirv(registry, "vertex");
     desc.fragment_spirv = registry.raw[raw_id].spirv;
@@ -240,10 +220,10 @@ void ForwardPass::record(VkCommandBuffer cmd, const RenderTargets& targets, Loca
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   set_viewport_and_scissor(cmd, targets.extent());
   const std::array<VkDescriptorSet, 2> sets{set0_, set1_};
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 2, sets.data(), 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline.get(), 0, 2, sets.data(), 0, nullptr);
   if (set3_ != VK_NULL_HANDLE) {
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), LocalLightShadows::kSet, 1, &set3_, 0,
-                            nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline.get(), LocalLightShadows::kSet, 1,
+                            &set3_, 0, nullptr);
   }
   // First the depth the geometry is tested against, then the geometry, in the same subpass.
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_pipeline_.get());
@@ -253,12 +233,12 @@ void ForwardPass::record(VkCommandBuffer cmd, const RenderTargets& targets, Loca
     const MeshBuffers& mesh = meshes_[draw.mesh];
     const std::uint32_t raw_id = raw_id_of(draw);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_[raw_id][mesh.culled ? 1 : 0].get());
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), kBaseColourSet, 1, &mesh.base_colour,
-                            0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline.get(), kBaseColourSet, 1,
+                            &mesh.base_colour, 0, nullptr);
     DrawConstants constants{glm::uvec4(draw.light_count, 0, 0, 0), draw.lights};
     std::array<std::byte, kDrawConstantBytes> bytes{};
     std::memcpy(bytes.data(), &constants, bytes.size());
-    vkCmdPushConstants(cmd, layout_.get(), push_stages_, 0, kDrawConstantBytes, bytes.data());
+    vkCmdPushConstants(cmd, layout_.pipeline.get(), layout_.push_stages, 0, kDrawConstantBytes, bytes.data());
     const std::array<VkBuffer, 2> buffers{mesh.vertices.handle(), instances_.handle()};
     const std::array<VkDeviceSize, 2> offsets{0, 0};
     vkCmdBindVertexBuffers(cmd, 0, static_cast<std::uint32_t>(buffers.size()), buffers.data(), offsets.data());

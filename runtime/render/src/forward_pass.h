@@ -20,6 +20,7 @@
 // An instance whose chosen lights include one with a map is drawn with LOCAL_SHADOWS.
 
 #include "forward_selection.h"
+#include "light_target_layout.h"
 #include "local_light_passes.h"
 #include "local_light_shadows.h"
 #include "render_targets.h"
@@ -86,12 +87,10 @@ class ForwardPass {
   UniqueRenderPass render_pass_;
   Image depth_;                                    // the single-sampled depth the geometry is tested against
   std::array<UniqueFramebuffer, 3> framebuffers_;  // per LocalLightTarget
-  UniqueDescriptorSetLayout set0_layout_, set1_layout_, set3_layout_;
-  UniquePipelineLayout layout_;
+  LightTargetLayout layout_;
   VkDescriptorSet set0_ = VK_NULL_HANDLE, set1_ = VK_NULL_HANDLE;
   VkDescriptorSet set3_ = VK_NULL_HANDLE;  // the shadow maps; only where some light has one
   std::vector<bool> light_has_map_;        // per scene light
-  VkShaderStageFlags push_stages_ = 0;
   UniquePipeline depth_pipeline_;
   // By [raw ID (LOCAL_LIGHTS bit 0, LOCAL_SHADOWS bit 1)][culled]: only those some draw uses.
   std::array<std::array<UniquePipeline, 2>, 4> pipelines_;

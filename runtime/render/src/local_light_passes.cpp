@@ -1,6 +1,7 @@
 #include "local_light_passes.h"
 
 #include "descriptors.h"
+#include "light_target_layout.h"
 #include "light_target_pass.h"
 #include "local_light_block.h"
 #include "local_light_permutation.h"
@@ -25,7 +26,6 @@ constexpr std::uint32_t kFirstGBufferBinding = 1;  // RT0..RT3 at 1..4
 constexpr std::uint32_t kShadowMapBinding = 5;
 constexpr std::uint32_t kCoverageFlagsBinding = 6;
 constexpr std::uint32_t kStencilBinding = 7;  // local_light_resolve.frag: the G-buffer's stencil
-constexpr std::uint32_t kLightsSet = 1;
 constexpr std::uint32_t kGlobeSet = 2;
 constexpr std::uint32_t kTaggedConstant = 2;  // TAGGED_GBUFFER (local_light.frag)
 
@@ -130,7 +130,7 @@ void LocalLightPasses::create_volume_meshes(const Context& context) {
 void LocalLightPasses::create_volume_pipelines(const Context& context, const RenderTargets& targets, bool depth_clamp) {
   const shadergen::Registry& registry = *shaders_;
   GraphicsPipelineDesc resolve;
-  resolve.layout = layout_.get();
+  resolve.layout = layout_.pipeline.get();
   resolve.render_pass = render_pass_.get();
   resolve.vertex_spirv = companion_spirv(registry, "full_screen");
   resolve.fragment_spirv = companion_spirv(registry, "resolve");
@@ -150,7 +150,7 @@ void LocalLightPasses::create_volume_pipelines(const Context& context, const Ren
   lit.reference = kStencilLit;
   auto create = [&](std::uint32_t raw_id, bool tagged, bool depth_tested) {
     GraphicsPipelineDesc desc =
-        light_pipeline_desc(registry, layout_.get(), render_pass_.get(), "volume", raw_id, tagged);
+        light_pipeline_desc(registry, layout_.pipeline.get(), render_pass_.get(), "volume", raw_id, tagged);
     desc.vertex_bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}};
     desc.cull_mode = VK_CULL_MODE_FRONT_BIT;  // inverted winding: the camera may be inside
@@ -174,36 +174,15 @@ void LocalLightPasses::create_sets(const Context& context, const RenderTargets& 
                                    const SceneTextures& textures, const std::vector<LocalLight>& lights,
                                    const LocalLightShadows& shadows) {
   const shadergen::Registry& registry = *shaders_;
-  const std::vector<VkDescriptorSetLayoutBinding> set0 =
-      merged_set_bindings({registry.pipeline_layout}, 0, "local-light set 0");
-  const std::vector<VkDescriptorSetLayoutBinding> set1 =
-      merged_set_bindings({registry.pipeline_layout}, kLightsSet, "local-light set 1");
-  check_storage_buffers(set1, 1, "local-light set 1 (the lights)");
-  // The globe map is bound with the scene texture's own set: its layout must be that one's.
-  const std::vector<VkDescriptorSetLayoutBinding> set2 =
-      merged_set_bindings({registry.pipeline_layout}, kGlobeSet, "local-light set 2");
-  const std::array<VkDescriptorType, 1> globe_types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
-  check_bindings(set2, globe_types, "local-light set 2 (the globe map)");
-  const std::vector<VkDescriptorSetLayoutBinding> set3 = LocalLightShadows::set_bindings(registry, "local-light");
-  set0_layout_ = create_descriptor_set_layout(context, set0, "local-light set 0 layout");
-  set1_layout_ = create_descriptor_set_layout(context, set1, "local-light set 1 layout");
-  set3_layout_ = create_descriptor_set_layout(context, set3, "local-light set 3 layout");
-  const std::array<VkDescriptorSetLayout, 4> sets{set0_layout_.get(), set1_layout_.get(), textures.set_layout(),
-                                                  set3_layout_.get()};
-  const std::vector<VkPushConstantRange> push = shadergen::vk::push_constant_ranges(registry);
-  if (push_constant_bytes(push) != kDrawConstantBytes) {
-    throw Error("local_lights.json's shaders push " + std::to_string(push_constant_bytes(push)) +
-                " bytes; the runtime pushes " + std::to_string(kDrawConstantBytes) + " (local_light_draw.glsl)");
-  }
-  push_stages_ = push.front().stageFlags;
-  layout_ = create_pipeline_layout(context, sets, push, "local-light pipeline layout");
+  layout_ = create_light_target_layout(context, registry, textures.set_layout(), kDrawConstantBytes, "local-light",
+                                       "local_light_draw.glsl");
 
   params_ = Buffer(context, {sizeof(LightingParamsBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::HostUpload,
                              "local-light lighting parameters"});
   params_.write_values(std::span<const LightingParamsBlock>(&params_block_, 1));
   sampler_ = Sampler(context, {.name = "local lights: G-buffer (texelFetch)"});
-  set0_ = allocate_descriptor_set(context, pool, set0_layout_.get(), "local-light set 0");
-  for (const VkDescriptorSetLayoutBinding& b : set0) {
+  set0_ = allocate_descriptor_set(context, pool, layout_.set0_layout.get(), "local-light set 0");
+  for (const VkDescriptorSetLayoutBinding& b : layout_.set0) {
     if (b.binding == kParamsBinding) {
       write_buffer_descriptor(context, set0_, kParamsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params_.handle());
     } else {
@@ -217,18 +196,19 @@ void LocalLightPasses::create_sets(const Context& context, const RenderTargets& 
   lights_ = Buffer(context, {blocks.size() * sizeof(LocalLightBlock), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                              MemoryUse::HostUpload, "local lights"});
   lights_.write_values(std::span<const LocalLightBlock>(blocks));
-  set1_ = allocate_descriptor_set(context, pool, set1_layout_.get(), "local-light set 1");
+  set1_ = allocate_descriptor_set(context, pool, layout_.set1_layout.get(), "local-light set 1");
   write_buffer_descriptor(context, set1_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights_.handle());
   if (shadows.has_maps()) {
-    set3_ = shadows.allocate_set(context, pool, set3_layout_.get(), sampler_.handle(), "local-light set 3 (shadows)");
+    set3_ = shadows.allocate_set(context, pool, layout_.set3_layout.get(), sampler_.handle(),
+                                 "local-light set 3 (shadows)");
   }
 }
 
 void LocalLightPasses::create_full_screen_pipelines(const Context& context, const RenderTargets& targets) {
   const shadergen::Registry& registry = *shaders_;
   auto create = [&](std::uint32_t raw_id, bool tagged) {
-    return create_graphics_pipeline(
-        context, light_pipeline_desc(registry, layout_.get(), render_pass_.get(), "full_screen", raw_id, tagged));
+    return create_graphics_pipeline(context, light_pipeline_desc(registry, layout_.pipeline.get(), render_pass_.get(),
+                                                                 "full_screen", raw_id, tagged));
   };
   for (const Draw& draw : draws_) {
     if (full_screen_.contains(draw.raw_id)) continue;
@@ -277,10 +257,10 @@ void LocalLightPasses::bind(VkCommandBuffer cmd, const RenderTargets& targets, L
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   set_viewport_and_scissor(cmd, targets.extent());
   const std::array<VkDescriptorSet, 2> sets{set0_, set1_};
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 2, sets.data(), 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline.get(), 0, 2, sets.data(), 0, nullptr);
   if (set3_ != VK_NULL_HANDLE) {
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), LocalLightShadows::kSet, 1, &set3_, 0,
-                            nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline.get(), LocalLightShadows::kSet, 1,
+                            &set3_, 0, nullptr);
   }
 }
 
@@ -296,12 +276,13 @@ void LocalLightPasses::record(VkCommandBuffer cmd, const RenderTargets& targets,
 
 void LocalLightPasses::push_draw(VkCommandBuffer cmd, const Draw& draw) const {
   if (draw.globe != VK_NULL_HANDLE) {
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), kGlobeSet, 1, &draw.globe, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline.get(), kGlobeSet, 1, &draw.globe, 0,
+                            nullptr);
   }
   const DrawConstants constants{view_proj_, draw.light};
   std::array<std::byte, kDrawConstantBytes> bytes{};
   std::memcpy(bytes.data(), &constants, bytes.size());
-  vkCmdPushConstants(cmd, layout_.get(), push_stages_, 0, kDrawConstantBytes, bytes.data());
+  vkCmdPushConstants(cmd, layout_.pipeline.get(), layout_.push_stages, 0, kDrawConstantBytes, bytes.data());
 }
 
 void LocalLightPasses::record_volumes(VkCommandBuffer cmd, const RenderTargets& targets, LocalLightTarget target,

@@ -19,6 +19,7 @@
 // light has a map, whose SHADOWED permutation reads it), and push constants: the camera's
 // transform and the light's index.
 
+#include "light_target_layout.h"
 #include "local_light_shadows.h"
 #include "local_light_volumes.h"
 #include "render_targets.h"
@@ -104,11 +105,9 @@ class LocalLightPasses {
   // Per LocalLightTarget: the framebuffers of this pass (the global pass's own are of a
   // render pass that clears).
   std::array<UniqueFramebuffer, 3> framebuffers_;
-  UniqueDescriptorSetLayout set0_layout_, set1_layout_, set3_layout_;
-  UniquePipelineLayout layout_;
+  LightTargetLayout layout_;
   VkDescriptorSet set0_ = VK_NULL_HANDLE, set1_ = VK_NULL_HANDLE;
   VkDescriptorSet set3_ = VK_NULL_HANDLE;              // the shadow atlas and faces; none without maps
-  VkShaderStageFlags push_stages_ = 0;                 // the stages that read the light index
   std::map<std::uint32_t, PipelinePair> full_screen_;  // by raw ID
   UniquePipeline resolve_;                             // volumes: depth and stencil from the G-buffer
   // Volumes, by raw ID * 2 + depth_tested: the pipelines of the permutation.
