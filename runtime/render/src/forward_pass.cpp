@@ -173,16 +173,9 @@ void ForwardPass::create_framebuffers(const Context& context, const RenderTarget
 
 void ForwardPass::create_pipelines(const Context& context) {
   const shadergen::Registry& registry = *shaders_;
-  GraphicsPipelineDesc depth;
-  depth.layout = layout_.pipeline.get();
-  depth.render_pass = render_pass_.get();
-  depth.vertex_spirv = companion_spirv(registry, "full_screen");
-  depth.fragment_spirv = companion_spirv(registry, "depth");
-  depth.color_write = false;
-  depth.depth_test = true;
-  depth.depth_write = true;
-  depth.depth_compare = VK_COMPARE_OP_ALWAYS;
-  depth.name = "forward pass: depth from the G-buffer";
+  const GraphicsPipelineDesc depth =
+      depth_from_gbuffer_desc(layout_.pipeline.get(), render_pass_.get(), companion_spirv(registry, "full_screen"),
+                              companion_spirv(registry, "depth"), "forward pass: depth from the G-buffer");
   depth_pipeline_ = create_graphics_pipeline(context, depth);
 
   for (const ForwardDraw& draw : draws_) {

@@ -129,17 +129,10 @@ void LocalLightPasses::create_volume_meshes(const Context& context) {
 
 void LocalLightPasses::create_volume_pipelines(const Context& context, const RenderTargets& targets, bool depth_clamp) {
   const shadergen::Registry& registry = *shaders_;
-  GraphicsPipelineDesc resolve;
-  resolve.layout = layout_.pipeline.get();
-  resolve.render_pass = render_pass_.get();
-  resolve.vertex_spirv = companion_spirv(registry, "full_screen");
-  resolve.fragment_spirv = companion_spirv(registry, "resolve");
-  resolve.color_write = false;
-  resolve.depth_test = true;
-  resolve.depth_write = true;
-  resolve.depth_compare = VK_COMPARE_OP_ALWAYS;
+  GraphicsPipelineDesc resolve =
+      depth_from_gbuffer_desc(layout_.pipeline.get(), render_pass_.get(), companion_spirv(registry, "full_screen"),
+                              companion_spirv(registry, "resolve"), "local lights: resolve depth and stencil");
   resolve.stencil = gbuffer_stencil_marking();  // REPLACE with kStencilLit where not discarded
-  resolve.name = "local lights: resolve depth and stencil";
   resolve_ = create_graphics_pipeline(context, resolve);
 
   // Shade where the stencil is marked and the volume's back face is at or behind the surface.

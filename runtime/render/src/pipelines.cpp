@@ -249,6 +249,22 @@ UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPi
   return owned;
 }
 
+GraphicsPipelineDesc depth_from_gbuffer_desc(VkPipelineLayout layout, VkRenderPass render_pass,
+                                             std::span<const std::uint32_t> full_screen_vertex,
+                                             std::span<const std::uint32_t> fragment, std::string name) {
+  GraphicsPipelineDesc desc;
+  desc.layout = layout;
+  desc.render_pass = render_pass;
+  desc.vertex_spirv = full_screen_vertex;
+  desc.fragment_spirv = fragment;
+  desc.color_write = false;
+  desc.depth_test = true;
+  desc.depth_write = true;
+  desc.depth_compare = VK_COMPARE_OP_ALWAYS;
+  desc.name = std::move(name);
+  return desc;
+}
+
 void set_viewport_and_scissor(VkCommandBuffer cmd, VkExtent2D extent) {
   const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height),
                             0.0f, 1.0f};

@@ -84,6 +84,13 @@ struct GraphicsPipelineDesc {
   std::string name;
 };
 
+// A full-screen draw that writes depth and no colour, the depth test ALWAYS: how a pass makes a
+// single-sampled depth of its own from the G-buffer (`fragment` writes gl_FragDepth) before it
+// draws against it (the local lights' resolve, the forward pass's depth copy).
+GraphicsPipelineDesc depth_from_gbuffer_desc(VkPipelineLayout layout, VkRenderPass render_pass,
+                                             std::span<const std::uint32_t> full_screen_vertex,
+                                             std::span<const std::uint32_t> fragment, std::string name);
+
 // Viewport and scissor are dynamic state: set them when recording.
 UniquePipeline create_graphics_pipeline(const Context& context, const GraphicsPipelineDesc& desc);
 
