@@ -5,6 +5,8 @@
 #include "tilelight/vulkan/error.h"
 
 #include <array>
+#include <string>
+#include <utility>
 
 namespace tilelight {
 
@@ -63,6 +65,30 @@ UniqueRenderPass create_light_target_pass(const Context& context, VkFormat depth
   UniqueRenderPass owned(pass, {context.device()});
   context.name_object(pass, name);
   return owned;
+}
+
+std::array<UniqueFramebuffer, 3> create_light_target_framebuffers(const Context& context, VkRenderPass render_pass,
+                                                                  const RenderTargets& targets, const Image* depth,
+                                                                  std::string_view pass) {
+  const std::array<std::pair<const Image*, const char*>, 3> images{
+      {{&targets.classified(), "classified"}, {&targets.naive(), "naive"}, {&targets.dynamic(), "dynamic"}}};
+  std::array<UniqueFramebuffer, 3> framebuffers;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const std::array<VkImageView, 2> views{images[i].first->view(), depth != nullptr ? depth->view() : VK_NULL_HANDLE};
+    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    info.renderPass = render_pass;
+    info.attachmentCount = depth != nullptr ? 2 : 1;
+    info.pAttachments = views.data();
+    info.width = targets.extent().width;
+    info.height = targets.extent().height;
+    info.layers = 1;
+    const std::string name = std::string(pass) + " into the light target (" + images[i].second + ")";
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    check(vkCreateFramebuffer(context.device(), &info, nullptr, &framebuffer), "vkCreateFramebuffer", name);
+    framebuffers[i] = UniqueFramebuffer(framebuffer, {context.device()});
+    context.name_object(framebuffer, name);
+  }
+  return framebuffers;
 }
 
 }  // namespace tilelight

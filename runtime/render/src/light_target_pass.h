@@ -16,13 +16,23 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <string_view>
 
 namespace tilelight {
 
 class Context;
+class Image;
+class RenderTargets;
 
 // Throws tilelight::Error (naming `name`) if the device refuses it.
 UniqueRenderPass create_light_target_pass(const Context& context, VkFormat depth_format, std::string_view name);
+
+// The framebuffers of such a pass over each light target, in LocalLightTarget's order
+// (classified, naive, dynamic), each with `depth` as attachment 1 (null: no depth attachment).
+// `pass` names them ("<pass> into the light target (naive)").
+std::array<UniqueFramebuffer, 3> create_light_target_framebuffers(const Context& context, VkRenderPass render_pass,
+                                                                  const RenderTargets& targets, const Image* depth,
+                                                                  std::string_view pass);
 
 }  // namespace tilelight

@@ -219,23 +219,9 @@ std::uint32_t LocalLightPasses::pipeline_count() const {
 }
 
 void LocalLightPasses::create_framebuffers(const Context& context, const RenderTargets& targets) {
-  const std::array<std::pair<const Image*, const char*>, 3> images{
-      {{&targets.classified(), "classified"}, {&targets.naive(), "naive"}, {&targets.dynamic(), "dynamic"}}};
-  for (std::size_t i = 0; i < images.size(); ++i) {
-    const std::array<VkImageView, 2> views{images[i].first->view(), resolved_depth_.view()};
-    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    info.renderPass = render_pass_.get();
-    info.attachmentCount = pass_ == LocalLightPass::volumes ? 2 : 1;
-    info.pAttachments = views.data();
-    info.width = targets.extent().width;
-    info.height = targets.extent().height;
-    info.layers = 1;
-    const std::string name = std::string("local lights into the light target (") + images[i].second + ")";
-    VkFramebuffer framebuffer = VK_NULL_HANDLE;
-    check(vkCreateFramebuffer(context.device(), &info, nullptr, &framebuffer), "vkCreateFramebuffer", name);
-    framebuffers_[i] = UniqueFramebuffer(framebuffer, {context.device()});
-    context.name_object(framebuffer, name);
-  }
+  framebuffers_ =
+      create_light_target_framebuffers(context, render_pass_.get(), targets,
+                                       pass_ == LocalLightPass::volumes ? &resolved_depth_ : nullptr, "local lights");
 }
 
 void LocalLightPasses::bind(VkCommandBuffer cmd, const RenderTargets& targets, LocalLightTarget target) const {
