@@ -38,6 +38,21 @@ FrameResult render_equivalent_frame(TileRenderer& renderer) {
   return frame;
 }
 
+LocalLightShadowPool expect_volumes_equal_full_screen(const Context& context, const Scene& scene,
+                                                      RendererOptions options) {
+  options.local_light_pass = LocalLightPass::fullscreen;
+  TileRenderer reference(context, scene, options);
+  render_equivalent_frame(reference);
+  options.local_light_pass = LocalLightPass::volumes;
+  TileRenderer volumes(context, scene, options);
+  render_equivalent_frame(volumes);
+  const FrameComparison classified = compare(volumes.read_classified(), reference.read_classified(), 0.0);
+  EXPECT_EQ(classified.pixels_over_tolerance, 0u) << "classified target: " << classified.first_difference;
+  const FrameComparison naive = compare(volumes.read_naive(), reference.read_naive(), 0.0);
+  EXPECT_EQ(naive.pixels_over_tolerance, 0u) << "naive target: " << naive.first_difference;
+  return volumes.local_light_shadow_pool();
+}
+
 FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, double tolerance) {
   FrameComparison result;
   for (std::uint32_t y = 0; y < classified.height; ++y) {

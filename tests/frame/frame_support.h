@@ -36,6 +36,13 @@ void expect_classified_and_dynamic_equal_naive(const TileRenderer& renderer);
 // (the per-class tile counts add up to the grid).
 FrameResult render_equivalent_frame(TileRenderer& renderer);
 
+// Renders `scene` twice, its local lights drawn full-screen (the reference) and as volumes
+// (`options` otherwise; each frame through render_equivalent_frame()), and expects the volume
+// frame's classified and naive light targets to equal the reference's bit for bit. Returns the
+// volume renderer's shadow-map pool. Precondition: `options` runs the naive and dynamic passes.
+LocalLightShadowPool expect_volumes_equal_full_screen(const Context& context, const Scene& scene,
+                                                      RendererOptions options);
+
 // The GPU's raw IDs against the CPU reference (which classifies every sample and counts every
 // tap), outside the bits the reference marks as near a threshold: SKY and SUN_LIGHT must be
 // equal; MSAA_EDGE, SHADOW_FADE and LIGHT_SCATTERING must be set wherever the reference sets them

@@ -250,16 +250,7 @@ TEST_P(LocalLightVolumes, EqualTheFullScreenReferencePerPixel) {
   const Scene scene = scene_with(c.light);
   RendererOptions options = small_options(msaa);
   options.camera_pose = c.camera;
-  options.local_light_pass = LocalLightPass::fullscreen;
-  TileRenderer reference(context(), scene, options);
-  reference.render_frame();
-  options.local_light_pass = LocalLightPass::volumes;
-  TileRenderer volumes(context(), scene, options);
-  render_equivalent_frame(volumes);
-  const FrameComparison classified = compare(volumes.read_classified(), reference.read_classified(), 0.0);
-  EXPECT_EQ(classified.pixels_over_tolerance, 0u) << classified.first_difference;
-  const FrameComparison naive = compare(volumes.read_naive(), reference.read_naive(), 0.0);
-  EXPECT_EQ(naive.pixels_over_tolerance, 0u) << naive.first_difference;
+  (void)expect_volumes_equal_full_screen(context(), scene, options);
 }
 
 std::string volume_case_name(const ::testing::TestParamInfo<VolumeFrameCase>& info) {
