@@ -41,6 +41,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 double median_of(const std::vector<FrameTimings>& frames, double FrameTimings::*field) {
   std::vector<double> values;
+  values.reserve(frames.size());
   for (const FrameTimings& f : frames) values.push_back(f.*field);
   return median::of(std::move(values));
 }

@@ -197,8 +197,7 @@ void LocalLightShadows::place_faces_in(std::vector<LocalLightBlock>& blocks) con
 std::vector<VkDescriptorSetLayoutBinding> LocalLightShadows::set_bindings(const shadergen::Registry& registry,
                                                                           std::string_view pass) {
   const std::string what = std::string(pass) + " set 3";
-  const std::vector<VkDescriptorSetLayoutBinding> bindings =
-      merged_set_bindings({registry.pipeline_layout}, kSet, what);
+  std::vector<VkDescriptorSetLayoutBinding> bindings = merged_set_bindings({registry.pipeline_layout}, kSet, what);
   const std::array<VkDescriptorType, 2> types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
   check_bindings(bindings, types, what + " (the shadow atlas and its faces)");

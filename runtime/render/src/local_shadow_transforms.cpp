@@ -67,6 +67,7 @@ std::vector<LocalShadowFaceBlock> cube_faces(const LocalLight& light, std::uint3
                                                              {{0, 0, 1}, {0, 1, 0}},
                                                              {{0, 0, -1}, {0, 1, 0}}}};
   std::vector<LocalShadowFaceBlock> faces;
+  faces.reserve(axes.size());
   for (const auto& [forward, up] : axes) {
     faces.push_back(perspective_face(eye, forward, up, tan_half, light.range, face_size));
   }
