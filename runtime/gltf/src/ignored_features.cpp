@@ -105,7 +105,7 @@ void material_features(const Json& root, std::vector<std::string>& lines) {
     const std::size_t n = count_materials(root, test);
     if (n > 0) lines.push_back(fmt::format("{} ({}) ignored{}", what, counted(n, "materials"), why));
   };
-  // alphaMode MASK is drawn; BLEND is drawn as MASK, which gltf_material.cpp's warning says.
+  // alphaMode MASK and BLEND are both drawn (BLEND by the forward pass): nothing to report.
   for (const char* texture : {"normalTexture", "occlusionTexture", "emissiveTexture"}) {
     add(texture, "", [&](const Json& m) { return has(m, texture); });
   }
