@@ -67,20 +67,21 @@ Buffer upload_values(const Context& context, std::span<const T> data, VkBufferUs
 }  // namespace
 
 ForwardPass::ForwardPass(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
-                         const LightingParamsBlock& params, const SceneTextures& textures, VkDescriptorPool pool,
+                         const LightingParamsBlock& params, const ScenePasses& scene_passes, VkDescriptorPool pool,
                          const LocalLightShadows& shadows)
     : shaders_(&forward_shaders_for(targets.samples())),
+      scene_passes_(&scene_passes),
       draws_(plan_forward_draws(scene, camera.position)),
       params_block_(params) {
   if (draws_.empty()) return;  // nothing blended: no buffers, sets or pipelines
-  upload(context, scene, textures, make_scene_params(scene, camera, targets.extent().width, targets.extent().height),
-         shadows);
+  upload(context, scene, scene_passes.textures(),
+         make_scene_params(scene, camera, targets.extent().width, targets.extent().height), shadows);
   render_pass_ = create_light_target_pass(context, targets.gbuffer_depth_format(), "forward pass");
   depth_ = Image(
       context, {targets.extent(), targets.gbuffer_depth_format(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                 VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT, "forward pass: depth"});
   create_framebuffers(context, targets);
-  create_sets(context, targets, pool, textures, shadows);
+  create_sets(context, targets, pool, scene_passes.textures(), shadows);
   create_pipelines(context);
 }
 
@@ -99,13 +100,7 @@ void ForwardPass::upload(const Context& context, const Scene& scene, const Scene
   for (const ForwardDraw& draw : draws_) {
     instances.push_back(scene.instances[draw.instance]);
     MeshBuffers& buffers = meshes_[draw.mesh];
-    if (buffers.index_count != 0) continue;
     const Mesh& mesh = scene.meshes[draw.mesh];
-    buffers.vertices = upload_values<MeshVertex>(context, mesh.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                                 "blended mesh " + mesh.name + " vertices");
-    buffers.indices = upload_values<std::uint32_t>(context, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                                                   "blended mesh " + mesh.name + " indices");
-    buffers.index_count = static_cast<std::uint32_t>(mesh.indices.size());
     buffers.base_colour = textures.set_of(mesh.base_colour_texture);
     buffers.culled = !mesh.double_sided;
   }
@@ -216,11 +211,8 @@ void ForwardPass::record(VkCommandBuffer cmd, const RenderTargets& targets, Loca
     std::array<std::byte, kDrawConstantBytes> bytes{};
     std::memcpy(bytes.data(), &constants, bytes.size());
     vkCmdPushConstants(cmd, layout_.pipeline.get(), layout_.push_stages, 0, kDrawConstantBytes, bytes.data());
-    const std::array<VkBuffer, 2> buffers{mesh.vertices.handle(), instances_.handle()};
-    const std::array<VkDeviceSize, 2> offsets{0, 0};
-    vkCmdBindVertexBuffers(cmd, 0, static_cast<std::uint32_t>(buffers.size()), buffers.data(), offsets.data());
-    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, i);
+    const std::uint32_t index_count = scene_passes_->bind_mesh(cmd, draw.mesh, instances_.handle());
+    vkCmdDrawIndexed(cmd, index_count, 1, 0, 0, i);
   }
   vkCmdEndRenderPass(cmd);
 }

@@ -24,6 +24,7 @@
 #include "local_light_passes.h"
 #include "local_light_shadows.h"
 #include "render_targets.h"
+#include "scene_passes.h"
 #include "scene_textures.h"
 #include "tilelight/scene/scene.h"
 #include "tilelight/scene/uniform_blocks.h"
@@ -50,9 +51,10 @@ class ForwardPass {
  public:
   // Uploads the blended meshes and instances and builds the pipelines they need (nothing when
   // the scene has no blended mesh). `camera` is the one the frame is drawn from (the sort).
+  // `scene_passes`: the meshes' buffers and the scene's textures (both outlive this).
   // `shadows`: the local lights' maps (rendered before this pass records, every frame they are).
   ForwardPass(const Context& context, const Scene& scene, const Camera& camera, const RenderTargets& targets,
-              const LightingParamsBlock& params, const SceneTextures& textures, VkDescriptorPool pool,
+              const LightingParamsBlock& params, const ScenePasses& scene_passes, VkDescriptorPool pool,
               const LocalLightShadows& shadows);
 
   // Blended instances drawn per light target (0: the pass records nothing).
@@ -63,9 +65,7 @@ class ForwardPass {
   void record(VkCommandBuffer cmd, const RenderTargets& targets, LocalLightTarget target) const;
 
  private:
-  struct MeshBuffers {
-    Buffer vertices, indices;
-    std::uint32_t index_count = 0;
+  struct MeshBuffers {                             // what a blended mesh's draws bind besides its buffers
     VkDescriptorSet base_colour = VK_NULL_HANDLE;  // set 2
     bool culled = false;                           // single-sided: back faces culled
   };
@@ -79,8 +79,9 @@ class ForwardPass {
   void create_pipelines(const Context& context);
 
   const shadergen::Registry* shaders_;
+  const ScenePasses* scene_passes_;  // the meshes' vertex and index buffers (ScenePasses::bind_mesh)
   std::vector<ForwardDraw> draws_;   // back to front; draw i reads instance i of instances_
-  std::vector<MeshBuffers> meshes_;  // by Scene::meshes index (empty buffers for other meshes)
+  std::vector<MeshBuffers> meshes_;  // by Scene::meshes index (set for the blended ones)
   LightingParamsBlock params_block_;
   Buffer params_, forward_params_, lights_, instances_;
   Sampler sampler_;

@@ -200,12 +200,19 @@ void ScenePasses::draw_batches(VkCommandBuffer cmd, bool textured, std::size_t k
     if (textured) {
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 1, 1, &mesh.base_colour, 0, nullptr);
     }
-    const std::array<VkBuffer, 2> buffers{mesh.vertices.handle(), instances_.handle()};
-    const std::array<VkDeviceSize, 2> offsets{0, 0};
-    vkCmdBindVertexBuffers(cmd, 0, static_cast<std::uint32_t>(buffers.size()), buffers.data(), offsets.data());
-    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, mesh.index_count, batch.instance_count, 0, 0, batch.first_instance);
+    const std::uint32_t index_count = bind_mesh(cmd, batch.mesh, instances_.handle());
+    vkCmdDrawIndexed(cmd, index_count, batch.instance_count, 0, 0, batch.first_instance);
   }
+}
+
+std::uint32_t ScenePasses::bind_mesh(VkCommandBuffer cmd, std::uint32_t mesh, VkBuffer instances) const {
+  const MeshBuffers& buffers = meshes_[mesh];
+  const std::array<VkBuffer, 2> vertex_buffers{buffers.vertices.handle(), instances};
+  const std::array<VkDeviceSize, 2> offsets{0, 0};
+  vkCmdBindVertexBuffers(cmd, 0, static_cast<std::uint32_t>(vertex_buffers.size()), vertex_buffers.data(),
+                         offsets.data());
+  vkCmdBindIndexBuffer(cmd, buffers.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+  return buffers.index_count;
 }
 
 void ScenePasses::draw_casters(VkCommandBuffer cmd, bool masked, const std::vector<bool>& drawn,
@@ -219,11 +226,8 @@ void ScenePasses::draw_casters(VkCommandBuffer cmd, bool masked, const std::vect
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, texture_set, 1, &mesh.base_colour, 0,
                               nullptr);
     }
-    const std::array<VkBuffer, 2> buffers{mesh.vertices.handle(), instances_.handle()};
-    const std::array<VkDeviceSize, 2> offsets{0, 0};
-    vkCmdBindVertexBuffers(cmd, 0, static_cast<std::uint32_t>(buffers.size()), buffers.data(), offsets.data());
-    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, mesh.index_count, batch.instance_count, 0, 0, batch.first_instance);
+    const std::uint32_t index_count = bind_mesh(cmd, batch.mesh, instances_.handle());
+    vkCmdDrawIndexed(cmd, index_count, batch.instance_count, 0, 0, batch.first_instance);
   }
 }
 

@@ -34,6 +34,10 @@ class ScenePasses {
   // Batches the G-buffer passes and the shadow-map pass skip (0 without culling).
   std::uint32_t culled_gbuffer_batches() const { return gbuffer_batches_.culled; }
   std::uint32_t culled_shadow_batches() const { return shadow_batches_.culled; }
+  // Binds mesh `mesh`'s vertices (binding 0) beside `instances` (binding 1) and its indices, as
+  // uploaded here for every mesh of the scene, blended ones included (the forward pass draws
+  // those from these buffers); returns its index count.
+  std::uint32_t bind_mesh(VkCommandBuffer cmd, std::uint32_t mesh, VkBuffer instances) const;
   // The scene's textures (the local lights' globe maps bind their sets).
   const SceneTextures& textures() const { return textures_; }
 

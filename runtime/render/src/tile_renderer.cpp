@@ -214,7 +214,7 @@ struct TileRenderer::Impl {
     local_lights =
         std::make_unique<LocalLightPasses>(ctx, scene, *targets, lighting->params(), scene_passes->textures(),
                                            descriptor_pool.get(), opts.local_light_pass, *local_shadows);
-    forward = std::make_unique<ForwardPass>(ctx, scene, camera, *targets, lighting->params(), scene_passes->textures(),
+    forward = std::make_unique<ForwardPass>(ctx, scene, camera, *targets, lighting->params(), *scene_passes,
                                             descriptor_pool.get(), *local_shadows);
 
     frame_queries = TimestampQueries(ctx, "frame timestamps", 8);
