@@ -241,22 +241,23 @@ ShardRun run_shards(const Options& o, const fs::path& spec, const fs::path& work
   }
   const std::string count = std::to_string(o.shards);
   // Signed, as a farm should be (docs/distributed.md): the shards then also share the input
-  // set, and the merge skips preprocessing.
+  // set, and the merge skips preprocessing. --no-cache, like the one-machine build it is
+  // compared with: a farm's fresh nodes have no local cache worth reading or filling.
   const fs::path secret = work / "secret";
   std::ofstream(secret) << "shadergen_scale_bench secret\n";
   for (int i = 0; i < o.shards; ++i) {
     std::cerr << "shadergen_scale_bench: shard " << i << "/" << o.shards << "\n";
-    result.shards.push_back(measured(
-        {o.shadergen.string(), "build", spec.string(), "--shard", std::to_string(i) + "/" + count, "--remote-cache",
-         server.url(), "--remote-cache-secret-file", secret.string(), "--cache-dir",
-         (work / ("shard" + std::to_string(i) + ".cache")).string(), "-j", std::to_string(o.jobs), "--stats"}));
+    result.shards.push_back(
+        measured({o.shadergen.string(), "build", spec.string(), "--shard", std::to_string(i) + "/" + count,
+                  "--remote-cache", server.url(), "--remote-cache-secret-file", secret.string(), "--no-cache", "-j",
+                  std::to_string(o.jobs), "--stats"}));
     if (!result.shards.back().ok) return result;
   }
   std::cerr << "shadergen_scale_bench: merge\n";
   result.merge =
       measured({o.shadergen.string(), "build", spec.string(), "--out", (work / "merged").string(), "--remote-cache",
                 server.url(), "--remote-cache-secret-file", secret.string(), "--require-remote-hits", "--shards", count,
-                "--cache-dir", (work / "merge.cache").string(), "-j", std::to_string(o.jobs), "--stats"});
+                "--no-cache", "-j", std::to_string(o.jobs), "--stats"});
   result.identical = result.merge.ok && bench::output_files(work / "merged") == bench::output_files(reference);
   return result;
 }

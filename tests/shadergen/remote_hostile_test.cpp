@@ -108,6 +108,12 @@ TEST(RemoteCacheHostile, EntryCheckRefusesNoiseAndOtherStages) {
   EXPECT_NE(unfit_reason(std::vector<std::uint32_t>{0x07230203u, 0x00010500u, 0u, 9u, 0u, 1u, 2u}, Stage::fragment,
                          TargetEnv::vulkan1_2),
             "");
+  // A signed entry gets the stage check alone; on words that are not SPIR-V it still answers.
+  EXPECT_EQ(wrong_stage_reason(fragment, Stage::fragment), "");
+  EXPECT_EQ(wrong_stage_reason(fragment, Stage::compute), "no entry point of the expected stage");
+  EXPECT_EQ(wrong_stage_reason(std::vector<std::uint32_t>{0x07230203u, 0x00010500u, 0u, 9u, 0u, 0x0005000Fu, 4u},
+                               Stage::fragment),
+            "no entry point of the expected stage");
 }
 
 // Every request answered after 3 s: the budget turns the remote cache off (one warning) and the

@@ -169,6 +169,35 @@ TEST(ShardedBuild, SignedShardsAndMerge) {
   EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
 }
 
+// A farm's fresh nodes run with --no-cache: the input set still comes from the server, so only
+// the first shard preprocesses and the merge does not.
+TEST(ShardedBuild, WithoutLocalCachesTheInputSetComesFromTheServer) {
+  sgtest::TempDir run_dir("no_local_cache");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  auto no_cache = [](BuildOptions& o) { o.use_cache = false; };
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    ShardRun s = run(dir, "shard" + std::to_string(i), server.url(), [&](BuildOptions& o) {
+      o.shard = Shard{i, 2};
+      o.out_dir.clear();
+      o.remote_cache_secret = "farm secret";
+      no_cache(o);
+    });
+    ASSERT_TRUE(s.summary) << joined(s.errors);
+    EXPECT_EQ(s.summary->inputs_reused, i == 1) << "shard " << i;
+  }
+  ShardRun merged = run(dir, "merge", server.url(), [&](BuildOptions& o) {
+    o.require_remote_hits = true;
+    o.shards = 2;
+    o.remote_cache_secret = "farm secret";
+    no_cache(o);
+  });
+  ASSERT_TRUE(merged.summary) << joined(merged.errors);
+  EXPECT_TRUE(merged.summary->inputs_reused);
+  EXPECT_FALSE(fs::exists(dir / "merge.cache")) << "--no-cache writes no local cache";
+  EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
+}
+
 TEST(ShardedBuild, AShardWithoutAServerFailsNamingWhatIsMissing) {
   sgtest::TempDir run_dir("dead");
   // Nothing listens there: every attempt is refused at once, so the retries cost their pauses only.

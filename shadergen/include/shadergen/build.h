@@ -49,7 +49,8 @@ struct BuildOptions {
   bool write_stats = false;  // also write <out>/stats.json (timings: not deterministic)
   bool verbose = false;      // one progress line per compiled source
   // A content cache shared over HTTP: GET/PUT <url>/<key[0:2]>/<key>, asked after a local miss,
-  // given every entry compiled here unless read-only. Empty: none; unused without use_cache.
+  // given every entry compiled here unless read-only. Empty: none; unused without use_cache,
+  // except by a shard or a merge, which then skip only the local cache.
   // Precondition: empty or an http:// or https:// URL (else build() fails naming it).
   // Credentials in it ("user:password@") are never printed; ~/.netrc can hold them instead.
   std::string remote_cache_url;

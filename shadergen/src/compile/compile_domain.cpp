@@ -225,8 +225,9 @@ class DomainCompiler {
   // With an input-set entry whose every file is unchanged, the preprocessed texts (and so
   // their keys) are what they were: take the keys and skip glslang altogether.
   bool reuse_inputs() {
-    if (!options_.inputs || options_.input_key.empty()) return false;
-    auto set = options_.inputs->load(options_.input_key);
+    if (options_.input_key.empty()) return false;
+    std::optional<InputSet> set;
+    if (options_.inputs) set = options_.inputs->load(options_.input_key);
     if (!set) set = remote_input_set();
     if (!set || set->source_keys.size() != d_.jobs.size() || !inputs_unchanged(set->files)) return false;
     std::map<std::string, int> by_key;
@@ -250,9 +251,10 @@ class DomainCompiler {
   }
 
   void remember_inputs() {
-    if (!options_.inputs || options_.input_key.empty()) return;
+    if (options_.input_key.empty()) return;
     // An input set from the server is kept here once the build has used it successfully.
     if (d_.inputs_reused && remote_input_set_) {
+      if (!options_.inputs) return;
       if (auto set = decode_input_set(options_.input_key, *remote_input_set_))
         (void)options_.inputs->store(options_.input_key, *set);
       return;
@@ -262,8 +264,9 @@ class DomainCompiler {
     for (const CompileJob& job : d_.jobs)
       set.source_keys.push_back(d_.sources[static_cast<std::size_t>(job.source)].key);
     // Like the content cache: failing to remember only costs time later.
-    if (Status stored = options_.inputs->store(options_.input_key, set); !stored)
-      log("warning: " + stored.errors().front().to_string());
+    if (options_.inputs)
+      if (Status stored = options_.inputs->store(options_.input_key, set); !stored)
+        log("warning: " + stored.errors().front().to_string());
     if (tiers_.remote_in_use())
       options_.remote->store_input_set(options_.input_key, encode_input_set(options_.input_key, set));
   }
@@ -333,7 +336,11 @@ class DomainCompiler {
   }
 
   // Remote entries are validated once per distinct blob and stage: many sources share a blob.
+  // A signed entry's writer validated it (entry_check.h), so only its stage is checked; that
+  // took the merge of a sharded build from validating every blob of the domain again.
   RemoteCache::Check fit_check(Stage stage) {
+    if (options_.remote && options_.remote->signs())
+      return [stage](const CachedBlob& blob) { return wrong_stage_reason(blob.words, stage); };
     return [this, stage](const CachedBlob& blob) {
       std::string id = sha256_hex(blob.words) + std::string(stage_name(stage));
       {

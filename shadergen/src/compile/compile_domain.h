@@ -24,7 +24,7 @@ class RemoteCache;
 struct CompileOptions {
   unsigned jobs = 0;
   const ContentCache* cache = nullptr;  // nullptr: no cache
-  const InputCache* inputs = nullptr;   // nullptr: always preprocess
+  const InputCache* inputs = nullptr;   // nullptr: no local input sets (the remote cache may share one)
   std::string input_key;                // input_set_key() of this build; empty: always preprocess
   bool verbose = false;
   std::function<void(const std::string&)> log;

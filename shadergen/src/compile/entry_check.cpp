@@ -31,8 +31,8 @@ std::optional<std::uint32_t> execution_model(Stage stage) {
   return std::nullopt;
 }
 
-// True when some OpEntryPoint has `model`. Runs after validation, so the instruction stream is
-// well formed; the bounds checks stay anyway.
+// True when some OpEntryPoint has `model`. A signed entry's words reach it unvalidated (though
+// signed by a writer that validated them), so every instruction's bounds are checked.
 bool has_entry_point(std::span<const std::uint32_t> words, std::uint32_t model) {
   for (std::size_t at = kHeaderWords; at < words.size();) {
     std::uint32_t count = words[at] >> 16, opcode = words[at] & 0xFFFFu;
@@ -47,6 +47,10 @@ bool has_entry_point(std::span<const std::uint32_t> words, std::uint32_t model) 
 
 std::string unfit_reason(std::span<const std::uint32_t> words, Stage stage, TargetEnv env) {
   if (Status valid = validate_spirv(words, env); !valid) return valid.errors().front().message;
+  return wrong_stage_reason(words, stage);
+}
+
+std::string wrong_stage_reason(std::span<const std::uint32_t> words, Stage stage) {
   auto model = execution_model(stage);
   if (model && !has_entry_point(words, *model)) return "no entry point of the expected stage";
   return {};

@@ -19,4 +19,9 @@ namespace shadergen {
 // Empty when fit, else why not (the validator's message, or the missing stage).
 std::string unfit_reason(std::span<const std::uint32_t> words, Stage stage, TargetEnv env);
 
+// The stage half of unfit_reason() alone, for a signed entry: its writer held the team's secret
+// and validated the blob for the same key (target and toolchain included) before signing it,
+// so validating it again would only repeat the writer's work (docs/distributed.md, "Trust").
+std::string wrong_stage_reason(std::span<const std::uint32_t> words, Stage stage);
+
 }  // namespace shadergen

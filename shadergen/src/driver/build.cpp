@@ -256,8 +256,10 @@ Result<BuildSummary> build(const BuildOptions& given) {
   // Every blob's words go here as they are made, beside the output; removed on every return.
   std::optional<BlobSpill> spill;
   if (!options.shard) compile_options.spill = &spill.emplace(spill_folder_beside(options.out_dir), options.out_dir);
-  if (inputs.enabled()) {
-    compile_options.inputs = &inputs;
+  // The input set is also shared through the remote cache, so a shard or a merge run with
+  // --no-cache (no local cache on a farm's fresh node) still takes it from the server.
+  if (inputs.enabled() || remote) {
+    if (inputs.enabled()) compile_options.inputs = &inputs;
     compile_options.input_key = input_set_key(current_cache_key_parts(), options.spec_path, loaded->digest,
                                               preprocessing_settings(*spec, *variants_digest));
   }
