@@ -258,7 +258,7 @@ ShardRun run_shards(const Options& o, const fs::path& spec, const fs::path& work
       measured({o.shadergen.string(), "build", spec.string(), "--out", (work / "merged").string(), "--remote-cache",
                 server.url(), "--remote-cache-secret-file", secret.string(), "--require-remote-hits", "--shards", count,
                 "--no-cache", "-j", std::to_string(o.jobs), "--stats"});
-  result.identical = result.merge.ok && bench::output_files(work / "merged") == bench::output_files(reference);
+  result.identical = result.merge.ok && bench::same_output_files(work / "merged", reference);
   return result;
 }
 

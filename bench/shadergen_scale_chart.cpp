@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -141,5 +142,10 @@ int main(int argc, char** argv) {
                  "  SCALE_JSON: the --json file of shadergen_scale_bench; OUT_PNG: the chart to write\n";
     return argc == 2 && std::strcmp(argv[1], "--help") == 0 ? 0 : 2;
   }
-  return run(argv[1], argv[2]);
+  try {
+    return run(argv[1], argv[2]);
+  } catch (const std::exception& e) {  // a chart the plot library refuses, or no memory
+    std::cerr << "shadergen_scale_chart: error: " << e.what() << "\n";
+    return 1;
+  }
 }

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <set>
 
 namespace bench {
 
@@ -39,12 +40,31 @@ std::string seconds_list(const std::vector<double>& values) {
   return out;
 }
 
-std::map<std::string, std::string> output_files(const std::filesystem::path& dir) {
-  std::map<std::string, std::string> files;
+namespace {
+
+// The relative paths output_files() would give, without the bytes.
+std::set<std::string> output_paths(const std::filesystem::path& dir) {
+  std::set<std::string> paths;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
     if (entry.is_regular_file() && entry.path().filename() != "stats.json")
-      files[entry.path().lexically_relative(dir).generic_string()] = read_text(entry.path());
+      paths.insert(entry.path().lexically_relative(dir).generic_string());
+  return paths;
+}
+
+}  // namespace
+
+std::map<std::string, std::string> output_files(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const std::string& relative : output_paths(dir)) files[relative] = read_text(dir / relative);
   return files;
+}
+
+bool same_output_files(const std::filesystem::path& a, const std::filesystem::path& b) {
+  const std::set<std::string> paths = output_paths(a);
+  if (paths != output_paths(b)) return false;
+  for (const std::string& relative : paths)
+    if (read_text(a / relative) != read_text(b / relative)) return false;
+  return true;
 }
 
 }  // namespace bench

@@ -31,4 +31,8 @@ std::string read_text(const std::filesystem::path& path);
 // Every file of a shadergen output folder but stats.json (timings), relative path -> bytes.
 std::map<std::string, std::string> output_files(const std::filesystem::path& dir);
 
+// output_files(a) == output_files(b), one pair of files in memory at a time: the folders of
+// the scale bench's largest domains hold more bytes than the machine has memory.
+bool same_output_files(const std::filesystem::path& a, const std::filesystem::path& b);
+
 }  // namespace bench
