@@ -50,20 +50,24 @@ ShardRun run(const fs::path& dir, const std::string& name, const std::string& ur
   return result;
 }
 
+// `local_cache` false: as --no-cache, a farm's fresh node.
 ShardRun shard(const fs::path& dir, const std::string& url, std::uint32_t index, std::uint32_t count,
-               const std::string& secret = {}) {
+               const std::string& secret = {}, bool local_cache = true) {
   return run(dir, "shard" + std::to_string(index), url, [&](BuildOptions& o) {
     o.shard = Shard{index, count};
     o.out_dir.clear();
     o.remote_cache_secret = secret;
+    o.use_cache = local_cache;
   });
 }
 
-ShardRun merge(const fs::path& dir, const std::string& url, std::uint32_t shards, const std::string& secret = {}) {
+ShardRun merge(const fs::path& dir, const std::string& url, std::uint32_t shards, const std::string& secret = {},
+               bool local_cache = true) {
   return run(dir, "merge", url, [&](BuildOptions& o) {
     o.require_remote_hits = true;
     o.shards = shards;
     o.remote_cache_secret = secret;
+    o.use_cache = local_cache;
   });
 }
 
@@ -175,23 +179,12 @@ TEST(ShardedBuild, WithoutLocalCachesTheInputSetComesFromTheServer) {
   sgtest::TempDir run_dir("no_local_cache");
   const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
-  auto no_cache = [](BuildOptions& o) { o.use_cache = false; };
   for (std::uint32_t i = 0; i < 2; ++i) {
-    ShardRun s = run(dir, "shard" + std::to_string(i), server.url(), [&](BuildOptions& o) {
-      o.shard = Shard{i, 2};
-      o.out_dir.clear();
-      o.remote_cache_secret = "farm secret";
-      no_cache(o);
-    });
+    ShardRun s = shard(dir, server.url(), i, 2, "farm secret", /*local_cache=*/false);
     ASSERT_TRUE(s.summary) << joined(s.errors);
     EXPECT_EQ(s.summary->inputs_reused, i == 1) << "shard " << i;
   }
-  ShardRun merged = run(dir, "merge", server.url(), [&](BuildOptions& o) {
-    o.require_remote_hits = true;
-    o.shards = 2;
-    o.remote_cache_secret = "farm secret";
-    no_cache(o);
-  });
+  ShardRun merged = merge(dir, server.url(), 2, "farm secret", /*local_cache=*/false);
   ASSERT_TRUE(merged.summary) << joined(merged.errors);
   EXPECT_TRUE(merged.summary->inputs_reused);
   EXPECT_FALSE(fs::exists(dir / "merge.cache")) << "--no-cache writes no local cache";

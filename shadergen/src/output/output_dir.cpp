@@ -12,7 +12,6 @@
 #include <unistd.h>
 
 #include "base/file_io.h"
-#include "base/thread_pool.h"
 
 #include <atomic_file/atomic_file.h>
 
@@ -170,17 +169,13 @@ Status StagedOutput::stage(const fs::path& staging) const {
     }
     to_write.push_back(&file);
   }
-  // A file written from memory waits for its own sync to the disk, not for a processor: several
-  // in flight finish far sooner than one after another.
-  constexpr unsigned kWriters = 8;
-  std::vector<Status> written(to_write.size(), Status(Ok{}));
-  parallel_for(to_write.size(), kWriters, [&](std::size_t i) {
-    const auto& [relative, entry] = *to_write[i];
-    written[i] = entry.file.empty() ? write_file_atomic(staging / relative, entry.bytes)
-                                    : link_in(entry.file, staging / relative);
-  });
-  for (std::size_t i = 0; i < written.size(); ++i)
-    if (!written[i]) return renamed(std::move(written[i]), out_dir_ / to_write[i]->first);
+  // Nothing is synced file by file: sync_file_system() makes all of it durable at the end.
+  for (const auto* file : to_write) {
+    const auto& [relative, entry] = *file;
+    Status written = entry.file.empty() ? write_file_atomic(staging / relative, entry.bytes, /*durable=*/false)
+                                        : link_in(entry.file, staging / relative);
+    if (!written) return renamed(std::move(written), out_dir_ / relative);
+  }
   return sync_file_system(staging, out_dir_);
 }
 
