@@ -53,6 +53,19 @@ struct Rule {
   int line = 0;
 };
 
+// How a feature reaches the shader (docs/spec-format.md, "Kinds"). A variant is compiled into
+// each permutation as a define; a specialization constant is one SPIR-V for every value, fixed
+// when the pipeline is created; a branch is one SPIR-V for every value, read at run time from a
+// uniform block that shadergen declares. The collapse (optimised IDs) is over variants only.
+enum class FeatureKind { variant, specialization, branch };
+
+// "variant", "specialization" or "branch".
+std::string_view feature_kind_name(FeatureKind kind);
+
+// How a variant feature's define is written: only when on (`#define NAME 1`, today's form), or
+// always (`#define NAME 0|1`, or its value), so that `if (NAME)` reads the same under every kind.
+enum class DefineStyle { presence, value };
+
 struct RawFeature {
   std::string name;    // e.g. SHADOW_SOLID; the name rules use
   std::uint32_t bit;   // bit in the raw ID (a valued feature's lowest bit)
@@ -64,7 +77,17 @@ struct RawFeature {
   std::vector<std::string> values;
   std::uint32_t width = 1;
   std::size_t spec_order = 0;  // its index in the spec's "raw.features" (the generated API's order)
+  FeatureKind kind = FeatureKind::variant;
+  DefineStyle define_style = DefineStyle::presence;
+  // kind == specialization: its `layout(constant_id = K)`, pinned by "constant_id" or the
+  // smallest ID no other feature holds, in spec order.
+  std::uint32_t constant_id = 0;
+  // "unread": "allowed": no check that a source of the domain's permutations reads the define.
+  bool unread_allowed = false;
+  int define_line = 0;  // where "define" is written, for the unread-define message
+  int define_column = 0;
 
+  bool is_variant() const { return kind == FeatureKind::variant; }
   bool valued() const { return !values.empty(); }
   std::uint32_t mask() const { return ((1u << width) - 1u) << bit; }
   // The value index this raw ID holds in the feature's field (may be >= values.size()).
@@ -137,6 +160,14 @@ struct CompanionSpec {
   bool shared_layout = true;
 };
 
+// "branch_block": where the uniform block holding the branch features' values is bound. One
+// std140 uint per branch feature, in spec order (offset 4 * i); the block's size rounds up to 16.
+struct BranchBlockSpec {
+  std::uint32_t set = 0;
+  std::uint32_t binding = 0;
+  int line = 0;
+};
+
 struct DomainSpec {
   std::filesystem::path spec_path;  // as given by the user
   std::string name;
@@ -171,6 +202,14 @@ struct DomainSpec {
   int variants_line = 0;  // line of "variants_file" in the spec; 0 when given on the command line
   // The raw IDs the variants file lists, ascending, each once (read_variants_file() fills it).
   std::vector<std::uint32_t> listed_raw_ids;
+  std::optional<BranchBlockSpec> branch_block;  // present when a feature is a branch
+
+  // The branch features in spec order: the members of the branch block.
+  std::vector<const RawFeature*> branch_features() const;
+  // The specialization-constant features in spec order.
+  std::vector<const RawFeature*> specialization_features() const;
+  // The bits of every variant feature: what a raw ID's permutation text depends on.
+  std::uint32_t variant_mask() const;
 
   bool listed() const { return !variants_path.empty(); }
   std::uint32_t raw_bits() const;

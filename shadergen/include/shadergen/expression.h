@@ -36,6 +36,8 @@ class Expression {
   bool evaluate(std::uint32_t bits) const;
   // The rule as written, normalised spacing, for explanations.
   std::string to_string() const;
+  // The bits of every symbol the rule names (a valued symbol: its whole field).
+  std::uint32_t symbol_mask() const;
 
   struct Node;
 

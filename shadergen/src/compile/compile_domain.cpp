@@ -25,6 +25,7 @@
 #include "compile/spirv_passes.h"
 #include "compile/toolchain.h"
 #include "spec/defines.h"
+#include "spec/kind_declarations.h"
 #include "spec/target_env.h"
 
 namespace shadergen {
@@ -56,9 +57,15 @@ std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan&
   return jobs;
 }
 
-// The domain's fixed defines, less those the job sets itself (a companion's own value wins).
-GlslSource source_of(const CompiledDomain& d, const CompileJob& job) {
+// The domain's fixed defines, less those the job sets itself (a companion's own value wins). A
+// permuted job also gets the kind declarations (companions are not permuted: they have none).
+GlslSource source_of(const CompiledDomain& d, const CompileJob& job, const KindDeclarations& kinds) {
   GlslSource source{d.path_of(job), job.stage, d.spec.include_dirs, d.defines_of(job), {}, d.spec.target_env};
+  if (job.kind != JobKind::companion) {
+    source.defines = boolean_value_defines(std::move(source.defines), kinds);
+    source.kind_macros = kinds.macros;
+    source.kind_declarations = kinds.declarations;
+  }
   for (const std::string& fixed : d.spec.defines) {
     bool own = std::any_of(source.defines.begin(), source.defines.end(), [&](const std::string& own_define) {
       return define_name(own_define) == define_name(fixed);
@@ -285,7 +292,7 @@ class DomainCompiler {
         d_.jobs.size(), options_.jobs,
         [&](std::size_t i) {
           auto start = Clock::now();
-          auto preprocessed = preprocess(source_of(d_, d_.jobs[i]));
+          auto preprocessed = preprocess(source_of(d_, d_.jobs[i], kinds_));
           if (preprocessed) {
             keys[i] = cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(preprocessed->text));
             std::lock_guard lock(shared_mutex);
@@ -369,7 +376,7 @@ class DomainCompiler {
         failures.size(), options_.jobs,
         [&](std::size_t i) {
           const CompileJob& job = d_.jobs[failures[i].job];
-          if (auto text = preprocess(source_of(d_, job)))
+          if (auto text = preprocess(source_of(d_, job, kinds_)))
             failures[i].lines = live_lines(text->text, d_.path_of(job).lexically_normal().string());
         },
         options_.cancelled);
@@ -379,7 +386,7 @@ class DomainCompiler {
   // Compiles, optimises and validates a source, and keeps the blob in the local cache.
   Result<CachedBlob> compile_fresh(SourceRecord& record) {
     auto start = Clock::now();
-    auto words = compile(source_of(d_, d_.jobs[record.first_job]));
+    auto words = compile(source_of(d_, d_.jobs[record.first_job], kinds_));
     if (!words) return std::move(words).take_errors();
     auto optimised = optimise_and_validate(std::move(words).value(), d_.spec.target_env);
     if (!optimised) return std::move(optimised).take_errors();
@@ -718,16 +725,17 @@ class DomainCompiler {
   CompiledDomain& d_;
   const CompileOptions& options_;
   CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
-  std::optional<std::vector<InputRead>> reads_;          // what preprocessing read; nullopt: inconsistent
-  TieredCache tiers_{options_.cache, options_.remote};   // the local and remote caches' policy
-  std::optional<std::string> remote_input_set_;          // the bytes of the input set the server gave
-  std::mutex checked_mutex_;                             // guards checked_
-  std::map<std::string, std::string> checked_;           // blob hash + stage -> unfit_reason()
-  std::mutex distinct_mutex_;                            // guards the three below
-  std::deque<DistinctBlob> distinct_;                    // stable addresses while workers fill them
-  std::map<std::string, std::size_t> distinct_index_;    // hash of the words -> distinct_
-  Diagnostics spill_errors_;                             // the first failure to write a blob
-  std::vector<std::size_t> blob_distinct_;               // d_.blobs -> distinct_, before strip_blobs()
+  KindDeclarations kinds_ = kind_declarations(d_.spec);
+  std::optional<std::vector<InputRead>> reads_;         // what preprocessing read; nullopt: inconsistent
+  TieredCache tiers_{options_.cache, options_.remote};  // the local and remote caches' policy
+  std::optional<std::string> remote_input_set_;         // the bytes of the input set the server gave
+  std::mutex checked_mutex_;                            // guards checked_
+  std::map<std::string, std::string> checked_;          // blob hash + stage -> unfit_reason()
+  std::mutex distinct_mutex_;                           // guards the three below
+  std::deque<DistinctBlob> distinct_;                   // stable addresses while workers fill them
+  std::map<std::string, std::size_t> distinct_index_;   // hash of the words -> distinct_
+  Diagnostics spill_errors_;                            // the first failure to write a blob
+  std::vector<std::size_t> blob_distinct_;              // d_.blobs -> distinct_, before strip_blobs()
 };
 
 }  // namespace

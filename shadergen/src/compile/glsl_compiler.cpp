@@ -13,6 +13,7 @@
 #include "base/sha256.h"
 #include "base/untrusted_text.h"
 #include "spec/defines.h"
+#include "spec/kind_declarations.h"
 
 namespace shadergen {
 namespace {
@@ -133,7 +134,7 @@ std::string make_preamble(const GlslSource& source) {
   std::string preamble = "#extension GL_GOOGLE_include_directive : require\n";
   for (const std::string& define : source.fixed_defines) preamble += define_line(define);
   for (const std::string& define : source.defines) preamble += define_line(define);
-  return preamble;
+  return preamble + source.kind_macros;
 }
 
 // glslang's log has lines like "ERROR: uber/lighting.frag:212: 'x' : undeclared identifier".
@@ -188,7 +189,8 @@ struct ShaderJob {
   Status load(const GlslSource& source) {
     auto loaded = read_file(source.path);
     if (!loaded) return std::move(loaded).take_errors();
-    text = std::move(loaded).value();
+    file_text = std::move(loaded).value();
+    text = insert_declarations(file_text, source.kind_declarations);
     // glslang keeps these pointers (not copies) until it is done, so they are members.
     strings[0] = text.c_str();
     lengths[0] = static_cast<int>(text.size());
@@ -205,7 +207,8 @@ struct ShaderJob {
 
   std::string name;
   std::string preamble;
-  std::string text;
+  std::string file_text;  // the file as read (its hash is the input's)
+  std::string text;       // what glslang reads: the file with the kind declarations
   const char* strings[1] = {};
   int lengths[1] = {};
   const char* names[1] = {};
@@ -223,7 +226,7 @@ Result<Preprocessed> preprocess(const GlslSource& source) {
   if (!job.shader->preprocess(GetDefaultResources(), 450, ENoProfile, false, false, kMessages, &out.text, job.includer))
     return parse_log(job.shader->getInfoLog(), job.name);
   out.includes = job.includer.take_hits();
-  out.reads.push_back({source.path.lexically_normal(), true, sha256_hex(job.text)});
+  out.reads.push_back({source.path.lexically_normal(), true, sha256_hex(job.file_text)});
   for (InputRead& read : job.includer.take_reads()) out.reads.push_back(std::move(read));
   return out;
 }

@@ -26,6 +26,10 @@ struct GlslSource {
   // The domain's fixed defines, same form, ahead of `defines`; none has a name in `defines`.
   std::vector<std::string> fixed_defines;
   TargetEnv target = TargetEnv::vulkan1_2;  // Vulkan and SPIR-V versions
+  // A permuted shader's kind declarations (spec/kind_declarations.h): `kind_macros` end the
+  // preamble, `kind_declarations` are inserted after the file's #version line.
+  std::string kind_macros = {};
+  std::string kind_declarations = {};
 };
 
 struct Preprocessed {

@@ -32,6 +32,41 @@ std::vector<ExpressionSymbol> DomainSpec::raw_symbols() const {
   return symbols;
 }
 
+std::string_view feature_kind_name(FeatureKind kind) {
+  switch (kind) {
+    case FeatureKind::variant: return "variant";
+    case FeatureKind::specialization: return "specialization";
+    case FeatureKind::branch: return "branch";
+  }
+  return "variant";
+}
+
+namespace {
+std::vector<const RawFeature*> features_of_kind(const DomainSpec& spec, FeatureKind kind) {
+  std::vector<const RawFeature*> out;
+  for (const RawFeature& f : spec.raw_features)
+    if (f.kind == kind) out.push_back(&f);
+  std::sort(out.begin(), out.end(),
+            [](const RawFeature* a, const RawFeature* b) { return a->spec_order < b->spec_order; });
+  return out;
+}
+}  // namespace
+
+std::vector<const RawFeature*> DomainSpec::branch_features() const {
+  return features_of_kind(*this, FeatureKind::branch);
+}
+
+std::vector<const RawFeature*> DomainSpec::specialization_features() const {
+  return features_of_kind(*this, FeatureKind::specialization);
+}
+
+std::uint32_t DomainSpec::variant_mask() const {
+  std::uint32_t mask = 0;
+  for (const RawFeature& f : raw_features)
+    if (f.is_variant()) mask |= f.mask();
+  return mask;
+}
+
 std::vector<std::string> DomainSpec::optimised_bit_names() const {
   std::vector<std::string> names;
   for (const OptimisedBit& bit : optimised_bits) names.push_back(bit.name);
@@ -167,10 +202,10 @@ class DomainBuilder {
       reader_.error(root, "spec", "the spec must be a JSON object");
       return std::move(spec_);
     }
-    reader_.only_keys(
-        root, "spec",
-        {"format", "name", "description", "uber_shader", "program", "include_dirs", "target_env", "layout",
-         "strip_debug", "defines", "companions", "raw", "optimised", "compile", "variants_file"});
+    reader_.only_keys(root, "spec",
+                      {"format", "name", "description", "uber_shader", "program", "include_dirs", "target_env",
+                       "layout", "strip_debug", "defines", "companions", "raw", "optimised", "compile", "variants_file",
+                       "define_style", "branch_block"});
     read_header(root);
     read_permuted_shaders(root);
     read_include_dirs(root);
@@ -181,7 +216,9 @@ class DomainBuilder {
     if (const Value* defines = reader_.member(root, "spec", "defines", Type::object, false))
       spec_.defines = read_define_map(*defines, "defines");
     read_companions(root);
+    if (const Value* style = root.find("define_style")) read_define_style(*style, "define_style", default_style_);
     if (const Value* raw = reader_.member(root, "spec", "raw", Type::object)) read_raw(*raw);
+    read_kinds(root);
     check_fixed_defines(root);
     spec_.collapsed = root.find("optimised") != nullptr;
     if (const Value* optimised = reader_.member(root, "spec", "optimised", Type::object, false))
@@ -505,14 +542,21 @@ class DomainBuilder {
         reader_.error(item, where, "expected an object");
         continue;
       }
-      reader_.only_keys(item, where, {"name", "bit", "define", "values", "description"});
+      reader_.only_keys(
+          item, where,
+          {"name", "bit", "define", "values", "description", "kind", "constant_id", "define_style", "unread"});
       RawFeature feature;
       feature.name = reader_.string_member(item, where, "name");
       feature.define = reader_.string_member(item, where, "define");
+      if (const Value* define = item.find("define")) {
+        feature.define_line = define->line;
+        feature.define_column = define->column;
+      }
       feature.description = reader_.string_member(item, where, "description", false);
       feature.values = std::move(values[i]);
       feature.width = feature.valued() ? width_for(feature.values.size()) : 1;
       feature.spec_order = i;
+      read_feature_kind(item, where, feature);
       auto bit = reader_.bit_member(item, where, total);
       if (item.find("name") && !is_identifier(feature.name)) {
         reader_.error(*item.find("name"), where + ".name", "\"" + feature.name + "\" is not an identifier");
@@ -620,6 +664,10 @@ class DomainBuilder {
                           by_bit[*index]->name);
         continue;
       }
+      if (const RawFeature* other = first_non_variant(rule->expression.symbol_mask()))
+        reader_.error(*item.find("when"), where + ".when",
+                      "optimised bit " + bit.name + " names feature " + other->name + ", a " +
+                          kind_phrase(other->kind) + ": the collapse is over variant features only");
       bit.bit = *index;
       bit.when = std::move(*rule);
       by_bit[*index] = std::move(bit);
@@ -668,6 +716,12 @@ class DomainBuilder {
                         " (known: " + known + ")");
       return std::nullopt;
     }
+    if (!found->is_variant()) {
+      reader_.error(entry, where,
+                    found->name + " is a " + kind_phrase(found->kind) +
+                        ": a variant compiles variant features only (its value travels beside the optimised ID)");
+      return std::nullopt;
+    }
     bool has_value = name.size() < text.size();
     if (!found->valued()) {
       if (has_value) reader_.error(entry, where, found->name + " is a boolean feature; name it without a value");
@@ -689,9 +743,177 @@ class DomainBuilder {
     return FeatureSetting{found->mask(), position << found->bit};
   }
 
+  // "a specialization constant", "run-time branch" or "variant", for messages.
+  static std::string kind_phrase(FeatureKind kind) {
+    switch (kind) {
+      case FeatureKind::variant: return "variant";
+      case FeatureKind::specialization: return "specialization constant";
+      case FeatureKind::branch: return "run-time branch";
+    }
+    return "variant";
+  }
+
+  // The first feature with a bit in `mask` that is not a variant, or nullptr.
+  const RawFeature* first_non_variant(std::uint32_t mask) const {
+    for (const RawFeature& f : spec_.raw_features)
+      if (!f.is_variant() && (f.mask() & mask)) return &f;
+    return nullptr;
+  }
+
+  void read_define_style(const Value& value, const std::string& where, DefineStyle& style) {
+    if (value.type == Type::string && value.string == "presence")
+      style = DefineStyle::presence;
+    else if (value.type == Type::string && value.string == "value")
+      style = DefineStyle::value;
+    else
+      reader_.error(value, where, "unknown define style " + shown(value) + " (expected presence or value)");
+  }
+
+  static std::string shown(const Value& value) {
+    return value.type == Type::string ? "\"" + value.string + "\"" : std::string(json::type_name(value.type));
+  }
+
+  // "kind", "constant_id", "define_style" and "unread" of one raw feature.
+  void read_feature_kind(const Value& item, const std::string& where, RawFeature& feature) {
+    feature.define_style = default_style_;
+    if (const Value* style = item.find("define_style"))
+      read_define_style(*style, where + ".define_style", feature.define_style);
+    if (const Value* kind = item.find("kind")) {
+      if (kind->type == Type::string && kind->string == "specialization")
+        feature.kind = FeatureKind::specialization;
+      else if (kind->type == Type::string && kind->string == "branch")
+        feature.kind = FeatureKind::branch;
+      else if (!(kind->type == Type::string && kind->string == "variant"))
+        reader_.error(*kind, where + ".kind",
+                      "unknown kind " + shown(*kind) + " (expected variant, specialization or branch)");
+    }
+    if (const Value* id = item.find("constant_id")) {
+      double v = id->number;
+      if (feature.kind != FeatureKind::specialization)
+        reader_.error(*id, where + ".constant_id",
+                      "only a specialization feature has a constant_id (this one is a " +
+                          std::string(feature_kind_name(feature.kind)) + ")");
+      else if (id->type != Type::number || !(v >= 0 && v <= 2147483647.0) || v != std::trunc(v))
+        reader_.error(*id, where + ".constant_id", "expected an integer from 0 to 2147483647");
+      else {
+        pinned_ids_.push_back({static_cast<std::uint32_t>(v), item.find("constant_id")});
+        pinned_features_.insert(feature.spec_order);
+      }
+    }
+    if (const Value* unread = item.find("unread")) {
+      if (unread->type == Type::string && unread->string == "allowed")
+        feature.unread_allowed = true;
+      else
+        reader_.error(*unread, where + ".unread", "expected \"allowed\", found " + shown(*unread));
+    }
+  }
+
+  // After the features: constant IDs, the branch block, and the names the kinds declare.
+  void read_kinds(const Value& root) {
+    assign_constant_ids();
+    read_branch_block(root);
+    check_declared_values();
+  }
+
+  // Pinned IDs as written; the others take the smallest free ID, in spec order.
+  void assign_constant_ids() {
+    std::map<std::uint32_t, std::string> taken;
+    std::vector<RawFeature*> order;
+    for (RawFeature& f : spec_.raw_features) order.push_back(&f);
+    std::sort(order.begin(), order.end(),
+              [](const RawFeature* a, const RawFeature* b) { return a->spec_order < b->spec_order; });
+    std::size_t pinned_next = 0;
+    std::vector<RawFeature*> unpinned;
+    for (RawFeature* f : order) {
+      if (f->kind != FeatureKind::specialization) continue;
+      if (!has_pinned_id(*f)) {
+        unpinned.push_back(f);
+        continue;
+      }
+      const PinnedId& pin = pinned_ids_[pinned_next++];
+      f->constant_id = pin.id;
+      auto [it, fresh] = taken.emplace(pin.id, f->name);
+      if (!fresh)
+        reader_.error(*pin.at, "raw.features[" + std::to_string(f->spec_order) + "].constant_id",
+                      "constant_id " + std::to_string(pin.id) + " is already taken by feature " + it->second);
+    }
+    std::uint32_t next = 0;
+    for (RawFeature* f : unpinned) {
+      while (taken.count(next)) ++next;
+      f->constant_id = next;
+      taken.emplace(next, f->name);
+    }
+  }
+
+  bool has_pinned_id(const RawFeature& f) const { return pinned_features_.count(f.spec_order) > 0; }
+
+  void read_branch_block(const Value& root) {
+    std::vector<const RawFeature*> branches = spec_.branch_features();
+    const Value* block = root.find("branch_block");
+    if (!block) {
+      if (!branches.empty())
+        reader_.error(root, "spec",
+                      "feature " + branches.front()->name +
+                          " is a run-time branch: its value is read from a uniform block, so the spec needs "
+                          "\"branch_block\": {\"set\": S, \"binding\": B}");
+      return;
+    }
+    if (!(block = reader_.member(root, "spec", "branch_block", Type::object))) return;
+    reader_.only_keys(*block, "branch_block", {"set", "binding"});
+    BranchBlockSpec spec{0, 0, block->line};
+    bool ok = small_index(*block, "set", spec.set) && small_index(*block, "binding", spec.binding);
+    if (ok && branches.empty())
+      reader_.error(*block, "branch_block", "no feature is of kind branch; remove the block or make one a branch");
+    if (ok) spec_.branch_block = spec;
+  }
+
+  bool small_index(const Value& block, std::string_view key, std::uint32_t& out) {
+    const Value* value = reader_.member(block, "branch_block", key, Type::number);
+    if (!value) return false;
+    if (!(value->number >= 0 && value->number < 65536) || value->number != std::trunc(value->number)) {
+      reader_.error(*value, "branch_block." + std::string(key), "expected an integer from 0 to 65535");
+      return false;
+    }
+    out = static_cast<std::uint32_t>(value->number);
+    return true;
+  }
+
+  // Identifier values of a specialization, branch or value-style feature are declared to the
+  // shader as constants of their index: one name cannot stand for two indices.
+  void check_declared_values() {
+    std::map<std::string, std::pair<std::size_t, const RawFeature*>> declared;
+    for (const RawFeature& f : spec_.raw_features) {
+      if (f.is_variant() && f.define_style == DefineStyle::presence) continue;
+      for (std::size_t i = 0; i < f.values.size(); ++i) {
+        if (!is_identifier(f.values[i])) continue;
+        auto [it, fresh] = declared.emplace(f.values[i], std::pair{i, &f});
+        if (fresh || it->second.first == i) continue;
+        reader_.error(spec_location(f), "raw.features[" + std::to_string(f.spec_order) + "].values",
+                      "value " + f.values[i] + " is declared to the shader as " + std::to_string(i) + " for " + f.name +
+                          " and as " + std::to_string(it->second.first) + " for " + it->second.second->name);
+      }
+    }
+  }
+
+  // A feature's "define" location stands for the feature in messages about it as a whole.
+  static Value spec_location(const RawFeature& f) {
+    Value at;
+    at.line = f.define_line;
+    at.column = f.define_column;
+    return at;
+  }
+
+  struct PinnedId {
+    std::uint32_t id;
+    const Value* at;
+  };
+
   SpecReader& reader_;
   std::filesystem::path base_;
   DomainSpec spec_;
+  DefineStyle default_style_ = DefineStyle::presence;
+  std::vector<PinnedId> pinned_ids_;       // "constant_id"s as read, in spec order
+  std::set<std::size_t> pinned_features_;  // spec_order of the features that pin one
 };
 
 }  // namespace

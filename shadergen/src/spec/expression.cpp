@@ -28,6 +28,24 @@ bool Expression::evaluate(std::uint32_t bits) const {
   return root_ && Eval::run(*root_, bits);
 }
 
+std::uint32_t Expression::symbol_mask() const {
+  struct Walk {
+    static std::uint32_t run(const Node& n) {
+      switch (n.kind) {
+        case Node::Kind::constant: return 0;
+        case Node::Kind::symbol: return 1u << n.symbol;
+        case Node::Kind::comparison:
+          return static_cast<std::uint32_t>(((std::uint64_t{1} << n.width) - 1u) << n.symbol);
+        case Node::Kind::negation: return run(*n.left);
+        case Node::Kind::conjunction:
+        case Node::Kind::disjunction: return run(*n.left) | run(*n.right);
+      }
+      return 0;
+    }
+  };
+  return root_ ? Walk::run(*root_) : 0;
+}
+
 std::string Expression::to_string() const {
   struct Print {
     static int precedence(const Node& n) {

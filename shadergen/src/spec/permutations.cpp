@@ -168,8 +168,12 @@ std::vector<std::uint32_t> optimised_ids(const DomainSpec& spec, const std::vect
 std::vector<std::string> raw_defines(const DomainSpec& spec, std::uint32_t raw_id) {
   std::vector<std::string> defines;
   for (const RawFeature& feature : spec.raw_features) {
+    // A specialization or branch feature is no define: one text serves all its values.
+    if (!feature.is_variant()) continue;
     std::uint32_t index = feature.index_in(raw_id);
-    if (!feature.valued() && index) defines.push_back(feature.define);
+    const bool value_style = feature.define_style == DefineStyle::value;
+    if (!feature.valued() && (index || value_style))
+      defines.push_back(value_style ? feature.define + (index ? "=1" : "=0") : feature.define);
     if (feature.valued() && index < feature.values.size())
       defines.push_back(feature.define + "=" + feature.values[index]);
   }
