@@ -53,11 +53,11 @@ struct Rule {
   int line = 0;
 };
 
-// How a feature reaches the shader (docs/spec-format.md, "Kinds"). A variant is compiled into
-// each permutation as a define; a specialization constant is one SPIR-V for every value, fixed
-// when the pipeline is created; a branch is one SPIR-V for every value, read at run time from a
-// uniform block that shadergen declares. The collapse (optimised IDs) is over variants only.
-enum class FeatureKind { variant, specialization, branch };
+// FeatureKind (registry.h): how a feature reaches the shader (docs/spec-format.md, "Kinds"). A
+// variant is compiled into each permutation as a define; a specialization constant is one
+// SPIR-V for every value, fixed when the pipeline is created; a branch is one SPIR-V for every
+// value, read at run time from a uniform block that shadergen declares. The collapse (optimised
+// IDs) is over variants only.
 
 // "variant", "specialization" or "branch".
 std::string_view feature_kind_name(FeatureKind kind);

@@ -37,6 +37,7 @@
 // without linking shadergen itself.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -126,6 +127,11 @@ struct Reflection {
   std::uint32_t local_size_ids[3] = {kNoConstant, kNoConstant, kNoConstant};
 };
 
+// How a raw feature reaches the shader (the spec's "kind"): compiled in as a define (a variant),
+// a specialization constant fixed at pipeline creation, or a value the shader reads at run time
+// from the domain's branch block. Only variants make permutations of their own.
+enum class FeatureKind : std::uint8_t { variant, specialization, branch };
+
 // A raw feature as the generated kFeatures lists it: `width` bits from `bit` of the raw ID.
 // A boolean feature has no values (width 1, set: `#define <define> 1`); a valued feature's
 // field holds the index of one of `values` (compiled as `#define <define> <value>`).
@@ -135,6 +141,52 @@ struct Feature {
   std::uint32_t bit;
   std::uint32_t width;
   std::span<const std::string_view> values;
+  FeatureKind kind = FeatureKind::variant;
+};
+
+// One specialization feature's place in the specialization data, as VkSpecializationMapEntry
+// has it (same members, same layout): constant `constant_id` reads `size` bytes at `offset`.
+struct SpecializationMapEntry {
+  std::uint32_t constant_id;
+  std::uint32_t offset;
+  std::size_t size;
+};
+
+// The specialization data a raw ID's pipeline is created with (generated N::specialization()):
+// one 4-byte value per specialization feature of the domain, in spec order, a VkBool32 (0 or
+// 1) for a boolean, an int32 for a valued feature (a numeric value as written, an identifier's
+// index). Equal values make equal pipelines, so a renderer keys its pipelines by them.
+struct Specialization {
+  static constexpr std::size_t kMaxConstants = 32;
+  std::span<const SpecializationMapEntry> map;
+  std::array<std::uint32_t, kMaxConstants> data{};  // the first map.size() words are used
+  std::uint32_t data_size = 0;                      // bytes: 4 * map.size()
+
+  friend constexpr bool operator==(const Specialization& a, const Specialization& b) {
+    return a.data_size == b.data_size && a.data == b.data;
+  }
+};
+
+// The uniform block shadergen declares for the branch features (spec "branch_block"): one std140
+// uint per branch feature, in spec order, at `offsets[i]`; `size` bytes (a multiple of 16).
+// size == 0: the domain has no branch feature.
+struct BranchBlock {
+  std::uint32_t set;
+  std::uint32_t binding;
+  std::uint32_t size;
+  std::span<const std::uint32_t> offsets;
+};
+
+// The bytes a raw ID's branch block holds (generated N::branch_values()): word i is the value of
+// branch feature i (as Specialization::data writes it), the rest zero up to `size`.
+struct BranchValues {
+  static constexpr std::size_t kMaxWords = 32;
+  std::array<std::uint32_t, kMaxWords> words{};
+  std::uint32_t size = 0;  // bytes to upload: BranchBlock::size
+
+  friend constexpr bool operator==(const BranchValues& a, const BranchValues& b) {
+    return a.size == b.size && a.words == b.words;
+  }
 };
 
 // A define every shader of a domain is compiled with (spec "defines", --define, CMake DEFINES).

@@ -11,6 +11,7 @@
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -95,4 +96,25 @@ inline std::vector<std::uint32_t> specialization_defaults(const Reflection& refl
   return out;
 }
 
+// The VkSpecializationInfo of a raw ID's specialization data (generated N::specialization()). It
+// points into `specialization`, which must outlive the pipeline's creation. With no
+// specialization feature it is empty (mapEntryCount 0), which Vulkan accepts as no data.
+inline VkSpecializationInfo specialization_info(const Specialization& specialization) {
+  // Layout-compatible, so the registry's constant map is handed to Vulkan as it is.
+  static_assert(sizeof(SpecializationMapEntry) == sizeof(VkSpecializationMapEntry) &&
+                offsetof(SpecializationMapEntry, offset) == offsetof(VkSpecializationMapEntry, offset) &&
+                offsetof(SpecializationMapEntry, size) == offsetof(VkSpecializationMapEntry, size));
+  VkSpecializationInfo info{};
+  info.mapEntryCount = static_cast<std::uint32_t>(specialization.map.size());
+  info.pMapEntries = reinterpret_cast<const VkSpecializationMapEntry*>(specialization.map.data());
+  info.dataSize = specialization.data_size;
+  info.pData = specialization.data.data();
+  return info;
+}
+
 }  // namespace shadergen::vk
+
+namespace shadergen {
+// The name the issue tracker and docs/adopting.md use: shadergen::vulkan::specialization_info().
+namespace vulkan = vk;
+}  // namespace shadergen

@@ -14,6 +14,7 @@
 #include "compile/blob_spill.h"
 #include "output/cpp_text.h"
 #include "spec/defines.h"
+#include "spec/kind_declarations.h"
 
 namespace shadergen {
 namespace {
@@ -97,7 +98,8 @@ void feature_tables(std::ostringstream& h, const CompiledDomain& d, const std::v
     << "inline constexpr std::array<shadergen::Feature, " << features.size() << "> kFeatures{{\n";
   for (const RawFeature* f : features)
     h << "    {" << literal(f->name) << ", " << literal(f->define) << ", " << f->bit << ", " << f->width << ", "
-      << (f->valued() ? "detail::k" + f->name + "_values" : std::string("{}")) << "},\n";
+      << (f->valued() ? "detail::k" + f->name + "_values" : std::string("{}"))
+      << ", shadergen::FeatureKind::" << feature_kind_name(f->kind) << "},\n";
   h << "}};\n\n// The fixed defines every shader was compiled with: {name, value}.\n"
     << "inline constexpr std::array<shadergen::FixedDefine, " << d.spec.defines.size() << "> kDefines{{\n";
   for (const std::string& define : d.spec.defines) {
@@ -146,12 +148,60 @@ void raw_id_lookups(std::ostringstream& h, const CompiledDomain& d) {
          "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n  return raw_id;\n}\n\n";
 }
 
+// The word one feature's field of `raw_id` becomes in the specialization data or the branch
+// block: the boolean itself, or the value's number (kind_declarations.h value_number()) from a
+// table indexed by the field (an index past the values reads 0; such raw IDs are pruned).
+std::string value_word(const RawFeature& f) {
+  std::string field = "((raw_id >> " + std::to_string(f.bit) + ") & " + std::to_string((1u << f.width) - 1u) + "u)";
+  if (!f.valued()) return field;
+  std::string table = "std::array<std::int32_t, " + std::to_string(1u << f.width) + ">{{";
+  for (std::uint32_t i = 0; i < (1u << f.width); ++i)
+    table += (i ? ", " : "") + std::to_string(i < f.values.size() ? value_number(f, i) : 0);
+  return "static_cast<std::uint32_t>(" + table + "}}[" + field + "])";
+}
+
+// kSpecializationMap and specialization(raw_id): the data a raw ID's pipeline is created with.
+void specialization_api(std::ostringstream& h, const DomainSpec& spec) {
+  std::vector<const RawFeature*> features = spec.specialization_features();
+  h << "// The specialization features' constants, in spec order: {constant_id, offset, size}.\n"
+    << "inline constexpr std::array<shadergen::SpecializationMapEntry, " << features.size()
+    << "> kSpecializationMap{{\n";
+  for (std::size_t i = 0; i < features.size(); ++i)
+    h << "    {" << features[i]->constant_id << ", " << 4 * i << ", 4},  // " << features[i]->name << "\n";
+  h << "}};\n\n// The specialization data of `raw_id`'s pipeline (shadergen::vulkan::specialization_info() makes\n"
+       "// the VkSpecializationInfo). Precondition: is_valid_raw_id(raw_id).\n"
+    << "constexpr shadergen::Specialization specialization([[maybe_unused]] std::uint32_t raw_id) {\n"
+    << "  shadergen::Specialization s{kSpecializationMap, {}, " << 4 * features.size() << "};\n";
+  for (std::size_t i = 0; i < features.size(); ++i)
+    h << "  s.data[" << i << "] = " << value_word(*features[i]) << ";\n";
+  h << "  return s;\n}\n\n";
+}
+
+// kBranchBlock and branch_values(raw_id): the branch block's layout and a raw ID's contents.
+void branch_api(std::ostringstream& h, const DomainSpec& spec) {
+  std::vector<const RawFeature*> features = spec.branch_features();
+  const std::size_t size = features.empty() ? 0 : (4 * features.size() + 15) / 16 * 16;
+  h << "// The branch features' uniform block (std140, one uint each, in spec order); size 0: none.\n"
+    << "inline constexpr std::array<std::uint32_t, " << features.size() << "> kBranchOffsets{{";
+  for (std::size_t i = 0; i < features.size(); ++i) h << (i ? ", " : "") << 4 * i;
+  h << "}};\ninline constexpr shadergen::BranchBlock kBranchBlock{" << (spec.branch_block ? spec.branch_block->set : 0)
+    << ", " << (spec.branch_block ? spec.branch_block->binding : 0) << ", " << size << ", kBranchOffsets};\n\n"
+    << "// The bytes to upload to the branch block for `raw_id`. Precondition: is_valid_raw_id(raw_id).\n"
+    << "constexpr shadergen::BranchValues branch_values([[maybe_unused]] std::uint32_t raw_id) {\n"
+    << "  shadergen::BranchValues v{{}, " << size << "};\n";
+  for (std::size_t i = 0; i < features.size(); ++i)
+    h << "  v.words[" << i << "] = " << value_word(*features[i]) << ";  // " << features[i]->name << "\n";
+  h << "  return v;\n}\n\n";
+}
+
 std::string typed_features(const CompiledDomain& d) {
   std::ostringstream h;
   std::vector<const RawFeature*> features = in_spec_order(d.spec);
   value_enums(h, features);
   features_struct(h, features, tables_in_header(d));
   feature_tables(h, d, features);
+  specialization_api(h, d.spec);
+  branch_api(h, d.spec);
   return h.str();
 }
 

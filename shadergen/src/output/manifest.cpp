@@ -3,10 +3,13 @@
 #include <charconv>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <set>
 #include <sstream>
 
+#include "spec/kind_declarations.h"
 #include "spec/stages.h"
 
 namespace shadergen {
@@ -71,17 +74,54 @@ void add_vertex_half(Json& entry, const Blob* blob) {
   entry["vertex_hash"] = blob->hash;
 }
 
+// A feature's kind, constant ID and define style, each only when not the default, so that the
+// manifests of variant-only domains stay as they were.
+void add_kind(Json& entry, const RawFeature& f) {
+  if (f.kind != FeatureKind::variant) entry["kind"] = feature_kind_name(f.kind);
+  if (f.kind == FeatureKind::specialization) entry["constant_id"] = f.constant_id;
+  if (f.is_variant() && f.define_style == DefineStyle::value) entry["define_style"] = "value";
+}
+
 void add_features(Json& manifest, const DomainSpec& spec) {
   Json& raw = manifest["raw_features"] = Json::array();
-  for (const RawFeature& f : spec.raw_features)
-    raw.push_back(Json{{"name", f.name}, {"bit", f.bit}, {"define", f.define}});
+  for (const RawFeature& f : spec.raw_features) {
+    Json& entry = raw.emplace_back(Json{{"name", f.name}, {"bit", f.bit}, {"define", f.define}});
+    add_kind(entry, f);
+  }
+  if (spec.branch_block) {
+    Json members = Json::array();
+    std::vector<const RawFeature*> branches = spec.branch_features();
+    for (std::size_t i = 0; i < branches.size(); ++i)
+      members.push_back(Json{{"feature", branches[i]->name}, {"define", branches[i]->define}, {"offset", 4 * i}});
+    manifest["branch_block"] = Json{{"set", spec.branch_block->set},
+                                    {"binding", spec.branch_block->binding},
+                                    {"size", (4 * branches.size() + 15) / 16 * 16},
+                                    {"members", std::move(members)}};
+  }
   Json& optimised = manifest["optimised_bits"] = Json::array();
   for (const OptimisedBit& b : spec.optimised_bits)
     optimised.push_back(Json{{"name", b.name}, {"bit", b.bit}, {"when", b.when.text}});
 }
 
+// A raw ID's values of the features of `kind`, in spec order (as the generated code gives them).
+Json kind_values(const std::vector<const RawFeature*>& features, std::uint32_t raw_id) {
+  Json values = Json::object();
+  for (const RawFeature* f : features) {
+    const std::uint32_t index = f->index_in(raw_id);
+    if (!f->valued())
+      values[f->name] = index != 0;
+    else if (index < f->values.size())
+      values[f->name] = value_number(*f, index);
+  }
+  return values;
+}
+
 Json raw_entry(const CompiledDomain& d, const RawPermutation& raw) {
   Json entry{{"id", raw.id}, {"defines", raw_defines(d.spec, raw.id)}, {"pruned", raw.pruned}};
+  if (std::vector<const RawFeature*> s = d.spec.specialization_features(); !s.empty() && !raw.pruned)
+    entry["specialization"] = kind_values(s, raw.id);
+  if (std::vector<const RawFeature*> b = d.spec.branch_features(); !b.empty() && !raw.pruned)
+    entry["branch_values"] = kind_values(b, raw.id);
   if (d.spec.collapsed) entry["optimised"] = raw.optimised;
   add_blob_fields(entry, raw.pruned ? nullptr : d.raw_blob(raw.id), d.spec);
   add_vertex_half(entry, raw.pruned ? nullptr : d.raw_vertex_blob(raw.id));
@@ -161,14 +201,54 @@ Json specialization_constants_json(const ReflectionInfo& r) {
 
 // A distinct blob with its own reflection: what a permutation needs when it has a pipeline
 // layout of its own, its work-group size and its specialization constants.
-Json blob_entry(const Blob& blob, Stage stage) {
+Json blob_entry(const Blob& blob, Stage stage, const Json* serves) {
   const ReflectionInfo& r = blob.reflection;
   Json entry{{"spirv", blob_relative_path(blob)},     {"stage", stage_name(stage)},
              {"bindings", bindings_json(r.bindings)}, {"push_constant_size", r.push_constant_size},
              {"inputs", variables_json(r.inputs)},    {"outputs", variables_json(r.outputs)}};
   if (has_workgroup(stage)) add_workgroup(entry, r);
   entry["specialization_constants"] = specialization_constants_json(r);
+  if (serves && !serves->is_null()) entry["serves"] = *serves;
   return entry;
+}
+
+// The words of `features`' values in `raw_id`, as one key.
+std::string value_key(const std::vector<const RawFeature*>& features, std::uint32_t raw_id) {
+  std::string key;
+  for (const RawFeature* f : features) {
+    const std::uint32_t index = f->index_in(raw_id);
+    const std::int32_t word = f->valued() ? value_number(*f, index) : static_cast<std::int32_t>(index);
+    key.append(reinterpret_cast<const char*>(&word), sizeof word);
+  }
+  return key;
+}
+
+// Per blob, what it serves when a domain has specialization or branch features: how many raw IDs
+// draw with it, how many pipelines they need (distinct specialization data) and how many
+// run-time values the branch block takes. Null entries for the other blobs, and for every blob
+// of a variant-only domain.
+std::vector<Json> blob_serves(const CompiledDomain& d) {
+  std::vector<Json> serves(d.blobs.size());
+  const std::vector<const RawFeature*> specs = d.spec.specialization_features(), branches = d.spec.branch_features();
+  if (specs.empty() && branches.empty()) return serves;
+  struct Use {
+    std::size_t raw = 0;
+    std::set<std::string> pipelines, values;
+  };
+  std::map<std::size_t, Use> uses;
+  for (const RawPermutation& raw : d.plan.raw) {
+    if (raw.pruned) continue;
+    const Blob* blob = d.spec.collapsed ? d.optimised_blob(raw.optimised) : d.raw_blob(raw.id);
+    if (!blob) continue;
+    Use& use = uses[static_cast<std::size_t>(blob - d.blobs.data())];
+    ++use.raw;
+    use.pipelines.insert(value_key(specs, raw.id));
+    use.values.insert(value_key(branches, raw.id));
+  }
+  for (const auto& [index, use] : uses)
+    serves[index] =
+        Json{{"raw_ids", use.raw}, {"pipelines", use.pipelines.size()}, {"branch_values", use.values.size()}};
+  return serves;
 }
 
 std::vector<Stage> blob_stages(const CompiledDomain& d) {
@@ -278,7 +358,8 @@ void write_manifest(const CompiledDomain& d, std::ostream& out) {
   writer.member("companions", companions_json(d));
   writer.member("pipeline_layout", layout_json(d.layout));
   const std::vector<Stage> stages = blob_stages(d);
-  writer.array("blobs", d.blobs.size(), [&](std::size_t i) { return blob_entry(d.blobs[i], stages[i]); });
+  const std::vector<Json> serves = blob_serves(d);
+  writer.array("blobs", d.blobs.size(), [&](std::size_t i) { return blob_entry(d.blobs[i], stages[i], &serves[i]); });
   writer.finish();
 }
 
