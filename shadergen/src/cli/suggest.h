@@ -3,17 +3,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "base/closest_name.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace shadergen {
-
-// The entry of `known` closest to `given`: within two edits (insertions, deletions,
-// substitutions, or two neighbours swapped), or one being the other with letters added at the
-// end ("--output" for "--out"). nullopt when none is that close or two are equally close.
-std::optional<std::string> closest_name(std::string_view given, const std::vector<std::string>& known);
 
 // A misspelt subcommand or long option in `args` (without the program name), said with the name
 // meant when one is close ("unknown subcommand 'biuld'; did you mean 'build'?"); nullopt when

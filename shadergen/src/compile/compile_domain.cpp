@@ -19,6 +19,7 @@
 #include "compile/compile_domain.h"
 #include "compile/entry_check.h"
 #include "compile/error_grouping.h"
+#include "compile/feature_reads.h"
 #include "compile/glsl_compiler.h"
 #include "compile/program_check.h"
 #include "compile/shard_partition.h"
@@ -83,6 +84,7 @@ class DomainCompiler {
 
   Status run() {
     if (Status s = check_shader_files(); !s) return s;
+    if (Status s = check_feature_reads(d_.spec); !s) return s;
     d_.jobs = make_jobs(d_.spec, d_.plan);
     index_jobs();
     PhaseClock clock(d_.phases);
