@@ -185,14 +185,15 @@ INSTANTIATE_TEST_SUITE_P(
                  "\"((SHADOW_SOLID && SHADOW_FADE && SUN_LIGHT)", "", 0,
                  "optimised.bits[3].when: missing ')' in \"((SHADOW_SOLID && SHADOW_FADE && SUN_LIGHT) || "
                  "(!SHADOW_SOLID && SUN_LIGHT && SHADOW_SOFT)\" at column 91 (rules here name raw features)"},
-        EditCase{
-            "unknown_key_in_feature", "\"description\": \"a pixel is sky\"", "\"descripton\": \"a pixel is sky\"", "",
-            14,
-            "raw.features[5]: unknown key \"descripton\" (expected one of: name, bit, define, values, description)"},
+        EditCase{"unknown_key_in_feature", "\"description\": \"a pixel is sky\"", "\"descripton\": \"a pixel is sky\"",
+                 "", 14,
+                 "raw.features[5]: unknown key \"descripton\" (expected one of: name, bit, define, values, "
+                 "description, kind, constant_id, define_style, "
+                 "unread)"},
         EditCase{"unknown_top_level_key", "\"include_dirs\"", "\"include_dir\"", "", 15,
                  "spec: unknown key \"include_dir\" (expected one of: format, name, description, uber_shader, "
                  "program, include_dirs, target_env, layout, strip_debug, defines, companions, raw, optimised, "
-                 "compile, variants_file)"},
+                 "compile, variants_file, define_style, branch_block)"},
         EditCase{"bit_out_of_range", "\"bit\": 6", "\"bit\": 7", "\"SUN_LIGHT\"", 7,
                  "raw.features[6].bit: bit must be an integer from 0 to 6, found 7"},
         EditCase{"negative_bit", "\"bit\": 0", "\"bit\": -1", "", 7,

@@ -74,7 +74,7 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"unknown_key", replace(kBase, "\"format\": 1", "\"formats\": 1"),
                   "spec.json:2:14: error: spec: unknown key \"formats\" (expected one of: format, name, description, "
                   "uber_shader, program, include_dirs, target_env, layout, strip_debug, defines, companions, raw, "
-                  "optimised, compile, variants_file)"},
+                  "optimised, compile, variants_file, define_style, branch_block)"},
         ErrorCase{"bit_out_of_range", replace(kBase, "\"C\", \"bit\": 2", "\"C\", \"bit\": 3"),
                   "spec.json:9:29: error: raw.features[2].bit: bit must be an integer from 0 to 2, found 3"},
         // Once undefined behaviour (a double far outside int64 converted before the range test).
