@@ -89,6 +89,10 @@ struct BuildSummary {
   std::uint32_t cache_hits = 0;
   std::uint32_t unique_blobs = 0;  // distinct SPIR-V blobs written
   std::uint32_t optimiser_fallbacks = 0;
+  // With specialization or branch features (else 0): the most pipelines one blob serves
+  // (distinct specialization data) and the most branch values one blob takes.
+  std::uint32_t most_pipelines_per_blob = 0;
+  std::uint32_t most_branch_values_per_blob = 0;
   std::uint32_t permutations = 0;  // compile jobs: unpruned raw + optimised + companions
   std::uint32_t recompiled = 0;    // of which compiled now (their preprocessed source missed)
   std::uint32_t reused = 0;        // of which taken from the cache

@@ -126,12 +126,22 @@ void print_shard_summary(const BuildArgs& a, const BuildSummary& s, std::ostream
   if (a.stats) out << format_build_stats(s);
 }
 
+// " (one blob serves up to 6 pipelines and 3 branch values)", or nothing for a variant-only domain.
+std::string kinds_served(const BuildSummary& s) {
+  if (s.most_pipelines_per_blob <= 1 && s.most_branch_values_per_blob <= 1) return {};
+  std::string text = " (one blob serves up to ";
+  if (s.most_pipelines_per_blob > 1) text += std::to_string(s.most_pipelines_per_blob) + " pipelines";
+  if (s.most_pipelines_per_blob > 1 && s.most_branch_values_per_blob > 1) text += " and ";
+  if (s.most_branch_values_per_blob > 1) text += std::to_string(s.most_branch_values_per_blob) + " branch values";
+  return text + ")";
+}
+
 // "shadergen: <out>: 128 raw (32 pruned), 32 optimised, ... in 0.83 s", then --stats.
 void print_summary(const BuildArgs& a, const BuildSummary& s, std::ostream& out) {
   out << "shadergen: " << a.out << ": " << s.raw << " raw (" << s.pruned << " pruned), " << s.optimised
       << " optimised, " << s.companions << " companion" << (s.companions == 1 ? "" : "s") << " -> " << s.unique_sources
       << " distinct sources (" << s.compiled << " compiled, " << s.cache_hits << " cached" << remote_counts(s) << "), "
-      << s.unique_blobs << " SPIR-V blobs" << (s.output_changed ? "" : "; output unchanged");
+      << s.unique_blobs << " SPIR-V blobs" << kinds_served(s) << (s.output_changed ? "" : "; output unchanged");
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, " in %.2f s\n", s.seconds);
   out << seconds;

@@ -97,4 +97,17 @@ struct CompiledDomain {
   const Blob* optimised_vertex_blob(std::uint32_t id) const;
 };
 
+// What one blob serves in a domain with specialization or branch features: the raw IDs drawn
+// with it (through the lookup table when collapsed), the pipelines they need (distinct
+// specialization data) and the distinct branch values they upload.
+struct BlobServes {
+  std::size_t raw_ids = 0;
+  std::size_t pipelines = 0;
+  std::size_t branch_values = 0;
+};
+
+// Indexed like d.blobs; all zero for the blobs no raw ID draws with, and for every blob of a
+// variant-only domain (then nothing is counted).
+std::vector<BlobServes> blob_serves(const CompiledDomain& d);
+
 }  // namespace shadergen

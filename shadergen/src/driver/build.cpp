@@ -161,6 +161,11 @@ BuildSummary summarise(const CompiledDomain& d) {
   s.inputs_reused = d.inputs_reused;
   s.unique_blobs = static_cast<std::uint32_t>(d.blobs.size());
   for (const Blob& b : d.blobs) s.optimiser_fallbacks += b.fell_back;
+  for (const BlobServes& serves : blob_serves(d)) {
+    s.most_pipelines_per_blob = std::max(s.most_pipelines_per_blob, static_cast<std::uint32_t>(serves.pipelines));
+    s.most_branch_values_per_blob =
+        std::max(s.most_branch_values_per_blob, static_cast<std::uint32_t>(serves.branch_values));
+  }
   s.remote = d.remote;
   return s;
 }

@@ -201,54 +201,17 @@ Json specialization_constants_json(const ReflectionInfo& r) {
 
 // A distinct blob with its own reflection: what a permutation needs when it has a pipeline
 // layout of its own, its work-group size and its specialization constants.
-Json blob_entry(const Blob& blob, Stage stage, const Json* serves) {
+Json blob_entry(const Blob& blob, Stage stage, const BlobServes* serves) {
   const ReflectionInfo& r = blob.reflection;
   Json entry{{"spirv", blob_relative_path(blob)},     {"stage", stage_name(stage)},
              {"bindings", bindings_json(r.bindings)}, {"push_constant_size", r.push_constant_size},
              {"inputs", variables_json(r.inputs)},    {"outputs", variables_json(r.outputs)}};
   if (has_workgroup(stage)) add_workgroup(entry, r);
   entry["specialization_constants"] = specialization_constants_json(r);
-  if (serves && !serves->is_null()) entry["serves"] = *serves;
+  if (serves && serves->raw_ids > 0)
+    entry["serves"] =
+        Json{{"raw_ids", serves->raw_ids}, {"pipelines", serves->pipelines}, {"branch_values", serves->branch_values}};
   return entry;
-}
-
-// The words of `features`' values in `raw_id`, as one key.
-std::string value_key(const std::vector<const RawFeature*>& features, std::uint32_t raw_id) {
-  std::string key;
-  for (const RawFeature* f : features) {
-    const std::uint32_t index = f->index_in(raw_id);
-    const std::int32_t word = f->valued() ? value_number(*f, index) : static_cast<std::int32_t>(index);
-    key.append(reinterpret_cast<const char*>(&word), sizeof word);
-  }
-  return key;
-}
-
-// Per blob, what it serves when a domain has specialization or branch features: how many raw IDs
-// draw with it, how many pipelines they need (distinct specialization data) and how many
-// run-time values the branch block takes. Null entries for the other blobs, and for every blob
-// of a variant-only domain.
-std::vector<Json> blob_serves(const CompiledDomain& d) {
-  std::vector<Json> serves(d.blobs.size());
-  const std::vector<const RawFeature*> specs = d.spec.specialization_features(), branches = d.spec.branch_features();
-  if (specs.empty() && branches.empty()) return serves;
-  struct Use {
-    std::size_t raw = 0;
-    std::set<std::string> pipelines, values;
-  };
-  std::map<std::size_t, Use> uses;
-  for (const RawPermutation& raw : d.plan.raw) {
-    if (raw.pruned) continue;
-    const Blob* blob = d.spec.collapsed ? d.optimised_blob(raw.optimised) : d.raw_blob(raw.id);
-    if (!blob) continue;
-    Use& use = uses[static_cast<std::size_t>(blob - d.blobs.data())];
-    ++use.raw;
-    use.pipelines.insert(value_key(specs, raw.id));
-    use.values.insert(value_key(branches, raw.id));
-  }
-  for (const auto& [index, use] : uses)
-    serves[index] =
-        Json{{"raw_ids", use.raw}, {"pipelines", use.pipelines.size()}, {"branch_values", use.values.size()}};
-  return serves;
 }
 
 std::vector<Stage> blob_stages(const CompiledDomain& d) {
@@ -358,7 +321,7 @@ void write_manifest(const CompiledDomain& d, std::ostream& out) {
   writer.member("companions", companions_json(d));
   writer.member("pipeline_layout", layout_json(d.layout));
   const std::vector<Stage> stages = blob_stages(d);
-  const std::vector<Json> serves = blob_serves(d);
+  const std::vector<BlobServes> serves = blob_serves(d);
   writer.array("blobs", d.blobs.size(), [&](std::size_t i) { return blob_entry(d.blobs[i], stages[i], &serves[i]); });
   writer.finish();
 }
