@@ -148,7 +148,7 @@ std::string first_error_of(const sgtest::fs::path& dir, const std::string& shade
   if (!include.empty()) sgtest::write_file(dir / "include" / "loop.glsl", include);
   sgtest::write_file(dir / "d.json",
                      R"({"format": 1, "name": "d", "uber_shader": {"path": "s.frag"},
-                         "raw": {"features": [{"name": "A", "bit": 0, "define": "HAS_A"}]}})");
+                         "raw": {"features": [{"name": "A", "bit": 0, "define": "HAS_A", "unread": "allowed"}]}})");
   auto built = shadergen::build(sgtest::build_options(dir / "d.json", dir / "out", {}));
   return built.ok() ? std::string("built") : built.errors().front().to_string();
 }

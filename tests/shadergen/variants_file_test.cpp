@@ -151,7 +151,8 @@ TEST(VariantsFile, ADomainPast2To20RawIdsNeedsOne) {
   std::string features;
   for (int i = 0; i < 21; ++i)
     features += std::string(i ? ",\n" : "") + "{\"name\": \"F" + std::to_string(i) +
-                "\", \"bit\": " + std::to_string(i) + ", \"define\": \"USE_F" + std::to_string(i) + "\"}";
+                "\", \"bit\": " + std::to_string(i) + ", \"define\": \"USE_F" + std::to_string(i) +
+                "\", \"unread\": \"allowed\"}";
   sgtest::write_file(dir / "wide.frag",
                      "#version 450\nlayout(location = 0) out vec4 c;\nvoid main() { c = vec4(1); }\n");
   sgtest::write_file(dir / "wide.json",
