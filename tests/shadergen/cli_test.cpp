@@ -199,7 +199,7 @@ TEST(Cli, GlslErrorInsideOneFeatureKeepsThePreviousOutput) {
   EXPECT_EQ(errors, 1u) << "one grouped error, no follow-on noise:\n" << r.err;
   std::string file = (dir / "domain" / "particle.frag").lexically_normal().string();
   EXPECT_NE(r.err.find(file + ":19: error: 'fragment_depth' : undeclared identifier (in 6 of 12 raw permutations: "
-                              "those with SOFT_PARTICLES; 2 of 4 optimised permutations; e.g. raw 4 with "
+                              "those with SOFT [SOFT_PARTICLES]; 2 of 4 optimised permutations; e.g. raw 4 with "
                               "SOFT_PARTICLES)"),
             std::string::npos)
       << r.err;

@@ -22,7 +22,7 @@ namespace {
 std::string expected_error() {
   return (sgtest::fixtures_dir() / "glsl_error" / "particle.frag").lexically_normal().string() +
          ":21: error: 'soft_fade_scale' : undeclared identifier (in 6 of 12 raw permutations: those with "
-         "SOFT_PARTICLES; 2 of 4 optimised permutations; e.g. raw 4 with SOFT_PARTICLES)";
+         "SOFT [SOFT_PARTICLES]; 2 of 4 optimised permutations; e.g. raw 4 with SOFT_PARTICLES)";
 }
 
 struct CliRun {

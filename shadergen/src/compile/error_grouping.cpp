@@ -25,33 +25,62 @@ std::string describe_job(const CompiledDomain& domain, const CompileJob& job) {
   return text + (defines.empty() ? " (no defines)" : " with " + join(defines, " "));
 }
 
-std::set<std::string> define_set(const CompiledDomain& domain, const CompileJob& job) {
-  std::vector<std::string> defines = domain.defines_of(job);
-  return std::set<std::string>(defines.begin(), defines.end());
+// A variant feature's setting as diagnostics name it: the spec's name, with the define in
+// brackets where it differs ("SHADOW_SOFT [SOFT_SHADOW]", "SHADING=PBR [SHADING_MODEL=PBR]").
+std::string feature_text(const RawFeature& f, std::uint32_t index) {
+  if (!f.valued()) return f.name == f.define ? f.name : f.name + " [" + f.define + "]";
+  const std::string& value = f.values[index];
+  return f.name == f.define ? f.name + "=" + value : f.name + "=" + value + " [" + f.define + "=" + value + "]";
 }
 
-bool has_all(const CompiledDomain& domain, const CompileJob& job, const std::set<std::string>& defines) {
-  return std::ranges::includes(define_set(domain, job), defines);
+// The variant features whose setting every raw ID of `ids` shares: {feature, value index}.
+std::vector<std::pair<const RawFeature*, std::uint32_t>> shared_settings(const DomainSpec& spec,
+                                                                         const std::set<std::uint32_t>& ids) {
+  std::vector<std::pair<const RawFeature*, std::uint32_t>> shared;
+  for (const RawFeature& f : spec.raw_features) {
+    if (!f.is_variant()) continue;
+    const std::uint32_t first = f.index_in(*ids.begin());
+    if (first >= std::max<std::size_t>(f.values.size(), 2)) continue;
+    if (std::all_of(ids.begin(), ids.end(), [&](std::uint32_t id) { return f.index_in(id) == first; }))
+      shared.emplace_back(&f, first);
+  }
+  return shared;
 }
 
-// "those with SOFT_SHADOW" when the failing raw IDs are exactly the ones with a set of
-// defines; otherwise nothing (the example permutation still names one).
+// True when the raw IDs holding every one of `settings` are exactly `ids` among `all`.
+bool exactly(const std::vector<std::pair<const RawFeature*, std::uint32_t>>& settings,
+             const std::set<std::uint32_t>& ids, const std::set<std::uint32_t>& all) {
+  for (std::uint32_t id : all) {
+    const bool holds =
+        std::all_of(settings.begin(), settings.end(), [&](const auto& s) { return s.first->index_in(id) == s.second; });
+    if (holds != (ids.count(id) > 0)) return false;
+  }
+  return true;
+}
+
+// "those with SHADOW_SOFT [SOFT_SHADOW] and SKY" when the failing raw IDs are exactly the ones
+// with some variant features on (or valued ones at a value), "..., without SUN_LIGHT" when the
+// features they all lack are needed too, "all of them", or nothing (the example still names one).
 std::string pattern(const CompiledDomain& domain, const std::set<std::size_t>& failing_raw) {
   if (failing_raw.empty()) return {};
-  const std::vector<CompileJob>& jobs = domain.jobs;
-  std::set<std::uint32_t> ids;
-  for (std::size_t index : failing_raw) ids.insert(jobs[index].id);
-  std::set<std::string> common = define_set(domain, jobs[*failing_raw.begin()]);
-  for (std::size_t index : failing_raw) {
-    std::set<std::string> mine = define_set(domain, jobs[index]);
-    std::set<std::string> kept;
-    std::set_intersection(common.begin(), common.end(), mine.begin(), mine.end(), std::inserter(kept, kept.end()));
-    common = std::move(kept);
-  }
-  for (const CompileJob& job : jobs)
-    if (job.kind == JobKind::raw && !ids.count(job.id) && has_all(domain, job, common)) return {};
-  if (common.empty()) return "all of them";
-  return "those with " + join(std::vector<std::string>(common.begin(), common.end()), " and ");
+  std::set<std::uint32_t> ids, all;
+  for (std::size_t index : failing_raw) ids.insert(domain.jobs[index].id);
+  for (const CompileJob& job : domain.jobs)
+    if (job.kind == JobKind::raw) all.insert(job.id);
+  if (ids == all) return "all of them";
+  std::vector<std::pair<const RawFeature*, std::uint32_t>> with, without;
+  for (const auto& setting : shared_settings(domain.spec, ids))
+    (setting.first->valued() || setting.second != 0 ? with : without).push_back(setting);
+  std::vector<std::string> with_text, without_text;
+  for (const auto& [f, index] : with) with_text.push_back(feature_text(*f, index));
+  if (!with.empty() && exactly(with, ids, all)) return "those with " + join(with_text, " and ");
+  std::vector<std::pair<const RawFeature*, std::uint32_t>> both = with;
+  both.insert(both.end(), without.begin(), without.end());
+  if (without.empty() || !exactly(both, ids, all)) return {};
+  for (const auto& [f, index] : without)
+    without_text.push_back(f->name == f->define ? f->name : f->name + " [" + f->define + "]");
+  return (with.empty() ? "those " : "those with " + join(with_text, " and ") + ", ") + "without " +
+         join(without_text, " or ");
 }
 
 // In a "program" each permutation has two shaders: " (vertex shader)", " (fragment shader)" or

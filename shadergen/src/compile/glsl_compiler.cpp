@@ -137,6 +137,16 @@ std::string make_preamble(const GlslSource& source) {
   return preamble + source.kind_macros;
 }
 
+// glslang names the token at fault first ("'x' : undeclared identifier"); with no token it
+// writes "'' :  syntax error, ...": the empty quotes and the doubled space go.
+Diagnostic tidied(Diagnostic d) {
+  constexpr std::string_view kNoToken = "'' :";
+  if (std::string_view(d.message).substr(0, kNoToken.size()) != kNoToken) return d;
+  std::size_t start = d.message.find_first_not_of(' ', kNoToken.size());
+  d.message = start == std::string::npos ? std::string() : d.message.substr(start);
+  return d;
+}
+
 // glslang's log has lines like "ERROR: uber/lighting.frag:212: 'x' : undeclared identifier".
 Diagnostics parse_log(const std::string& log, const std::string& fallback_file) {
   static const std::regex located(R"(^(ERROR|WARNING): (.+?):(\d+): (.*)$)");
@@ -169,7 +179,7 @@ Diagnostics parse_log(const std::string& log, const std::string& fallback_file) 
   for (Diagnostic& d : out) {
     while (!d.message.empty() && d.message.back() == ' ') d.message.pop_back();
     bool noise = d.message == "'' : compilation terminated" || d.message == "'' : missing #endif";
-    if (!noise) real.push_back(d);
+    if (!noise) real.push_back(tidied(std::move(d)));
   }
   if (!real.empty()) return real;
   if (out.empty()) out.push_back(make_error(fallback_file, 0, "glslang failed without a message"));
