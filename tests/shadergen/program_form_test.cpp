@@ -60,9 +60,10 @@ TEST(ProgramForm, AFragmentInputTheVertexHalfDoesNotWriteIsRefused) {
   auto result = sgtest::build(spec, dir / "out", dir / "cache");
   ASSERT_FALSE(result.ok());
   ASSERT_EQ(result.errors().size(), 1u) << "raw 2 and raw 3 have one problem, said once";
+  // Said at the input's declaration in the fragment shader.
   EXPECT_EQ(result.errors()[0].to_string(),
-            spec.string() +
-                ": error: the fragment shader reads location 2 (\"in_fog\", 1 components), which the vertex shader "
+            (spec.parent_path() / "surface.frag").string() +
+                ":8: error: the fragment shader reads location 2 (\"in_fog\", 1 components), which the vertex shader "
                 "does not write (in 2 of 4 raw permutations (fragment shader): those with FOG; e.g. raw 2 with FOG)");
   EXPECT_FALSE(sgtest::fs::exists(dir / "out"));
 }
@@ -74,8 +75,8 @@ TEST(ProgramForm, ANarrowerVertexOutputIsRefused) {
   auto result = sgtest::build(spec, dir / "out", dir / "cache");
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.errors()[0].to_string(),
-            spec.string() +
-                ": error: the fragment shader reads location 0 (\"in_normal4\", 4 components), which the vertex "
+            (spec.parent_path() / "surface.frag").string() +
+                ":3: error: the fragment shader reads location 0 (\"in_normal4\", 4 components), which the vertex "
                 "shader writes with 3 (\"out_normal\") (in 4 of 4 raw permutations (fragment shader): all of them; "
                 "e.g. raw 0 (no defines))");
 }

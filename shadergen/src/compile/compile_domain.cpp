@@ -23,6 +23,7 @@
 #include "compile/glsl_compiler.h"
 #include "compile/program_check.h"
 #include "compile/shard_partition.h"
+#include "compile/source_scan.h"
 #include "compile/spirv_passes.h"
 #include "compile/toolchain.h"
 #include "spec/defines.h"
@@ -701,23 +702,27 @@ class DomainCompiler {
   Status check_program() {
     if (!d_.spec.program_vertex) return Ok{};
     std::map<std::string, std::set<std::size_t>> problems;  // -> fragment jobs
+    std::map<std::string, std::string> inputs;              // -> the fragment input it is about
     std::vector<std::string> order;
     for (const CompileJob& job : d_.jobs) {
       if (!job.vertex_half) continue;
       const auto& index = job.kind == JobKind::raw ? d_.raw_jobs : d_.optimised_jobs;
       std::size_t fragment = static_cast<std::size_t>(index[slot_of(job)]);
-      for (std::string& problem :
+      for (InterfaceProblem& problem :
            interface_problems(d_.blobs[static_cast<std::size_t>(job.blob)].reflection.outputs,
                               d_.blobs[static_cast<std::size_t>(d_.jobs[fragment].blob)].reflection.inputs)) {
-        auto [it, fresh] = problems.try_emplace(problem);
-        if (fresh) order.push_back(std::move(problem));
+        auto [it, fresh] = problems.try_emplace(problem.message);
+        if (fresh) order.push_back(problem.message), inputs[problem.message] = problem.input;
         it->second.insert(fragment);
       }
     }
     Diagnostics errors;
     for (const std::string& problem : order) {
       Diagnostic error = make_error(problem + " (" + where_it_occurs(d_, problems[problem], options_.verbose) + ")");
-      error.file = d_.spec.spec_path.string();
+      // At the input's declaration in the fragment shader, else at the spec.
+      std::optional<SourceLocation> at = input_declaration(inputs[problem], {d_.spec.uber.path}, d_.spec.include_dirs);
+      error.file = at ? at->file.string() : d_.spec.spec_path.string();
+      error.line = at ? at->line : 0;
       errors.push_back(std::move(error));
     }
     if (!errors.empty()) return errors;

@@ -13,7 +13,11 @@ namespace shadergen {
 // One problem per fragment input that no vertex output at its location feeds with at least as
 // many components (Vulkan lets an output carry more than the input reads), each naming the
 // location, the variable and both widths; the caller says which permutations have it.
-std::vector<std::string> interface_problems(const std::vector<VariableInfo>& vertex_outputs,
-                                            const std::vector<VariableInfo>& fragment_inputs);
+struct InterfaceProblem {
+  std::string message;
+  std::string input;  // the fragment input's name, to find its declaration
+};
+std::vector<InterfaceProblem> interface_problems(const std::vector<VariableInfo>& vertex_outputs,
+                                                 const std::vector<VariableInfo>& fragment_inputs);
 
 }  // namespace shadergen

@@ -1,5 +1,6 @@
 #include "compile/source_scan.h"
 
+#include <algorithm>
 #include <cctype>
 #include <deque>
 #include <set>
@@ -56,6 +57,20 @@ class Scanner {
   void queue(const std::filesystem::path& file) {
     std::filesystem::path name = file.lexically_normal();
     if (seen_.insert(name).second) pending_.push_back(name);
+  }
+
+  // The files in include order, each without comments.
+  std::vector<std::pair<std::filesystem::path, std::string>> texts() {
+    std::vector<std::pair<std::filesystem::path, std::string>> out;
+    while (!pending_.empty()) {
+      std::filesystem::path file = pending_.front();
+      pending_.pop_front();
+      auto text = read_file(file);
+      if (!text) continue;
+      out.emplace_back(file, without_comments(*text));
+      scan_file(file, out.back().second);  // queues its includes
+    }
+    return out;
   }
 
   SourceScan run() {
@@ -120,6 +135,26 @@ class Scanner {
 };
 
 }  // namespace
+
+std::optional<SourceLocation> input_declaration(const std::string& name,
+                                                const std::vector<std::filesystem::path>& files,
+                                                const std::vector<std::filesystem::path>& include_dirs) {
+  Scanner scanner(include_dirs);
+  for (const std::filesystem::path& file : files) scanner.queue(file);
+  for (const auto& [file, text] : scanner.texts()) {
+    int number = 0;
+    for (std::size_t start = 0; start <= text.size();) {
+      std::size_t end = text.find('\n', start);
+      if (end == std::string::npos) end = text.size();
+      ++number;
+      std::vector<std::string_view> ids = identifiers_in(std::string_view(text).substr(start, end - start));
+      if (std::find(ids.begin(), ids.end(), name) != ids.end() && std::find(ids.begin(), ids.end(), "in") != ids.end())
+        return SourceLocation{file, number};
+      start = end + 1;
+    }
+  }
+  return std::nullopt;
+}
 
 SourceScan scan_sources(const std::vector<std::filesystem::path>& files,
                         const std::vector<std::filesystem::path>& include_dirs) {

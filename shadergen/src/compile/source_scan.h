@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,5 +39,12 @@ struct SourceScan {
 // file that cannot be read is skipped: compiling it reports that with its line.
 SourceScan scan_sources(const std::vector<std::filesystem::path>& files,
                         const std::vector<std::filesystem::path>& include_dirs);
+
+// Where `files` (or what they include) first declare `name` as a stage input: the first line,
+// comments aside, holding both the identifier `name` and the qualifier `in`. nullopt when none
+// does (the input comes from a macro, say): the caller then names the spec.
+std::optional<SourceLocation> input_declaration(const std::string& name,
+                                                const std::vector<std::filesystem::path>& files,
+                                                const std::vector<std::filesystem::path>& include_dirs);
 
 }  // namespace shadergen
