@@ -106,6 +106,13 @@ struct OptimisedBit {
   std::string description;
 };
 
+// "optimised": {"ignore": [...]}: the optimised shader drawn for a raw ID leaves `feature` out
+// (off, or its first value) where `when` holds.
+struct IgnoreRule {
+  std::size_t feature = 0;  // index into DomainSpec::raw_features (a variant feature)
+  Rule when;                // over raw features; "true" when the spec gives none
+};
+
 // One raw feature as a variant sets it: `bits` within `mask` (a boolean's bit, or a valued
 // feature's field holding a value index).
 struct FeatureSetting {
@@ -192,6 +199,10 @@ struct DomainSpec {
   std::vector<ImpossibleSet> impossible;
   std::vector<OptimisedBit> optimised_bits;  // indexed by bit
   std::vector<OptimisedVariant> variants;
+  // The "ignore" form of the collapse (then optimised_bits and variants are empty): the
+  // optimised IDs are the distinct combinations of variant features the raw IDs reach once the
+  // ignored features are dropped, numbered in the order of their smallest raw ID (expand()).
+  std::vector<IgnoreRule> ignored;
   // False when the spec has no "optimised" section: no collapse, every non-pruned raw ID is
   // compiled as its own permutation and there is no lookup table.
   bool collapsed = true;
@@ -215,10 +226,16 @@ struct DomainSpec {
   std::uint32_t raw_bits() const;
   // How many raw IDs the bits can hold: 2^raw_bits(), up to 2^32.
   std::uint64_t raw_space() const { return std::uint64_t{1} << raw_bits(); }
-  // 2^optimised bits when collapsed (at most 65,536), else 0.
-  std::uint32_t optimised_count() const { return collapsed ? 1u << optimised_bits.size() : 0u; }
-  // True when the lookup table stores optimised IDs as 16-bit words (more than 8 optimised bits).
-  bool wide_table() const { return optimised_bits.size() > kMaxByteTableOptimisedBits; }
+  // True for the "ignore" form of the collapse: optimised IDs are numbered, not made of bits.
+  bool ignore_form() const { return collapsed && optimised_bits.empty(); }
+  // 2^optimised bits when collapsed (at most 65,536), else 0. In the ignore form the count is
+  // known only once expanded: then the bound, 65,536 (the plan holds the real count).
+  std::uint32_t optimised_count() const {
+    return !collapsed ? 0u : ignore_form() ? 1u << kMaxOptimisedBits : 1u << optimised_bits.size();
+  }
+  // True when the lookup table stores optimised IDs as 16-bit words (more than 8 optimised bits,
+  // and always in the ignore form).
+  bool wide_table() const { return ignore_form() || optimised_bits.size() > kMaxByteTableOptimisedBits; }
   std::vector<std::string> raw_feature_names() const;
   std::vector<ExpressionSymbol> raw_symbols() const;  // for rules over raw features
   std::vector<std::string> optimised_bit_names() const;

@@ -101,6 +101,11 @@ void add_features(Json& manifest, const DomainSpec& spec) {
   Json& optimised = manifest["optimised_bits"] = Json::array();
   for (const OptimisedBit& b : spec.optimised_bits)
     optimised.push_back(Json{{"name", b.name}, {"bit", b.bit}, {"when", b.when.text}});
+  if (spec.ignore_form()) {
+    Json& ignored = manifest["optimised_ignore"] = Json::array();
+    for (const IgnoreRule& rule : spec.ignored)
+      ignored.push_back(Json{{"feature", spec.raw_features[rule.feature].name}, {"when", rule.when.text}});
+  }
 }
 
 // A raw ID's values of the features of `kind`, in spec order (as the generated code gives them).

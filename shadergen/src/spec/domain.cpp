@@ -624,8 +624,16 @@ class DomainBuilder {
   }
 
   void read_optimised(const Value& optimised) {
-    reader_.only_keys(optimised, "optimised", {"bits", "variants"});
+    reader_.only_keys(optimised, "optimised", {"bits", "variants", "ignore"});
     if (spec_.raw_features.empty()) return;  // raw section already reported
+    if (const Value* ignore = optimised.find("ignore")) {
+      if (optimised.find("bits") || optimised.find("variants"))
+        reader_.error(*ignore, "optimised.ignore",
+                      "\"ignore\" replaces \"bits\" and \"variants\": a collapse takes one form or the other");
+      else
+        read_ignore(*ignore);
+      return;
+    }
     const Value* bits = reader_.member(optimised, "optimised", "bits", Type::array);
     if (!bits) return;
     if (bits->array.empty() || bits->array.size() > kMaxOptimisedBits) {
@@ -675,6 +683,50 @@ class DomainBuilder {
     if (!reader_.errors().empty()) return;
     for (auto& bit : by_bit) spec_.optimised_bits.push_back(std::move(*bit));
     read_variants(optimised);
+  }
+
+  // "ignore": [{"feature": NAME, "when": RULE}, ...]: what the optimised shaders leave out.
+  void read_ignore(const Value& ignore) {
+    if (ignore.type != Type::array) {
+      reader_.error(ignore, "optimised.ignore",
+                    std::string("expected an array, found ") + json::type_name(ignore.type));
+      return;
+    }
+    if (!reader_.within_limit(ignore, "optimised.ignore", kMaxVariants, "rules")) return;
+    auto symbols = spec_.raw_symbols();
+    for (std::size_t i = 0; i < ignore.array.size(); ++i) {
+      const Value& item = ignore.array[i];
+      std::string where = SpecReader::index("optimised.ignore", i);
+      if (item.type != Type::object) {
+        reader_.error(item, where, "expected an object with \"feature\" and \"when\"");
+        continue;
+      }
+      reader_.only_keys(item, where, {"feature", "when", "description"});
+      std::string name = reader_.string_member(item, where, "feature");
+      auto found = std::find_if(spec_.raw_features.begin(), spec_.raw_features.end(),
+                                [&](const RawFeature& f) { return f.name == name; });
+      IgnoreRule rule;
+      if (item.find("when")) {
+        auto when = reader_.rule_member(item, where, "when", symbols, "raw features");
+        if (!when) continue;
+        rule.when = std::move(*when);
+      } else {
+        rule.when = Rule{*parse_expression("true", symbols), "true", item.line};
+      }
+      if (!item.find("feature") || item.find("feature")->type != Type::string) continue;
+      if (found == spec_.raw_features.end()) {
+        reader_.error(*item.find("feature"), where + ".feature", "unknown raw feature \"" + name + "\"");
+        continue;
+      }
+      if (!found->is_variant()) {
+        reader_.error(*item.find("feature"), where + ".feature",
+                      name + " is a " + kind_phrase(found->kind) +
+                          ": it is never compiled in, so an optimised shader has nothing to leave out");
+        continue;
+      }
+      rule.feature = static_cast<std::size_t>(found - spec_.raw_features.begin());
+      spec_.ignored.push_back(std::move(rule));
+    }
   }
 
   void read_variants(const Value& optimised) {

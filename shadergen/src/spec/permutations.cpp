@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 #include "shadergen/registry.h"
@@ -55,7 +56,8 @@ RawPermutation classify(const DomainSpec& spec, std::uint32_t id) {
   raw.pruned_by = first_impossible_rule(spec, id);
   raw.unvalued = first_unvalued_feature(spec, id);
   raw.pruned = raw.pruned_by >= 0 || raw.unvalued >= 0;
-  raw.optimised = spec.collapsed ? apply_rules(spec, id) : id;
+  // The ignore form numbers its optimised IDs once every raw ID is known (expand()).
+  raw.optimised = !spec.collapsed ? id : spec.ignore_form() ? 0 : apply_rules(spec, id);
   return raw;
 }
 
@@ -193,11 +195,59 @@ const OptimisedPermutation* PermutationPlan::find_optimised(std::uint32_t id) co
   return at ? &optimised[*at] : nullptr;
 }
 
+namespace {
+
+// The raw combination the optimised shader of `raw_id` is compiled with in the ignore form: its
+// variant features less those an ignore rule drops (a field cleared: off, or the first value).
+std::uint32_t kept_features(const DomainSpec& spec, std::uint32_t raw_id) {
+  std::uint32_t kept = raw_id & spec.variant_mask();
+  for (const IgnoreRule& rule : spec.ignored)
+    if (rule.when.expression.evaluate(raw_id)) kept &= ~spec.raw_features[rule.feature].mask();
+  return kept;
+}
+
+// The ignore form: one optimised ID per distinct kept combination, in the order of the smallest
+// raw ID reaching it (the raw IDs ascend), so no optimised ID is unreachable.
+Status number_ignore_form(const DomainSpec& spec, PermutationPlan& plan) {
+  std::map<std::uint32_t, std::uint32_t> ids;  // kept combination -> optimised ID
+  for (RawPermutation& r : plan.raw) {
+    if (r.pruned) continue;
+    const std::uint32_t kept = kept_features(spec, r.id);
+    auto [it, fresh] = ids.try_emplace(kept, static_cast<std::uint32_t>(plan.optimised.size()));
+    if (fresh) {
+      if (plan.optimised.size() == std::size_t{1} << kMaxOptimisedBits)
+        return make_error(spec.spec_path.string(), 0,
+                          "the \"ignore\" collapse keeps more than " + std::to_string(1u << kMaxOptimisedBits) +
+                              " distinct combinations; ignore more features, or use \"bits\"");
+      if (int rule = first_impossible_rule(spec, kept); rule >= 0)
+        return make_error(spec.spec_path.string(), spec.impossible[static_cast<std::size_t>(rule)].when.line,
+                          "raw ID " + std::to_string(r.id) + " (" + describe_raw(spec, r.id) +
+                              ") would be drawn with " + describe_raw(spec, kept) +
+                              " once its ignored features are dropped, which the impossible rule \"" +
+                              spec.impossible[static_cast<std::size_t>(rule)].when.text + "\" prunes");
+      OptimisedPermutation o;
+      o.id = it->second;
+      o.raw_equivalent = kept;
+      o.defines = raw_defines(spec, kept);
+      plan.optimised.push_back(std::move(o));
+    }
+    r.optimised = it->second;
+    ++plan.optimised[it->second].raw_mapped;
+  }
+  return Ok{};
+}
+
+}  // namespace
+
 Result<PermutationPlan> expand(const DomainSpec& spec) {
   PermutationPlan plan;
   auto raw = raw_permutations(spec);
   if (!raw) return std::move(raw).take_errors();
   plan.raw = std::move(raw).value();
+  if (spec.ignore_form()) {
+    if (Status numbered = number_ignore_form(spec, plan); !numbered) return std::move(numbered).take_errors();
+    return plan;
+  }
   Diagnostics errors;
   for (std::uint32_t id : optimised_ids(spec, plan.raw)) {
     auto optimised = optimised_permutation(spec, id);
@@ -246,13 +296,23 @@ void lut_heading(std::ostringstream& out, const DomainSpec& spec, const Permutat
   out << "Domain " << spec.name << ": " << spec.raw_space() << " raw IDs";
   if (spec.listed())
     out << " (" << spec.raw_bits() << " bits), " << plan.raw.size() << " listed in " << spec.variants_path.string();
-  if (spec.collapsed)
+  if (spec.ignore_form())
+    out << " -> " << plan.optimised.size() << " optimised IDs (the reachable combinations, ignored features dropped)";
+  else if (spec.collapsed)
     out << " -> " << spec.optimised_count() << " optimised IDs" << (spec.listed() ? ", " : "")
         << (spec.listed() ? std::to_string(plan.optimised.size()) + " built" : "");
   else
     out << ", not collapsed (no \"optimised\" section): every compiled raw ID is its own permutation";
   out << "\n\nraw bits:       " << raw_bit_legend(spec);
   if (!spec.collapsed) return;
+  if (spec.ignore_form()) {
+    out << "\nignored:        ";
+    for (std::size_t i = 0; i < spec.ignored.size(); ++i)
+      out << (i ? "; " : "") << spec.raw_features[spec.ignored[i].feature].name << " when "
+          << spec.ignored[i].when.text;
+    if (spec.ignored.empty()) out << "(nothing: every combination of variant features is its own optimised ID)";
+    return;
+  }
   auto optimised_names = spec.optimised_bit_names();
   out << "\noptimised bits: ";
   for (std::size_t i = 0; i < optimised_names.size(); ++i) out << (i ? ", " : "") << i << "=" << optimised_names[i];
@@ -396,13 +456,23 @@ std::string format_explanation(const DomainSpec& spec, const PermutationPlan& pl
     out << "\n\nnot collapsed: raw ID " << raw_id << " is its own permutation\n";
     return out.str();
   }
-  out << "\n\noptimised bits:\n";
-  for (const OptimisedBit& bit : spec.optimised_bits) {
-    bool value = bit.when.expression.evaluate(raw_id);
-    out << "  bit " << bit.bit << "  " << (value ? "[x] " : "[ ] ") << bit.name << "  because " << (value ? "" : "not ")
-        << "(" << bit.when.expression.to_string() << ")\n";
+  if (spec.ignore_form()) {
+    out << "\n\nignored:\n";
+    for (const IgnoreRule& rule : spec.ignored) {
+      bool value = rule.when.expression.evaluate(raw_id);
+      out << "  " << (value ? "[x] " : "[ ] ") << spec.raw_features[rule.feature].name << "  because "
+          << (value ? "" : "not ") << "(" << rule.when.expression.to_string() << ")\n";
+    }
+    out << "\n-> optimised ID " << raw.optimised;
+  } else {
+    out << "\n\noptimised bits:\n";
+    for (const OptimisedBit& bit : spec.optimised_bits) {
+      bool value = bit.when.expression.evaluate(raw_id);
+      out << "  bit " << bit.bit << "  " << (value ? "[x] " : "[ ] ") << bit.name << "  because "
+          << (value ? "" : "not ") << "(" << bit.when.expression.to_string() << ")\n";
+    }
+    out << "\n-> optimised ID " << raw.optimised << " = " << describe_bits(optimised_names, raw.optimised);
   }
-  out << "\n-> optimised ID " << raw.optimised << " = " << describe_bits(optimised_names, raw.optimised);
   const OptimisedPermutation* built = plan.find_optimised(raw.optimised);
   if (!built) {
     out << "\n   not built: no listed raw ID maps to it\n";
