@@ -37,6 +37,15 @@ function(step_done what)
   set(step_start ${now} PARENT_SCOPE)
 endfunction()
 
+# Disabling find_package(Vulkan) leaves the headers in /usr/include: fail if any object of the
+# Ninja build in <dir> read one (`ninja -t deps`: every header each object read).
+function(no_vulkan_header_in dir)
+  run(${CMAKE_COMMAND} --build "${dir}" -- -t deps)
+  if(last_output MATCHES "[^\n]*/vulkan/vulkan[_a-z0-9]*\\.h")
+    message(FATAL_ERROR "${dir}: a build that must not need Vulkan read ${CMAKE_MATCH_0}")
+  endif()
+endfunction()
+
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 set(prefix "${WORK_DIR}/prefix")
@@ -60,7 +69,8 @@ if(SHADERGEN_ONLY)
   endif()
   step_done("shadergen-only configure without Vulkan")
   run(${CMAKE_COMMAND} --build "${SHADERGEN_BUILD_DIR}" --parallel 2)
-  step_done("shadergen-only build")
+  no_vulkan_header_in("${SHADERGEN_BUILD_DIR}")
+  step_done("shadergen-only build, no Vulkan header read")
   set(BUILD_DIR "${SHADERGEN_BUILD_DIR}")
   set(consumer_options -DCONSUMER_VULKAN=OFF -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON)
 else()
@@ -83,6 +93,10 @@ run(${CMAKE_CTEST_COMMAND} --build-and-test "${SOURCE_DIR}/tests/consumer" "${co
                     "-DCMAKE_BUILD_TYPE=Release" ${consumer_options}
     --test-command consumer_app)
 step_done("consumer configure + build + run (${consumer_options})")
+if(SHADERGEN_ONLY)
+  no_vulkan_header_in("${consumer_build}")
+  step_done("the consumer read no Vulkan header")
+endif()
 
 if(SHADERGEN_ONLY)
   # The same install, asked for the vulkan component where there is no Vulkan: the configure
