@@ -30,13 +30,6 @@ const std::string kMaterial = R"({
 }
 )";
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the spec";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
 PermutationPlan expanded(const std::string& text) {
   auto spec = parse_domain(text, "spec.json");
   EXPECT_TRUE(spec.ok()) << (spec.ok() ? "" : spec.errors().front().to_string());
@@ -65,37 +58,35 @@ TEST(IgnoreCollapse, TheOptimisedIdsAreTheReachableCombinationsBySmallestRawId) 
 
 TEST(IgnoreCollapse, WithNothingIgnoredEachVariantCombinationIsOneOptimisedId) {
   PermutationPlan plan =
-      expanded(replace(kMaterial, R"({ "feature": "LIGHT_COUNT", "when": "SHADING == UNLIT" })", ""));
+      expanded(sgtest::replace_once(kMaterial, R"({ "feature": "LIGHT_COUNT", "when": "SHADING == UNLIT" })", ""));
   EXPECT_EQ(plan.optimised.size(), 12u);  // 2 x 3 x 2; FOG's bit is dropped
   EXPECT_EQ(plan.raw[16].optimised, plan.raw[0].optimised);
 }
 
-struct ErrorCase {
-  const char* name;
-  std::string text;
-  std::string expected;
-};
-void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
-
-class IgnoreErrorTable : public ::testing::TestWithParam<ErrorCase> {};
+class IgnoreErrorTable : public ::testing::TestWithParam<sgtest::SpecErrorCase> {};
 
 TEST_P(IgnoreErrorTable, ExactDiagnostic) { EXPECT_EQ(sgtest::first_spec_error(GetParam().text), GetParam().expected); }
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, IgnoreErrorTable,
     ::testing::Values(
-        ErrorCase{"both_forms",
-                  replace(kMaterial, "\"optimised\": { \"ignore\"", "\"optimised\": { \"bits\": [], \"ignore\""),
-                  "spec.json:13:40: error: optimised.ignore: \"ignore\" replaces \"bits\" and \"variants\": a collapse "
-                  "takes one form or the other"},
-        ErrorCase{"unknown_feature", replace(kMaterial, "\"feature\": \"LIGHT_COUNT\"", "\"feature\": \"LIGHTS\""),
-                  "spec.json:13:43: error: optimised.ignore[0].feature: unknown raw feature \"LIGHTS\""},
-        ErrorCase{"a_constant", replace(kMaterial, "\"feature\": \"LIGHT_COUNT\"", "\"feature\": \"FOG\""),
-                  "spec.json:13:43: error: optimised.ignore[0].feature: FOG is a specialization constant: it is never "
-                  "compiled in, so an optimised shader has nothing to leave out"},
-        ErrorCase{"bad_rule", replace(kMaterial, "\"SHADING == UNLIT\"", "\"SHADING == MATTE\""),
-                  "spec.json:13:66: error: optimised.ignore[0].when: 'SHADING' has no value MATTE (values: UNLIT, "
-                  "PBR) in \"SHADING == MATTE\" at column 12 (rules here name raw features)"}));
+        sgtest::SpecErrorCase{
+            "both_forms",
+            sgtest::replace_once(kMaterial, "\"optimised\": { \"ignore\"", "\"optimised\": { \"bits\": [], \"ignore\""),
+            "spec.json:13:40: error: optimised.ignore: \"ignore\" replaces \"bits\" and \"variants\": a collapse "
+            "takes one form or the other"},
+        sgtest::SpecErrorCase{
+            "unknown_feature",
+            sgtest::replace_once(kMaterial, "\"feature\": \"LIGHT_COUNT\"", "\"feature\": \"LIGHTS\""),
+            "spec.json:13:43: error: optimised.ignore[0].feature: unknown raw feature \"LIGHTS\""},
+        sgtest::SpecErrorCase{
+            "a_constant", sgtest::replace_once(kMaterial, "\"feature\": \"LIGHT_COUNT\"", "\"feature\": \"FOG\""),
+            "spec.json:13:43: error: optimised.ignore[0].feature: FOG is a specialization constant: it is never "
+            "compiled in, so an optimised shader has nothing to leave out"},
+        sgtest::SpecErrorCase{
+            "bad_rule", sgtest::replace_once(kMaterial, "\"SHADING == UNLIT\"", "\"SHADING == MATTE\""),
+            "spec.json:13:66: error: optimised.ignore[0].when: 'SHADING' has no value MATTE (values: UNLIT, "
+            "PBR) in \"SHADING == MATTE\" at column 12 (rules here name raw features)"}));
 
 }  // namespace
 }  // namespace shadergen

@@ -36,13 +36,6 @@ const std::string kBase = R"({
 }
 )";
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base spec";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
 DomainSpec parsed(const std::string& text) {
   auto result = parse_domain(text, "dir/spec.json");
   EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.errors().front().to_string());
@@ -66,8 +59,8 @@ TEST(Kinds, ConstantIdsArePinnedOrTheSmallestFreeInSpecOrder) {
   EXPECT_EQ(spec.raw_features[0].constant_id, 0u);
   EXPECT_EQ(spec.raw_features[2].constant_id, 1u);
   // FOG unpinned after TAPS pins 0: FOG takes 1, the smallest free ID.
-  spec = parsed(replace(kBase, "\"values\": [1, 4, 8], \"kind\": \"specialization\"",
-                        "\"values\": [1, 4, 8], \"kind\": \"specialization\", \"constant_id\": 0"));
+  spec = parsed(sgtest::replace_once(kBase, "\"values\": [1, 4, 8], \"kind\": \"specialization\"",
+                                     "\"values\": [1, 4, 8], \"kind\": \"specialization\", \"constant_id\": 0"));
   EXPECT_EQ(spec.raw_features[2].constant_id, 0u);
   EXPECT_EQ(spec.raw_features[0].constant_id, 1u);
 }
@@ -77,63 +70,69 @@ TEST(Kinds, OnlyVariantsMakeDefines) {
   // Raw 0b11111 = FOG, SOFT, TAPS=8? (index 3 holds no value), SHADING=PBR: only SOFT is a define.
   EXPECT_EQ(raw_defines(spec, 0b10011u), (std::vector<std::string>{"SOFT"}));
   EXPECT_EQ(raw_defines(spec, 0b10001u), (std::vector<std::string>{}));
-  DomainSpec valued = parsed(replace(kBase, "\"format\": 1,", "\"format\": 1, \"define_style\": \"value\","));
+  DomainSpec valued =
+      parsed(sgtest::replace_once(kBase, "\"format\": 1,", "\"format\": 1, \"define_style\": \"value\","));
   EXPECT_EQ(raw_defines(valued, 0u), (std::vector<std::string>{"SOFT=0"}));
   EXPECT_EQ(raw_defines(valued, 0b10u), (std::vector<std::string>{"SOFT=1"}));
 }
 
-struct ErrorCase {
-  const char* name;
-  std::string text;
-  std::string expected;
-};
-void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
-
-class KindErrorTable : public ::testing::TestWithParam<ErrorCase> {};
+class KindErrorTable : public ::testing::TestWithParam<sgtest::SpecErrorCase> {};
 
 TEST_P(KindErrorTable, ExactDiagnostic) { EXPECT_EQ(sgtest::first_spec_error(GetParam().text), GetParam().expected); }
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, KindErrorTable,
     ::testing::Values(
-        ErrorCase{"unknown_kind", replace(kBase, "\"kind\": \"variant\"", "\"kind\": \"dynamic\""),
-                  "spec.json:8:61: error: raw.features[1].kind: unknown kind \"dynamic\" (expected variant, "
-                  "specialization or branch)"},
-        ErrorCase{"constant_id_of_a_variant",
-                  replace(kBase, "\"kind\": \"variant\"", "\"kind\": \"variant\", \"constant_id\": 3"),
-                  "spec.json:8:87: error: raw.features[1].constant_id: only a specialization feature has a "
-                  "constant_id (this one is a variant)"},
-        ErrorCase{"constant_id_twice",
-                  replace(replace(kBase, "\"HAS_FOG\", \"kind\": \"specialization\"",
-                                  "\"HAS_FOG\", \"kind\": \"specialization\", \"constant_id\": 5"),
-                          "[1, 4, 8], \"kind\": \"specialization\"",
-                          "[1, 4, 8], \"kind\": \"specialization\", \"constant_id\": 5"),
-                  "spec.json:9:115: error: raw.features[2].constant_id: constant_id 5 is already taken by feature "
-                  "FOG"},
-        ErrorCase{"branch_without_its_block", replace(kBase, "\"branch_block\": { \"set\": 1, \"binding\": 2 },", ""),
-                  "spec.json:1:1: error: spec: feature SHADING is a run-time branch: its value is read from a "
-                  "uniform block, so the spec needs \"branch_block\": {\"set\": S, \"binding\": B}"},
-        ErrorCase{"block_without_a_branch",
-                  replace(kBase, "[\"UNLIT\", \"PBR\"], \"kind\": \"branch\"", "[\"UNLIT\", \"PBR\"]"),
-                  "spec.json:14:19: error: branch_block: no feature is of kind branch; remove the block or make one "
-                  "a branch"},
-        ErrorCase{"optimised_bit_on_a_constant", replace(kBase, "\"when\": \"SOFT\"", "\"when\": \"SOFT || FOG\""),
-                  "spec.json:16:48: error: optimised.bits[0].when: optimised bit X names feature FOG, a "
-                  "specialization constant: the collapse is over variant features only"},
-        ErrorCase{"variant_compiles_a_branch",
-                  replace(kBase, "\"raw_features\": [\"SOFT\"]", "\"raw_features\": [\"SOFT\", \"SHADING=PBR\"]"),
-                  "spec.json:17:59: error: optimised.variants[0].raw_features[1]: SHADING is a run-time branch: a "
-                  "variant compiles variant features only (its value travels beside the optimised ID)"},
-        ErrorCase{"unknown_define_style",
-                  replace(kBase, "\"format\": 1,", "\"format\": 1, \"define_style\": \"always\","),
-                  "spec.json:2:32: error: define_style: unknown define style \"always\" (expected presence or value)"},
-        ErrorCase{"unread_not_allowed",
-                  replace(kBase, "\"kind\": \"variant\"", "\"kind\": \"variant\", \"unread\": true"),
-                  "spec.json:8:82: error: raw.features[1].unread: expected \"allowed\", found a boolean"},
-        ErrorCase{"identifier_value_two_indices",
-                  replace(kBase, "\"values\": [1, 4, 8]", "\"values\": [\"LOW\", \"PBR\", \"UNLIT\"]"),
-                  "spec.json:10:48: error: raw.features[3].values: value UNLIT is declared to the shader as 0 for "
-                  "SHADING and as 2 for TAPS"}));
+        sgtest::SpecErrorCase{
+            "unknown_kind", sgtest::replace_once(kBase, "\"kind\": \"variant\"", "\"kind\": \"dynamic\""),
+            "spec.json:8:61: error: raw.features[1].kind: unknown kind \"dynamic\" (expected variant, "
+            "specialization or branch)"},
+        sgtest::SpecErrorCase{
+            "constant_id_of_a_variant",
+            sgtest::replace_once(kBase, "\"kind\": \"variant\"", "\"kind\": \"variant\", \"constant_id\": 3"),
+            "spec.json:8:87: error: raw.features[1].constant_id: only a specialization feature has a "
+            "constant_id (this one is a variant)"},
+        sgtest::SpecErrorCase{
+            "constant_id_twice",
+            sgtest::replace_once(sgtest::replace_once(kBase, "\"HAS_FOG\", \"kind\": \"specialization\"",
+                                                      "\"HAS_FOG\", \"kind\": \"specialization\", \"constant_id\": 5"),
+                                 "[1, 4, 8], \"kind\": \"specialization\"",
+                                 "[1, 4, 8], \"kind\": \"specialization\", \"constant_id\": 5"),
+            "spec.json:9:115: error: raw.features[2].constant_id: constant_id 5 is already taken by feature "
+            "FOG"},
+        sgtest::SpecErrorCase{
+            "branch_without_its_block",
+            sgtest::replace_once(kBase, "\"branch_block\": { \"set\": 1, \"binding\": 2 },", ""),
+            "spec.json:1:1: error: spec: feature SHADING is a run-time branch: its value is read from a "
+            "uniform block, so the spec needs \"branch_block\": {\"set\": S, \"binding\": B}"},
+        sgtest::SpecErrorCase{
+            "block_without_a_branch",
+            sgtest::replace_once(kBase, "[\"UNLIT\", \"PBR\"], \"kind\": \"branch\"", "[\"UNLIT\", \"PBR\"]"),
+            "spec.json:14:19: error: branch_block: no feature is of kind branch; remove the block or make one "
+            "a branch"},
+        sgtest::SpecErrorCase{"optimised_bit_on_a_constant",
+                              sgtest::replace_once(kBase, "\"when\": \"SOFT\"", "\"when\": \"SOFT || FOG\""),
+                              "spec.json:16:48: error: optimised.bits[0].when: optimised bit X names feature FOG, a "
+                              "specialization constant: the collapse is over variant features only"},
+        sgtest::SpecErrorCase{
+            "variant_compiles_a_branch",
+            sgtest::replace_once(kBase, "\"raw_features\": [\"SOFT\"]",
+                                 "\"raw_features\": [\"SOFT\", \"SHADING=PBR\"]"),
+            "spec.json:17:59: error: optimised.variants[0].raw_features[1]: SHADING is a run-time branch: a "
+            "variant compiles variant features only (its value travels beside the optimised ID)"},
+        sgtest::SpecErrorCase{
+            "unknown_define_style",
+            sgtest::replace_once(kBase, "\"format\": 1,", "\"format\": 1, \"define_style\": \"always\","),
+            "spec.json:2:32: error: define_style: unknown define style \"always\" (expected presence or value)"},
+        sgtest::SpecErrorCase{
+            "unread_not_allowed",
+            sgtest::replace_once(kBase, "\"kind\": \"variant\"", "\"kind\": \"variant\", \"unread\": true"),
+            "spec.json:8:82: error: raw.features[1].unread: expected \"allowed\", found a boolean"},
+        sgtest::SpecErrorCase{
+            "identifier_value_two_indices",
+            sgtest::replace_once(kBase, "\"values\": [1, 4, 8]", "\"values\": [\"LOW\", \"PBR\", \"UNLIT\"]"),
+            "spec.json:10:48: error: raw.features[3].values: value UNLIT is declared to the shader as 0 for "
+            "SHADING and as 2 for TAPS"}));
 
 TEST(KindDeclarations, SpecializationConstantsIdentifierValuesAndTheBranchBlock) {
   DomainSpec spec = parsed(kBase);
@@ -151,10 +150,10 @@ TEST(KindDeclarations, SpecializationConstantsIdentifierValuesAndTheBranchBlock)
 }
 
 TEST(KindDeclarations, ValueStyleVariantsDefineTheirIdentifiersAndReadableBooleans) {
-  DomainSpec spec =
-      parsed(replace(replace(replace(kBase, "\"format\": 1,", "\"format\": 1, \"define_style\": \"value\","),
-                             "[\"UNLIT\", \"PBR\"], \"kind\": \"branch\"", "[\"UNLIT\", \"PBR\"]"),
-                     "\"branch_block\": { \"set\": 1, \"binding\": 2 },", ""));
+  DomainSpec spec = parsed(sgtest::replace_once(
+      sgtest::replace_once(sgtest::replace_once(kBase, "\"format\": 1,", "\"format\": 1, \"define_style\": \"value\","),
+                           "[\"UNLIT\", \"PBR\"], \"kind\": \"branch\"", "[\"UNLIT\", \"PBR\"]"),
+      "\"branch_block\": { \"set\": 1, \"binding\": 2 },", ""));
   KindDeclarations kinds = kind_declarations(spec);
   EXPECT_EQ(kinds.macros, "#define UNLIT 0\n#define PBR 1\n");
   EXPECT_EQ(boolean_value_defines({"SOFT=1", "SHADING=PBR"}, kinds),
@@ -192,7 +191,7 @@ const std::string kReadsAll =
 TEST_F(FeatureReads, EveryDefineReadAsAnExpressionPasses) { EXPECT_EQ(first(check(kBase, kReadsAll)), "(none)"); }
 
 TEST_F(FeatureReads, AMisspeltDefineIsNamedWithTheClosestIdentifierTheSourcesUse) {
-  std::string spec = replace(kBase, "\"HAS_FOG\"", "\"HAS_FOGG\"");
+  std::string spec = sgtest::replace_once(kBase, "\"HAS_FOG\"", "\"HAS_FOGG\"");
   EXPECT_EQ(first(check(spec, kReadsAll)),
             (dir_ / "spec.json").string() +
                 ":7:44: error: feature FOG: no source of its permutations reads its define HAS_FOGG; did you mean "
@@ -210,9 +209,10 @@ TEST_F(FeatureReads, ADefineNamedOnlyInACommentIsUnreadUnlessAllowed) {
   EXPECT_EQ(first(check(kBase, shader)),
             (dir_ / "spec.json").string() +
                 ":8:45: error: feature SOFT: no source of its permutations reads its define SOFT");
-  EXPECT_EQ(
-      first(check(replace(kBase, "\"kind\": \"variant\"", "\"kind\": \"variant\", \"unread\": \"allowed\""), shader)),
-      "(none)");
+  EXPECT_EQ(first(check(
+                sgtest::replace_once(kBase, "\"kind\": \"variant\"", "\"kind\": \"variant\", \"unread\": \"allowed\""),
+                shader)),
+            "(none)");
 }
 
 TEST_F(FeatureReads, IfdefOnASpecializationConstantIsAnErrorAtItsLine) {

@@ -1,5 +1,7 @@
 #include "test_helpers.h"
 
+#include <gtest/gtest.h>
+
 #include <unistd.h>
 
 #include <atomic>
@@ -120,6 +122,17 @@ std::string first_spec_error(const std::string& text) {
   if (result.ok()) return "(no error)";
   return result.errors().front().to_string();
 }
+
+std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+  auto at = text.find(from);
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "test bug: '" << from << "' is not in the spec";
+    return text;
+  }
+  return text.replace(at, from.size(), to);
+}
+
+void PrintTo(const SpecErrorCase& c, std::ostream* os) { *os << c.name; }
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

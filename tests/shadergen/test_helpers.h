@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -93,6 +94,19 @@ ProcessResult spirv_val(const fs::path& blob, const std::string& target_env = "v
 
 // The first diagnostic of parse_domain(text, "spec.json") as printed, or "(no error)".
 std::string first_spec_error(const std::string& text);
+
+// `text` with its first `from` replaced by `to`, for table cases that break one thing in a
+// valid spec. A `from` the text lacks is a bug in the test: it fails the test.
+std::string replace_once(std::string text, const std::string& from, const std::string& to);
+
+// One case of a spec error table: a broken spec and the exact first diagnostic it gives.
+struct SpecErrorCase {
+  const char* name;
+  std::string text;
+  std::string expected;
+};
+// Names the case in test names and messages instead of printing the struct's bytes.
+void PrintTo(const SpecErrorCase& c, std::ostream* os);
 
 bool contains(const std::string& text, const std::string& part);
 // Non-overlapping occurrences of `part` in `text`.
