@@ -46,6 +46,9 @@ TEST(GeneratedRegistry, LookupsByRawIdAreChecked) {
   static_assert(split_second::optimised_id(RawId(69)) == split_second::OptimisedId(8));
   static_assert(!split_second::optimised_id(RawId(3)) && !split_second::optimised_id(RawId(128)));
   static_assert(split_second::is_valid_raw_id(RawId(127 - 1)) && !split_second::is_valid_raw_id(RawId(127)));
+  // docs/lut.md's example: raw and optimised SKY are different bits of different types.
+  static_assert((RawId(0) | split_second::raw_bit::SKY) == RawId(32));
+  static_assert((split_second::OptimisedId(0) | split_second::optimised_bit::SKY) == split_second::OptimisedId(4));
   const registry_lookups::Counts counts = registry_lookups::expect_checked_lookups(
       split_second::registry(), {split_second::kRawCount, split_second::kRawPruned, split_second::kRawToOptimised,
                                  split_second::is_valid_raw_id, split_second::optimised_id});
