@@ -274,7 +274,8 @@ TEST_F(ToyBuild, GeneratedHeaderCarriesBannerTableAndStaticAssert) {
                                "true, false, true, false, true,\n"))
       << header;
   // Raw and optimised bits and IDs are types of their own (shadergen/registry.h).
-  EXPECT_TRUE(sgtest::contains(header, "using RawId = shadergen::RawId;\nusing OptimisedId = shadergen::OptimisedId;\n"));
+  EXPECT_TRUE(
+      sgtest::contains(header, "using RawId = shadergen::RawId;\nusing OptimisedId = shadergen::OptimisedId;\n"));
   EXPECT_TRUE(sgtest::contains(header, "inline constexpr RawBits SOFT{1u << 2};  // #define SOFT_PARTICLES\n"));
   EXPECT_TRUE(sgtest::contains(header, "inline constexpr OptimisedBits SAMPLED{1u << 1};\n"));
   // Every lookup by raw ID is checked before it indexes a table, and raw_id() checks too.
