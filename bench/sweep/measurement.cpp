@@ -38,8 +38,8 @@ Measurement finish(const Run& run, const RendererOptions& options, std::uint32_t
   m.primitive = run.renderer->tile_primitive();
   m.culled = run.renderer->culled_batches();
   const std::vector<std::uint8_t> ids = run.renderer->raw_tile_ids();
-  m.sky_tiles = static_cast<std::uint32_t>(
-      std::count_if(ids.begin(), ids.end(), [](std::uint8_t id) { return (id & split_second::raw_bit::SKY) != 0; }));
+  m.sky_tiles = static_cast<std::uint32_t>(std::count_if(
+      ids.begin(), ids.end(), [](std::uint8_t id) { return (id & split_second::raw_bit::SKY.value()) != 0; }));
   const RgbaImage naive = run.renderer->read_naive();
   m.equivalence = app::compare_frames(run.renderer->read_classified(), naive);
   m.dynamic_equivalence = app::compare_frames(run.renderer->read_dynamic(), naive);

@@ -8,6 +8,8 @@
 #include "tilelight/gltf/load_gltf.h"
 #include "tilelight_testing/test_support.h"
 
+#include "tilelight_testing/raw_bit_masks.h"
+
 #include <split_second_shaders.h>
 #include <nlohmann/json.hpp>
 
@@ -20,7 +22,7 @@ namespace tilelight::test {
 namespace {
 
 namespace fs = std::filesystem;
-namespace bit = split_second::raw_bit;
+namespace bit = tilelight::raw_bit_masks;
 const fs::path kFixtures = TILELIGHT_GLTF_FIXTURES;
 
 constexpr double kYfov = 0.9;  // radians: about 51.6 degrees

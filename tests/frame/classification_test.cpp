@@ -6,6 +6,8 @@
 #include "tilelight_testing/renderer_test_seam.h"
 #include "tilelight_testing/test_support.h"
 
+#include "tilelight_testing/raw_bit_masks.h"
+
 #include <split_second_shaders.h>
 
 #include <fmt/format.h>
@@ -17,7 +19,7 @@
 namespace tilelight::test {
 namespace {
 
-namespace bit = split_second::raw_bit;
+namespace bit = tilelight::raw_bit_masks;
 
 class Classification : public VulkanTest {
  protected:

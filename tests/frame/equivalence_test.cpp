@@ -111,7 +111,7 @@ TEST_P(Equivalence, ClassifiedEqualsNaivePerPixel) {
     // One sample per pixel never differs from itself: no tile may need the MSAA-edge shader.
     const std::vector<std::uint8_t> ids = renderer.raw_tile_ids();
     EXPECT_EQ(std::count_if(ids.begin(), ids.end(),
-                            [](std::uint8_t id) { return (id & split_second::raw_bit::MSAA_EDGE) != 0; }),
+                            [](std::uint8_t id) { return (id & split_second::raw_bit::MSAA_EDGE.value()) != 0; }),
               0);
   }
   // Every tile drawn exactly once: the per-class tile counts add up to the grid.

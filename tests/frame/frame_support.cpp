@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tilelight_testing/raw_bit_masks.h"
+
 #include <split_second_shaders.h>
 
 #include <fmt/format.h>
@@ -82,9 +84,9 @@ FrameComparison compare(const RgbaImage& classified, const RgbaImage& naive, dou
 std::set<std::uint32_t> optimised_ids_of(const std::vector<std::uint8_t>& raw_ids) {
   std::set<std::uint32_t> ids;
   for (std::uint8_t raw : raw_ids) {
-    const std::optional<std::uint32_t> id = split_second::optimised_id(raw);
+    const std::optional<split_second::OptimisedId> id = split_second::optimised_id(split_second::RawId(raw));
     if (!id) throw std::runtime_error("raw tile ID " + std::to_string(raw) + " is out of range or pruned");
-    ids.insert(*id);
+    ids.insert(id->value());
   }
   return ids;
 }
@@ -114,7 +116,7 @@ Camera telephoto_camera() {
 
 ReferenceComparison compare_with_reference(const std::vector<std::uint8_t>& gpu, const ReferenceClassification& cpu,
                                            std::uint32_t tiles_x) {
-  namespace bit = split_second::raw_bit;
+  namespace bit = tilelight::raw_bit_masks;
   const std::uint32_t shadow_bits = bit::SHADOW_SOLID | bit::SHADOW_SOFT;
   const std::uint32_t exact_bits = bit::SKY | bit::SUN_LIGHT;
   const std::uint32_t at_least_bits = bit::MSAA_EDGE | bit::SHADOW_FADE | bit::LIGHT_SCATTERING;

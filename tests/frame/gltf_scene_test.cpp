@@ -59,16 +59,16 @@ TEST_P(GltfFrames, ClassifiedEqualsNaivePerPixel) {
 
   // The camera frames the model: it covers part of the frame, and the sky the rest.
   const std::vector<std::uint8_t> ids = renderer.raw_tile_ids();
-  const auto sky =
-      std::count_if(ids.begin(), ids.end(), [](std::uint8_t id) { return (id & split_second::raw_bit::SKY) != 0; });
+  const auto sky = std::count_if(ids.begin(), ids.end(),
+                                 [](std::uint8_t id) { return (id & split_second::raw_bit::SKY.value()) != 0; });
   const auto lit = std::count_if(ids.begin(), ids.end(),
-                                 [](std::uint8_t id) { return (id & split_second::raw_bit::SUN_LIGHT) != 0; });
+                                 [](std::uint8_t id) { return (id & split_second::raw_bit::SUN_LIGHT.value()) != 0; });
   EXPECT_GT(sky, 0);
   EXPECT_LT(sky, static_cast<std::ptrdiff_t>(ids.size()) * 9 / 10) << "the model covers under a tenth of the frame";
   EXPECT_GT(lit, 0) << "no tile faces the sun";
   if (renderer.msaa_samples() == 1) {
     EXPECT_TRUE(std::none_of(ids.begin(), ids.end(),
-                             [](std::uint8_t id) { return (id & split_second::raw_bit::MSAA_EDGE) != 0; }));
+                             [](std::uint8_t id) { return (id & split_second::raw_bit::MSAA_EDGE.value()) != 0; }));
   }
 }
 
@@ -162,7 +162,7 @@ TEST_P(GltfGeometryFrame, ClassifiedEqualsNaivePerPixel) {
   render_equivalent_frame(renderer);
   const std::vector<std::uint8_t> ids = renderer.raw_tile_ids();
   EXPECT_TRUE(std::any_of(ids.begin(), ids.end(), [](std::uint8_t id) {
-    return (id & split_second::raw_bit::SKY) == 0;
+    return (id & split_second::raw_bit::SKY.value()) == 0;
   })) << "the model covers no tile";
 }
 

@@ -41,8 +41,10 @@ TEST(LocalLightDomain, PrunedIdsAreThoseTheRulesSayAndTheRestCompile) {
   // The typed API names the same IDs.
   using local_lights::LIGHT_TYPE_value;
   EXPECT_EQ(local_lights::raw_id({.LIGHT_TYPE = LIGHT_TYPE_value::POINT, .BACK_COLOUR = true}), std::nullopt);
-  EXPECT_EQ(local_lights::raw_id({.LIGHT_TYPE = LIGHT_TYPE_value::BOX, .BACK_COLOUR = true}), kBox | kBackColourBit);
-  EXPECT_EQ(local_lights::raw_id({.LIGHT_TYPE = LIGHT_TYPE_value::SPOT, .SHADOWED = true}), 1u | kShadowedBit);
+  EXPECT_EQ(local_lights::raw_id({.LIGHT_TYPE = LIGHT_TYPE_value::BOX, .BACK_COLOUR = true}),
+            local_lights::RawId(kBox | kBackColourBit));
+  EXPECT_EQ(local_lights::raw_id({.LIGHT_TYPE = LIGHT_TYPE_value::SPOT, .SHADOWED = true}),
+            local_lights::RawId(1u | kShadowedBit));
 }
 
 }  // namespace

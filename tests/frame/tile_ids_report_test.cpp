@@ -15,8 +15,9 @@
 namespace tilelight::test {
 namespace {
 
-constexpr std::uint8_t kSun = split_second::raw_bit::SUN_LIGHT;
-constexpr std::uint8_t kSolidAndSoft = split_second::raw_bit::SHADOW_SOLID | split_second::raw_bit::SHADOW_SOFT;
+constexpr std::uint8_t kSun = split_second::raw_bit::SUN_LIGHT.value();
+constexpr std::uint8_t kSolidAndSoft =
+    (split_second::raw_bit::SHADOW_SOLID | split_second::raw_bit::SHADOW_SOFT).value();
 
 TEST(TileIdsReport, ValidRawIdsMapToTheirOptimisedIds) {
   const std::vector<std::uint8_t> raw = {0, kSun, 69, 126};

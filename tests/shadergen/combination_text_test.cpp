@@ -178,6 +178,23 @@ TEST(CombinationText, ReadsBackWhatDescribeRawPrintsForEveryRawId) {
   EXPECT_GT(read, 0u);
 }
 
+// combination_text() (the generated to_string()) prints exactly what describe_raw() (`shadergen
+// explain`) prints, for every raw ID of fixtures with features out of bit order, valued fields
+// and fields past their values; and "(none)" where no boolean is on and nothing is valued.
+TEST(CombinationText, CombinationTextIsExplainsText) {
+  for (const char* name : {"valued", "typed_api", "toy"}) {
+    auto loaded = load_domain(sgtest::fixtures_dir() / name / (std::string(name) + ".json"));
+    ASSERT_TRUE(loaded.ok()) << name;
+    const FeatureTable table(*loaded);
+    for (std::uint32_t id = 0; id < loaded->raw_space(); ++id)
+      EXPECT_EQ(combination_text(table.features(), id), describe_raw(*loaded, id)) << name << " raw " << id;
+  }
+  EXPECT_EQ(combination_text(kFeatures, 0), "TAA_QUALITY=0 | TONEMAP=LINEAR");
+  EXPECT_EQ(combination_text(std::span<const Feature>(kFeatures).first(2), 0), "(none)");
+  EXPECT_EQ(combination_text(kFeatures, kSky | kEdge | (3u << 2) | 0x80000000u),
+            "MSAA_EDGE | TAA_QUALITY=? | SKY | TONEMAP=-1");
+}
+
 // FeatureTable lists a spec's features in spec order, as the generated kFeatures does.
 TEST(CombinationText, FeatureTableFollowsTheSpecOrder) {
   auto loaded = load_domain(sgtest::fixtures_dir() / "typed_api" / "typed_api.json");

@@ -67,8 +67,9 @@ TEST(IdentityDomain, BuildsEveryCompiledRawIdAsItsOwnBlob) {
   EXPECT_TRUE(sgtest::contains(header, "inline constexpr std::uint32_t kOptimisedCount = 0;"));
   // Without a table the checked lookup gives the raw ID itself.
   EXPECT_TRUE(sgtest::contains(header,
-                               "constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
-                               "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n  return raw_id;\n}\n"))
+                               "constexpr std::optional<OptimisedId> optimised_id(RawId raw_id) {\n"
+                               "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n"
+                               "  return OptimisedId(raw_id.value());\n}\n"))
       << header;
 }
 

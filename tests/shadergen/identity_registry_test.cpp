@@ -20,20 +20,20 @@ TEST(IdentityRegistry, LookupByRawIdGivesTheRawPermutation) {
   ASSERT_EQ(r.raw.size(), identity::kRawCount);
   std::size_t compiled = 0;
   for (std::uint32_t id = 0; id < identity::kRawCount; ++id) {
-    const shadergen::Permutation* p = r.optimised_for_raw(id);
+    const shadergen::Permutation* p = r.optimised_for_raw(identity::RawId(id));
     EXPECT_EQ(p, identity::kRawPruned[id] ? nullptr : &r.raw[id]);
     compiled += p != nullptr;
   }
   EXPECT_EQ(compiled, 405u);
-  constexpr std::uint32_t kAlbedoNormal = identity::raw_bit::ALBEDO_MAP | identity::raw_bit::NORMAL_MAP;
+  constexpr std::uint32_t kAlbedoNormal = (identity::raw_bit::ALBEDO_MAP | identity::raw_bit::NORMAL_MAP).value();
   ASSERT_EQ(r.raw[kAlbedoNormal].defines.size(), 2u);
   EXPECT_EQ(r.raw[kAlbedoNormal].defines[1], "USE_NORMAL_MAP");
 }
 
 // Without collapse, optimised_id() is the raw ID itself, and checked like every lookup.
 TEST(IdentityRegistry, LookupsByRawIdAreChecked) {
-  static_assert(identity::optimised_id(0) == 0u);
-  static_assert(identity::optimised_id(identity::kRawCount) == std::nullopt);
+  static_assert(identity::optimised_id(identity::RawId(0)) == identity::OptimisedId(0));
+  static_assert(identity::optimised_id(identity::RawId(identity::kRawCount)) == std::nullopt);
   const registry_lookups::Counts counts = registry_lookups::expect_checked_lookups(
       identity::registry(),
       {identity::kRawCount, identity::kRawPruned, {}, identity::is_valid_raw_id, identity::optimised_id});

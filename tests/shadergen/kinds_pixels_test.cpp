@@ -53,11 +53,11 @@ constexpr std::array<float, 4> kTint = {0.5f, 0.75f, 2.0f, 1.0f};
 // The colour kinds.frag computes for `raw_id` (the same raw bits in all three domains).
 std::array<float, 4> expected_colour(std::uint32_t raw_id) {
   using namespace kinds_variant;
-  const bool fog = (raw_id & raw_bit::FOG) != 0;
-  const bool soft = (raw_id & raw_bit::SOFT) != 0;
-  const std::uint32_t taps_index = (raw_id & raw_bit::TAPS_mask) >> raw_bit::TAPS_shift;
+  const bool fog = (raw_id & raw_bit::FOG.value()) != 0;
+  const bool soft = (raw_id & raw_bit::SOFT.value()) != 0;
+  const std::uint32_t taps_index = (raw_id & raw_bit::TAPS_mask.value()) >> raw_bit::TAPS_shift;
   const bool pbr =
-      ((raw_id & raw_bit::SHADING_mask) >> raw_bit::SHADING_shift) == static_cast<std::uint32_t>(SHADING_value::PBR);
+      ((raw_id & raw_bit::SHADING_mask.value()) >> raw_bit::SHADING_shift) == static_cast<std::uint32_t>(SHADING_value::PBR);
   const std::array<float, 3> taps = {1.0f, 4.0f, 8.0f};
   float r = 0.125f + (fog ? 0.25f : 0.0f) + (pbr ? 0.5f : 0.0f);
   float g = 0.125f + (soft ? 0.25f : 0.0f);
@@ -252,11 +252,12 @@ class KindRenderer {
   // Draws `raw_id`'s permutation with `specialization` on the fragment stage (nullptr: none) and
   // returns the image's bytes.
   std::vector<std::byte> draw(std::uint32_t raw_id, const VkSpecializationInfo* specialization) const {
-    return draw(registry_.find_raw(raw_id), "raw " + std::to_string(raw_id), specialization);
+    return draw(registry_.find_raw(shadergen::RawId(raw_id)), "raw " + std::to_string(raw_id), specialization);
   }
   // The same through the optimised permutation a renderer draws `raw_id` with.
   std::vector<std::byte> draw_optimised(std::uint32_t raw_id, const VkSpecializationInfo* specialization) const {
-    return draw(registry_.optimised_for_raw(raw_id), "optimised for raw " + std::to_string(raw_id), specialization);
+    return draw(registry_.optimised_for_raw(shadergen::RawId(raw_id)), "optimised for raw " + std::to_string(raw_id),
+                specialization);
   }
 
  private:
@@ -398,9 +399,12 @@ TEST(KindsRegistries, TheThreeDomainsShareRawIdsAndTheKindsShareBlobs) {
                 kinds_variant::kRawCount == kinds_branch::kRawCount);
   std::size_t valid = 0;
   for (std::uint32_t id = 0; id < kinds_variant::kRawCount; ++id) {
-    EXPECT_EQ(kinds_variant::is_valid_raw_id(id), kinds_specialization::is_valid_raw_id(id)) << id;
-    EXPECT_EQ(kinds_variant::is_valid_raw_id(id), kinds_branch::is_valid_raw_id(id)) << id;
-    if (kinds_variant::is_valid_raw_id(id)) ++valid;
+    EXPECT_EQ(kinds_variant::is_valid_raw_id(shadergen::RawId(id)),
+              kinds_specialization::is_valid_raw_id(shadergen::RawId(id)))
+        << id;
+    EXPECT_EQ(kinds_variant::is_valid_raw_id(shadergen::RawId(id)), kinds_branch::is_valid_raw_id(shadergen::RawId(id)))
+        << id;
+    if (kinds_variant::is_valid_raw_id(shadergen::RawId(id))) ++valid;
   }
   EXPECT_EQ(valid, 18u);  // 32 IDs less 8 without a TAPS value and 6 unlit-with-shadow
 
@@ -420,9 +424,9 @@ TEST(KindsRegistries, TheThreeDomainsShareRawIdsAndTheKindsShareBlobs) {
   EXPECT_EQ(kinds_specialization::kBranchBlock.size, 0u);
   EXPECT_EQ(kinds_branch::kBranchBlock.size, 16u);
   EXPECT_EQ(kinds_branch::kBranchBlock.set, 1u);
-  EXPECT_EQ(kinds_variant::specialization(0).data_size, 0u);
-  EXPECT_EQ(kinds_specialization::specialization(0).data_size, 8u);
-  EXPECT_EQ(kinds_branch::specialization(0).data_size, 0u);
+  EXPECT_EQ(kinds_variant::specialization(shadergen::RawId(0)).data_size, 0u);
+  EXPECT_EQ(kinds_specialization::specialization(shadergen::RawId(0)).data_size, 8u);
+  EXPECT_EQ(kinds_branch::specialization(shadergen::RawId(0)).data_size, 0u);
 }
 
 using KindsPixels = VulkanTest;
@@ -440,17 +444,17 @@ TEST_F(KindsPixels, EveryRawIdDrawsTheSameImageInAllThreeKinds) {
 
   std::map<std::uint32_t, std::array<float, 4>> colours;  // by raw ID
   for (std::uint32_t id = 0; id < kinds_variant::kRawCount; ++id) {
-    if (!kinds_variant::is_valid_raw_id(id)) continue;
+    if (!kinds_variant::is_valid_raw_id(shadergen::RawId(id))) continue;
     SCOPED_TRACE("raw ID " + std::to_string(id));
 
     const std::vector<std::byte> from_variant = variant.draw(id, nullptr);
 
-    const shadergen::Specialization constants = kinds_specialization::specialization(id);
+    const shadergen::Specialization constants = kinds_specialization::specialization(shadergen::RawId(id));
     const VkSpecializationInfo info = shadergen::vulkan::specialization_info(constants);
     ASSERT_EQ(info.mapEntryCount, 2u);
     const std::vector<std::byte> from_specialization = specialized.draw(id, &info);
 
-    branched.set_branch_values(kinds_branch::branch_values(id));
+    branched.set_branch_values(kinds_branch::branch_values(shadergen::RawId(id)));
     const std::vector<std::byte> from_branch = branched.draw(id, nullptr);
 
     EXPECT_EQ(from_specialization, from_variant) << "specialization and variant images differ";
@@ -474,7 +478,7 @@ TEST_F(KindsPixels, EveryRawIdDrawsTheSameImageInAllThreeKinds) {
   for (const auto& [id, colour] : colours) distinct.insert(colour);
   EXPECT_EQ(distinct.size(), colours.size());
   using namespace kinds_variant;
-  const auto colour_of = [&](const Features& features) { return colours.at(raw_id(features).value()); };
+  const auto colour_of = [&](const Features& features) { return colours.at(raw_id(features).value().value()); };
   EXPECT_NE(colour_of({.FOG = false, .SHADING = SHADING_value::PBR}),
             colour_of({.FOG = true, .SHADING = SHADING_value::PBR}));
   EXPECT_NE(colour_of({.SOFT = false, .SHADING = SHADING_value::PBR}),

@@ -35,11 +35,11 @@ TEST(KindsRegistry, SpecializationAndBranchValuesMatchTheManifestForEveryRawId) 
   for (const json& raw : m["raw"]) {
     if (raw["pruned"].get<bool>()) continue;
     const auto id = raw["id"].get<std::uint32_t>();
-    ASSERT_TRUE(kinds::is_valid_raw_id(id)) << id;
-    const shadergen::Specialization s = kinds::specialization(id);
+    ASSERT_TRUE(kinds::is_valid_raw_id(kinds::RawId(id))) << id;
+    const shadergen::Specialization s = kinds::specialization(kinds::RawId(id));
     EXPECT_EQ(s.data_size, 4u);
     EXPECT_EQ(s.data[0], raw["specialization"]["SOFT"].get<bool>() ? 1u : 0u) << id;
-    const shadergen::BranchValues b = kinds::branch_values(id);
+    const shadergen::BranchValues b = kinds::branch_values(kinds::RawId(id));
     EXPECT_EQ(b.size, kinds::kBranchBlock.size);
     EXPECT_EQ(static_cast<std::int32_t>(b.words[0]), raw["branch_values"]["TAPS"].get<std::int32_t>()) << id;
     ++checked;

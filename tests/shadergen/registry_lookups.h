@@ -19,11 +19,11 @@ namespace registry_lookups {
 
 // The generated header's tables and checked lookups, by address.
 struct Generated {
-  std::uint32_t raw_count;                 // kRawCount
-  std::span<const bool> pruned;            // kRawPruned
-  std::span<const std::uint8_t> table;     // kRawToOptimised; empty when the domain is not collapsed
-  bool (*is_valid_raw_id)(std::uint32_t);  // is_valid_raw_id
-  std::optional<std::uint32_t> (*optimised_id)(std::uint32_t);  // optimised_id
+  std::uint32_t raw_count;                    // kRawCount
+  std::span<const bool> pruned;               // kRawPruned
+  std::span<const std::uint8_t> table;        // kRawToOptimised; empty when the domain is not collapsed
+  bool (*is_valid_raw_id)(shadergen::RawId);  // is_valid_raw_id
+  std::optional<shadergen::OptimisedId> (*optimised_id)(shadergen::RawId);  // optimised_id
 };
 
 struct Counts {
@@ -37,8 +37,9 @@ inline std::array<std::uint32_t, 4> out_of_range_ids(std::uint32_t raw_count) {
   return {raw_count, raw_count + 16, 0x80000000u, 0xffffffffu};
 }
 
-inline void expect_none(const shadergen::Registry& r, const Generated& g, std::uint32_t id) {
-  SCOPED_TRACE("raw " + std::to_string(id));
+inline void expect_none(const shadergen::Registry& r, const Generated& g, std::uint32_t value) {
+  SCOPED_TRACE("raw " + std::to_string(value));
+  const shadergen::RawId id(value);
   EXPECT_EQ(r.find_raw(id), nullptr);
   EXPECT_EQ(r.optimised_id(id), std::nullopt);
   EXPECT_EQ(r.optimised_for_raw(id), nullptr);
@@ -46,15 +47,16 @@ inline void expect_none(const shadergen::Registry& r, const Generated& g, std::u
   EXPECT_EQ(g.optimised_id(id), std::nullopt);
 }
 
-inline void expect_found(const shadergen::Registry& r, const Generated& g, std::uint32_t id) {
-  SCOPED_TRACE("raw " + std::to_string(id));
-  EXPECT_EQ(r.find_raw(id), &r.raw[id]);
+inline void expect_found(const shadergen::Registry& r, const Generated& g, std::uint32_t value) {
+  SCOPED_TRACE("raw " + std::to_string(value));
+  const shadergen::RawId id(value);
+  EXPECT_EQ(r.find_raw(id), &r.raw[value]);
   EXPECT_TRUE(g.is_valid_raw_id(id));
   // Not collapsed: every raw ID is its own permutation.
-  const std::uint32_t expected = g.table.empty() ? id : g.table[id];
-  EXPECT_EQ(r.optimised_id(id), expected);
-  EXPECT_EQ(g.optimised_id(id), expected);
-  EXPECT_EQ(r.optimised_for_raw(id), g.table.empty() ? &r.raw[id] : &r.optimised[expected]);
+  const std::uint32_t expected = g.table.empty() ? value : g.table[value];
+  EXPECT_EQ(r.optimised_id(id), shadergen::OptimisedId(expected));
+  EXPECT_EQ(g.optimised_id(id), shadergen::OptimisedId(expected));
+  EXPECT_EQ(r.optimised_for_raw(id), g.table.empty() ? &r.raw[value] : &r.optimised[expected]);
 }
 
 // Checks every lookup for every ID of the domain and a few past it.

@@ -17,7 +17,7 @@ TEST(GeneratedRegistry, TableAndPermutations) {
   ASSERT_EQ(r.optimised.size(), 32u);
   static_assert(split_second::kRawToOptimised[69] == 8);
   static_assert(split_second::kRawPruned[3] && !split_second::kRawPruned[2]);
-  static_assert(split_second::raw_bit::SUN_LIGHT == 64u && split_second::optimised_bit::SUN_1 == 16u);
+  static_assert(split_second::raw_bit::SUN_LIGHT.value() == 64u && split_second::optimised_bit::SUN_1.value() == 16u);
   std::size_t pruned = 0;
   for (std::uint32_t id = 0; id < r.raw.size(); ++id) {
     const shadergen::Permutation& p = r.raw[id];
@@ -37,14 +37,18 @@ TEST(GeneratedRegistry, TableAndPermutations) {
   }
   EXPECT_EQ(pruned, 32u);
   EXPECT_EQ(r.optimised[31].defines.size(), 6u);
-  EXPECT_EQ(r.optimised_for_raw(69), &r.optimised[8]);
+  EXPECT_EQ(r.optimised_for_raw(split_second::RawId(69)), &r.optimised[8]);
 }
 
 // Every lookup by raw ID is checked: 96 valid IDs, 32 pruned, and IDs past 127 find nothing.
 TEST(GeneratedRegistry, LookupsByRawIdAreChecked) {
-  static_assert(split_second::optimised_id(69) == 8u);
-  static_assert(!split_second::optimised_id(3) && !split_second::optimised_id(128));
-  static_assert(split_second::is_valid_raw_id(127 - 1) && !split_second::is_valid_raw_id(127));
+  using split_second::RawId;
+  static_assert(split_second::optimised_id(RawId(69)) == split_second::OptimisedId(8));
+  static_assert(!split_second::optimised_id(RawId(3)) && !split_second::optimised_id(RawId(128)));
+  static_assert(split_second::is_valid_raw_id(RawId(127 - 1)) && !split_second::is_valid_raw_id(RawId(127)));
+  // docs/lut.md's example: raw and optimised SKY are different bits of different types.
+  static_assert((RawId(0) | split_second::raw_bit::SKY) == RawId(32));
+  static_assert((split_second::OptimisedId(0) | split_second::optimised_bit::SKY) == split_second::OptimisedId(4));
   const registry_lookups::Counts counts = registry_lookups::expect_checked_lookups(
       split_second::registry(), {split_second::kRawCount, split_second::kRawPruned, split_second::kRawToOptimised,
                                  split_second::is_valid_raw_id, split_second::optimised_id});

@@ -273,29 +273,45 @@ TEST_F(ToyBuild, GeneratedHeaderCarriesBannerTableAndStaticAssert) {
                                "    false, false, false, false, false, false, false, false, false, true, false, "
                                "true, false, true, false, true,\n"))
       << header;
-  EXPECT_TRUE(sgtest::contains(header, "inline constexpr std::uint32_t SOFT = 1u << 2;  // #define SOFT_PARTICLES\n"));
-  EXPECT_TRUE(sgtest::contains(header, "inline constexpr std::uint32_t SAMPLED = 1u << 1;\n"));
+  // Raw and optimised bits and IDs are types of their own (shadergen/registry.h).
+  EXPECT_TRUE(
+      sgtest::contains(header, "using RawId = shadergen::RawId;\nusing OptimisedId = shadergen::OptimisedId;\n"));
+  EXPECT_TRUE(sgtest::contains(header, "inline constexpr RawBits SOFT{1u << 2};  // #define SOFT_PARTICLES\n"));
+  EXPECT_TRUE(sgtest::contains(header, "inline constexpr OptimisedBits SAMPLED{1u << 1};\n"));
   // Every lookup by raw ID is checked before it indexes a table, and raw_id() checks too.
   EXPECT_TRUE(sgtest::contains(header,
-                               "constexpr bool is_valid_raw_id(std::uint32_t raw_id) { return raw_id < kRawCount && "
-                               "!kRawPruned[raw_id]; }\n"))
+                               "constexpr bool is_valid_raw_id(RawId raw_id) {\n"
+                               "  return raw_id.value() < kRawCount && !kRawPruned[raw_id.value()];\n}\n"))
       << header;
   EXPECT_TRUE(sgtest::contains(header,
-                               "constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
+                               "constexpr std::optional<OptimisedId> optimised_id(RawId raw_id) {\n"
                                "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n"
-                               "  return kRawToOptimised[raw_id];\n}\n"))
+                               "  return OptimisedId(kRawToOptimised[raw_id.value()]);\n}\n"))
       << header;
   EXPECT_TRUE(sgtest::contains(header,
-                               "constexpr std::optional<std::uint32_t> raw_id([[maybe_unused]] const Features& "
+                               "constexpr std::optional<RawId> raw_id([[maybe_unused]] const Features& "
                                "features) {\n  std::uint32_t id = 0;\n  if (features.SOFT) id |= 1u << 2;\n"
                                "  if (features.LIT) id |= 1u << 0;\n  if (features.TEXTURED) id |= 1u << 1;\n"
                                "  if (features.DISTORT) id |= 1u << 3;\n"
-                               "  if (!is_valid_raw_id(id)) return std::nullopt;\n  return id;\n}\n"))
+                               "  if (!is_valid_raw_id(RawId(id))) return std::nullopt;\n  return RawId(id);\n}\n"))
       << header;
-  // The one grammar's parser lives in <shadergen/registry.h>; the header only hands it kFeatures.
+  // is_possible() is the impossible rule itself, translated; features() decodes a raw ID.
   EXPECT_TRUE(sgtest::contains(header,
-                               "constexpr std::optional<std::uint32_t> find_raw_id(std::string_view text) {\n"
-                               "  return shadergen::find_raw_id(kFeatures, text);\n}\n"))
+                               "constexpr bool is_possible([[maybe_unused]] const Features& features) {\n"
+                               "  // DISTORT && LIT: distortion particles are never lit\n"
+                               "  if (features.DISTORT && features.LIT) return false;\n  return true;\n}\n"))
+      << header;
+  EXPECT_TRUE(sgtest::contains(header, "  decoded.DISTORT = ((raw_id.value() >> 3) & 1u) != 0;\n")) << header;
+  // The one grammar's parser lives in <shadergen/registry.h>; the header hands it kFeatures and
+  // refuses what is impossible.
+  EXPECT_TRUE(sgtest::contains(header,
+                               "constexpr std::optional<RawId> find_raw_id(std::string_view text) {\n"
+                               "  const std::optional<std::uint32_t> id = shadergen::find_raw_id(kFeatures, text);\n"
+                               "  if (!id || !is_possible(features(RawId(*id)))) return std::nullopt;\n"
+                               "  return RawId(*id);\n}\n"))
+      << header;
+  EXPECT_TRUE(sgtest::contains(header, "inline std::string to_string(RawId raw_id) {")) << header;
+  EXPECT_TRUE(sgtest::contains(header, "    if (kRawPruned[id] == is_possible(features(RawId(id)))) return false;\n"))
       << header;
   EXPECT_TRUE(sgtest::contains(header, "static_assert("));
   EXPECT_TRUE(sgtest::contains(header, "const shadergen::Registry& registry();"));

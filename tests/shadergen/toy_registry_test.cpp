@@ -21,22 +21,44 @@ namespace {
 static_assert(toy::kRawCount == 16u);
 static_assert(toy::kOptimisedCount == 4u);
 static_assert(std::is_same_v<decltype(toy::kRawToOptimised), const std::array<std::uint8_t, 16>>);
-static_assert(toy::kRawToOptimised[toy::raw_bit::LIT | toy::raw_bit::TEXTURED] ==
-              (toy::optimised_bit::SHADED | toy::optimised_bit::SAMPLED));
-static_assert(toy::kRawToOptimised[toy::raw_bit::SOFT] == toy::optimised_bit::SAMPLED);
-static_assert(toy::kRawToOptimised[toy::raw_bit::DISTORT] == toy::optimised_bit::SHADED);
-static_assert(toy::kRawPruned[toy::raw_bit::DISTORT | toy::raw_bit::LIT]);
-static_assert(!toy::kRawPruned[toy::raw_bit::DISTORT | toy::raw_bit::TEXTURED]);
-static_assert(toy::raw_bit::LIT == 1u && toy::raw_bit::TEXTURED == 2u && toy::raw_bit::SOFT == 4u &&
-              toy::raw_bit::DISTORT == 8u);
+static_assert(toy::kRawToOptimised[(toy::raw_bit::LIT | toy::raw_bit::TEXTURED).value()] ==
+              (toy::optimised_bit::SHADED | toy::optimised_bit::SAMPLED).value());
+static_assert(toy::kRawToOptimised[toy::raw_bit::SOFT.value()] == toy::optimised_bit::SAMPLED.value());
+static_assert(toy::kRawToOptimised[toy::raw_bit::DISTORT.value()] == toy::optimised_bit::SHADED.value());
+static_assert(toy::kRawPruned[(toy::raw_bit::DISTORT | toy::raw_bit::LIT).value()]);
+static_assert(!toy::kRawPruned[(toy::raw_bit::DISTORT | toy::raw_bit::TEXTURED).value()]);
+static_assert(toy::raw_bit::LIT.value() == 1u && toy::raw_bit::TEXTURED.value() == 2u &&
+              toy::raw_bit::SOFT.value() == 4u && toy::raw_bit::DISTORT.value() == 8u);
+// The bits compose with IDs of their own kind only: a raw ID with raw bits, an optimised ID with
+// optimised bits (tests/shadergen/compile_fails checks that the mixes do not compile).
+static_assert((toy::RawId(0) | toy::raw_bit::LIT | toy::raw_bit::SOFT) == toy::RawId(5));
+static_assert((toy::RawId(5) & toy::raw_bit::SOFT) && !(toy::RawId(5) & toy::raw_bit::TEXTURED));
+static_assert((toy::OptimisedId(0) | toy::optimised_bit::SAMPLED) ==
+              toy::OptimisedId(toy::optimised_bit::SAMPLED.value()));
 
 // The checked lookups too: a pruned ID or one past the table is none.
-static_assert(toy::optimised_id(toy::raw_bit::LIT | toy::raw_bit::TEXTURED) == 3u);
-static_assert(toy::optimised_id(toy::raw_bit::DISTORT | toy::raw_bit::LIT) == std::nullopt);
-static_assert(toy::optimised_id(toy::kRawCount) == std::nullopt && toy::optimised_id(0xffffffffu) == std::nullopt);
-static_assert(toy::is_valid_raw_id(0) && !toy::is_valid_raw_id(9) && !toy::is_valid_raw_id(16));
+static_assert(toy::optimised_id(toy::RawId(0) | toy::raw_bit::LIT | toy::raw_bit::TEXTURED) == toy::OptimisedId(3));
+static_assert(toy::optimised_id(toy::RawId(0) | toy::raw_bit::DISTORT | toy::raw_bit::LIT) == std::nullopt);
+static_assert(toy::optimised_id(toy::RawId(toy::kRawCount)) == std::nullopt &&
+              toy::optimised_id(toy::RawId(0xffffffffu)) == std::nullopt);
+static_assert(toy::is_valid_raw_id(toy::RawId(0)) && !toy::is_valid_raw_id(toy::RawId(9)) &&
+              !toy::is_valid_raw_id(toy::RawId(16)));
 static_assert(toy::raw_id({.LIT = true, .DISTORT = true}) == std::nullopt, "pruned");
-static_assert(toy::raw_id({.SOFT = true, .DISTORT = true}) == (toy::raw_bit::SOFT | toy::raw_bit::DISTORT));
+static_assert(toy::raw_id({.SOFT = true, .DISTORT = true}) ==
+              (toy::RawId(0) | toy::raw_bit::SOFT | toy::raw_bit::DISTORT));
+// is_possible() is the impossible rule "LIT && DISTORT" itself; find_raw_id() of the pruned
+// combination is none.
+static_assert(!toy::is_possible({.LIT = true, .DISTORT = true}) && toy::is_possible({.SOFT = true, .LIT = true}));
+static_assert(toy::find_raw_id("LIT|DISTORT") == std::nullopt);
+static_assert(toy::find_raw_id("SOFT|DISTORT") == toy::RawId(12));
+
+TEST(ToyRegistry, ToStringIsExplainsText) {
+  EXPECT_EQ(toy::to_string(toy::RawId(0)), "(none)");
+  EXPECT_EQ(toy::to_string(toy::RawId(12)), "SOFT | DISTORT");
+  for (std::uint32_t id = 0; id < toy::kRawCount; ++id)
+    EXPECT_EQ(toy::find_raw_id(toy::to_string(toy::RawId(id))),
+              toy::kRawPruned[id] ? std::nullopt : std::optional<toy::RawId>(toy::RawId(id)));
+}
 
 constexpr std::array<int, 16> kExpected = {0, 1, 2, 3, 2, 3, 2, 3, 1, -1, 3, -1, 3, -1, 3, -1};
 constexpr std::uint32_t kSpirvMagic = 0x07230203u;
@@ -65,9 +87,9 @@ TEST(ToyRegistry, TableMatchesTheConstexprTableAndTheSpec) {
     EXPECT_EQ(r.raw[id].pruned, kExpected[id] < 0);
     if (kExpected[id] >= 0) {
       EXPECT_EQ(static_cast<int>(r.raw_to_optimised[id]), kExpected[id]);
-      EXPECT_EQ(r.optimised_for_raw(id), &r.optimised[static_cast<std::size_t>(kExpected[id])]);
+      EXPECT_EQ(r.optimised_for_raw(toy::RawId(id)), &r.optimised[static_cast<std::size_t>(kExpected[id])]);
     } else {
-      EXPECT_EQ(r.optimised_for_raw(id), nullptr) << "pruned: no shader, though the table holds an entry";
+      EXPECT_EQ(r.optimised_for_raw(toy::RawId(id)), nullptr) << "pruned: no shader, though the table holds an entry";
     }
   }
 }

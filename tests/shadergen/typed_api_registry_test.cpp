@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 #include <typed_api_permutations.h>
 
@@ -25,9 +26,9 @@ using namespace typed_api;
 // Designated initializers follow the spec's order: TONEMAP, SHARPEN, QUALITY, BIAS.
 constexpr Features kAcesSharpHigh{
     .TONEMAP = TONEMAP_value::ACES, .SHARPEN = true, .QUALITY = QUALITY_value::_2, .BIAS = BIAS_value::_1};
-static_assert(raw_id(kAcesSharpHigh) == ((1u << 3) | 1u | (2u << 1) | (1u << 5)));
-static_assert(raw_id({}) == 0u, "every feature's default is its first value");
-static_assert(raw_id({.QUALITY = QUALITY_value::_1}) == 2u);
+static_assert(raw_id(kAcesSharpHigh) == RawId((1u << 3) | 1u | (2u << 1) | (1u << 5)));
+static_assert(raw_id({}) == RawId(0), "every feature's default is its first value");
+static_assert(raw_id({.QUALITY = QUALITY_value::_1}) == RawId(2));
 static_assert(static_cast<std::uint32_t>(BIAS_value::_m1) == 0u && static_cast<std::uint32_t>(BIAS_value::_1) == 1u);
 static_assert(static_cast<std::uint32_t>(TONEMAP_value::FILMIC) == 2u);
 static_assert(find_raw_id("TONEMAP=ACES|SHARPEN|QUALITY=2|BIAS=1") == raw_id(kAcesSharpHigh));
@@ -90,7 +91,7 @@ TEST(TypedApi, FindRawIdRoundTripsEveryRawId) {
   for (std::uint32_t id = 0; id < kRawCount; ++id) {
     EXPECT_EQ(find_raw_id(std::to_string(id)), std::nullopt) << "a number is no feature text: " << id;
     if (auto names = names_of(id)) {
-      EXPECT_EQ(find_raw_id(*names), id) << *names;
+      EXPECT_EQ(find_raw_id(*names), RawId(id)) << *names;
       ++named;
     } else {
       EXPECT_TRUE(kRawPruned[id]) << "a field past its values is pruned: raw " << id;
@@ -103,13 +104,13 @@ TEST(TypedApi, FindRawIdRoundTripsEveryRawId) {
 // NAME=VALUE, blanks ignored, "" and "(none)" are 0; everything else is refused.
 TEST(TypedApi, FindRawIdRefusesWhatIsNotARawId) {
   using Error = shadergen::CombinationError;
-  const std::vector<std::pair<std::string, std::optional<std::uint32_t>>> accepted = {
-      {"", 0u},
-      {"(none)", 0u},
-      {"SHARPEN", 1u},
-      {" SHARPEN | QUALITY = 2 ", 5u},
-      {"SHARPEN|TONEMAP=FILMIC|BIAS=-1", 1u | (2u << 3)},
-      {"BIAS=1\t|\tTONEMAP=LINEAR", 1u << 5},
+  const std::vector<std::pair<std::string, std::optional<RawId>>> accepted = {
+      {"", RawId(0)},
+      {"(none)", RawId(0)},
+      {"SHARPEN", RawId(1)},
+      {" SHARPEN | QUALITY = 2 ", RawId(5)},
+      {"SHARPEN|TONEMAP=FILMIC|BIAS=-1", RawId(1u | (2u << 3))},
+      {"BIAS=1\t|\tTONEMAP=LINEAR", RawId(1u << 5)},
   };
   for (const auto& [text, expected] : accepted) EXPECT_EQ(find_raw_id(text), expected) << '"' << text << '"';
   const std::vector<std::pair<std::string, Error>> refused = {
@@ -138,18 +139,62 @@ TEST(TypedApi, FindRawIdRefusesWhatIsNotARawId) {
 // raw_id() and the lookups by raw ID, all checked: a domain without collapse, so optimised_id()
 // is the raw ID itself, and the 28 IDs whose fields hold no value are pruned.
 TEST(TypedApi, LookupsByRawIdAreChecked) {
-  static_assert(optimised_id(*raw_id(kAcesSharpHigh)) == raw_id(kAcesSharpHigh));
-  static_assert(is_valid_raw_id(0) && !is_valid_raw_id(kRawCount) && !is_valid_raw_id(3u << 1));
+  static_assert(optimised_id(*raw_id(kAcesSharpHigh)) == OptimisedId(raw_id(kAcesSharpHigh)->value()));
+  static_assert(is_valid_raw_id(RawId(0)) && !is_valid_raw_id(RawId(kRawCount)) && !is_valid_raw_id(RawId(3u << 1)));
   const registry_lookups::Counts counts =
       registry_lookups::expect_checked_lookups(registry(), {kRawCount, kRawPruned, {}, is_valid_raw_id, optimised_id});
   EXPECT_EQ(counts.valid, 36u);
   EXPECT_EQ(counts.pruned, 28u);
-  const std::optional<std::uint32_t> id = raw_id({.TONEMAP = TONEMAP_value::FILMIC, .SHARPEN = true});
+  const std::optional<RawId> id = raw_id({.TONEMAP = TONEMAP_value::FILMIC, .SHARPEN = true});
   ASSERT_TRUE(id);
   const shadergen::Permutation* p = registry().optimised_for_raw(*id);
   ASSERT_NE(p, nullptr);
-  EXPECT_EQ(p, &registry().raw[*id]);
+  EXPECT_EQ(p, &registry().raw[id->value()]);
 }
+
+// features() decodes what raw_id() encodes; is_possible() says which decoded IDs hold values
+// (this domain has no impossible rule: only the 28 IDs with a field past its values are not).
+static_assert(features(*raw_id(kAcesSharpHigh)).TONEMAP == TONEMAP_value::ACES);
+static_assert(features(*raw_id(kAcesSharpHigh)).SHARPEN && features(*raw_id(kAcesSharpHigh)).BIAS == BIAS_value::_1);
+static_assert(raw_id(features(RawId(0x2bu))) == RawId(0x2bu));
+static_assert(!is_possible(features(RawId(3u << 1))) && !is_possible({.TONEMAP = static_cast<TONEMAP_value>(3)}));
+
+TEST(TypedApi, FeaturesDecodeEveryRawIdAndIsPossibleAgreesWithThePrunedFlags) {
+  for (std::uint32_t id = 0; id < kRawCount; ++id) {
+    const Features decoded = features(RawId(id));
+    EXPECT_EQ(is_possible(decoded), !kRawPruned[id]) << id;
+    if (is_possible(decoded)) EXPECT_EQ(raw_id(decoded), RawId(id));
+  }
+}
+
+// to_string() writes what find_raw_id() reads, in explain's order (by bit) and spelling.
+TEST(TypedApi, ToStringRoundTripsEveryPossibleRawId) {
+  EXPECT_EQ(to_string(RawId(0)), "QUALITY=0 | TONEMAP=LINEAR | BIAS=-1") << "a valued feature always has a value";
+  EXPECT_EQ(to_string(*raw_id(kAcesSharpHigh)), "SHARPEN | QUALITY=2 | TONEMAP=ACES | BIAS=1");
+  EXPECT_EQ(to_string(RawId(3u << 1)), "QUALITY=? | TONEMAP=LINEAR | BIAS=-1") << "a field past its values, as explain";
+  std::size_t round_trips = 0;
+  for (std::uint32_t id = 0; id < kRawCount; ++id) {
+    if (kRawPruned[id]) continue;
+    EXPECT_EQ(find_raw_id(to_string(RawId(id))), RawId(id)) << to_string(RawId(id));
+    ++round_trips;
+  }
+  EXPECT_EQ(round_trips, 36u);
+}
+
+// The checked conversions into the value enums: integers for integer values, text otherwise.
+static_assert(to_QUALITY(2) == QUALITY_value::_2 && to_QUALITY(0) == QUALITY_value::_0);
+static_assert(to_QUALITY(3) == std::nullopt && to_QUALITY(-1) == std::nullopt);
+static_assert(to_BIAS(-1) == BIAS_value::_m1 && to_BIAS(1) == BIAS_value::_1 && !to_BIAS(0));
+static_assert(to_TONEMAP("FILMIC") == TONEMAP_value::FILMIC && !to_TONEMAP("aces") && !to_TONEMAP(""));
+static_assert(std::is_same_v<decltype(to_TONEMAP(std::string_view())), std::optional<TONEMAP_value>>);
+
+// The ID types are their own: not integers, not each other (compile_fails.cmake shows the mixes
+// do not compile); the generated names are shadergen's types.
+static_assert(std::is_same_v<RawId, shadergen::RawId> && std::is_same_v<OptimisedId, shadergen::OptimisedId>);
+static_assert(!std::is_convertible_v<std::uint32_t, RawId> && !std::is_convertible_v<RawId, std::uint32_t>);
+static_assert(!std::is_convertible_v<OptimisedId, RawId> && !std::is_convertible_v<RawId, OptimisedId>);
+static_assert(!std::is_constructible_v<RawId, OptimisedId> && !std::is_constructible_v<OptimisedId, RawId>);
+static_assert(RawId(3) < RawId(5) && OptimisedId(7) > OptimisedId(2) && RawId(4).value() == 4u);
 
 nlohmann::json manifest() {
   std::ifstream in(TYPED_API_MANIFEST);

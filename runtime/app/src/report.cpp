@@ -61,13 +61,13 @@ nlohmann::ordered_json ratios_json(const FrameRatios& r) {
 std::vector<std::uint8_t> optimised_tile_ids(const std::vector<std::uint8_t>& raw_ids) {
   std::vector<std::uint8_t> out(raw_ids.size());
   for (std::size_t i = 0; i < raw_ids.size(); ++i) {
-    const std::optional<std::uint32_t> id = split_second::optimised_id(raw_ids[i]);
+    const std::optional<split_second::OptimisedId> id = split_second::optimised_id(split_second::RawId(raw_ids[i]));
     if (!id) {
       throw Error(
           fmt::format("tile {}: raw ID {} is {}", i, raw_ids[i],
                       raw_ids[i] < split_second::kRawCount ? "impossible (a pruned class)" : "out of range (0..127)"));
     }
-    out[i] = static_cast<std::uint8_t>(*id);
+    out[i] = static_cast<std::uint8_t>(id->value());
   }
   return out;
 }

@@ -27,9 +27,9 @@ std::uint32_t local_light_raw_id(const LocalLight& light, bool multisampled_gbuf
   features.BACK_COLOUR = light.type == LocalLightType::box && light.extras.back_color.has_value();
   features.MSAA_EDGE = multisampled_gbuffer;
   features.SHADOWED = shadowed;
-  const std::optional<std::uint32_t> id = local_lights::raw_id(features);
+  const std::optional<local_lights::RawId> id = local_lights::raw_id(features);
   if (!id) throw Error("local_lights.json has no permutation for a local light of these features (pruned)");
-  return *id;
+  return id->value();
 }
 
 }  // namespace tilelight

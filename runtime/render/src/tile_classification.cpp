@@ -20,13 +20,13 @@ SpecConstants classification_constants(std::uint32_t tile_size, std::uint32_t sa
   namespace bit = split_second::raw_bit;
   SpecConstants spec;
   spec.set(0, tile_size)
-      .set(1, bit::SHADOW_SOLID)
-      .set(2, bit::SHADOW_SOFT)
-      .set(3, bit::SHADOW_FADE)
-      .set(4, bit::LIGHT_SCATTERING)
-      .set(5, bit::MSAA_EDGE)
-      .set(6, bit::SKY)
-      .set(7, bit::SUN_LIGHT)
+      .set(1, bit::SHADOW_SOLID.value())
+      .set(2, bit::SHADOW_SOFT.value())
+      .set(3, bit::SHADOW_FADE.value())
+      .set(4, bit::LIGHT_SCATTERING.value())
+      .set(5, bit::MSAA_EDGE.value())
+      .set(6, bit::SKY.value())
+      .set(7, bit::SUN_LIGHT.value())
       .set(8, samples);
   return spec;
 }

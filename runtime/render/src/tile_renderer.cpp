@@ -94,8 +94,8 @@ std::vector<std::uint8_t> draw_classes(const shadergen::Registry& registry, bool
   for (std::uint32_t raw = 0; raw < split_second::kRawCount; ++raw) {
     if (raw_permutations) {
       classes[raw] = static_cast<std::uint8_t>(raw);
-    } else if (const std::optional<std::uint32_t> id = registry.optimised_id(raw)) {
-      classes[raw] = static_cast<std::uint8_t>(*id);
+    } else if (const std::optional<shadergen::OptimisedId> id = registry.optimised_id(shadergen::RawId(raw))) {
+      classes[raw] = static_cast<std::uint8_t>(id->value());
     }
   }
   return classes;
@@ -105,7 +105,8 @@ std::vector<std::uint8_t> draw_classes(const shadergen::Registry& registry, bool
 // the domain, which the static_asserts of shader_registry.cpp rule out) missing.
 std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Registry& registry) {
   std::array<bool, split_second::kRawCount> pruned{};
-  for (std::uint32_t raw = 0; raw < split_second::kRawCount; ++raw) pruned[raw] = registry.find_raw(raw) == nullptr;
+  for (std::uint32_t raw = 0; raw < split_second::kRawCount; ++raw)
+    pruned[raw] = registry.find_raw(shadergen::RawId(raw)) == nullptr;
   return pruned;
 }
 

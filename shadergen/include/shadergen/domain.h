@@ -215,6 +215,8 @@ struct DomainSpec {
   std::vector<std::uint32_t> listed_raw_ids;
   std::optional<BranchBlockSpec> branch_block;  // present when a feature is a branch
 
+  // Every raw feature in spec order (the generated API's order; raw_features is by bit).
+  std::vector<const RawFeature*> features_in_spec_order() const;
   // The branch features in spec order: the members of the branch block.
   std::vector<const RawFeature*> branch_features() const;
   // The specialization-constant features in spec order.

@@ -44,6 +44,9 @@ class Expression {
   Expression() = default;
   explicit Expression(std::shared_ptr<const Node> root) : root_(std::move(root)) {}
   bool empty() const { return root_ == nullptr; }
+  // The parsed tree (nullptr when empty), for a translation into another language (the
+  // generated C++'s is_possible()).
+  const Node* root() const { return root_.get(); }
 
  private:
   std::shared_ptr<const Node> root_;

@@ -1,8 +1,10 @@
 // shadergen/registry.h - the types that shadergen's generated C++ registries are made of.
 //
 // A registry is generated per domain spec (see shadergen_add_permutations() in CMake). Its
-// header declares, inside the namespace chosen at generation time:
+// header declares, inside the namespace N chosen at generation time:
 //
+//   using RawId = shadergen::RawId;  using OptimisedId = shadergen::OptimisedId;
+//   using RawBits = shadergen::RawBits;  using OptimisedBits = shadergen::OptimisedBits;
 //   inline constexpr std::uint32_t kRawBits;             // raw bits (7 for Split/Second), up to 32
 //   inline constexpr std::uint32_t kRawCount;            // raw IDs in the registry: 1 << kRawBits
 //                                                        // (128), or those a variants file lists
@@ -13,22 +15,36 @@
 //                                                        // (absent when the domain is not collapsed;
 //                                                        // std::uint16_t past 8 optimised bits)
 //   inline constexpr std::array<bool, kRawCount> kRawPruned;               // impossible raw IDs
-//   namespace raw_bit       { inline constexpr std::uint32_t <FEATURE> = 1u << n; ... }
-//   namespace optimised_bit { inline constexpr std::uint32_t <BIT> = 1u << n; ... }
-//   constexpr bool is_valid_raw_id(std::uint32_t);       // built: in range, not pruned, listed
-//   constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id);  // checked lookup
+//   namespace raw_bit       { inline constexpr RawBits <FEATURE>{1u << n}; ...      // boolean
+//                             inline constexpr std::uint32_t <FEATURE>_shift = n;     // valued:
+//                             inline constexpr RawBits <FEATURE>_mask{...}; }         // its field
+//   namespace optimised_bit { inline constexpr OptimisedBits <BIT>{1u << n}; ... }
+//   constexpr bool is_valid_raw_id(RawId);              // built: in range, not pruned, listed
+//   constexpr std::optional<OptimisedId> optimised_id(RawId);  // checked lookup
 //   (Larger or listed domains: the table is in the generated source, and is_valid_raw_id(),
 //   optimised_id() and raw_id() are declared here without constexpr.)
 //   enum class <FEATURE>_value : std::uint32_t { <value>, ... };  // per valued feature: its values,
 //                                                        // an integer 2 spelt _2 (-1: _m1)
+//   constexpr std::optional<<FEATURE>_value> to_<FEATURE>(std::int64_t or std::string_view);
+//                                                        // a value checked: nullopt if none
 //   struct Features { bool <FEATURE> = false; <FEATURE>_value <FEATURE> = ...; ... };
 //                                                        // one member per raw feature, in spec order
-//   constexpr std::optional<std::uint32_t> raw_id(const Features&);  // the raw ID those features
-//                                                        // make; nullopt: a value out of its enum, or pruned
+//   constexpr Features features(RawId);                  // a raw ID decoded (bits past kRawBits ignored)
+//   constexpr bool is_possible(const Features&);         // false: an "impossible" rule prunes it, or a
+//                                                        // value is out of its enum (every domain)
+//   constexpr std::optional<RawId> raw_id(const Features&);  // the raw ID those features
+//                                                        // make; nullopt: a value out of its enum, or pruned,
+//                                                        // or not built (not in the variants file)
 //   inline constexpr std::array<shadergen::Feature, n> kFeatures;           // in spec order
 //   inline constexpr std::array<shadergen::FixedDefine, n> kDefines;        // the fixed defines
-//   constexpr std::optional<std::uint32_t> find_raw_id(std::string_view);   // "A|B=2" -> raw ID
+//   constexpr std::optional<RawId> find_raw_id(std::string_view);  // "A|B=2" -> raw ID; nullopt:
+//                                                        // refused, or pruned (not: unbuilt)
+//   std::string to_string(RawId);                        // "A | B=2", "(none)": find_raw_id() reads it
 //   const shadergen::Registry& registry();
+//
+// Raw and optimised IDs, and the bits of each, are distinct types: a raw ID where an optimised
+// one is wanted, or an optimised bit in a raw ID, does not compile, so a renamed feature cannot
+// be silently replaced by the optimised bit of the same name.
 //
 // shadergen/vulkan.h turns a registry's permutations into Vulkan create-infos; only a consumer
 // that includes it needs the Vulkan headers.
@@ -38,13 +54,83 @@
 #pragma once
 
 #include <array>
+#include <compare>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace shadergen {
+
+// A raw ID: the features a classifier found, one field per raw feature. Its own type so that it
+// cannot be passed where an optimised ID is wanted (nor an integer, without saying so): both are
+// small integers, and a mix-up would draw a wrong shader without any error. Any value can be
+// held; the lookups check it.
+class RawId {
+ public:
+  constexpr explicit RawId(std::uint32_t value) : value_(value) {}
+  constexpr std::uint32_t value() const { return value_; }
+  friend constexpr bool operator==(RawId, RawId) = default;
+  friend constexpr std::strong_ordering operator<=>(RawId, RawId) = default;
+
+ private:
+  std::uint32_t value_;
+};
+
+// An optimised ID: the permutation a raw ID is drawn with (the lookup table's entry).
+class OptimisedId {
+ public:
+  constexpr explicit OptimisedId(std::uint32_t value) : value_(value) {}
+  constexpr std::uint32_t value() const { return value_; }
+  friend constexpr bool operator==(OptimisedId, OptimisedId) = default;
+  friend constexpr std::strong_ordering operator<=>(OptimisedId, OptimisedId) = default;
+
+ private:
+  std::uint32_t value_;
+};
+
+// Bits of a raw ID (a generated raw_bit:: constant, or several or-ed together). Distinct from
+// OptimisedBits so that raw_bit::X and optimised_bit::X, which often share a name, cannot stand
+// in for each other: a raw ID takes raw bits only.
+class RawBits {
+ public:
+  constexpr explicit RawBits(std::uint32_t value) : value_(value) {}
+  constexpr std::uint32_t value() const { return value_; }
+  constexpr explicit operator bool() const { return value_ != 0; }
+  friend constexpr bool operator==(RawBits, RawBits) = default;
+  friend constexpr RawBits operator|(RawBits a, RawBits b) { return RawBits(a.value_ | b.value_); }
+  friend constexpr RawBits operator&(RawBits a, RawBits b) { return RawBits(a.value_ & b.value_); }
+  // The raw ID with these bits set too, and the ones of these that a raw ID has.
+  friend constexpr RawId operator|(RawId id, RawBits b) { return RawId(id.value() | b.value_); }
+  friend constexpr RawBits operator&(RawId id, RawBits b) { return RawBits(id.value() & b.value_); }
+
+ private:
+  std::uint32_t value_;
+};
+
+// Bits of an optimised ID (a generated optimised_bit:: constant, or several or-ed together).
+class OptimisedBits {
+ public:
+  constexpr explicit OptimisedBits(std::uint32_t value) : value_(value) {}
+  constexpr std::uint32_t value() const { return value_; }
+  constexpr explicit operator bool() const { return value_ != 0; }
+  friend constexpr bool operator==(OptimisedBits, OptimisedBits) = default;
+  friend constexpr OptimisedBits operator|(OptimisedBits a, OptimisedBits b) {
+    return OptimisedBits(a.value_ | b.value_);
+  }
+  friend constexpr OptimisedBits operator&(OptimisedBits a, OptimisedBits b) {
+    return OptimisedBits(a.value_ & b.value_);
+  }
+  friend constexpr OptimisedId operator|(OptimisedId id, OptimisedBits b) { return OptimisedId(id.value() | b.value_); }
+  friend constexpr OptimisedBits operator&(OptimisedId id, OptimisedBits b) {
+    return OptimisedBits(id.value() & b.value_);
+  }
+
+ private:
+  std::uint32_t value_;
+};
 
 // Pipeline stage of a compiled blob. Values match VkShaderStageFlagBits so a runtime can cast.
 enum class Stage : std::uint32_t {
@@ -269,27 +355,27 @@ struct Registry {
   // one outside the domain, pruned (no shader) or not built (not in a variants file) is "none".
 
   // Where `raw_id` is in `raw`, or nullopt: constant time when enumerated, else a binary search.
-  constexpr std::optional<std::size_t> raw_position(std::uint32_t raw_id) const { return position_by_id(raw, raw_id); }
+  constexpr std::optional<std::size_t> raw_position(RawId raw_id) const { return position_by_id(raw, raw_id.value()); }
   // The raw permutation `raw_id` names, or nullptr when it is out of range, pruned or not built.
-  constexpr const Permutation* find_raw(std::uint32_t raw_id) const {
+  constexpr const Permutation* find_raw(RawId raw_id) const {
     std::optional<std::size_t> at = raw_position(raw_id);
     if (!at || raw[*at].pruned) return nullptr;
     return &raw[*at];
   }
   // The optimised permutation `id`, or nullptr when the registry has none of that ID.
-  constexpr const Permutation* find_optimised(std::uint32_t id) const {
-    std::optional<std::size_t> at = position_by_id(optimised, id);
+  constexpr const Permutation* find_optimised(OptimisedId id) const {
+    std::optional<std::size_t> at = position_by_id(optimised, id.value());
     return at ? &optimised[*at] : nullptr;
   }
   // True when the domain is collapsed: raw IDs are drawn through the lookup table.
   constexpr bool collapsed() const { return !raw_to_optimised.empty() || !raw_to_optimised_wide.empty(); }
   // The optimised ID `raw_id` is drawn with, or nullopt when find_raw() is nullptr (or its table
   // entry names no optimised permutation, which a generated registry never holds). In a domain
-  // without collapse every raw ID is its own permutation: the raw ID itself.
-  constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) const {
+  // without collapse every raw ID is its own permutation: the raw ID's value itself.
+  constexpr std::optional<OptimisedId> optimised_id(RawId raw_id) const {
     std::optional<std::size_t> at = raw_position(raw_id);
     if (!at || raw[*at].pruned) return std::nullopt;
-    if (!collapsed()) return raw_id;
+    if (!collapsed()) return OptimisedId(raw_id.value());
     std::uint32_t id = 0;
     if (!raw_to_optimised.empty()) {
       if (*at >= raw_to_optimised.size()) return std::nullopt;
@@ -298,15 +384,15 @@ struct Registry {
       if (*at >= raw_to_optimised_wide.size()) return std::nullopt;
       id = raw_to_optimised_wide[*at];
     }
-    if (!find_optimised(id)) return std::nullopt;
-    return id;
+    if (!find_optimised(OptimisedId(id))) return std::nullopt;
+    return OptimisedId(id);
   }
   // The permutation `raw_id` is drawn with: its optimised permutation, or, in a domain without
   // collapse, the raw permutation itself; nullptr when optimised_id() is nullopt.
-  constexpr const Permutation* optimised_for_raw(std::uint32_t raw_id) const {
-    std::optional<std::uint32_t> id = optimised_id(raw_id);
+  constexpr const Permutation* optimised_for_raw(RawId raw_id) const {
+    std::optional<OptimisedId> id = optimised_id(raw_id);
     if (!id) return nullptr;
-    return collapsed() ? find_optimised(*id) : find_raw(*id);
+    return collapsed() ? find_optimised(*id) : find_raw(raw_id);
   }
   // Returns the companion called `name`, or nullptr.
   const CompanionShader* companion(std::string_view wanted) const {
@@ -498,6 +584,34 @@ class CombinationParser {
 // features; usable at compile time.
 constexpr ParsedCombination parse_combination(std::span<const Feature> features, std::string_view text) {
   return detail::CombinationParser(features, text).run();
+}
+
+// `raw_id` in the grammar above, exactly as `shadergen explain` prints it: the features that are
+// on (a valued one with its value, "?" for an index past its values) in the order of their bits,
+// joined by " | "; "(none)" for no feature. parse_combination() reads it back to `raw_id`
+// whenever every field holds a value and no bit outside the features is set. Precondition: each
+// feature's field fits a 32-bit raw ID, and no two features share a bit.
+inline std::string combination_text(std::span<const Feature> features, std::uint32_t raw_id) {
+  std::string text;
+  // kFeatures is in spec order; explain prints in bit order. At most 32 features: a selection
+  // of the next bit each time is simpler than a sorted copy.
+  std::uint64_t next_bit = 0;
+  for (std::size_t n = 0; n < features.size(); ++n) {
+    const Feature* f = nullptr;
+    for (const Feature& candidate : features)
+      if (candidate.bit >= next_bit && (!f || candidate.bit < f->bit)) f = &candidate;
+    if (!f) break;
+    next_bit = std::uint64_t{f->bit} + 1;
+    const std::uint32_t index = (raw_id & detail::field_mask(*f)) >> f->bit;
+    if (f->values.empty() && index == 0) continue;
+    if (!text.empty()) text += " | ";
+    text += f->name;
+    if (!f->values.empty()) {
+      text += '=';
+      text += index < f->values.size() ? f->values[index] : std::string_view("?");
+    }
+  }
+  return text.empty() ? std::string("(none)") : text;
 }
 
 // The raw ID `text` names, or nullopt when parse_combination() refuses it (which says why).

@@ -13,6 +13,7 @@
 
 #include "compile/blob_spill.h"
 #include "output/cpp_text.h"
+#include "output/rule_cpp.h"
 #include "spec/defines.h"
 #include "spec/kind_declarations.h"
 
@@ -33,14 +34,6 @@ std::string close_namespace(const std::string& ns) { return "}  // namespace " +
 std::string stage_enum(Stage stage) { return "shadergen::Stage::" + std::string(stage_name(stage)); }
 
 std::string kind_enum(DescriptorKind kind);
-
-std::vector<const RawFeature*> in_spec_order(const DomainSpec& spec) {
-  std::vector<const RawFeature*> features;
-  for (const RawFeature& f : spec.raw_features) features.push_back(&f);
-  std::sort(features.begin(), features.end(),
-            [](const RawFeature* a, const RawFeature* b) { return a->spec_order < b->spec_order; });
-  return features;
-}
 
 // One enum class per valued feature, its enumerators the values in order (so each is the
 // index the raw ID holds).
@@ -70,7 +63,7 @@ void features_struct(std::ostringstream& h, const std::vector<const RawFeature*>
   h << "};\n\n// The raw ID of `features`: each boolean's bit, each valued feature's value index in its field;\n"
        "// nullopt when a value is none of its enum's (a cast) or the combination is pruned or not built.\n"
     << (inline_tables ? "constexpr" : "inline")
-    << " std::optional<std::uint32_t> raw_id([[maybe_unused]] const Features& features) {\n"
+    << " std::optional<RawId> raw_id([[maybe_unused]] const Features& features) {\n"
        "  std::uint32_t id = 0;\n";
   for (const RawFeature* f : features) {
     if (!f->valued()) {
@@ -82,7 +75,7 @@ void features_struct(std::ostringstream& h, const std::vector<const RawFeature*>
       << "u) return std::nullopt;\n"
       << "  id |= static_cast<std::uint32_t>(features." << f->name << ") << " << f->bit << ";\n";
   }
-  h << "  if (!is_valid_raw_id(id)) return std::nullopt;\n  return id;\n}\n\n";
+  h << "  if (!is_valid_raw_id(RawId(id))) return std::nullopt;\n  return RawId(id);\n}\n\n";
 }
 
 // kFeatures (spec order), kDefines and find_raw_id().
@@ -109,10 +102,15 @@ void feature_tables(std::ostringstream& h, const CompiledDomain& d, const std::v
   }
   h << "}};\n\n"
        "// The raw ID `text` names in shadergen's one grammar (\"NORMAL_MAP|SHADOW_QUALITY=2\", \"(none)\";\n"
-       "// \"\" is 0), pruned or not; nullopt when the text is refused:\n"
-       "// shadergen::parse_combination(kFeatures, text) says why.\n"
-    << "constexpr std::optional<std::uint32_t> find_raw_id(std::string_view text) {\n"
-    << "  return shadergen::find_raw_id(kFeatures, text);\n}\n\n";
+       "// \"\" is 0); nullopt when the text is refused (shadergen::parse_combination(kFeatures, text)\n"
+       "// says why) or the combination is impossible. One a variants file leaves unbuilt has its ID.\n"
+    << "constexpr std::optional<RawId> find_raw_id(std::string_view text) {\n"
+    << "  const std::optional<std::uint32_t> id = shadergen::find_raw_id(kFeatures, text);\n"
+    << "  if (!id || !is_possible(features(RawId(*id)))) return std::nullopt;\n"
+    << "  return RawId(*id);\n}\n\n"
+    << "// `raw_id` as text, as `shadergen explain` prints it (\"(none)\" for 0): find_raw_id() reads it back.\n"
+    << "inline std::string to_string(RawId raw_id) { return shadergen::combination_text(kFeatures, raw_id.value()); "
+       "}\n\n";
 }
 
 // Up to this many raw IDs the lookup table and the pruned flags sit in the header, constexpr for
@@ -130,22 +128,97 @@ void raw_id_lookups(std::ostringstream& h, const CompiledDomain& d) {
   if (!tables_in_header(d)) {
     h << "// True when `raw_id` is a raw ID of this domain that is built (not pruned"
       << (d.spec.listed() ? ", listed in the variants file" : "") << "): the IDs every lookup accepts.\n"
-      << "bool is_valid_raw_id(std::uint32_t raw_id);\n\n"
+      << "bool is_valid_raw_id(RawId raw_id);\n\n"
       << "// The optimised ID `raw_id` is drawn with; nullopt when is_valid_raw_id(raw_id) is false.\n"
-      << "std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id);\n\n";
+      << "std::optional<OptimisedId> optimised_id(RawId raw_id);\n\n";
     return;
   }
   h << "// True when `raw_id` is a raw ID of this domain that is not pruned: the IDs every lookup accepts.\n"
-       "constexpr bool is_valid_raw_id(std::uint32_t raw_id) { return raw_id < kRawCount && !kRawPruned[raw_id]; }\n\n";
+       "constexpr bool is_valid_raw_id(RawId raw_id) {\n"
+       "  return raw_id.value() < kRawCount && !kRawPruned[raw_id.value()];\n}\n\n";
   if (d.spec.collapsed)
     h << "// The optimised ID `raw_id` is drawn with; nullopt when it is out of range or pruned.\n"
-         "constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
-         "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n  return kRawToOptimised[raw_id];\n}\n\n";
+         "constexpr std::optional<OptimisedId> optimised_id(RawId raw_id) {\n"
+         "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n  return "
+         "OptimisedId(kRawToOptimised[raw_id.value()]);\n}\n\n";
   else
     h << "// Not collapsed: every raw ID is drawn with its own permutation, so the optimised ID of a raw\n"
          "// ID is the raw ID itself; nullopt when it is out of range or pruned.\n"
-         "constexpr std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
-         "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n  return raw_id;\n}\n\n";
+         "constexpr std::optional<OptimisedId> optimised_id(RawId raw_id) {\n"
+         "  if (!is_valid_raw_id(raw_id)) return std::nullopt;\n  return OptimisedId(raw_id.value());\n}\n\n";
+}
+
+// The ID and bit types, by their short names: N::RawId is shadergen::RawId.
+void id_aliases(std::ostringstream& h) {
+  h << "using RawId = shadergen::RawId;\nusing OptimisedId = shadergen::OptimisedId;\n"
+       "using RawBits = shadergen::RawBits;\nusing OptimisedBits = shadergen::OptimisedBits;\n\n";
+}
+
+// True when every value of `f` is an integer's text (the spec reader keeps no other numbers).
+bool integer_values(const RawFeature& f) {
+  return std::all_of(f.values.begin(), f.values.end(),
+                     [](const std::string& v) { return !v.empty() && (v[0] == '-' || (v[0] >= '0' && v[0] <= '9')); });
+}
+
+// to_<FEATURE>(): a value from outside (a setting, a file) checked into the enum, so that no
+// cast makes an enumerator the feature does not have. Integer values take an integer, the
+// others their text.
+void value_conversions(std::ostringstream& h, const std::vector<const RawFeature*>& features) {
+  for (const RawFeature* f : features) {
+    if (!f->valued()) continue;
+    const std::string type = f->name + "_value";
+    h << "// The " << f->name << " value `value` names, or nullopt when it names none.\n";
+    if (integer_values(*f)) {
+      h << "constexpr std::optional<" << type << "> to_" << f->name << "(std::int64_t value) {\n  switch (value) {\n";
+      for (const std::string& v : f->values)
+        h << "    case " << v << ": return " << type << "::" << enumerator_name(v) << ";\n";
+      h << "    default: return std::nullopt;\n  }\n}\n";
+    } else {
+      h << "constexpr std::optional<" << type << "> to_" << f->name << "(std::string_view value) {\n";
+      for (const std::string& v : f->values)
+        h << "  if (value == " << literal(v) << ") return " << type << "::" << enumerator_name(v) << ";\n";
+      h << "  return std::nullopt;\n}\n";
+    }
+  }
+  h << "\n";
+}
+
+// features() and is_possible(). is_possible() is the impossible rules translated, not a table,
+// so that it answers for every raw ID, listed in a variants file or not.
+void decoding(std::ostringstream& h, const CompiledDomain& d, const std::vector<const RawFeature*>& features) {
+  h << "// The features `raw_id` holds (the inverse of raw_id()); bits past kRawBits are ignored, and a\n"
+       "// field holding no value gives an enumerator outside its enum, which is_possible() refuses.\n"
+       "constexpr Features features([[maybe_unused]] RawId raw_id) {\n  Features decoded;\n";
+  for (const RawFeature* f : features) {
+    if (f->valued())
+      h << "  decoded." << f->name << " = static_cast<" << f->name << "_value>((raw_id.value() >> " << f->bit
+        << ") & 0x" << std::hex << ((1u << f->width) - 1u) << std::dec << "u);\n";
+    else
+      h << "  decoded." << f->name << " = ((raw_id.value() >> " << f->bit << ") & 1u) != 0;\n";
+  }
+  h << "  return decoded;\n}\n\n"
+       "// False exactly when the spec's \"impossible\" rules prune `features`, or a valued feature holds\n"
+       "// no value of its enum (a cast); true for a possible combination a variants file leaves unbuilt.\n"
+       "constexpr bool is_possible([[maybe_unused]] const Features& features) {\n";
+  for (const RawFeature* f : features)
+    if (f->valued())
+      h << "  if (static_cast<std::uint32_t>(features." << f->name << ") >= " << f->values.size()
+        << "u) return false;\n";
+  for (const ImpossibleSet& rule : d.spec.impossible)
+    h << "  // " << cpp_comment_text(rule.when.text) << (rule.why.empty() ? "" : ": " + cpp_comment_text(rule.why))
+      << "\n  if " << rule_as_cpp(rule.when.expression, d.spec, "features") << " return false;\n";
+  h << "  return true;\n}\n\n";
+}
+
+// Up to this many raw IDs the header checks is_possible() against kRawPruned at compile time;
+// past it the check would cost every includer (the tests check the larger fixtures).
+constexpr std::size_t kPruningCheckLimit = std::size_t{1} << 12;
+
+void pruning_agreement(std::ostringstream& h, const CompiledDomain& d) {
+  if (!tables_in_header(d) || d.plan.raw.size() > kPruningCheckLimit) return;
+  h << "// is_possible(), from the rules, agrees with the pruned flags, from the expansion.\n"
+       "static_assert([] {\n  for (std::uint32_t id = 0; id < kRawCount; ++id)\n"
+       "    if (kRawPruned[id] == is_possible(features(RawId(id)))) return false;\n  return true;\n}());\n\n";
 }
 
 // The word one feature's field of `raw_id` becomes in the specialization data or the branch
@@ -168,9 +241,10 @@ void specialization_api(std::ostringstream& h, const DomainSpec& spec) {
     << "> kSpecializationMap{{\n";
   for (std::size_t i = 0; i < features.size(); ++i)
     h << "    {" << features[i]->constant_id << ", " << 4 * i << ", 4},  // " << features[i]->name << "\n";
-  h << "}};\n\n// The specialization data of `raw_id`'s pipeline (shadergen::vulkan::specialization_info() makes\n"
-       "// the VkSpecializationInfo). Precondition: is_valid_raw_id(raw_id).\n"
-    << "constexpr shadergen::Specialization specialization([[maybe_unused]] std::uint32_t raw_id) {\n"
+  h << "}};\n\n// The specialization data of `raw`'s pipeline (shadergen::vulkan::specialization_info() makes\n"
+       "// the VkSpecializationInfo). Precondition: is_valid_raw_id(raw).\n"
+    << "constexpr shadergen::Specialization specialization([[maybe_unused]] RawId raw) {\n"
+    << "  [[maybe_unused]] const std::uint32_t raw_id = raw.value();\n"
     << "  shadergen::Specialization s{kSpecializationMap, {}, " << 4 * features.size() << "};\n";
   for (std::size_t i = 0; i < features.size(); ++i)
     h << "  s.data[" << i << "] = " << value_word(*features[i]) << ";\n";
@@ -186,8 +260,9 @@ void branch_api(std::ostringstream& h, const DomainSpec& spec) {
   for (std::size_t i = 0; i < features.size(); ++i) h << (i ? ", " : "") << 4 * i;
   h << "}};\ninline constexpr shadergen::BranchBlock kBranchBlock{" << (spec.branch_block ? spec.branch_block->set : 0)
     << ", " << (spec.branch_block ? spec.branch_block->binding : 0) << ", " << size << ", kBranchOffsets};\n\n"
-    << "// The bytes to upload to the branch block for `raw_id`. Precondition: is_valid_raw_id(raw_id).\n"
-    << "constexpr shadergen::BranchValues branch_values([[maybe_unused]] std::uint32_t raw_id) {\n"
+    << "// The bytes to upload to the branch block for `raw`. Precondition: is_valid_raw_id(raw).\n"
+    << "constexpr shadergen::BranchValues branch_values([[maybe_unused]] RawId raw) {\n"
+    << "  [[maybe_unused]] const std::uint32_t raw_id = raw.value();\n"
     << "  shadergen::BranchValues v{{}, " << size << "};\n";
   for (std::size_t i = 0; i < features.size(); ++i)
     h << "  v.words[" << i << "] = " << value_word(*features[i]) << ";  // " << features[i]->name << "\n";
@@ -196,9 +271,11 @@ void branch_api(std::ostringstream& h, const DomainSpec& spec) {
 
 std::string typed_features(const CompiledDomain& d) {
   std::ostringstream h;
-  std::vector<const RawFeature*> features = in_spec_order(d.spec);
+  std::vector<const RawFeature*> features = d.spec.features_in_spec_order();
   value_enums(h, features);
+  value_conversions(h, features);
   features_struct(h, features, tables_in_header(d));
+  decoding(h, d, features);
   feature_tables(h, d, features);
   specialization_api(h, d.spec);
   branch_api(h, d.spec);
@@ -229,7 +306,7 @@ void bit_constants(std::ostringstream& h, const DomainSpec& spec) {
   h << "namespace raw_bit {\n";
   for (const RawFeature& f : spec.raw_features) {
     if (!f.valued()) {
-      h << "inline constexpr std::uint32_t " << f.name << " = 1u << " << f.bit << ";  // #define " << f.define << "\n";
+      h << "inline constexpr RawBits " << f.name << "{1u << " << f.bit << "};  // #define " << f.define << "\n";
       continue;
     }
     // A valued feature's field holds the index of its value: raw |= index << <NAME>_shift.
@@ -237,20 +314,21 @@ void bit_constants(std::ostringstream& h, const DomainSpec& spec) {
     for (const std::string& v : f.values) values += (values.empty() ? "" : ", ") + v;
     h << "inline constexpr std::uint32_t " << f.name << "_shift = " << f.bit << ";  // #define " << f.define
       << " <value>, values by index: " << values << "\n";
-    h << "inline constexpr std::uint32_t " << f.name << "_mask = 0x" << std::hex << f.mask() << std::dec << "u;\n";
+    h << "inline constexpr RawBits " << f.name << "_mask{0x" << std::hex << f.mask() << std::dec << "u};\n";
   }
   h << "}  // namespace raw_bit\n\nnamespace optimised_bit {\n";
   for (const OptimisedBit& b : spec.optimised_bits)
-    h << "inline constexpr std::uint32_t " << b.name << " = 1u << " << b.bit << ";\n";
+    h << "inline constexpr OptimisedBits " << b.name << "{1u << " << b.bit << "};\n";
   h << "}  // namespace optimised_bit\n\n";
 }
 
 std::string header_text(const CompiledDomain& d, const std::string& ns) {
   std::ostringstream h;
   h << banner(d)
-    << "#pragma once\n\n#include <array>\n#include <cstdint>\n#include <optional>\n#include <string_view>\n\n"
-       "#include <shadergen/registry.h>\n\n"
+    << "#pragma once\n\n#include <array>\n#include <cstdint>\n#include <optional>\n#include <string>\n"
+       "#include <string_view>\n\n#include <shadergen/registry.h>\n\n"
     << open_namespace(ns) << "\n";
+  id_aliases(h);
   h << "inline constexpr std::uint32_t kRawBits = " << d.spec.raw_bits() << ";\n";
   if (d.spec.listed())
     h << "// The raw IDs the variants file lists (registry().raw holds them, ascending); the others are not built.\n";
@@ -270,6 +348,7 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
     h << "static_assert([] {\n    for (auto id : kRawToOptimised)\n        if (id >= kOptimisedCount) "
          "return false;\n    return true;\n}());\n\n";
   }
+  pruning_agreement(h, d);
   h << "// The permutations, their SPIR-V and reflection. Defined in the generated source.\n";
   h << "const shadergen::Registry& registry();\n\n" << close_namespace(ns);
   return h.str();
@@ -568,11 +647,12 @@ class SourceWriter {
   // The checked lookups the header declares for a large or listed domain.
   void source_lookups() {
     if (tables_in_header(d_)) return;
-    out_ << "bool is_valid_raw_id(std::uint32_t raw_id) { return raw_position(raw_id).has_value(); }\n\n"
-            "std::optional<std::uint32_t> optimised_id(std::uint32_t raw_id) {\n"
-            "  const std::optional<std::size_t> at = raw_position(raw_id);\n"
+    out_ << "bool is_valid_raw_id(RawId raw_id) { return raw_position(raw_id.value()).has_value(); }\n\n"
+            "std::optional<OptimisedId> optimised_id(RawId raw_id) {\n"
+            "  const std::optional<std::size_t> at = raw_position(raw_id.value());\n"
             "  if (!at) return std::nullopt;\n"
-         << (d_.spec.collapsed ? "  return kRawToOptimised[*at];\n}\n\n" : "  return raw_id;\n}\n\n");
+         << (d_.spec.collapsed ? "  return OptimisedId(kRawToOptimised[*at]);\n}\n\n"
+                               : "  return OptimisedId(raw_id.value());\n}\n\n");
   }
 
   const CompiledDomain& d_;

@@ -38,11 +38,4 @@ std::string cpp_comment_text(std::string_view text) {
   return out;
 }
 
-std::string enumerator_name(std::string_view value) {
-  if (value.empty()) return "_";
-  if (value[0] == '-') return "_m" + std::string(value.substr(1));
-  if (value[0] >= '0' && value[0] <= '9') return std::string("_").append(value);
-  return std::string(value);
-}
-
 }  // namespace shadergen

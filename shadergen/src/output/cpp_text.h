@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "spec/cpp_names.h"  // enumerator_name(): the spec checks the names it makes
+
 namespace shadergen {
 
 // A C++ string literal, quotes included, that reads back as `text`: quote and backslash
@@ -16,10 +18,5 @@ std::string cpp_string_literal(std::string_view text);
 // `text` for a `//` comment: the same escapes without the quotes, so it stays on its line
 // (no newline, no backslash at the end splicing the next line into the comment).
 std::string cpp_comment_text(std::string_view text);
-
-// A valued feature's value as an enumerator: an identifier as written, an integer with a
-// leading underscore (2 -> _2, -1 -> _m1). Precondition: `value` is an identifier or an
-// integer's decimal text, as the spec reader accepts.
-std::string enumerator_name(std::string_view value);
 
 }  // namespace shadergen

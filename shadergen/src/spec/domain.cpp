@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "spec/cpp_names.h"
 #include "spec/defines.h"
 #include "spec/json.h"
 #include "spec/stages.h"
@@ -41,13 +42,18 @@ std::string_view feature_kind_name(FeatureKind kind) {
   return "variant";
 }
 
-namespace {
-std::vector<const RawFeature*> features_of_kind(const DomainSpec& spec, FeatureKind kind) {
+std::vector<const RawFeature*> DomainSpec::features_in_spec_order() const {
   std::vector<const RawFeature*> out;
-  for (const RawFeature& f : spec.raw_features)
-    if (f.kind == kind) out.push_back(&f);
+  for (const RawFeature& f : raw_features) out.push_back(&f);
   std::sort(out.begin(), out.end(),
             [](const RawFeature* a, const RawFeature* b) { return a->spec_order < b->spec_order; });
+  return out;
+}
+
+namespace {
+std::vector<const RawFeature*> features_of_kind(const DomainSpec& spec, FeatureKind kind) {
+  std::vector<const RawFeature*> out = spec.features_in_spec_order();
+  std::erase_if(out, [&](const RawFeature* f) { return f->kind != kind; });
   return out;
 }
 }  // namespace
@@ -579,7 +585,36 @@ class DomainBuilder {
     if (!reader_.errors().empty()) return;
     for (auto& feature : by_bit)
       if (feature) spec_.raw_features.push_back(std::move(*feature));
+    check_cpp_names(*features);
     read_impossible(raw);
+  }
+
+  // The features' names and values become C++ names in the generated registry
+  // (spec/cpp_names.h): refused here, at the key that wrote them, rather than as a compile
+  // error in generated code. `features` is "raw.features", whose entries all became features.
+  void check_cpp_names(const Value& features) {
+    std::vector<RawFeature> in_order(spec_.raw_features.size());
+    for (const RawFeature& f : spec_.raw_features) in_order[f.spec_order] = f;
+    for (std::size_t i = 0; i < in_order.size(); ++i) {
+      const std::string where = SpecReader::index("raw.features", i);
+      if (std::string problem = feature_name_problem(in_order[i].name); !problem.empty())
+        reader_.error(*features.array[i].find("name"), where + ".name", problem);
+      for (std::size_t j = 0; j < in_order[i].values.size(); ++j) {
+        const std::string& value = in_order[i].values[j];
+        if (!is_identifier(value)) continue;  // an integer: its enumerator is _<digits>
+        if (std::string problem = cpp_identifier_problem(value); !problem.empty())
+          reader_.error(features.array[i].find("values")->array[j], SpecReader::index(where + ".values", j), problem);
+      }
+    }
+    for (const NameClash& clash : generated_name_clashes(in_order)) {
+      const Value& item = features.array[clash.feature];
+      const std::string where = SpecReader::index("raw.features", clash.feature);
+      if (clash.kind == NameClash::Kind::value)
+        reader_.error(item.find("values")->array[clash.value], SpecReader::index(where + ".values", clash.value),
+                      clash.message);
+      else
+        reader_.error(*item.find("name"), where + ".name", clash.message);
+    }
   }
 
   // Puts `feature` on bits [bit, bit + width), unless they run past the last raw bit or
@@ -661,6 +696,10 @@ class DomainBuilder {
       auto rule = reader_.rule_member(item, where, "when", raw_symbols, "raw features");
       if (item.find("name") && !is_identifier(bit.name)) {
         reader_.error(*item.find("name"), where + ".name", "\"" + bit.name + "\" is not an identifier");
+        continue;
+      }
+      if (std::string problem = cpp_identifier_problem(bit.name); !problem.empty()) {
+        reader_.error(*item.find("name"), where + ".name", problem);
         continue;
       }
       if (!bit.name.empty() && !names_seen.insert(bit.name).second)

@@ -10,14 +10,6 @@ namespace shadergen {
 
 namespace {
 
-std::vector<const RawFeature*> in_spec_order(const DomainSpec& spec) {
-  std::vector<const RawFeature*> features;
-  for (const RawFeature& f : spec.raw_features) features.push_back(&f);
-  std::sort(features.begin(), features.end(),
-            [](const RawFeature* a, const RawFeature* b) { return a->spec_order < b->spec_order; });
-  return features;
-}
-
 bool numeric(const RawFeature& f) { return f.valued() && !is_identifier(f.values.front()); }
 
 // Identifier values as constants of their index: macros for value-style variants (so that
@@ -82,7 +74,7 @@ std::int32_t value_number(const RawFeature& f, std::uint32_t index) {
 
 KindDeclarations kind_declarations(const DomainSpec& spec) {
   KindDeclarations out;
-  std::vector<const RawFeature*> features = in_spec_order(spec);
+  std::vector<const RawFeature*> features = spec.features_in_spec_order();
   identifier_values(features, out);
   specialization_constants(features, out);
   branch_block(spec, features, out);

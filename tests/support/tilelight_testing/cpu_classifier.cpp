@@ -6,6 +6,8 @@
 
 #include "tilelight/base/error.h"
 
+#include "tilelight_testing/raw_bit_masks.h"
+
 #include <split_second_shaders.h>
 
 #include <algorithm>
@@ -228,7 +230,7 @@ std::uint32_t raw_id(std::uint32_t flags, const RawBitLayout& bits) {
 }  // namespace
 
 RawBitLayout registry_raw_bits() {
-  namespace bit = split_second::raw_bit;
+  namespace bit = tilelight::raw_bit_masks;
   return {bit::SHADOW_SOLID, bit::SHADOW_SOFT, bit::SHADOW_FADE, bit::LIGHT_SCATTERING,
           bit::MSAA_EDGE,    bit::SKY,         bit::SUN_LIGHT};
 }

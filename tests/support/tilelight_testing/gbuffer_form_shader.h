@@ -16,7 +16,8 @@ namespace tilelight {
 // The permutation `raw_id` (the domain's raw_id() of the wanted form) of `registry`; throws
 // tilelight::Error naming `domain` when it has none.
 inline const shadergen::Permutation& gbuffer_form_shader(const shadergen::Registry& registry,
-                                                         std::optional<std::uint32_t> raw_id, std::string_view domain) {
+                                                         std::optional<shadergen::RawId> raw_id,
+                                                         std::string_view domain) {
   const shadergen::Permutation* shader = raw_id ? registry.find_raw(*raw_id) : nullptr;
   if (shader == nullptr) throw Error("the test domain " + std::string(domain) + " has no shader for this G-buffer");
   return *shader;
