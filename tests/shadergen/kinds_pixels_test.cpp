@@ -56,8 +56,8 @@ std::array<float, 4> expected_colour(std::uint32_t raw_id) {
   const bool fog = (raw_id & raw_bit::FOG.value()) != 0;
   const bool soft = (raw_id & raw_bit::SOFT.value()) != 0;
   const std::uint32_t taps_index = (raw_id & raw_bit::TAPS_mask.value()) >> raw_bit::TAPS_shift;
-  const bool pbr =
-      ((raw_id & raw_bit::SHADING_mask.value()) >> raw_bit::SHADING_shift) == static_cast<std::uint32_t>(SHADING_value::PBR);
+  const bool pbr = ((raw_id & raw_bit::SHADING_mask.value()) >> raw_bit::SHADING_shift) ==
+                   static_cast<std::uint32_t>(SHADING_value::PBR);
   const std::array<float, 3> taps = {1.0f, 4.0f, 8.0f};
   float r = 0.125f + (fog ? 0.25f : 0.0f) + (pbr ? 0.5f : 0.0f);
   float g = 0.125f + (soft ? 0.25f : 0.0f);
