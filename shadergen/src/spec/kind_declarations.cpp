@@ -101,7 +101,7 @@ std::pair<std::size_t, int> after_version(std::string_view text) {
       std::string_view trimmed = content.substr(first);
       if (trimmed.rfind("/*", 0) == 0) {
         in_comment = trimmed.find("*/", 2) == std::string_view::npos;
-      } else if (trimmed.rfind("#", 0) == 0) {
+      } else if (trimmed.rfind('#', 0) == 0) {
         std::string_view directive = trimmed.substr(1);
         directive.remove_prefix(std::min(directive.find_first_not_of(" \t"), directive.size()));
         if (directive.rfind("version", 0) == 0) return {next, line + 1};
