@@ -73,8 +73,9 @@ class RawId {
   constexpr explicit RawId(std::uint32_t value) : value_(value) {}
   constexpr std::uint32_t value() const { return value_; }
   friend constexpr bool operator==(RawId, RawId) = default;
-  // NOLINTNEXTLINE(modernize-use-nullptr): clang-tidy 14 takes the comparison with 0 that a
-  // defaulted <=> implies for a null pointer constant (a known false positive).
+  // clang-tidy 14 takes the comparison with 0 that a defaulted <=> implies for a null pointer
+  // constant (a known false positive).
+  // NOLINTNEXTLINE(modernize-use-nullptr)
   friend constexpr std::strong_ordering operator<=>(RawId, RawId) = default;
 
  private:
@@ -87,8 +88,9 @@ class OptimisedId {
   constexpr explicit OptimisedId(std::uint32_t value) : value_(value) {}
   constexpr std::uint32_t value() const { return value_; }
   friend constexpr bool operator==(OptimisedId, OptimisedId) = default;
-  // NOLINTNEXTLINE(modernize-use-nullptr): clang-tidy 14 takes the comparison with 0 that a
-  // defaulted <=> implies for a null pointer constant (a known false positive).
+  // clang-tidy 14 takes the comparison with 0 that a defaulted <=> implies for a null pointer
+  // constant (a known false positive).
+  // NOLINTNEXTLINE(modernize-use-nullptr)
   friend constexpr std::strong_ordering operator<=>(OptimisedId, OptimisedId) = default;
 
  private:
