@@ -32,13 +32,6 @@ const std::string kBase = R"({
 }
 )";
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base spec";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
 struct NameCase {
   const char* name;
   std::string text;
@@ -58,68 +51,70 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         NameCase{"base_is_valid", kBase, "(no error)"},
         NameCase{
-            "feature_keyword", replace(kBase, "\"name\": \"A\"", "\"name\": \"int\""),
+            "feature_keyword", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"int\""),
             "spec.json:7:17: error: raw.features[0].name: \"int\" is a C++ keyword or reserved name; " + kReserved},
         NameCase{
-            "feature_alternative_token", replace(kBase, "\"name\": \"A\"", "\"name\": \"not\""),
+            "feature_alternative_token", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"not\""),
             "spec.json:7:17: error: raw.features[0].name: \"not\" is a C++ keyword or reserved name; " + kReserved},
         NameCase{
-            "feature_char8_t", replace(kBase, "\"name\": \"A\"", "\"name\": \"char8_t\""),
+            "feature_char8_t", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"char8_t\""),
             "spec.json:7:17: error: raw.features[0].name: \"char8_t\" is a C++ keyword or reserved name; " + kReserved},
-        NameCase{"feature_underscore_capital", replace(kBase, "\"name\": \"A\"", "\"name\": \"_Sky\""),
+        NameCase{"feature_underscore_capital", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"_Sky\""),
                  "spec.json:7:17: error: raw.features[0].name: \"_Sky\" is reserved in C++ (an underscore and a "
                  "capital letter begin it); " +
                      kReserved},
-        NameCase{"feature_double_underscore", replace(kBase, "\"name\": \"A\"", "\"name\": \"SKY__LIT\""),
+        NameCase{"feature_double_underscore", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"SKY__LIT\""),
                  "spec.json:7:17: error: raw.features[0].name: \"SKY__LIT\" is reserved in C++ (it holds a double "
                  "underscore); " +
                      kReserved},
-        NameCase{"feature_named_Features", replace(kBase, "\"name\": \"A\"", "\"name\": \"Features\""),
+        NameCase{"feature_named_Features", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"Features\""),
                  "spec.json:7:17: error: raw.features[0].name: \"Features\" is a name the generated registry "
                  "declares itself"},
-        NameCase{"feature_named_RawId", replace(kBase, "\"name\": \"A\"", "\"name\": \"RawId\""),
+        NameCase{"feature_named_RawId", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"RawId\""),
                  "spec.json:7:17: error: raw.features[0].name: \"RawId\" is a name the generated registry declares "
                  "itself"},
-        NameCase{"feature_named_registry", replace(kBase, "\"name\": \"A\"", "\"name\": \"registry\""),
+        NameCase{"feature_named_registry", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"registry\""),
                  "spec.json:7:17: error: raw.features[0].name: \"registry\" is a name the generated registry "
                  "declares itself"},
-        NameCase{"feature_named_kRawBits", replace(kBase, "\"name\": \"A\"", "\"name\": \"kRawBits\""),
+        NameCase{"feature_named_kRawBits", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"kRawBits\""),
                  "spec.json:7:17: error: raw.features[0].name: \"kRawBits\" is a name the generated registry "
                  "declares itself"},
-        NameCase{"value_keyword", replace(kBase, "[\"soft\", \"hard\"]", "[\"soft\", \"class\"]"),
+        NameCase{"value_keyword", sgtest::replace_once(kBase, "[\"soft\", \"hard\"]", "[\"soft\", \"class\"]"),
                  "spec.json:9:76: error: raw.features[2].values[1]: \"class\" is a C++ keyword or reserved name; " +
                      kReserved},
-        NameCase{"value_reserved", replace(kBase, "[\"soft\", \"hard\"]", "[\"_Soft\", \"hard\"]"),
+        NameCase{"value_reserved", sgtest::replace_once(kBase, "[\"soft\", \"hard\"]", "[\"_Soft\", \"hard\"]"),
                  "spec.json:9:68: error: raw.features[2].values[0]: \"_Soft\" is reserved in C++ (an underscore and "
                  "a capital letter begin it); " +
                      kReserved},
-        NameCase{"values_make_one_enumerator", replace(kBase, "[0, 1, 2]", "[-1, \"_m1\", 2]"),
+        NameCase{"values_make_one_enumerator", sgtest::replace_once(kBase, "[0, 1, 2]", "[-1, \"_m1\", 2]"),
                  "spec.json:8:74: error: raw.features[1].values[1]: values -1 and _m1 both become the enumerator "
                  "LEVEL_value::_m1 in the generated C++"},
-        NameCase{"integer_and_underscore_digit", replace(kBase, "[0, 1, 2]", "[0, \"_1\", 1]"),
+        NameCase{"integer_and_underscore_digit", sgtest::replace_once(kBase, "[0, 1, 2]", "[0, \"_1\", 1]"),
                  "spec.json:8:79: error: raw.features[1].values[2]: values _1 and 1 both become the enumerator "
                  "LEVEL_value::_1 in the generated C++"},
-        NameCase{"feature_named_another_enum", replace(kBase, "\"name\": \"MODE\"", "\"name\": \"LEVEL_value\""),
+        NameCase{"feature_named_another_enum",
+                 sgtest::replace_once(kBase, "\"name\": \"MODE\"", "\"name\": \"LEVEL_value\""),
                  "spec.json:9:17: error: raw.features[2].name: \"LEVEL_value\" clashes with the enum of valued "
                  "feature LEVEL in the generated C++"},
-        NameCase{"valued_feature_after_its_enum_name", replace(kBase, "\"name\": \"A\"", "\"name\": \"to_MODE\""),
+        NameCase{"valued_feature_after_its_enum_name",
+                 sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"to_MODE\""),
                  "spec.json:9:17: error: raw.features[2].name: the value conversion of valued feature MODE, to_MODE, "
                  "clashes with feature \"to_MODE\" in the generated C++"},
-        NameCase{"boolean_named_a_mask", replace(kBase, "\"name\": \"A\"", "\"name\": \"LEVEL_mask\""),
+        NameCase{"boolean_named_a_mask", sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"LEVEL_mask\""),
                  "spec.json:8:17: error: raw.features[1].name: raw_bit::LEVEL_mask of valued feature LEVEL, "
                  "LEVEL_mask, clashes with feature \"LEVEL_mask\" in the generated C++"},
         // A valued feature has no raw_bit::<NAME> of its own: LEVEL_shift valued beside LEVEL is fine.
-        NameCase{"valued_named_a_shift", replace(kBase, "\"name\": \"MODE\"", "\"name\": \"LEVEL_shift\""),
+        NameCase{"valued_named_a_shift", sgtest::replace_once(kBase, "\"name\": \"MODE\"", "\"name\": \"LEVEL_shift\""),
                  "(no error)"},
         // Identifiers with a special meaning in some places only, and names of locals, are fine.
         NameCase{"contextual_names",
-                 replace(replace(kBase, "\"name\": \"A\"", "\"name\": \"final\""), "[\"soft\", \"hard\"]",
-                         "[\"import\", \"value\"]"),
+                 sgtest::replace_once(sgtest::replace_once(kBase, "\"name\": \"A\"", "\"name\": \"final\""),
+                                      "[\"soft\", \"hard\"]", "[\"import\", \"value\"]"),
                  "(no error)"},
         NameCase{
-            "optimised_bit_keyword", replace(kBase, "\"name\": \"X\"", "\"name\": \"xor\""),
+            "optimised_bit_keyword", sgtest::replace_once(kBase, "\"name\": \"X\"", "\"name\": \"xor\""),
             "spec.json:13:25: error: optimised.bits[0].name: \"xor\" is a C++ keyword or reserved name; " + kReserved},
-        NameCase{"optimised_bit_reserved", replace(kBase, "\"name\": \"X\"", "\"name\": \"__X\""),
+        NameCase{"optimised_bit_reserved", sgtest::replace_once(kBase, "\"name\": \"X\"", "\"name\": \"__X\""),
                  "spec.json:13:25: error: optimised.bits[0].name: \"__X\" is reserved in C++ (it holds a double "
                  "underscore); " +
                      kReserved}),
