@@ -30,10 +30,13 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <tuple>
 #include <utility>
+
+#include <unistd.h>
 
 namespace {
 
@@ -116,6 +119,25 @@ std::vector<Measurement> measure_in_groups(const Context& context, const SceneFo
   return measurements;
 }
 
+// The kinds comparison's rows also say what their build costs: each row's light spec compiled by
+// shadergen, cold, after every frame was measured (so no build competes with a timed frame).
+void add_spec_builds(const SweepPlan& plan, std::vector<Measurement>& measurements) {
+  const auto kinds = std::find_if(plan.comparisons.begin(), plan.comparisons.end(),
+                                  [](const Comparison& c) { return c.facet == Facet::kinds; });
+  if (kinds == plan.comparisons.end()) return;
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / fmt::format("tilelight-sweep-specs-{}", ::getpid());
+  for (Measurement& m : measurements) {
+    if (std::find(kinds->keys.begin(), kinds->keys.end(), m.key) == kinds->keys.end()) continue;
+    const std::filesystem::path spec =
+        light_spec(TILELIGHT_PERMUTATIONS_DIR, m.options.light_pass, m.options.light_kinds);
+    std::cerr << "shadergen build " << spec.filename().string() << " (no companions, --no-cache)" << std::flush;
+    m.spec_build = build_light_spec(SHADERGEN_EXE, spec, scratch);
+    std::cerr << fmt::format(": {} blobs in {:.2f} s\n", m.spec_build->blobs, m.spec_build->seconds);
+  }
+  std::filesystem::remove_all(scratch);
+}
+
 // The scene with its sun fitted to a configuration's camera (tilelight's choice: a procedural
 // camera as it always was, a file's or a placed one fitted to its view at that frame size).
 class FittedScene {
@@ -172,8 +194,9 @@ int run_sweep(const SweepOptions& options) {
   if (!options.update_doc.empty()) {
     (void)replace_marked_sections(read_document(options.update_doc), empty_sections(plan), options.update_doc);
   }
-  const std::vector<Measurement> measurements =
+  std::vector<Measurement> measurements =
       measure_in_groups(context, std::ref(fitted), plan.configurations, options.frames);
+  add_spec_builds(plan, measurements);
 
   const char* threads = std::getenv("LP_NUM_THREADS");
   const std::string run_line = fmt::format(

@@ -12,7 +12,7 @@ if(NOT rc EQUAL 0)
 endif()
 
 foreach(name IN ITEMS results.json permutations.png tile_size.png index_path.png coalescing.png
-                      primitive.png resolution.png stages.png baselines.png)
+                      primitive.png resolution.png stages.png baselines.png kinds.png)
   if(NOT EXISTS "${OUT}/${name}")
     message(FATAL_ERROR "tilelight_sweep --quick did not write ${OUT}/${name}")
   endif()
@@ -29,7 +29,9 @@ foreach(heading IN ITEMS "### Optimised vs raw permutations (64x36)" "### Tile s
                          "### Per-stage cost, naive vs classified (64x36)" "| 96x54 |"
                          "### Classified vs per-pixel branching (dynamic) vs naive" "| raster | 1x | 96x54 | closeup |"
                          "| compute | 1x | 96x54 | closeup |" "| raster, 4x MSAA, 96x54, CPU index build | 6 |"
-                         "| compute, 4x MSAA, 96x54, CPU index build | 6 |")
+                         "| compute, 4x MSAA, 96x54, CPU index build | 6 |"
+                         "### Feature kinds: SKY and LIGHT_SCATTERING as variants, specialization constants, branches (64x36)"
+                         "| raster | specialization | 14 (24) |" "| compute | branch | 14 (24) |")
   string(FIND "${stdout}" "${heading}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "tilelight_sweep --quick printed no '${heading}'\nstdout:\n${stdout}")

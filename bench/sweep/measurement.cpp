@@ -31,6 +31,7 @@ Measurement finish(const Run& run, const RendererOptions& options, std::uint32_t
   m.frame_timings = run.timings;
   m.msaa_samples = run.renderer->msaa_samples();
   m.pipelines = run.renderer->pipeline_count();
+  m.tile_pipelines_ms = run.renderer->tile_pipelines_ms();
   m.tiles = run.renderer->grid().tile_count();
   m.primitives_uncoalesced = run.last.stats.primitives_uncoalesced;
   m.primitives_coalesced = run.last.stats.primitives_coalesced;
@@ -79,6 +80,7 @@ std::string configuration_key(const RendererOptions& o) {
                   o.msaa == 0 ? std::string("auto") : std::to_string(o.msaa), to_string(o.light_pass));
   if (o.baselines != Baselines::both) key += fmt::format(" baselines {}", to_string(o.baselines));
   if (!o.cull_batches) key += " no-cull";
+  if (o.light_kinds != LightKinds::variant) key += fmt::format(" kinds {}", to_string(o.light_kinds));
   return key;
 }
 

@@ -2,6 +2,8 @@
 // One configuration of the renderer measured: medians of every stage over the timed frames,
 // the primitive counts, and whether the classified frame still equals the naive one.
 
+#include "spec_builds.h"
+
 #include "tilelight/app/frame_ratios.h"
 #include "tilelight/app/report.h"
 #include "tilelight/render/tile_renderer.h"
@@ -10,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -21,7 +24,10 @@ struct Measurement {
   RendererOptions options;
   std::uint32_t frames = 0;
   std::uint32_t msaa_samples = 0;
-  std::uint32_t pipelines = 0;  // lighting pipelines the tile pass binds (32 or 96)
+  std::uint32_t pipelines = 0;   // lighting pipelines the tile pass binds (32 or 96; 8 for --light-kinds branch)
+  double tile_pipelines_ms = 0;  // host time their creation took (TileRenderer::tile_pipelines_ms())
+  // The kinds comparison's rows: the light spec of the row's build compiled by shadergen (spec_builds.h).
+  std::optional<SpecBuild> spec_build;
   std::uint32_t tiles = 0;
   TilePrimitive primitive = TilePrimitive::triangles;  // what the tile pass drew (auto resolved)
   std::uint32_t primitives_uncoalesced = 0, primitives_coalesced = 0, rectangles = 0;

@@ -60,6 +60,14 @@ Json measurement_json(const Measurement& m, std::optional<double> bandwidth) {
   j["permutations"] = o.raw_permutations ? "raw" : "optimised";
   j["coalesce"] = o.coalesce;
   j["pipelines"] = m.pipelines;
+  j["light_kinds"] = to_string(o.light_kinds);
+  j["tile_pipelines_ms"] = round3(m.tile_pipelines_ms);
+  if (m.spec_build) {
+    j["spec_build"] = {{"spec", m.spec_build->spec},
+                       {"sources", m.spec_build->sources},
+                       {"spirv_blobs", m.spec_build->blobs},
+                       {"seconds", round3(m.spec_build->seconds)}};
+  }
   j["tiles"] = m.tiles;
   j["primitive"] = to_string(m.primitive);
   j["primitives"] = {

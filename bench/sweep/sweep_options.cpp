@@ -88,10 +88,10 @@ bool parse_sweep_options(int argc, const char* const* argv, SweepOptions& option
       ->capture_default_str();
   cli.add_option("--only", options.only,
                  "run only these comparisons: permutations, tile_size, index_path, coalescing, primitive, "
-                 "resolution, stages, baselines (default: all)")
+                 "resolution, stages, baselines, kinds (default: all)")
       ->delimiter(',')
-      ->check(CLI::IsMember(
-          {"permutations", "tile_size", "index_path", "coalescing", "primitive", "resolution", "stages", "baselines"}));
+      ->check(CLI::IsMember({"permutations", "tile_size", "index_path", "coalescing", "primitive", "resolution",
+                             "stages", "baselines", "kinds"}));
   cli.add_option("--device", options.device,
                  "Vulkan device: auto (a discrete GPU, else an integrated one, else lavapipe), an index or a name "
                  "substring (default: lavapipe)");

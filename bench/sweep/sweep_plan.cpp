@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace tilelight::sweep {
 namespace {
@@ -74,6 +75,21 @@ SweepPlan make_sweep_plan(const SweepOptions& options) {
                        });
   b.compare<bool>(Facet::stages, "stages", "Per-stage cost, naive vs classified" + at, {true},
                   [](RendererOptions&, const bool&) {});
+  // SKY and LIGHT_SCATTERING as variants, specialization constants and run-time branches
+  // (--light-kinds), in both light passes: the same frame, other pipelines and blobs.
+  std::vector<std::pair<LightPass, LightKinds>> kinds;
+  for (const std::string& pass : options.light_passes) {
+    for (const LightKinds k : {LightKinds::variant, LightKinds::specialization, LightKinds::branch}) {
+      kinds.emplace_back(pass == "compute" ? LightPass::compute : LightPass::raster, k);
+    }
+  }
+  b.compare<std::pair<LightPass, LightKinds>>(
+      Facet::kinds, "kinds",
+      "Feature kinds: SKY and LIGHT_SCATTERING as variants, specialization constants, branches" + at, kinds,
+      [](RendererOptions& o, const std::pair<LightPass, LightKinds>& k) {
+        o.light_pass = k.first;
+        o.light_kinds = k.second;
+      });
   // Every light-pass kind, MSAA mode, size, index build and camera: rows grouped in that order.
   struct View {
     std::uint32_t msaa;
@@ -123,6 +139,7 @@ std::string row_label(Facet facet, const Measurement& m) {
     case Facet::primitive: return fmt::format("{} ({})", to_string(m.primitive), o.primitive ? "asked for" : "auto");
     case Facet::resolution:
     case Facet::stages: return fmt::format("{}x{}", o.width, o.height);
+    case Facet::kinds: return fmt::format("{} {}", to_string(o.light_pass), to_string(o.light_kinds));
     case Facet::baselines:
       // The index build only where it is not the default, so a CPU-only run keeps its labels.
       return fmt::format("{} {}x {}x{} {}{}{}", to_string(o.light_pass), m.msaa_samples, o.width, o.height, o.camera,

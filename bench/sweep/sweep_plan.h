@@ -15,7 +15,7 @@
 namespace tilelight::sweep {
 
 // What varies within one comparison; decides how its rows are named and charted.
-enum class Facet { permutations, tile_size, index_path, coalescing, primitive, resolution, stages, baselines };
+enum class Facet { permutations, tile_size, index_path, coalescing, primitive, resolution, stages, baselines, kinds };
 
 struct Comparison {
   Facet facet;

@@ -94,6 +94,24 @@ std::string baselines_table(const std::vector<const Measurement*>& rows) {
   return out;
 }
 
+// SKY and LIGHT_SCATTERING as variants, specialization constants and branches: what each build
+// costs (blobs and shadergen's time, pipelines and their creation) and what its tile pass takes.
+std::string kinds_table(const std::vector<const Measurement*>& rows) {
+  std::string out =
+      "| light pass | kinds | SPIR-V blobs (sources) | shadergen build (s) | pipelines | pipeline creation (ms) | "
+      "tiled light (ms) | classified light path (ms) | pixels differ |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Measurement* m : rows) {
+    const RendererOptions& o = m->options;
+    out += fmt::format(
+        "| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", to_string(o.light_pass), to_string(o.light_kinds),
+        m->spec_build ? fmt::format("{} ({})", m->spec_build->blobs, m->spec_build->sources) : "-",
+        m->spec_build ? fmt::format("{:.2f}", m->spec_build->seconds) : "-", m->pipelines, ms(m->tile_pipelines_ms),
+        ms(m->timings.tiled_light), ms(m->classified_light()), m->equivalence.pixels_different);
+  }
+  return out;
+}
+
 // A time that was not measured reads 0 (a pass that did not run, a field the renderer does not
 // fill): "-" rather than a figure that looks like a very fast pass.
 std::string ms_or_dash(double value) { return value > 0 ? ms(value) : "-"; }
@@ -186,6 +204,7 @@ std::string whole_frame_table(const std::vector<const Measurement*>& rows, std::
 std::string markdown_table(const Comparison& comparison, const std::vector<const Measurement*>& rows,
                            std::string_view device_name) {
   if (comparison.facet == Facet::stages && !rows.empty()) return stages_table(*rows.front());
+  if (comparison.facet == Facet::kinds) return kinds_table(rows);
   if (comparison.facet == Facet::baselines && !rows.empty()) {
     // The whole-frame layout where the floor ran too; the light-path one, as before, otherwise.
     if (rows.front()->options.baselines == Baselines::all) return whole_frame_table(rows, device_name);

@@ -19,6 +19,14 @@
 // Each feature is one call into the include library with the same arguments in every
 // permutation, so the arithmetic that does run is identical to the full shader's.
 //
+// SKY and LIGHT_SCATTERING are read as expressions (`if (SKY)`), never with #ifdef, so the same
+// text builds whatever kind the spec gives them (docs/spec-format.md, "Kinds"): a value-style
+// define (split_second.json: `(1 == 1)` or `(0 == 1)`, folded away at compile time), a
+// specialization constant (split_second_specialization.json, fixed at pipeline creation) or a
+// uniform read (split_second_branch.json, taken per draw). Every other switch is a variant and
+// keeps its #ifdef. The companions below are not permuted and get no feature defines, so they
+// give the two expressions the value their pass needs themselves.
+//
 // DYNAMIC_BRANCHING builds the per-pixel baseline instead (tilelight's "dynamic" light pass):
 // every feature compiled in, as in the naive pass, but each taken only where this pixel needs
 // it, decided per pixel with the same tests the tile classifier applies per tile: no sun term
@@ -43,12 +51,18 @@
 #define SUN_LIGHT
 #define SOFT_SHADOW
 #define SHADOW_FADE
-#define LIGHT_SCATTERING
+#define LIGHT_SCATTERING (1 == 1)
 #define MSAA_EDGE
-#define SKY
+#define SKY (1 == 1)
 const bool PER_PIXEL_BRANCHES = true;
 #else
 const bool PER_PIXEL_BRANCHES = false; // the tile's class decided: every test below folds away
+#endif
+#ifdef FLOOR_PASS
+// The floor pass lights nothing: shade_sample() below is compiled but never called, and only
+// needs the two expressions to exist.
+#define LIGHT_SCATTERING (0 == 1)
+#define SKY (0 == 1)
 #endif
 
 #if defined(SOLID_SHADOW) && defined(SOFT_SHADOW)
@@ -82,22 +96,20 @@ vec3 shade_geometry(GSample g, ivec2 pixel)
         colour += sun * sun_visibility(world_pos, view_depth);
     }
 #endif
-#ifdef LIGHT_SCATTERING
-    colour = light_scattering_apply(colour, view_depth);
-#endif
+    if (LIGHT_SCATTERING) {
+        colour = light_scattering_apply(colour, view_depth);
+    }
     return colour;
 }
 
 vec3 shade_sample(ivec2 pixel, int sample_index)
 {
     GSample g = gbuffer_load(pixel, sample_index);
-#ifdef SKY
     // The scene wrote the sky's final colour (atmosphere included): no sun, no scattering, so
     // nothing here depends on the sky's depth and its distance bits are harmless.
-    if (g.is_sky) {
+    if (SKY && g.is_sky) {
         return g.prelit;
     }
-#endif
     return shade_geometry(g, pixel);
 }
 

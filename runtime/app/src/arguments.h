@@ -23,6 +23,7 @@ struct Arguments {
   std::string primitive = "auto";
   Baselines baseline = RendererOptions{}.baselines;
   LightPass light_pass = RendererOptions{}.light_pass;
+  LightKinds light_kinds = RendererOptions{}.light_kinds;
   LocalLightPass local_light_pass = RendererOptions{}.local_light_pass;
   bool local_light_shadows = RendererOptions{}.local_light_shadows;            // --local-light-shadows
   bool local_light_shadow_cache = RendererOptions{}.local_light_shadow_cache;  // --local-light-shadow-cache

@@ -99,6 +99,10 @@ void add_options(CLI::App& cli, Arguments& a) {
   add_choice(cli, "--light-pass", a.light_pass, light_pass_names(),
              "how the light passes run: raster (the tile pass draws each class's tiles) or compute (one "
              "indirect dispatch per class over its tile list); the baselines run as the same kind");
+  add_choice(cli, "--light-kinds", a.light_kinds, light_kinds_names(),
+             "how the light domain's SKY and LIGHT_SCATTERING features reach the tile pass: variant (compiled "
+             "into the 32 permutations), specialization (constants fixed per pipeline) or branch (read per draw "
+             "from a uniform block); the same frame, the baselines always the variant build");
   add_choice(cli, "--local-light-pass", a.local_light_pass, local_light_pass_names(),
              "how the scene's local lights are added: volumes (each light's sphere, cone or box, depth- and "
              "stencil-tested) or fullscreen (one full-screen pass per light: the reference)");

@@ -35,6 +35,13 @@ const OptionNames<LightPass>& light_pass_names() {
   return names;
 }
 
+const OptionNames<LightKinds>& light_kinds_names() {
+  static const OptionNames<LightKinds> names{{to_string(LightKinds::variant), LightKinds::variant},
+                                             {to_string(LightKinds::specialization), LightKinds::specialization},
+                                             {to_string(LightKinds::branch), LightKinds::branch}};
+  return names;
+}
+
 const OptionNames<LocalLightPass>& local_light_pass_names() {
   static const OptionNames<LocalLightPass> names{{to_string(LocalLightPass::volumes), LocalLightPass::volumes},
                                                  {to_string(LocalLightPass::fullscreen), LocalLightPass::fullscreen}};

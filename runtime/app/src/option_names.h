@@ -20,6 +20,7 @@ const OptionNames<IndexPath>& path_names();
 const OptionNames<bool>& permutation_names();  // RendererOptions::raw_permutations
 const OptionNames<Baselines>& baseline_names();
 const OptionNames<LightPass>& light_pass_names();
+const OptionNames<LightKinds>& light_kinds_names();
 const OptionNames<LocalLightPass>& local_light_pass_names();
 const OptionNames<bool>& on_off_names();  // "on" true, "off" false
 

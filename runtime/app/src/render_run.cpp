@@ -78,6 +78,7 @@ RendererOptions renderer_options(const Arguments& a, const ChosenCamera& camera)
   options.tile_size = a.tile_size;
   options.path = a.path;
   options.light_pass = a.light_pass;
+  options.light_kinds = a.light_kinds;
   options.local_light_pass = a.local_light_pass;
   options.local_light_shadows = a.local_light_shadows;
   options.local_light_shadow_cache = a.local_light_shadow_cache;
@@ -160,6 +161,9 @@ FrameReport make_report(const Arguments& a, const ChosenCamera& camera, const Co
                 a.baseline,
                 a.light_pass};
   report.run.local_light_pass = a.local_light_pass;
+  report.run.light_kinds = renderer.light_kinds();
+  report.run.tile_pipelines = renderer.pipeline_count();
+  report.run.tile_pipelines_ms = renderer.tile_pipelines_ms();
   report.run.forward_instances = renderer.forward_instances();
   report.run.scene = scene.source;
   report.run.scene_triangles = scene.triangle_count();

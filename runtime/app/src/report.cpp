@@ -153,6 +153,11 @@ std::string report_json(const FrameReport& r) {
   j["primitive"] = r.run.primitive;
   j["baselines"] = name_of(baseline_names(), r.run.baselines);
   j["light_pass"] = name_of(light_pass_names(), r.run.light_pass);
+  // Which build of the light domain the tile pass drew (--light-kinds), its pipelines and the
+  // host time their creation took when the renderer was made.
+  j["light_kinds"] = name_of(light_kinds_names(), r.run.light_kinds);
+  j["tile_pipelines"] = {{"count", r.run.tile_pipelines},
+                         {"create_ms", std::round(r.run.tile_pipelines_ms * 1000.0) / 1000.0}};
   j["local_light_pass"] = name_of(local_light_pass_names(), r.run.local_light_pass);
   // The forward pass of the blended materials: instances drawn per light target, and K.
   j["forward"] = {{"instances", r.run.forward_instances}, {"max_lights", kForwardMaxLights}};
@@ -228,6 +233,12 @@ std::string run_lines(const RunDescription& run) {
       "{}x{}, {}x MSAA, {}, {} light pass, path {}, {} permutations, camera {}, median of {} frame(s)\n", run.width,
       run.height, run.msaa_samples, run.device, to_string(run.light_pass), name_of(path_names(), run.path),
       name_of(permutation_names(), run.raw_permutations), run.camera, run.frames);
+  // The variant build is the default and the line stays as it always was; another build says so.
+  if (run.light_kinds != LightKinds::variant) {
+    out += fmt::format(
+        "light kinds {}: SKY and LIGHT_SCATTERING as {}, {} tile-pass pipelines\n", to_string(run.light_kinds),
+        run.light_kinds == LightKinds::branch ? "run-time branches" : "specialization constants", run.tile_pipelines);
+  }
   return out +
          fmt::format("scene {} ({} triangles)\n", run.scene.empty() ? "procedural" : run.scene, run.scene_triangles);
 }

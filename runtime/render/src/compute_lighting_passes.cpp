@@ -1,6 +1,8 @@
 #include "compute_lighting_passes.h"
 
+#include "branch_set.h"
 #include "descriptors.h"
+#include "light_classes.h"
 #include "pipelines.h"
 #include "shader_registry.h"
 #include "tilelight/vulkan/barriers.h"
@@ -10,6 +12,7 @@
 #include <shadergen/vulkan.h>
 
 #include <array>
+#include <chrono>
 #include <string>
 
 namespace tilelight {
@@ -32,31 +35,36 @@ constexpr VkClearColorValue kUncoveredColour{{1.0f, 0.0f, 1.0f, 1.0f}};  // mage
 const Scope kComputeWrite{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT};
 const Scope kTransferRead{VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT};
 
-// The compute registry's set 0 must be the fragment registry's: both bind LightingInterface's set.
-void check_set0_matches(const shadergen::Registry& compute, const shadergen::Registry& fragment) {
-  const auto compute0 = shadergen::vk::descriptor_set_layout_bindings(compute.pipeline_layout, 0);
-  const auto fragment0 = shadergen::vk::descriptor_set_layout_bindings(fragment.pipeline_layout, 0);
+// Set `set` of the compute registry must be the other registry's: both bind the same set
+// (LightingInterface's set 0; set 1 of the tile build and of the variant build).
+void check_set_matches(const shadergen::Registry& compute, const shadergen::Registry& fragment, std::uint32_t set) {
+  const auto compute0 = shadergen::vk::descriptor_set_layout_bindings(compute.pipeline_layout, set);
+  const auto fragment0 = shadergen::vk::descriptor_set_layout_bindings(fragment.pipeline_layout, set);
   bool same = compute0.size() == fragment0.size();
   for (std::size_t i = 0; same && i < compute0.size(); ++i) {
     same = compute0[i].binding == fragment0[i].binding && compute0[i].descriptorType == fragment0[i].descriptorType &&
            compute0[i].descriptorCount == fragment0[i].descriptorCount;
   }
   if (!same) {
-    throw Error("the compute light registry " + std::string(compute.name) + "'s set 0 differs from " +
-                std::string(fragment.name) + "'s (uber/include/lighting_params.glsl)");
+    throw Error("the compute light registry " + std::string(compute.name) + "'s set " + std::to_string(set) +
+                " differs from " + std::string(fragment.name) +
+                "'s (uber/include/lighting_params.glsl, uber/lighting.comp)");
   }
 }
 
 // The tile pass (not `full_frame`) reads the classified G-buffer, whose coverage flags exist with
 // 2 or more samples; the baselines read the plain one.
+// `specialization`: the values of the tile build's specialization features (empty for variants).
 UniquePipeline create_light_pipeline(const Context& context, VkPipelineLayout layout,
                                      std::span<const std::uint32_t> spirv, const RenderTargets& targets,
-                                     std::uint32_t tile_size, bool full_frame, const std::string& name) {
+                                     std::uint32_t tile_size, bool full_frame, const std::string& name,
+                                     const shadergen::Specialization& specialization = {}) {
   const SpecConstants constants = SpecConstants{}
                                       .set(kTileSizeConstant, tile_size)
                                       .set(kFullFrameConstant, full_frame)
                                       .set(kTaggedConstant, !full_frame && targets.has_coverage_flags())
-                                      .set(kSamplesConstant, static_cast<std::uint32_t>(targets.samples()));
+                                      .set(kSamplesConstant, static_cast<std::uint32_t>(targets.samples()))
+                                      .add(shadergen::vulkan::specialization_info(specialization));
   return create_compute_pipeline(context, layout, spirv, constants, name);
 }
 
@@ -79,11 +87,14 @@ std::uint32_t ComputeLightingPasses::tiles_per_workgroup(std::uint32_t tile_size
 }
 
 ComputeLightingPasses::ComputeLightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
-                                             const LightingInterface& lighting, PermutationSet permutations,
-                                             VkDescriptorPool pool, const Buffer& tile_lists, const FloorTarget* floor)
-    : lighting_(&lighting), extent_(targets.extent()) {
+                                             const LightingInterface& lighting, const LightClasses& classes,
+                                             const BranchSet& branch, VkDescriptorPool pool, const Buffer& tile_lists,
+                                             const FloorTarget* floor)
+    : lighting_(&lighting), extent_(targets.extent()), branch_(&branch) {
   const shadergen::Registry& registry = compute_shaders_for(targets.samples());
-  check_set0_matches(registry, lighting.shaders());
+  check_set_matches(registry, lighting.shaders(), 0);
+  check_set_matches(*classes.shaders.registry, registry, 0);
+  check_set_matches(*classes.shaders.registry, registry, kTargetSet);
   const std::vector<VkDescriptorSetLayoutBinding> set1 =
       shadergen::vk::descriptor_set_layout_bindings(registry.pipeline_layout, kTargetSet);
   if (set1.size() != 2) {
@@ -105,19 +116,21 @@ ComputeLightingPasses::ComputeLightingPasses(const Context& context, const TileG
   naive_set_ = target_set(targets.naive(), "compute light set 1 (naive)");
   dynamic_set_ = target_set(targets.dynamic(), "compute light set 1 (dynamic)");
 
-  const std::uint32_t tile = grid.tile_size;
-  if (permutations == PermutationSet::optimised) {
-    for (const shadergen::Permutation& p : registry.optimised) {
-      pipelines_.push_back(create_light_pipeline(context, layout_.get(), p.spirv, targets, tile, false,
-                                                 "compute lighting optimised " + std::to_string(p.id)));
-    }
-  } else {
-    for (const shadergen::Permutation& p : registry.raw) {
-      pipelines_.push_back(p.pruned ? UniquePipeline{}
-                                    : create_light_pipeline(context, layout_.get(), p.spirv, targets, tile, false,
-                                                            "compute lighting raw " + std::to_string(p.id)));
-    }
+  tile_layout_ = layout_.get();
+  if (branch.active()) {
+    branch_layout_ = branch.pipeline_layout(context, sets, push, "compute light pipeline layout (branch block)");
+    tile_layout_ = branch_layout_.get();
   }
+  const std::uint32_t tile = grid.tile_size;
+  const auto start = std::chrono::steady_clock::now();
+  for (const LightPipelineSpec& p : classes.pipelines) {
+    pipelines_.push_back(create_light_pipeline(context, tile_layout_, p.spirv, targets, tile, false,
+                                               "compute lighting " + p.name, p.specialization));
+  }
+  tile_pipelines_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  for (const LightClass& c : classes.classes) class_pipelines_.push_back(c.pipeline);
+  // The baselines below are the variant build's, whatever build the tile pass dispatches.
+  if (registry.optimised.size() <= kNaiveOptimisedId) throw Error("the compute light registry has no optimised 31");
   naive_pipeline_ = create_light_pipeline(context, layout_.get(), registry.optimised[kNaiveOptimisedId].spirv, targets,
                                           tile, true, "compute lighting naive (optimised 31)");
   dynamic_pipeline_ = create_light_pipeline(context, layout_.get(), companion_spirv(registry, "lighting_dynamic"),
@@ -129,15 +142,9 @@ ComputeLightingPasses::ComputeLightingPasses(const Context& context, const TileG
   }
 }
 
-std::uint32_t ComputeLightingPasses::pipeline_count() const {
-  std::uint32_t count = 0;
-  for (const UniquePipeline& p : pipelines_) count += p ? 1 : 0;
-  return count;
-}
-
-void ComputeLightingPasses::bind(VkCommandBuffer cmd, VkDescriptorSet target_set) const {
+void ComputeLightingPasses::bind(VkCommandBuffer cmd, VkDescriptorSet target_set, VkPipelineLayout layout) const {
   const std::array<VkDescriptorSet, 2> sets{lighting_->set0(), target_set};
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 2, sets.data(), 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 2, sets.data(), 0, nullptr);
 }
 
 void ComputeLightingPasses::record_prepare(VkCommandBuffer cmd, const RenderTargets& targets) const {
@@ -158,12 +165,18 @@ void ComputeLightingPasses::record_tiled(VkCommandBuffer cmd, const RenderTarget
                   VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT},
                  {VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                   VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT});
-  bind(cmd, classified_set_);
-  for (std::uint32_t id = 0; id < pipelines_.size(); ++id) {
-    if (!pipelines_[id]) continue;  // a pruned raw ID: the list build rejects it
-    // One bind and one dispatch per class; a class without tiles dispatches {0, 1, 1}: no work.
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[id].get());
-    vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(id), &id);
+  bind(cmd, classified_set_, tile_layout_);
+  std::optional<std::uint32_t> bound;
+  for (std::uint32_t id = 0; id < class_pipelines_.size(); ++id) {
+    const std::optional<std::uint32_t> pipeline = class_pipelines_[id];
+    if (!pipeline) continue;  // a pruned raw ID: the list build rejects it
+    // One dispatch per class, a bind where its pipeline changes (classes of one optimised ID
+    // share it in a branch build), and its branch values; a class without tiles dispatches
+    // {0, 1, 1}: no work.
+    if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[*pipeline].get());
+    bound = pipeline;
+    if (branch_->active()) branch_->bind(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, tile_layout_, id);
+    vkCmdPushConstants(cmd, tile_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(id), &id);
     vkCmdDispatchIndirect(cmd, dispatches.handle(), id * kDispatchRecordBytes);
   }
   to_transfer_source(cmd, targets.classified());
@@ -184,7 +197,7 @@ void ComputeLightingPasses::record_floor(VkCommandBuffer cmd, const FloorTarget&
 void ComputeLightingPasses::record_full_frame(VkCommandBuffer cmd, const Image& target, VkDescriptorSet target_set,
                                               VkPipeline pipeline) const {
   to_general(cmd, target, kComputeWrite);
-  bind(cmd, target_set);
+  bind(cmd, target_set, layout_.get());
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
   const std::uint32_t no_class = 0;  // the push constant is unused by full-frame dispatches
   vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(no_class), &no_class);

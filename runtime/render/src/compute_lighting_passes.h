@@ -21,24 +21,32 @@
 #include "tilelight/vulkan/vk_handles.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace tilelight {
 
 class Context;
+struct LightClasses;
+class BranchSet;
 
 class ComputeLightingPasses {
  public:
   // `tile_lists`: the buffer of per-class tile lists (uber/include/tile_lists.glsl) the tile pass
   // reads; it must outlive this object. `targets` must have storage light targets. `floor`: the
   // floor pass's target, or null where it does not run (no pipeline, no descriptor set).
+  // `classes`: the tile pass's draw classes and the build they are dispatched with
+  // (light_classes.h), `branch` that build's branch block (inactive without branch features):
+  // both must outlive this object. The baselines dispatch the variant compute build.
   ComputeLightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
-                        const LightingInterface& lighting, PermutationSet permutations, VkDescriptorPool pool,
-                        const Buffer& tile_lists, const FloorTarget* floor = nullptr);
+                        const LightingInterface& lighting, const LightClasses& classes, const BranchSet& branch,
+                        VkDescriptorPool pool, const Buffer& tile_lists, const FloorTarget* floor = nullptr);
 
   // 32 (optimised) or 128 (raw; the 32 pruned raw IDs have no pipeline and are never dispatched).
-  std::uint32_t class_count() const { return static_cast<std::uint32_t>(pipelines_.size()); }
-  std::uint32_t pipeline_count() const;
+  std::uint32_t class_count() const { return static_cast<std::uint32_t>(class_pipelines_.size()); }
+  std::uint32_t pipeline_count() const { return static_cast<std::uint32_t>(pipelines_.size()); }
+  // Host milliseconds the tile pass's pipelines took to create.
+  double tile_pipelines_ms() const { return tile_pipelines_ms_; }
   // Tiles one workgroup of the tile pass shades: 64 invocations over whole tiles.
   static std::uint32_t tiles_per_workgroup(std::uint32_t tile_size);
 
@@ -56,7 +64,7 @@ class ComputeLightingPasses {
   void record_floor(VkCommandBuffer cmd, const FloorTarget& floor) const;
 
  private:
-  void bind(VkCommandBuffer cmd, VkDescriptorSet target_set) const;
+  void bind(VkCommandBuffer cmd, VkDescriptorSet target_set, VkPipelineLayout layout) const;
   void record_full_frame(VkCommandBuffer cmd, const Image& target, VkDescriptorSet target_set,
                          VkPipeline pipeline) const;
 
@@ -64,9 +72,15 @@ class ComputeLightingPasses {
   VkExtent2D extent_{};
   UniqueDescriptorSetLayout target_set_layout_;  // set 1: the light target and the tile lists
   UniquePipelineLayout layout_;
+  const BranchSet* branch_;
+  // The tile pass's layout: layout_, or with branch features its own, which adds the branch set.
+  UniquePipelineLayout branch_layout_;
+  VkPipelineLayout tile_layout_ = VK_NULL_HANDLE;
+  std::vector<std::optional<std::uint32_t>> class_pipelines_;  // per draw class; none for pruned raw IDs
+  double tile_pipelines_ms_ = 0;
   VkDescriptorSet classified_set_ = VK_NULL_HANDLE, naive_set_ = VK_NULL_HANDLE, dynamic_set_ = VK_NULL_HANDLE;
   VkDescriptorSet floor_set_ = VK_NULL_HANDLE;
-  std::vector<UniquePipeline> pipelines_;  // per draw class; empty for pruned raw IDs
+  std::vector<UniquePipeline> pipelines_;  // the tile pass's (LightClasses::pipelines)
   UniquePipeline naive_pipeline_, dynamic_pipeline_, floor_pipeline_;
 };
 

@@ -16,7 +16,7 @@ static_assert(offsetof(DispatchRecord, z) == offsetof(VkDispatchIndirectCommand,
 // The lists come first: the light pass's descriptor sets bind them.
 ComputeTileLightPass::ComputeTileLightPass(const TileLightPassSetup& s)
     : TileLightPass(s), tiles_per_group_(ComputeLightingPasses::tiles_per_workgroup(s.grid.tile_size)) {
-  const std::uint32_t classes = s.permutations == PermutationSet::raw ? kRawClassCount : kOptimisedClassCount;
+  const std::uint32_t classes = s.classes.class_count();
   const Buffer* lists = nullptr;
   if (s.path == IndexPath::cpu) {
     create_host_lists(s, classes);
@@ -29,8 +29,9 @@ ComputeTileLightPass::ComputeTileLightPass(const TileLightPassSetup& s)
     lists = &gpu_lists_->lists();
     dispatches_ = &gpu_lists_->dispatches();
   }
-  passes_ = std::make_unique<ComputeLightingPasses>(s.context, s.grid, s.targets, s.lighting, s.permutations, s.pool,
-                                                    *lists, s.floor);
+  branch_ = std::make_unique<BranchSet>(s.context, s.classes, s.pool);
+  passes_ = std::make_unique<ComputeLightingPasses>(s.context, s.grid, s.targets, s.lighting, s.classes, *branch_,
+                                                    s.pool, *lists, s.floor);
 }
 
 void ComputeTileLightPass::create_host_lists(const TileLightPassSetup& s, std::uint32_t classes) {

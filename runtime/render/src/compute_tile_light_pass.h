@@ -4,6 +4,7 @@
 // host-visible coherent memory after the tile pass was submitted (IndexPath::cpu) or
 // GpuTileLists writes in submit A (IndexPath::gpu). The path is chosen at construction.
 
+#include "branch_set.h"
 #include "compute_lighting_passes.h"
 #include "gpu_tile_lists.h"
 #include "tile_light_pass.h"
@@ -21,6 +22,7 @@ class ComputeTileLightPass final : public TileLightPass {
 
   std::uint32_t class_count() const override { return passes_->class_count(); }
   std::uint32_t pipeline_count() const override { return passes_->pipeline_count(); }
+  double tile_pipelines_ms() const override { return passes_->tile_pipelines_ms(); }
 
   void record_build(VkCommandBuffer cmd) const override;
   void record_prepare(VkCommandBuffer cmd, const RenderTargets& targets) const override;
@@ -44,7 +46,8 @@ class ComputeTileLightPass final : public TileLightPass {
   TileListStats built_{};
   std::unique_ptr<GpuTileLists> gpu_lists_;  // IndexPath::gpu
   const Buffer* dispatches_ = nullptr;       // the CPU path's or the GPU build's
-  // Declared after the lists it binds, so that it is destroyed first.
+  // Declared after the lists and the branch set it binds, so that it is destroyed first.
+  std::unique_ptr<BranchSet> branch_;
   std::unique_ptr<ComputeLightingPasses> passes_;
 };
 

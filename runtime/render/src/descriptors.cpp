@@ -11,8 +11,10 @@ namespace {
 
 // Descriptors of each type per set, at most, over every set a renderer allocates: set 0 of the
 // lighting interface has 1 uniform buffer and 5 images; the GPU index and tile-list builds have
-// 5 storage buffers; the compute light pass's sets have 1 storage image and 1 storage buffer.
+// 5 storage buffers; the compute light pass's sets have 1 storage image and 1 storage buffer;
+// the branch features' set (branch_set.h) 1 dynamic uniform buffer.
 constexpr std::uint32_t kUniformBuffersPerSet = 4;
+constexpr std::uint32_t kDynamicUniformBuffersPerSet = 1;
 constexpr std::uint32_t kSampledImagesPerSet = 8;
 constexpr std::uint32_t kStorageBuffersPerSet = 8;
 constexpr std::uint32_t kStorageImagesPerSet = 2;
@@ -20,8 +22,9 @@ constexpr std::uint32_t kStorageImagesPerSet = 2;
 }  // namespace
 
 UniqueDescriptorPool create_descriptor_pool(const Context& context, std::uint32_t max_sets, std::string_view name) {
-  const std::array<VkDescriptorPoolSize, 4> sizes{{
+  const std::array<VkDescriptorPoolSize, 5> sizes{{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kUniformBuffersPerSet * max_sets},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kDynamicUniformBuffersPerSet * max_sets},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kSampledImagesPerSet * max_sets},
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStorageBuffersPerSet * max_sets},
       {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kStorageImagesPerSet * max_sets},
@@ -50,8 +53,8 @@ VkDescriptorSet allocate_descriptor_set(const Context& context, VkDescriptorPool
 }
 
 void write_buffer_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type,
-                             VkBuffer buffer) {
-  const VkDescriptorBufferInfo info{buffer, 0, VK_WHOLE_SIZE};
+                             VkBuffer buffer, VkDeviceSize range) {
+  const VkDescriptorBufferInfo info{buffer, 0, range};
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = set;
   write.dstBinding = binding;

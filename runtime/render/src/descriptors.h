@@ -18,8 +18,10 @@ UniqueDescriptorPool create_descriptor_pool(const Context& context, std::uint32_
 VkDescriptorSet allocate_descriptor_set(const Context& context, VkDescriptorPool pool, VkDescriptorSetLayout layout,
                                         std::string_view name);
 
+// `range`: the bytes from the buffer's start a shader sees; a dynamic uniform buffer's must be
+// its block's size (the dynamic offset moves the window, which must stay inside the buffer).
 void write_buffer_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type,
-                             VkBuffer buffer);
+                             VkBuffer buffer, VkDeviceSize range = VK_WHOLE_SIZE);
 
 void write_image_descriptor(const Context& context, VkDescriptorSet set, std::uint32_t binding, VkSampler sampler,
                             VkImageView view, VkImageLayout layout);

@@ -1,12 +1,17 @@
 #include "lighting_passes.h"
 
+#include "branch_set.h"
+#include "light_classes.h"
 #include "pipelines.h"
 #include "shader_registry.h"
 #include "tilelight/vulkan/barriers.h"
 #include "tilelight/vulkan/context.h"
 #include "tilelight/vulkan/error.h"
 
+#include <shadergen/vulkan.h>
+
 #include <array>
+#include <chrono>
 #include <string>
 
 namespace tilelight {
@@ -20,14 +25,18 @@ constexpr std::uint32_t kGridBinding = 1;    // tile_point.vert: the grid's shap
 
 // `tile_pass`: the classified path's pass, which reads the classified G-buffer (coverage flags,
 // with 2 or more samples); the baselines read the plain one.
+// `specialization`: the values of the build's specialization features (empty for variants).
 UniquePipeline create_light_pipeline(const Context& context, const RenderTargets& targets,
-                                     const LightingInterface& lighting, std::span<const std::uint32_t> fragment,
-                                     TilePrimitive primitive, bool tile_pass, std::string name) {
+                                     const LightingInterface& lighting, VkPipelineLayout layout,
+                                     std::span<const std::uint32_t> fragment,
+                                     const shadergen::Specialization& specialization, TilePrimitive primitive,
+                                     bool tile_pass, std::string name) {
   GraphicsPipelineDesc desc;
-  desc.layout = lighting.lighting_layout();
+  desc.layout = layout;
   desc.render_pass = targets.light_pass();
   desc.fragment_spirv = fragment;
   desc.fragment_constants.set(kTaggedConstant, tile_pass && targets.has_coverage_flags());
+  desc.fragment_constants.add(shadergen::vulkan::specialization_info(specialization));
   if (primitive == TilePrimitive::points) {
     // tile_point.vert computes each point from its index; binding 1 holds the grid's shape.
     desc.vertex_spirv = companion_spirv(lighting.shaders(), "tile_point");
@@ -43,12 +52,29 @@ UniquePipeline create_light_pipeline(const Context& context, const RenderTargets
   return create_graphics_pipeline(context, desc);
 }
 
+// The tile build's set 0 must be the lighting set the variant build's reflection made: the tile
+// pass binds that set.
+void check_set0_matches(const shadergen::Registry& tile, const shadergen::Registry& variant) {
+  const auto tile0 = shadergen::vk::descriptor_set_layout_bindings(tile.pipeline_layout, 0);
+  const auto variant0 = shadergen::vk::descriptor_set_layout_bindings(variant.pipeline_layout, 0);
+  bool same = tile0.size() == variant0.size();
+  for (std::size_t i = 0; same && i < tile0.size(); ++i) {
+    same = tile0[i].binding == variant0[i].binding && tile0[i].descriptorType == variant0[i].descriptorType &&
+           tile0[i].descriptorCount == variant0[i].descriptorCount;
+  }
+  if (!same) {
+    throw Error("the light registry " + std::string(tile.name) + "'s set 0 differs from " + std::string(variant.name) +
+                "'s (uber/include/lighting_params.glsl)");
+  }
+}
+
 }  // namespace
 
 LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
-                               const LightingInterface& lighting, PermutationSet permutations, TilePrimitive primitive,
-                               bool floor)
+                               const LightingInterface& lighting, const LightClasses& classes, const BranchSet& branch,
+                               TilePrimitive primitive, bool floor)
     : lighting_(&lighting),
+      branch_(&branch),
       extent_(targets.extent()),
       viewport_{grid.tiles_x * grid.tile_size, grid.tiles_y * grid.tile_size} {
   // Exact in float: a frame within the device's framebuffer limits is far below 2^24 tiles across.
@@ -71,37 +97,39 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
   full_screen_indices_.write_values(std::span<const std::uint32_t>(whole_frame));
 
   const shadergen::Registry& registry = lighting.shaders();
-  if (permutations == PermutationSet::optimised) {
-    for (const shadergen::Permutation& p : registry.optimised) {
-      pipelines_.push_back(create_light_pipeline(context, targets, lighting, p.spirv, primitive, true,
-                                                 "lighting optimised " + std::to_string(p.id)));
-    }
-  } else {
-    for (const shadergen::Permutation& p : registry.raw) {
-      pipelines_.push_back(p.pruned ? UniquePipeline{}
-                                    : create_light_pipeline(context, targets, lighting, p.spirv, primitive, true,
-                                                            "lighting raw " + std::to_string(p.id)));
-    }
+  check_set0_matches(*classes.shaders.registry, registry);
+  tile_layout_ = lighting.lighting_layout();
+  if (branch.active()) {
+    const std::array<VkDescriptorSetLayout, 1> sets{lighting.set0_layout()};
+    branch_layout_ = branch.pipeline_layout(context, sets, shadergen::vk::push_constant_ranges(registry),
+                                            "lighting pipeline layout (branch block)");
+    tile_layout_ = branch_layout_.get();
   }
-  // The whole frame is not a square: two triangles, whose one diagonal costs little.
-  naive_pipeline_ = create_light_pipeline(context, targets, lighting, registry.optimised[kNaiveOptimisedId].spirv,
-                                          TilePrimitive::triangles, false, "lighting naive (optimised 31)");
-  dynamic_pipeline_ = create_light_pipeline(context, targets, lighting, companion_spirv(registry, "lighting_dynamic"),
+  const auto start = std::chrono::steady_clock::now();
+  for (const LightPipelineSpec& p : classes.pipelines) {
+    pipelines_.push_back(create_light_pipeline(context, targets, lighting, tile_layout_, p.spirv, p.specialization,
+                                               primitive, true, "lighting " + p.name));
+  }
+  tile_pipelines_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  for (const LightClass& c : classes.classes) class_pipelines_.push_back(c.pipeline);
+  // The whole frame is not a square: two triangles, whose one diagonal costs little. The
+  // baselines are the variant build's, whatever build the tile pass draws: the reference.
+  const shadergen::Specialization none{};
+  naive_pipeline_ = create_light_pipeline(context, targets, lighting, lighting.lighting_layout(),
+                                          registry.optimised[kNaiveOptimisedId].spirv, none, TilePrimitive::triangles,
+                                          false, "lighting naive (optimised 31)");
+  dynamic_pipeline_ = create_light_pipeline(context, targets, lighting, lighting.lighting_layout(),
+                                            companion_spirv(registry, "lighting_dynamic"), none,
                                             TilePrimitive::triangles, false, "lighting dynamic (per-pixel branches)");
   if (floor) {
-    floor_pipeline_ =
-        create_light_pipeline(context, targets, lighting, companion_spirv(registry, "lighting_floor"),
-                              TilePrimitive::triangles, false, "lighting floor (G-buffer read, no lighting)");
+    floor_pipeline_ = create_light_pipeline(context, targets, lighting, lighting.lighting_layout(),
+                                            companion_spirv(registry, "lighting_floor"), none, TilePrimitive::triangles,
+                                            false, "lighting floor (G-buffer read, no lighting)");
   }
 }
 
-std::uint32_t LightingPasses::pipeline_count() const {
-  std::uint32_t count = 0;
-  for (const UniquePipeline& p : pipelines_) count += p ? 1 : 0;
-  return count;
-}
-
-void LightingPasses::begin(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer) const {
+void LightingPasses::begin(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer,
+                           VkPipelineLayout layout) const {
   // Magenta: a pixel the tiled pass failed to cover stands out, and fails the equivalence test.
   VkClearValue clear{};
   clear.color = {{1.0f, 0.0f, 1.0f, 1.0f}};
@@ -121,11 +149,10 @@ void LightingPasses::begin(VkCommandBuffer cmd, const RenderTargets& targets, Vk
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   const VkDescriptorSet set = lighting_->set0();
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, lighting_->lighting_layout(), 0, 1, &set, 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0, nullptr);
   const std::array<float, 2> inv_viewport{1.0f / static_cast<float>(viewport_.width),
                                           1.0f / static_cast<float>(viewport_.height)};
-  vkCmdPushConstants(cmd, lighting_->lighting_layout(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(inv_viewport),
-                     inv_viewport.data());
+  vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(inv_viewport), inv_viewport.data());
   const std::array<VkBuffer, 2> vertex_buffers{corners_.handle(), grid_shape_.handle()};
   const std::array<VkDeviceSize, 2> offsets{0, 0};
   vkCmdBindVertexBuffers(cmd, kCornerBinding, 2, vertex_buffers.data(), offsets.data());
@@ -140,12 +167,17 @@ void LightingPasses::record_tiled(VkCommandBuffer cmd, const RenderTargets& targ
                   VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT},
                  {VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
                   VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT});
-  begin(cmd, targets, targets.classified_framebuffer());
+  begin(cmd, targets, targets.classified_framebuffer(), tile_layout_);
   vkCmdBindIndexBuffer(cmd, indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-  for (std::uint32_t id = 0; id < pipelines_.size(); ++id) {
-    if (!pipelines_[id]) continue;  // a pruned raw ID: the index build rejects it
-    // One bind and one draw per class; a class without tiles has indexCount 0: no GPU work.
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_[id].get());
+  std::optional<std::uint32_t> bound;
+  for (std::uint32_t id = 0; id < class_pipelines_.size(); ++id) {
+    const std::optional<std::uint32_t> pipeline = class_pipelines_[id];
+    if (!pipeline) continue;  // a pruned raw ID: the index build rejects it
+    // One draw per class, a bind where its pipeline changes (classes of one optimised ID share
+    // it in a branch build), and its branch values; a class without tiles has indexCount 0.
+    if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_[*pipeline].get());
+    bound = pipeline;
+    if (branch_->active()) branch_->bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tile_layout_, id);
     vkCmdDrawIndexedIndirect(cmd, draws.handle(), id * kDrawRecordBytes, 1,
                              static_cast<std::uint32_t>(kDrawRecordBytes));
   }
@@ -166,7 +198,7 @@ void LightingPasses::record_floor(VkCommandBuffer cmd, const RenderTargets& targ
 
 void LightingPasses::record_full_screen(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer,
                                         VkPipeline pipeline) const {
-  begin(cmd, targets, framebuffer);
+  begin(cmd, targets, framebuffer, lighting_->lighting_layout());
   vkCmdBindIndexBuffer(cmd, full_screen_indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
   vkCmdDrawIndexed(cmd, 6, 1, 0, 0, 0);

@@ -17,6 +17,7 @@
 #include "tilelight/vulkan/vk_handles.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace tilelight {
@@ -25,16 +26,24 @@ class Context;
 
 enum class PermutationSet { optimised, raw };
 
+struct LightClasses;
+class BranchSet;
+
 class LightingPasses {
  public:
-  // `floor`: build the floor pass's pipeline (only a renderer that runs it pays for it).
+  // `classes`: the tile pass's draw classes and the build they are drawn with (light_classes.h);
+  // `branch`: that build's branch block (inactive without branch features). Both must outlive
+  // this object. The baselines draw the variant build of lighting.shaders(). `floor`: build the
+  // floor pass's pipeline (only a renderer that runs it pays for it).
   LightingPasses(const Context& context, const TileGrid& grid, const RenderTargets& targets,
-                 const LightingInterface& lighting, PermutationSet permutations, TilePrimitive primitive,
-                 bool floor = false);
+                 const LightingInterface& lighting, const LightClasses& classes, const BranchSet& branch,
+                 TilePrimitive primitive, bool floor = false);
 
   // 32 (optimised) or 128 (raw; the 32 pruned raw IDs have no pipeline and are never drawn).
-  std::uint32_t class_count() const { return static_cast<std::uint32_t>(pipelines_.size()); }
-  std::uint32_t pipeline_count() const;
+  std::uint32_t class_count() const { return static_cast<std::uint32_t>(class_pipelines_.size()); }
+  std::uint32_t pipeline_count() const { return static_cast<std::uint32_t>(pipelines_.size()); }
+  // Host milliseconds the tile pass's pipelines took to create.
+  double tile_pipelines_ms() const { return tile_pipelines_ms_; }
 
   // The tile pass: starts with a barrier that makes host AND compute writes of `indices` and
   // `draws` visible to the draw stages, so the same recording serves the CPU patching and the
@@ -47,15 +56,23 @@ class LightingPasses {
   void record_floor(VkCommandBuffer cmd, const RenderTargets& targets, const FloorTarget& floor) const;
 
  private:
-  void begin(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer) const;
+  void begin(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer,
+             VkPipelineLayout layout) const;
   void record_full_screen(VkCommandBuffer cmd, const RenderTargets& targets, VkFramebuffer framebuffer,
                           VkPipeline pipeline) const;
 
   const LightingInterface* lighting_;
+  const BranchSet* branch_;
+  // The tile pass's layout: the lighting layout, or with branch features its own, which adds
+  // the branch set (set 1 an empty one).
+  UniquePipelineLayout branch_layout_;
+  VkPipelineLayout tile_layout_ = VK_NULL_HANDLE;
+  std::vector<std::optional<std::uint32_t>> class_pipelines_;  // per draw class; none for pruned raw IDs
+  double tile_pipelines_ms_ = 0;
   Buffer corners_;                         // the prebuilt grid of tile corners (pixels): triangles
   Buffer grid_shape_;                      // tiles_x + 1 and the tile size: points
   Buffer full_screen_indices_;             // two triangles over the whole frame (naive and dynamic passes)
-  std::vector<UniquePipeline> pipelines_;  // per draw class; empty for pruned raw IDs
+  std::vector<UniquePipeline> pipelines_;  // the tile pass's (LightClasses::pipelines)
   UniquePipeline naive_pipeline_, dynamic_pipeline_, floor_pipeline_;
   VkExtent2D extent_{};    // the frame
   VkExtent2D viewport_{};  // whole tiles: >= the frame

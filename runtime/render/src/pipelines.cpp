@@ -6,6 +6,9 @@
 #include <shadergen/registry.h>
 
 #include <array>
+#include <cstddef>
+#include <cstring>
+#include <string>
 
 namespace tilelight {
 namespace {
@@ -74,6 +77,19 @@ SpecConstants& SpecConstants::set(std::uint32_t constant_id, std::uint32_t value
   const auto offset = static_cast<std::uint32_t>(values_.size() * sizeof(std::uint32_t));
   entries_.push_back({constant_id, offset, sizeof(std::uint32_t)});
   values_.push_back(value);
+  return *this;
+}
+
+SpecConstants& SpecConstants::add(const VkSpecializationInfo& info) {
+  for (std::uint32_t i = 0; i < info.mapEntryCount; ++i) {
+    const VkSpecializationMapEntry& entry = info.pMapEntries[i];
+    if (entry.size != sizeof(std::uint32_t) || entry.offset + entry.size > info.dataSize) {
+      throw Error("specialization constant " + std::to_string(entry.constantID) + ": not a 4-byte value in the data");
+    }
+    std::uint32_t value = 0;
+    std::memcpy(&value, static_cast<const std::byte*>(info.pData) + entry.offset, sizeof(value));
+    set(entry.constantID, value);
+  }
   return *this;
 }
 

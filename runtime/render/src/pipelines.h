@@ -32,6 +32,10 @@ UniquePipelineLayout create_pipeline_layout(const Context& context, std::span<co
 class SpecConstants {
  public:
   SpecConstants& set(std::uint32_t constant_id, std::uint32_t value);
+  // Every constant of `info` (4-byte entries, as shadergen::vulkan::specialization_info() makes
+  // from a generated N::specialization()): the values of a build's specialization features,
+  // beside the runtime's own constants. Throws tilelight::Error for an entry of another size.
+  SpecConstants& add(const VkSpecializationInfo& info);
   // Valid until this object changes or dies; nullptr when empty.
   const VkSpecializationInfo* info();
 

@@ -15,7 +15,8 @@ static_assert(offsetof(DrawRecord, firstInstance) == offsetof(VkDrawIndexedIndir
 
 RasterTileLightPass::RasterTileLightPass(const TileLightPassSetup& s)
     : TileLightPass(s),
-      passes_(s.context, s.grid, s.targets, s.lighting, s.permutations, s.primitive, s.floor != nullptr),
+      branch_(s.context, s.classes, s.pool),
+      passes_(s.context, s.grid, s.targets, s.lighting, s.classes, branch_, s.primitive, s.floor != nullptr),
       coalesce_(s.coalesce) {
   const std::uint32_t classes = passes_.class_count();
   if (s.path == IndexPath::cpu) {

@@ -4,6 +4,7 @@
 // memory after the tile pass was submitted (IndexPath::cpu) or GpuIndexBuild writes in submit A
 // (IndexPath::gpu). The path is chosen at construction.
 
+#include "branch_set.h"
 #include "gpu_index_build.h"
 #include "lighting_passes.h"
 #include "tile_light_pass.h"
@@ -20,6 +21,7 @@ class RasterTileLightPass final : public TileLightPass {
 
   std::uint32_t class_count() const override { return passes_.class_count(); }
   std::uint32_t pipeline_count() const override { return passes_.pipeline_count(); }
+  double tile_pipelines_ms() const override { return passes_.tile_pipelines_ms(); }
 
   void record_build(VkCommandBuffer cmd) const override;
   void record_tiled(VkCommandBuffer cmd, const RenderTargets& targets) const override;
@@ -33,6 +35,7 @@ class RasterTileLightPass final : public TileLightPass {
   FrameStats host_stats() const;
   FrameStats gpu_stats() const;
 
+  BranchSet branch_;  // before the passes that bind it
   LightingPasses passes_;
   bool coalesce_;
   // IndexPath::cpu: the builder, one preallocated index buffer, one indirect record per class,

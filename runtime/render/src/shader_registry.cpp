@@ -7,9 +7,17 @@
 #include <local_lights_1x_shaders.h>
 #include <local_lights_shaders.h>
 #include <split_second_1x_shaders.h>
+#include <split_second_branch_1x_shaders.h>
+#include <split_second_branch_compute_1x_shaders.h>
+#include <split_second_branch_compute_shaders.h>
+#include <split_second_branch_shaders.h>
 #include <split_second_compute_1x_shaders.h>
 #include <split_second_compute_shaders.h>
 #include <split_second_shaders.h>
+#include <split_second_specialization_1x_shaders.h>
+#include <split_second_specialization_compute_1x_shaders.h>
+#include <split_second_specialization_compute_shaders.h>
+#include <split_second_specialization_shaders.h>
 
 #include <string>
 
@@ -30,6 +38,66 @@ static_assert(split_second::kRawToOptimised == split_second_compute_1x::kRawToOp
 static_assert(split_second::kRawPruned == split_second_1x::kRawPruned);
 static_assert(split_second::kRawPruned == split_second_compute::kRawPruned);
 static_assert(split_second::kRawPruned == split_second_compute_1x::kRawPruned);
+
+// The kinds builds differ from split_second only in how SKY and LIGHT_SCATTERING reach the
+// shader: the same raw IDs, pruned by the same rule. Their collapse is over the five variant
+// features, so their optimised IDs are their own (light_classes.cpp pairs them with the values).
+static_assert(split_second::kRawPruned == split_second_specialization::kRawPruned);
+static_assert(split_second::kRawPruned == split_second_specialization_1x::kRawPruned);
+static_assert(split_second::kRawPruned == split_second_specialization_compute::kRawPruned);
+static_assert(split_second::kRawPruned == split_second_specialization_compute_1x::kRawPruned);
+static_assert(split_second::kRawPruned == split_second_branch::kRawPruned);
+static_assert(split_second::kRawPruned == split_second_branch_1x::kRawPruned);
+static_assert(split_second::kRawPruned == split_second_branch_compute::kRawPruned);
+static_assert(split_second::kRawPruned == split_second_branch_compute_1x::kRawPruned);
+static_assert(split_second_specialization::kRawToOptimised == split_second_branch::kRawToOptimised);
+static_assert(split_second_specialization::kRawToOptimised == split_second_specialization_compute::kRawToOptimised);
+static_assert(split_second_branch::kRawToOptimised == split_second_branch_compute::kRawToOptimised);
+
+namespace {
+
+// One namespace's build as LightShaders.
+#define TILELIGHT_LIGHT_SHADERS(N) \
+  LightShaders { &N::registry(), &N::specialization, &N::branch_values, N::kBranchBlock }
+
+LightShaders raster_light_shaders(LightKinds kinds, bool single_sampled) {
+  switch (kinds) {
+    case LightKinds::variant:
+      return single_sampled ? TILELIGHT_LIGHT_SHADERS(split_second_1x) : TILELIGHT_LIGHT_SHADERS(split_second);
+    case LightKinds::specialization:
+      return single_sampled ? TILELIGHT_LIGHT_SHADERS(split_second_specialization_1x)
+                            : TILELIGHT_LIGHT_SHADERS(split_second_specialization);
+    case LightKinds::branch:
+      return single_sampled ? TILELIGHT_LIGHT_SHADERS(split_second_branch_1x)
+                            : TILELIGHT_LIGHT_SHADERS(split_second_branch);
+  }
+  throw Error("unknown light kinds");
+}
+
+LightShaders compute_light_shaders(LightKinds kinds, bool single_sampled) {
+  switch (kinds) {
+    case LightKinds::variant:
+      return single_sampled ? TILELIGHT_LIGHT_SHADERS(split_second_compute_1x)
+                            : TILELIGHT_LIGHT_SHADERS(split_second_compute);
+    case LightKinds::specialization:
+      return single_sampled ? TILELIGHT_LIGHT_SHADERS(split_second_specialization_compute_1x)
+                            : TILELIGHT_LIGHT_SHADERS(split_second_specialization_compute);
+    case LightKinds::branch:
+      return single_sampled ? TILELIGHT_LIGHT_SHADERS(split_second_branch_compute_1x)
+                            : TILELIGHT_LIGHT_SHADERS(split_second_branch_compute);
+  }
+  throw Error("unknown light kinds");
+}
+
+#undef TILELIGHT_LIGHT_SHADERS
+
+}  // namespace
+
+LightShaders light_shaders_for(LightKinds kinds, LightPass pass, VkSampleCountFlagBits gbuffer_samples) {
+  const bool single_sampled = gbuffer_samples == VK_SAMPLE_COUNT_1_BIT;
+  return pass == LightPass::compute ? compute_light_shaders(kinds, single_sampled)
+                                    : raster_light_shaders(kinds, single_sampled);
+}
 
 const shadergen::Registry& shaders_for(VkSampleCountFlagBits gbuffer_samples) {
   return gbuffer_samples == VK_SAMPLE_COUNT_1_BIT ? split_second_1x::registry() : split_second::registry();

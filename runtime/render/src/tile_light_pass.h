@@ -7,6 +7,7 @@
 // "which light pass" and "which index path" are decided once, here, instead of at every use.
 
 #include "floor_target.h"
+#include "light_classes.h"
 #include "lighting_interface.h"
 #include "lighting_passes.h"
 #include "render_targets.h"
@@ -33,7 +34,9 @@ struct TileLightPassSetup {
   const TileGrid& grid;
   const RenderTargets& targets;
   const LightingInterface& lighting;
-  PermutationSet permutations;
+  // The draw classes and the build of the light domain they are drawn with (the raw ID ->
+  // class map below is theirs).
+  const LightClasses& classes;
   IndexPath path;
   bool coalesce;            // the raster index build's coalescing (the compute lists do not coalesce)
   TilePrimitive primitive;  // the raster tile pass's primitive
@@ -55,6 +58,8 @@ class TileLightPass {
   // Draw classes: 32 (optimised) or 128 (raw, pruned IDs included), and the tile pass's pipelines.
   virtual std::uint32_t class_count() const = 0;
   virtual std::uint32_t pipeline_count() const = 0;
+  // Host milliseconds the tile pass's pipelines took to create.
+  virtual double tile_pipelines_ms() const = 0;
 
   // True on the CPU path: each frame the host must build_on_host() between classification and
   // the signal that releases submit B. False on the GPU path: record_build() goes into submit A.

@@ -3,6 +3,7 @@
 #include "descriptors.h"
 #include "floor_target.h"
 #include "forward_pass.h"
+#include "light_classes.h"
 #include "lighting_interface.h"
 #include "local_light_passes.h"
 #include "local_light_shadows.h"
@@ -86,21 +87,6 @@ TilePrimitive choose_primitive(const Context& context, const TileGrid& grid, std
   return *asked;
 }
 
-// raw ID -> draw class: the registry's checked lookup, or the identity when drawing raw
-// permutations. A pruned ID has no class (0 here); pruned_raw_ids() marks it, and the index
-// builds refuse a tile that holds one.
-std::vector<std::uint8_t> draw_classes(const shadergen::Registry& registry, bool raw_permutations) {
-  std::vector<std::uint8_t> classes(split_second::kRawCount, 0);
-  for (std::uint32_t raw = 0; raw < split_second::kRawCount; ++raw) {
-    if (raw_permutations) {
-      classes[raw] = static_cast<std::uint8_t>(raw);
-    } else if (const std::optional<shadergen::OptimisedId> id = registry.optimised_id(shadergen::RawId(raw))) {
-      classes[raw] = static_cast<std::uint8_t>(id->value());
-    }
-  }
-  return classes;
-}
-
 // Every raw ID the registry has no permutation for: pruned, or (for a registry smaller than
 // the domain, which the static_asserts of shader_registry.cpp rule out) missing.
 std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Registry& registry) {
@@ -110,10 +96,10 @@ std::array<bool, split_second::kRawCount> pruned_raw_ids(const shadergen::Regist
   return pruned;
 }
 
-// Descriptor sets one renderer allocates from its pool, at most 12: the scene's, lighting set 0,
+// Descriptor sets one renderer allocates from its pool, at most 13: the scene's, lighting set 0,
 // the tile-ID output, the GPU index build, the GPU tile-list build, the compute light pass's
-// four targets (classified, naive, dynamic, floor), the local lights' sets 0, 1 and 3, and the
-// forward pass's sets 0 and 1.
+// four targets (classified, naive, dynamic, floor), the branch block's (branch_set.h), the local
+// lights' sets 0, 1 and 3, and the forward pass's sets 0 and 1.
 // The base colour textures have a pool of their own (scene_textures.cpp).
 constexpr std::uint32_t kMaxDescriptorSets = 16;
 
@@ -173,6 +159,7 @@ struct TileRenderer::Impl {
   std::unique_ptr<LightingInterface> lighting;
   std::unique_ptr<TileClassification> classification;
   std::unique_ptr<FloorTarget> floor_target;              // Baselines::floor and all
+  LightClasses light_classes;                             // the tile pass's draw classes (light_kinds)
   std::unique_ptr<TileLightPass> light_pass;              // LightPass x IndexPath
   std::unique_ptr<LocalLightShadows> local_shadows;       // before the sun's map, first frame (or each)
   std::unique_ptr<LocalLightPasses> local_lights;         // after each light pass, into its target
@@ -231,14 +218,18 @@ struct TileRenderer::Impl {
     return options.raw_permutations ? PermutationSet::raw : PermutationSet::optimised;
   }
 
-  // The builders keep what they need of the class map and the pruned IDs: both die here.
-  std::unique_ptr<TileLightPass> create_light_pass() const {
-    const std::vector<std::uint8_t> class_for_raw = draw_classes(lighting->shaders(), options.raw_permutations);
+  // The builders keep what they need of the class map and the pruned IDs: the IDs die here.
+  // raw ID -> draw class comes from the classes of the build the tile pass draws (light_classes.h):
+  // the optimised IDs, or (optimised ID, values) pairs, or the raw IDs. A pruned ID has no class
+  // (0 there); pruned_raw_ids() marks it, and the index builds refuse a tile that holds one.
+  std::unique_ptr<TileLightPass> create_light_pass() {
+    light_classes = tilelight::light_classes(light_shaders_for(options.light_kinds, options.light_pass, samples),
+                                             permutation_set());
     const std::array<bool, split_second::kRawCount> pruned = pruned_raw_ids(lighting->shaders());
     return make_tile_light_pass(
         options.light_pass,
-        {context, grid, *targets, *lighting, permutation_set(), options.path, options.coalesce, primitive,
-         class_for_raw, pruned, classification->device_ids(), descriptor_pool.get(), floor_target.get()});
+        {context, grid, *targets, *lighting, light_classes, options.path, options.coalesce, primitive,
+         light_classes.class_for_raw, pruned, classification->device_ids(), descriptor_pool.get(), floor_target.get()});
   }
 
   std::uint32_t class_count() const { return light_pass->class_count(); }
@@ -478,7 +469,9 @@ std::uint32_t TileRenderer::msaa_samples() const { return static_cast<std::uint3
 std::uint32_t TileRenderer::draw_class_count() const { return impl_->class_count(); }
 TilePrimitive TileRenderer::tile_primitive() const { return impl_->primitive; }
 std::uint32_t TileRenderer::pipeline_count() const { return impl_->light_pass->pipeline_count(); }
+double TileRenderer::tile_pipelines_ms() const { return impl_->light_pass->tile_pipelines_ms(); }
 LightPass TileRenderer::light_pass() const { return impl_->options.light_pass; }
+LightKinds TileRenderer::light_kinds() const { return impl_->options.light_kinds; }
 CulledBatches TileRenderer::culled_batches() const {
   return {impl_->scene_passes->culled_gbuffer_batches(), impl_->scene_passes->culled_shadow_batches()};
 }

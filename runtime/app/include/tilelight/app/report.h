@@ -31,6 +31,9 @@ struct RunDescription {
   std::string primitive;                      // "points" | "triangles": what the tile pass drew; "workgroups" (compute)
   Baselines baselines = Baselines::both;      // the full-frame passes that ran (--baseline)
   LightPass light_pass = LightPass::compute;  // how every light pass ran
+  LightKinds light_kinds = LightKinds::variant;  // the build of the light domain the tile pass drew
+  std::uint32_t tile_pipelines = 0;              // the tile pass's pipelines (TileRenderer::pipeline_count())
+  double tile_pipelines_ms = 0;                  // their creation, host milliseconds
   // The scene: the --scene file's name (empty: the procedural scene), its triangles per G-buffer pass.
   std::string scene;
   std::uint64_t scene_triangles = 0;

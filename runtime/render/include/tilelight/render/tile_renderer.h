@@ -50,6 +50,25 @@ enum class LightPass { raster, compute };
 // "raster" | "compute", as tilelight's --light-pass spells it.
 constexpr const char* to_string(LightPass pass) { return pass == LightPass::compute ? "compute" : "raster"; }
 
+// How the light domain's SKY and LIGHT_SCATTERING features reach the tile pass's shaders
+// (docs/spec-format.md, "Kinds"; docs/runtime.md, "Feature kinds"): compiled into the
+// permutations (variant: permutations/split_second.json, 32 optimised IDs), fixed at pipeline
+// creation (specialization: split_second_specialization.json, one pipeline per optimised ID and
+// values pair) or read per draw class from a uniform block (branch: split_second_branch.json,
+// one pipeline per optimised ID, the values at a dynamic offset). The shader text is the same
+// and so is every pixel; the baselines always draw the variant build (the reference).
+enum class LightKinds { variant, specialization, branch };
+
+// "variant" | "specialization" | "branch", as tilelight's --light-kinds spells it.
+constexpr const char* to_string(LightKinds kinds) {
+  switch (kinds) {
+    case LightKinds::variant: return "variant";
+    case LightKinds::specialization: return "specialization";
+    case LightKinds::branch: return "branch";
+  }
+  return "?";
+}
+
 // How each local light is added into the light targets (docs/local-lights.md): drawn as its
 // light volume (a sphere, cone or box, tested against the scene's depth and stencil: the
 // Tabula Rasa chapter's §19.7.1), or as a full-screen pass (the chapter's baseline, and the
@@ -99,8 +118,9 @@ struct RendererOptions {
   std::uint32_t msaa = 0;       // 0: automatic (2x where offered, else 4x); else 1, 2, 4, 8, 16
   std::uint32_t tile_size = 4;  // pixels: 4, 8 or 16
   IndexPath path = IndexPath::cpu;
-  LightPass light_pass = LightPass::compute;  // tilelight's default (docs/results.md g4)
-  bool raw_permutations = false;              // draw the 96 raw permutations instead of the 32 optimised ones
+  LightPass light_pass = LightPass::compute;     // tilelight's default (docs/results.md g4)
+  LightKinds light_kinds = LightKinds::variant;  // which build of the light domain the tile pass draws
+  bool raw_permutations = false;                 // draw the 96 raw permutations instead of the 32 optimised ones
   bool coalesce = true;
   LocalLightPass local_light_pass = LocalLightPass::volumes;  // the scene's local lights, if any
   // Local lights' shadow maps (docs/local-lights.md, "Shadows"): whether lights that cast shadows
@@ -203,10 +223,17 @@ class TileRenderer {
 
   const TileGrid& grid() const;
   std::uint32_t msaa_samples() const;
-  std::uint32_t draw_class_count() const;  // 32 or 128
-  TilePrimitive tile_primitive() const;    // the one chosen (RendererOptions::primitive)
-  std::uint32_t pipeline_count() const;    // 32 or 96
+  // 32 or 128: with LightKinds other than variant, the (optimised ID, specialization and branch
+  // values) pairs that some raw ID reaches (32 as well for the light domain).
+  std::uint32_t draw_class_count() const;
+  TilePrimitive tile_primitive() const;  // the one chosen (RendererOptions::primitive)
+  // The tile pass's pipelines: 32 or 96 (variant), 32 or 96 (specialization: one per optimised ID
+  // and specialization values), 8 or 96 (branch: one per optimised ID or raw blob).
+  std::uint32_t pipeline_count() const;
+  // Host milliseconds the tile pass's pipelines took to create, when this renderer was made.
+  double tile_pipelines_ms() const;
   LightPass light_pass() const;
+  LightKinds light_kinds() const;
   // Mesh batches the scene passes skip (RendererOptions::cull_batches; 0 without it).
   CulledBatches culled_batches() const;
   // The local lights' shadow maps: how many, how large, and the lights left without.
