@@ -30,12 +30,12 @@ UniquePipeline create_light_pipeline(const Context& context, const RenderTargets
   desc.fragment_constants.set(kTaggedConstant, tile_pass && targets.has_coverage_flags());
   if (primitive == TilePrimitive::points) {
     // tile_point.vert computes each point from its index; binding 1 holds the grid's shape.
-    desc.vertex_spirv = companion_spirv(lighting.shaders(), "tile_point");
+    desc.vertex_spirv = light_companions(lighting.shaders()).tile_point.shader.spirv;
     desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
     desc.vertex_bindings = {{kGridBinding, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_INSTANCE}};
     desc.vertex_attributes = {{0, kGridBinding, VK_FORMAT_R32G32_SFLOAT, 0}};
   } else {
-    desc.vertex_spirv = companion_spirv(lighting.shaders(), "tile");
+    desc.vertex_spirv = light_companions(lighting.shaders()).tile.shader.spirv;
     desc.vertex_bindings = {{kCornerBinding, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, kCornerBinding, VK_FORMAT_R32G32_SFLOAT, 0}};
   }
@@ -86,11 +86,11 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
   // The whole frame is not a square: two triangles, whose one diagonal costs little.
   naive_pipeline_ = create_light_pipeline(context, targets, lighting, registry.optimised[kNaiveOptimisedId].spirv,
                                           TilePrimitive::triangles, false, "lighting naive (optimised 31)");
-  dynamic_pipeline_ = create_light_pipeline(context, targets, lighting, companion_spirv(registry, "lighting_dynamic"),
+  dynamic_pipeline_ = create_light_pipeline(context, targets, lighting, light_companions(registry).lighting_dynamic.shader.spirv,
                                             TilePrimitive::triangles, false, "lighting dynamic (per-pixel branches)");
   if (floor) {
     floor_pipeline_ =
-        create_light_pipeline(context, targets, lighting, companion_spirv(registry, "lighting_floor"),
+        create_light_pipeline(context, targets, lighting, light_companions(registry).lighting_floor.shader.spirv,
                               TilePrimitive::triangles, false, "lighting floor (G-buffer read, no lighting)");
   }
 }
