@@ -3,8 +3,10 @@
 # (```json material/shaders/material.json) is written to that path under a scratch folder, the
 # folder `material/` is configured and built as an outside project against this build installed
 # into a scratch prefix, and its programs run (they check what the doc says the generated API
-# does). Then the doc's quoted diagnostics are triggered for real and must appear in the doc
-# word for word.
+# does; the output the doc quotes must be theirs). The doc's quoted diagnostics (shadergen's
+# for four spec and shader mistakes, the compiler's for a bare integer as a RawId) are triggered
+# for real and must appear in the doc word for word, and the edit-rebuild loop must run what the
+# doc says it runs (the times are the doc's measurement, not checked here).
 #
 # cmake -DBUILD_DIR=<shadergen build> -DSOURCE_DIR=<repo> -DWORK_DIR=<scratch> [-DWITH_VULKAN=OFF]
 #       -P adopting_doc.cmake
@@ -199,6 +201,27 @@ foreach(program material_check material_kinds_check)
   endif()
 endforeach()
 step_done("the example project builds against the install and its checks pass")
+
+# The C++ mistake: a bare integer where a RawId is wanted must not compile, with the message the
+# doc quotes (C locale: GCC's ASCII quotes).
+file(STRINGS "${build}/CMakeCache.txt" compiler REGEX "^CMAKE_CXX_COMPILER:")
+string(REGEX REPLACE "^[^=]*=" "" compiler "${compiler}")
+file(WRITE "${WORK_DIR}/bare_integer.cpp"
+     "#include <material_shaders.h>\nconst shadergen::Permutation* p = studio::material::registry().optimised_for_raw(7);\n")
+set(ENV{LC_ALL} C)
+execute_process(COMMAND "${compiler}" -std=c++20 -fsyntax-only "-I${prefix}/include"
+                        "-I${build}/material_shaders.shadergen" "${WORK_DIR}/bare_integer.cpp"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+unset(ENV{LC_ALL})
+string(REGEX MATCH "cannot convert '[^']*' to '[^']*'" said "${out}${err}")
+if(rc EQUAL 0 OR NOT said)
+  message(FATAL_ERROR "optimised_for_raw(7) must not compile, saying \"cannot convert\":\n${out}${err}")
+endif()
+string(FIND "${text}" "(`${said}`)" quoted)
+if(quoted EQUAL -1)
+  message(FATAL_ERROR "docs/adopting.md does not quote the compiler's message for a bare integer: ${said}")
+endif()
+step_done("a bare integer as a RawId does not compile, as the doc says")
 
 # --- 5. The edit-rebuild loop as section 7 describes it (what runs, not how long) --------------
 run(${CMAKE_COMMAND} --build "${build}")
