@@ -209,7 +209,8 @@ INSTANTIATE_TEST_SUITE_P(
         EditCase{"define_not_an_identifier", "\"define\": \"SKY\"", "\"define\": \"SKY-BOX\"", "", 10,
                  "raw.features[5].define: \"SKY-BOX\" is not a GLSL identifier"},
         EditCase{"unknown_stage", "\"stage\": \"fragment\"", "\"stage\": \"pixel\"", "", 9,
-                 "uber_shaders.raster.stage: unknown stage \"pixel\" (expected one of vertex, tess_control, tess_evaluation, "
+                 "uber_shaders.raster.stage: unknown stage \"pixel\" (expected one of vertex, tess_control, "
+                 "tess_evaluation, "
                  "geometry, fragment, compute, task, mesh, ray_generation, any_hit, closest_hit, miss, intersection, "
                  "callable, or .vert .tesc .tese .geom .frag .comp .task .mesh .rgen .rahit .rchit .rmiss .rint .rcall "
                  "without the dot)"},

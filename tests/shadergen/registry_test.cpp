@@ -50,8 +50,9 @@ TEST(GeneratedRegistry, LookupsByRawIdAreChecked) {
   static_assert((RawId(0) | split_second::raw_bit::SKY) == RawId(32));
   static_assert((split_second::OptimisedId(0) | split_second::optimised_bit::SKY) == split_second::OptimisedId(4));
   const registry_lookups::Counts counts = registry_lookups::expect_checked_lookups(
-      split_second::raster::registry(), {split_second::kRawCount, split_second::kRawPruned, split_second::kRawToOptimised,
-                                 split_second::is_valid_raw_id, split_second::optimised_id});
+      split_second::raster::registry(),
+      {split_second::kRawCount, split_second::kRawPruned, split_second::kRawToOptimised, split_second::is_valid_raw_id,
+       split_second::optimised_id});
   EXPECT_EQ(counts.valid, 96u);
   EXPECT_EQ(counts.pruned, 32u);
 }

@@ -63,15 +63,14 @@ TEST(UberShaders, EachEntryCompilesTheDomainWithItsOwnCompanions) {
 }
 
 TEST(UberShaders, WithoutThemTheSpecIsItsOwnOnlyEntry) {
-  const std::string single = sgtest::replace_once(
-      sgtest::replace_once(kBase, R"("uber_shaders": {
+  const std::string single = sgtest::replace_once(sgtest::replace_once(kBase, R"("uber_shaders": {
     "raster": { "path": "two.frag", "stage": "fragment" },
     "compute": { "path": "two.comp" }
   },)",
-                           R"("uber_shader": { "path": "two.frag" },)"),
-      R"(,
+                                                                       R"("uber_shader": { "path": "two.frag" },)"),
+                                                  R"(,
     { "name": "prepass", "uber_shader": "compute", "path": "prepass.comp" })",
-      "");
+                                                  "");
   auto spec = parse_domain(single, "spec.json");
   ASSERT_TRUE(spec) << spec.errors().front().to_string();
   EXPECT_TRUE(spec->uber_shaders.empty());
@@ -115,15 +114,16 @@ INSTANTIATE_TEST_SUITE_P(
         sgtest::SpecErrorCase{"not_an_identifier", sgtest::replace_once(kBase, "\"compute\": {", "\"com-pute\": {"),
                               "spec.json:6:17: error: uber_shaders.com-pute: \"com-pute\" is not an identifier (an "
                               "entry's name is the namespace of its registry)"},
-        sgtest::SpecErrorCase{"unknown_key",
-                              sgtest::replace_once(kBase, "{ \"path\": \"two.comp\" }",
-                                                   "{ \"path\": \"two.comp\", \"defines\": {} }"),
-                              "spec.json:6:49: error: uber_shaders.compute: unknown key \"defines\" (expected one of: "
-                              "path, stage)"},
-        sgtest::SpecErrorCase{"companion_names_no_entry",
-                              sgtest::replace_once(kBase, "\"uber_shader\": \"compute\"", "\"uber_shader\": \"comput\""),
-                              "spec.json:10:41: error: companions[1].uber_shader: no uber-shader \"comput\" (the spec "
-                              "has raster, compute)"},
+        sgtest::SpecErrorCase{
+            "unknown_key",
+            sgtest::replace_once(kBase, "{ \"path\": \"two.comp\" }", "{ \"path\": \"two.comp\", \"defines\": {} }"),
+            "spec.json:6:49: error: uber_shaders.compute: unknown key \"defines\" (expected one of: "
+            "path, stage)"},
+        sgtest::SpecErrorCase{
+            "companion_names_no_entry",
+            sgtest::replace_once(kBase, "\"uber_shader\": \"compute\"", "\"uber_shader\": \"comput\""),
+            "spec.json:10:41: error: companions[1].uber_shader: no uber-shader \"comput\" (the spec "
+            "has raster, compute)"},
         sgtest::SpecErrorCase{"companion_keyword_name",
                               sgtest::replace_once(kBase, "\"name\": \"quad\"", "\"name\": \"default\""),
                               "spec.json:9:15: error: companions[0].name: \"default\" is a C++ keyword or reserved "
@@ -178,8 +178,7 @@ TEST(UberShaders, TheFixtureBuildsOneManifestWithEveryEntrysBlobs) {
     for (const nlohmann::json& blob : (*entry)["optimised"])
       EXPECT_TRUE(std::filesystem::is_regular_file(options.out_dir / blob["spirv"].get<std::string>()));
   }
-  for (std::size_t i = 0; i < 5; ++i)
-    EXPECT_NE(raster["optimised"][i]["hash"], compute["optimised"][i]["hash"]) << i;
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_NE(raster["optimised"][i]["hash"], compute["optimised"][i]["hash"]) << i;
   ASSERT_EQ(raster["companions"].size(), 1u);
   EXPECT_EQ(raster["companions"][0]["name"], "full_screen");
   ASSERT_EQ(compute["companions"].size(), 2u);

@@ -152,10 +152,9 @@ void ForwardPass::create_framebuffers(const Context& context, const RenderTarget
 
 void ForwardPass::create_pipelines(const Context& context) {
   const shadergen::Registry& registry = *shaders_;
-  const GraphicsPipelineDesc depth =
-      depth_from_gbuffer_desc(layout_.pipeline.get(), render_pass_.get(),
-                              forward_companions(registry).full_screen.shader.spirv,
-                              forward_companions(registry).depth.shader.spirv, "forward pass: depth from the G-buffer");
+  const GraphicsPipelineDesc depth = depth_from_gbuffer_desc(
+      layout_.pipeline.get(), render_pass_.get(), forward_companions(registry).full_screen.shader.spirv,
+      forward_companions(registry).depth.shader.spirv, "forward pass: depth from the G-buffer");
   depth_pipeline_ = create_graphics_pipeline(context, depth);
 
   for (const ForwardDraw& draw : draws_) {

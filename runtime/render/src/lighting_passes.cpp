@@ -86,8 +86,9 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
   // The whole frame is not a square: two triangles, whose one diagonal costs little.
   naive_pipeline_ = create_light_pipeline(context, targets, lighting, registry.optimised[kNaiveOptimisedId].spirv,
                                           TilePrimitive::triangles, false, "lighting naive (optimised 31)");
-  dynamic_pipeline_ = create_light_pipeline(context, targets, lighting, light_companions(registry).lighting_dynamic.shader.spirv,
-                                            TilePrimitive::triangles, false, "lighting dynamic (per-pixel branches)");
+  dynamic_pipeline_ =
+      create_light_pipeline(context, targets, lighting, light_companions(registry).lighting_dynamic.shader.spirv,
+                            TilePrimitive::triangles, false, "lighting dynamic (per-pixel branches)");
   if (floor) {
     floor_pipeline_ =
         create_light_pipeline(context, targets, lighting, light_companions(registry).lighting_floor.shader.spirv,

@@ -53,9 +53,10 @@ std::size_t batch_kind(const Mesh& mesh) { return (mesh.alpha_mask ? 2 : 0) + (m
 std::array<const shadergen::Reflection*, 12> scene_shaders(const shadergen::Registry& shaders) {
   const LightCompanions& c = light_companions(shaders);
   const auto of = [](const shadergen::CompanionShader& shader) { return &shader.shader.reflection; };
-  return {of(c.scene),         of(c.shadow),      of(c.gbuffer),      of(c.gbuffer_flagged), of(c.sky_vertex),
-          of(c.sky),           of(c.sky_flagged), of(c.scene_masked), of(c.gbuffer_masked),  of(c.gbuffer_masked_flagged),
-          of(c.shadow_masked), of(c.shadow_mask)};
+  return {
+      of(c.scene),         of(c.shadow),      of(c.gbuffer),      of(c.gbuffer_flagged), of(c.sky_vertex),
+      of(c.sky),           of(c.sky_flagged), of(c.scene_masked), of(c.gbuffer_masked),  of(c.gbuffer_masked_flagged),
+      of(c.shadow_masked), of(c.shadow_mask)};
 }
 
 // Set `set` of the scene's pipeline layout, as the scene shaders' reflection declares it;
@@ -160,8 +161,8 @@ ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Contex
     GraphicsPipelineDesc materials =
         targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials" + what + pass, with_flags);
     materials.vertex_spirv = (masked ? c.scene_masked : c.scene).shader.spirv;
-    const shadergen::CompanionShader& fragment =
-        masked ? (with_flags ? c.gbuffer_masked_flagged : c.gbuffer_masked) : (with_flags ? c.gbuffer_flagged : c.gbuffer);
+    const shadergen::CompanionShader& fragment = masked ? (with_flags ? c.gbuffer_masked_flagged : c.gbuffer_masked)
+                                                        : (with_flags ? c.gbuffer_flagged : c.gbuffer);
     materials.fragment_spirv = fragment.shader.spirv;
     materials.vertex_bindings = scene_vertex_bindings();
     materials.vertex_attributes =

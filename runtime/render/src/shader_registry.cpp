@@ -47,21 +47,20 @@ namespace {
 
 // A namespace cannot be a template argument, so each domain's two builds (N and N_1x) fill their
 // set through one macro that names every accessor once.
-#define TILELIGHT_LIGHT_COMPANIONS(N)                                                                              \
-  LightCompanions {                                                                                                \
-    N::companions::lighting_dynamic(), N::companions::lighting_floor(), N::companions::tile(),                     \
-        N::companions::tile_point(), N::companions::classify_tiles(), N::companions::tile_rects(),                 \
-        N::companions::tile_prefix(), N::companions::scene(), N::companions::scene_masked(),                       \
-        N::companions::gbuffer(), N::companions::gbuffer_flagged(), N::companions::gbuffer_masked(),               \
-        N::companions::gbuffer_masked_flagged(), N::companions::sky_vertex(), N::companions::sky(),                \
-        N::companions::sky_flagged(), N::companions::shadow(), N::companions::shadow_masked(),                     \
-        N::companions::shadow_mask(), N::companions::compute_lighting_dynamic(),                                   \
-        N::companions::compute_lighting_floor(), N::companions::tile_lists()                                       \
+#define TILELIGHT_LIGHT_COMPANIONS(N)                                                                                  \
+  LightCompanions {                                                                                                    \
+    N::companions::lighting_dynamic(), N::companions::lighting_floor(), N::companions::tile(),                         \
+        N::companions::tile_point(), N::companions::classify_tiles(), N::companions::tile_rects(),                     \
+        N::companions::tile_prefix(), N::companions::scene(), N::companions::scene_masked(), N::companions::gbuffer(), \
+        N::companions::gbuffer_flagged(), N::companions::gbuffer_masked(), N::companions::gbuffer_masked_flagged(),    \
+        N::companions::sky_vertex(), N::companions::sky(), N::companions::sky_flagged(), N::companions::shadow(),      \
+        N::companions::shadow_masked(), N::companions::shadow_mask(), N::companions::compute_lighting_dynamic(),       \
+        N::companions::compute_lighting_floor(), N::companions::tile_lists()                                           \
   }
-#define TILELIGHT_LOCAL_LIGHT_COMPANIONS(N)                                                                        \
-  LocalLightCompanions {                                                                                           \
-    N::companions::full_screen(), N::companions::volume(), N::companions::resolve(),                               \
-        N::companions::shadow_caster(), N::companions::shadow_caster_masked(), N::companions::shadow_caster_mask() \
+#define TILELIGHT_LOCAL_LIGHT_COMPANIONS(N)                                                                          \
+  LocalLightCompanions {                                                                                             \
+    N::companions::full_screen(), N::companions::volume(), N::companions::resolve(), N::companions::shadow_caster(), \
+        N::companions::shadow_caster_masked(), N::companions::shadow_caster_mask()                                   \
   }
 #define TILELIGHT_FORWARD_COMPANIONS(N) \
   ForwardCompanions { N::companions::vertex(), N::companions::full_screen(), N::companions::depth() }

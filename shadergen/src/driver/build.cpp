@@ -83,9 +83,8 @@ Status spill_output(BlobSpill& spill, StagedOutput& staged, const std::string& n
 
 // Every output that grows with the domain is a file in the spill (the blobs since they were
 // made); only the header is held in memory. `entries`: one compiled domain per uber-shader.
-Result<StagedOutput> outputs_for(const BuildOptions& options, std::span<const CompiledDomain> entries,
-                                 BlobSpill& spill, const std::string& cpp_name, const std::string& ns,
-                                 double seconds) {
+Result<StagedOutput> outputs_for(const BuildOptions& options, std::span<const CompiledDomain> entries, BlobSpill& spill,
+                                 const std::string& cpp_name, const std::string& ns, double seconds) {
   StagedOutput staged(options.out_dir);
   Status s = spill_output(spill, staged, "manifest.json", [&](std::ostream& out) { write_manifest(entries, out); });
   if (!s) return std::move(s).take_errors();
@@ -301,8 +300,8 @@ Result<BuildSummary> build(const BuildOptions& given) {
     compile_options.input_key = input_set_key(current_cache_key_parts(), options.spec_path, loaded->digest,
                                               preprocessing_settings(*spec, *variants_digest));
   }
-  auto compiled = compile_entries(*spec, std::move(plan).value(), compile_options, preprocessing_settings(*spec, *variants_digest),
-                                  options, loaded->digest);
+  auto compiled = compile_entries(*spec, std::move(plan).value(), compile_options,
+                                  preprocessing_settings(*spec, *variants_digest), options, loaded->digest);
   if (!compiled) return std::move(compiled).take_errors();
   std::vector<CompiledDomain>& entries = *compiled;
   for (CompiledDomain& domain : entries) {

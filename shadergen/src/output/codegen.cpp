@@ -581,9 +581,11 @@ class SourceWriter {
     out_ << "constexpr std::array<std::string_view, " << pool_ends_.size() << "> kDefinePool{{";
     for (std::size_t i = 0; i < pool_ends_.size(); ++i)
       out_ << (i % 6 ? " " : "\n    ") << literal(pooled_define(i)) << ",";
-    out_ << "\n}};\n\nconstexpr std::array<std::string_view, " << d_->spec.raw_features.size() << "> kRawFeatureNames{{";
+    out_ << "\n}};\n\nconstexpr std::array<std::string_view, " << d_->spec.raw_features.size()
+         << "> kRawFeatureNames{{";
     for (const RawFeature& f : d_->spec.raw_features) out_ << literal(f.name) << ", ";
-    out_ << "}};\nconstexpr std::array<std::string_view, " << d_->spec.optimised_bits.size() << "> kOptimisedBitNames{{";
+    out_ << "}};\nconstexpr std::array<std::string_view, " << d_->spec.optimised_bits.size()
+         << "> kOptimisedBitNames{{";
     for (const OptimisedBit& b : d_->spec.optimised_bits) out_ << literal(b.name) << ", ";
     out_ << "}};\n\n";
   }
@@ -612,7 +614,8 @@ class SourceWriter {
     out_ << "constexpr std::array<shadergen::Permutation, kRawCount> kRaw{{\n";
     for (const RawPermutation& raw : d_->plan.raw)
       out_ << "    "
-           << permutation(raw.id, raw_defines(d_->spec, raw.id), raw.pruned, raw.pruned ? nullptr : d_->raw_blob(raw.id),
+           << permutation(raw.id, raw_defines(d_->spec, raw.id), raw.pruned,
+                          raw.pruned ? nullptr : d_->raw_blob(raw.id),
                           raw.pruned ? nullptr : d_->raw_vertex_blob(raw.id))
            << ",\n";
     out_ << "}};\n\nconstexpr std::array<shadergen::Permutation, kOptimisedCount> kOptimised{{\n";
@@ -630,7 +633,8 @@ class SourceWriter {
   }
 
   void registry() {
-    const bool narrow = d_->spec.collapsed && !d_->spec.wide_table(), wide = d_->spec.collapsed && d_->spec.wide_table();
+    const bool narrow = d_->spec.collapsed && !d_->spec.wide_table(),
+               wide = d_->spec.collapsed && d_->spec.wide_table();
     out_ << "constexpr shadergen::Registry kRegistry{\n    " << literal(d_->spec.name) << ",\n    "
          << stage_enum(d_->spec.uber.stage) << ",\n    kRawFeatureNames,\n    kOptimisedBitNames,\n    "
          << (narrow ? "kRawToOptimised" : "{}")
@@ -712,7 +716,7 @@ class SourceWriter {
             "  const std::optional<std::size_t> at = raw_position(raw_id.value());\n"
             "  if (!at) return std::nullopt;\n"
          << (d_->spec.collapsed ? "  return OptimisedId(kRawToOptimised[*at]);\n}\n\n"
-                               : "  return OptimisedId(raw_id.value());\n}\n\n");
+                                : "  return OptimisedId(raw_id.value());\n}\n\n");
   }
 
   std::span<const CompiledDomain> entries_;

@@ -209,9 +209,9 @@ class DomainBuilder {
       return std::move(spec_);
     }
     reader_.only_keys(root, "spec",
-                      {"format", "name", "description", "uber_shader", "uber_shaders", "program", "include_dirs", "target_env",
-                       "layout", "strip_debug", "defines", "companions", "raw", "optimised", "compile", "variants_file",
-                       "define_style", "branch_block"});
+                      {"format", "name", "description", "uber_shader", "uber_shaders", "program", "include_dirs",
+                       "target_env", "layout", "strip_debug", "defines", "companions", "raw", "optimised", "compile",
+                       "variants_file", "define_style", "branch_block"});
     read_header(root);
     read_permuted_shaders(root);
     read_include_dirs(root);
@@ -265,9 +265,9 @@ class DomainBuilder {
     const Value* program = root.find("program");
     if (const Value* several = root.find("uber_shaders")) {
       if (program || root.find("uber_shader"))
-        reader_.error(*several, "uber_shaders",
-                      std::string("a spec has \"uber_shaders\" or \"") + (program ? "program" : "uber_shader") +
-                          "\", not both");
+        reader_.error(
+            *several, "uber_shaders",
+            std::string("a spec has \"uber_shaders\" or \"") + (program ? "program" : "uber_shader") + "\", not both");
       else
         read_uber_shaders(root);
       return;
@@ -445,7 +445,8 @@ class DomainBuilder {
     if (spec_.uber_shaders.empty())
       reader_.error(entry, where + ".uber_shader", "names an entry of \"uber_shaders\", and the spec has none");
     else
-      reader_.error(entry, where + ".uber_shader", "no uber-shader \"" + entry.string + "\" (the spec has " + names + ")");
+      reader_.error(entry, where + ".uber_shader",
+                    "no uber-shader \"" + entry.string + "\" (the spec has " + names + ")");
     return {};
   }
 
