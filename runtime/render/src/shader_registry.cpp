@@ -47,6 +47,7 @@ namespace {
 
 // A namespace cannot be a template argument, so each domain's two builds (N and N_1x) fill their
 // set through one macro that names every accessor once.
+// NOLINTBEGIN(bugprone-macro-parentheses): N is a namespace, which parentheses cannot hold.
 #define TILELIGHT_LIGHT_COMPANIONS(N)                                                                                  \
   LightCompanions {                                                                                                    \
     N::companions::lighting_dynamic(), N::companions::lighting_floor(), N::companions::tile(),                         \
@@ -64,6 +65,7 @@ namespace {
   }
 #define TILELIGHT_FORWARD_COMPANIONS(N) \
   ForwardCompanions { N::companions::vertex(), N::companions::full_screen(), N::companions::depth() }
+// NOLINTEND(bugprone-macro-parentheses)
 
 [[noreturn]] void unknown_registry(const shadergen::Registry& registry, const char* domain) {
   throw Error("the shader registry " + std::string(registry.name) + " is not a registry of the " + domain +
