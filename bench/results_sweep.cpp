@@ -127,13 +127,17 @@ void add_spec_builds(const SweepPlan& plan, std::vector<Measurement>& measuremen
   if (kinds == plan.comparisons.end()) return;
   const std::filesystem::path scratch =
       std::filesystem::temp_directory_path() / fmt::format("tilelight-sweep-specs-{}", ::getpid());
+  // One build per spec: its raster and compute rows share it (one spec, both uber-shaders).
+  std::map<std::string, SpecBuild> built;
   for (Measurement& m : measurements) {
     if (std::find(kinds->keys.begin(), kinds->keys.end(), m.key) == kinds->keys.end()) continue;
-    const std::filesystem::path spec =
-        light_spec(TILELIGHT_PERMUTATIONS_DIR, m.options.light_pass, m.options.light_kinds);
-    std::cerr << "shadergen build " << spec.filename().string() << " (no companions, --no-cache)" << std::flush;
-    m.spec_build = build_light_spec(SHADERGEN_EXE, spec, scratch);
-    std::cerr << fmt::format(": {} blobs in {:.2f} s\n", m.spec_build->blobs, m.spec_build->seconds);
+    const std::filesystem::path spec = light_spec(TILELIGHT_PERMUTATIONS_DIR, m.options.light_kinds);
+    if (!built.count(spec.string())) {
+      std::cerr << "shadergen build " << spec.filename().string() << " (no companions, --no-cache)" << std::flush;
+      built[spec.string()] = build_light_spec(SHADERGEN_EXE, spec, scratch);
+      std::cerr << fmt::format(": {} blobs in {:.2f} s\n", built[spec.string()].blobs, built[spec.string()].seconds);
+    }
+    m.spec_build = built[spec.string()];
   }
   std::filesystem::remove_all(scratch);
 }

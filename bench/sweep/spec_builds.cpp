@@ -46,10 +46,9 @@ std::uint32_t number_before(const std::string& text, const std::string& words, c
 
 }  // namespace
 
-std::filesystem::path light_spec(const std::filesystem::path& permutations_dir, LightPass pass, LightKinds kinds) {
+std::filesystem::path light_spec(const std::filesystem::path& permutations_dir, LightKinds kinds) {
   std::string name = "split_second";
   if (kinds != LightKinds::variant) name += std::string("_") + to_string(kinds);
-  if (pass == LightPass::compute) name += "_compute";
   return permutations_dir / (name + ".json");
 }
 

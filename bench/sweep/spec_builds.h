@@ -21,8 +21,9 @@ struct SpecBuild {
   double seconds = 0;         // wall time of the build, start to exit
 };
 
-// permutations/<the spec of `pass` and `kinds`>.json under `permutations_dir`.
-std::filesystem::path light_spec(const std::filesystem::path& permutations_dir, LightPass pass, LightKinds kinds);
+// permutations/<the spec of `kinds`>.json under `permutations_dir`: one spec per kind, whose two
+// uber-shaders ("uber_shaders": raster and compute) are both built.
+std::filesystem::path light_spec(const std::filesystem::path& permutations_dir, LightKinds kinds);
 
 // Builds `spec` without its companions with `shadergen` (its executable) into a folder under
 // `scratch`, and reads the blob and source counts from its summary line. Throws tilelight::Error

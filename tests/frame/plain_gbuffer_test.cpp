@@ -90,7 +90,8 @@ bool writes_frag_depth(std::span<const std::uint32_t> words) {
 }
 
 TEST(SceneShaders, NoGBufferShaderWritesFragDepth) {
-  for (const shadergen::Registry* registry : {&split_second::registry(), &split_second_1x::registry()}) {
+  for (const shadergen::Registry* registry :
+       {&split_second::raster::registry(), &split_second_1x::raster::registry()}) {
     int checked = 0;
     for (const char* name : {"gbuffer", "gbuffer_flagged", "sky", "sky_flagged"}) {
       const shadergen::CompanionShader* shader = registry->companion(name);

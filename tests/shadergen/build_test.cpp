@@ -55,6 +55,8 @@ class SplitSecondBuild : public ::testing::Test {
     ASSERT_NE(manifest_, nullptr);
   }
   static fs::path out() { return *root_ / "out"; }
+  // The spec lists two uber-shaders ("uber_shaders"): the raster light pass, then the compute one.
+  static const nlohmann::json& entry(std::size_t i) { return (*manifest_)["uber_shaders"][i]; }
   static inline sgtest::TempDir* root_ = nullptr;
   static inline BuildSummary* summary_ = nullptr;
   static inline nlohmann::json* manifest_ = nullptr;
@@ -71,15 +73,27 @@ TEST_F(SplitSecondBuild, ManifestHas128RawWith32PrunedAnd32Optimised) {
     const auto& entry = raw[id];
     EXPECT_EQ(entry["id"], id);
     for (const char* key : {"id", "defines", "pruned", "optimised"}) EXPECT_TRUE(entry.contains(key)) << key;
-    if (entry["pruned"].get<bool>()) {
-      ++pruned;
-      EXPECT_FALSE(entry.contains("spirv")) << "pruned raw " << id << " has SPIR-V";
-      EXPECT_FALSE(entry.contains("hash"));
-    } else {
-      EXPECT_TRUE(entry.contains("spirv") && entry.contains("hash")) << id;
-    }
+    // The blobs are each uber-shader's, listed under "uber_shaders".
+    EXPECT_FALSE(entry.contains("spirv") || entry.contains("hash")) << id;
+    pruned += entry["pruned"].get<bool>();
   }
   EXPECT_EQ(pruned, 32);
+  ASSERT_EQ(manifest_->at("uber_shaders").size(), 2u);
+  EXPECT_EQ(entry(0)["name"], "raster");
+  EXPECT_EQ(entry(0)["stage"], "fragment");
+  EXPECT_EQ(entry(1)["name"], "compute");
+  EXPECT_EQ(entry(1)["stage"], "compute");
+  for (std::size_t e = 0; e < 2; ++e) {
+    // Every raw ID that is not pruned has a blob of each uber-shader, and no pruned one has.
+    std::set<std::uint32_t> with_blob;
+    for (const auto& blob : entry(e)["raw"]) {
+      EXPECT_TRUE(blob.contains("spirv") && blob.contains("hash")) << blob.dump();
+      with_blob.insert(blob["id"].get<std::uint32_t>());
+    }
+    EXPECT_EQ(with_blob.size(), 96u);
+    for (std::uint32_t id : with_blob) EXPECT_FALSE(raw[id]["pruned"].get<bool>()) << id;
+    EXPECT_EQ(entry(e)["optimised"].size(), 32u);
+  }
   EXPECT_EQ(summary_->raw, 128u);
   EXPECT_EQ(summary_->pruned, 32u);
   EXPECT_EQ(summary_->optimised, 32u);
@@ -87,10 +101,11 @@ TEST_F(SplitSecondBuild, ManifestHas128RawWith32PrunedAnd32Optimised) {
 
 TEST_F(SplitSecondBuild, EveryBlobValidatesWithShadergenAndSpirvVal) {
   std::set<std::string> paths;
-  for (const char* section : {"raw", "optimised", "companions"})
-    for (const auto& entry : (*manifest_)[section])
-      if (entry.contains("spirv")) paths.insert(entry["spirv"].get<std::string>());
-  ASSERT_FALSE(paths.empty());
+  for (std::size_t e = 0; e < 2; ++e)
+    for (const char* section : {"raw", "optimised", "companions"})
+      for (const auto& blob : entry(e)[section])
+        if (blob.contains("spirv")) paths.insert(blob["spirv"].get<std::string>());
+  ASSERT_GT(paths.size(), 96u);
   for (const std::string& relative : paths) {
     fs::path file = out() / relative;
     ASSERT_TRUE(fs::exists(file)) << file;
@@ -105,19 +120,27 @@ TEST_F(SplitSecondBuild, EveryBlobValidatesWithShadergenAndSpirvVal) {
 }
 
 TEST_F(SplitSecondBuild, IdenticalBlobsAreStoredOnce) {
-  std::set<std::string> hashes;
-  for (const auto& entry : (*manifest_)["raw"])
-    if (entry.contains("hash")) hashes.insert(entry["hash"].get<std::string>());
   std::size_t files = 0;
   for (const auto& e : fs::directory_iterator(out() / "spirv")) files += e.is_regular_file();
+  // A fragment and a compute shader never share words: the entries' blobs are distinct files.
   EXPECT_EQ(files, summary_->unique_blobs);
-  // 96 compiled raw permutations plus one blob per companion (tile vertex shader, the
-  // runtime's classification, index-build and scene shaders), at most.
-  const std::size_t companions = (*manifest_)["companions"].size();
-  EXPECT_GE(companions, 1u);
-  EXPECT_LE(summary_->unique_blobs, 96u + companions);
+  std::size_t blobs = 0, companions = 0;
+  for (std::size_t e = 0; e < 2; ++e) {
+    // Per uber-shader: 96 compiled raw permutations plus one blob per companion (the tile vertex
+    // shaders, the runtime's classification, index-build and scene shaders; the compute
+    // baselines and tile-list build), at most.
+    std::set<std::string> hashes;
+    for (const auto& blob : entry(e)["raw"]) hashes.insert(blob["hash"].get<std::string>());
+    const std::size_t own = entry(e)["companions"].size();
+    EXPECT_GE(own, 1u);
+    EXPECT_LE(entry(e)["blobs"].size(), 96u + own);
+    EXPECT_LE(hashes.size(), 96u);
+    blobs += entry(e)["blobs"].size(), companions += own;
+  }
+  EXPECT_EQ(blobs, summary_->unique_blobs);
+  EXPECT_EQ(companions, summary_->companions);
   // Every optimised permutation has a raw twin with the same source: no extra compiles.
-  EXPECT_EQ(summary_->unique_sources, 96u + companions);
+  EXPECT_EQ(summary_->unique_sources, 2 * 96u + companions);
 }
 
 TEST_F(SplitSecondBuild, RawEntriesCarryTheLookupTable) {
@@ -133,7 +156,7 @@ TEST_F(SplitSecondBuild, RawEntriesCarryTheLookupTable) {
 // Set 0 of lighting_params.glsl: the parameters, RT0..RT3, the shadow map and the coverage
 // flags (which the MSAA_EDGE permutations read).
 TEST_F(SplitSecondBuild, AllPermutationsShareOnePipelineLayout) {
-  const auto& bindings = (*manifest_)["pipeline_layout"]["bindings"];
+  const auto& bindings = entry(0)["pipeline_layout"]["bindings"];
   ASSERT_EQ(bindings.size(), 7u);
   EXPECT_EQ(bindings[0]["kind"], "uniform_buffer");
   EXPECT_EQ(bindings[6]["name"], "gbuffer_coverage_flags");
@@ -144,9 +167,16 @@ TEST_F(SplitSecondBuild, AllPermutationsShareOnePipelineLayout) {
       EXPECT_EQ(bindings[i]["kind"], "combined_image_sampler");
     }
   }
-  const auto& push = (*manifest_)["pipeline_layout"]["push_constants"];
+  const auto& push = entry(0)["pipeline_layout"]["push_constants"];
   ASSERT_EQ(push.size(), 1u);
   EXPECT_EQ(push[0]["size"], 8);  // tile.vert's inv_viewport
+  // The compute form has a layout of its own, with the same parameters at set 0 binding 0.
+  const auto& compute = entry(1)["pipeline_layout"]["bindings"];
+  ASSERT_FALSE(compute.empty());
+  EXPECT_EQ(compute[0]["set"], 0);
+  EXPECT_EQ(compute[0]["binding"], 0);
+  EXPECT_EQ(compute[0]["kind"], "uniform_buffer");
+  EXPECT_NE(compute, bindings);
 }
 
 TEST_F(SplitSecondBuild, GeneratedCppHasTheTableAndBanner) {
@@ -157,6 +187,10 @@ TEST_F(SplitSecondBuild, GeneratedCppHasTheTableAndBanner) {
       << "row 64 of the LUT (pruned entries carry the rules' value)";
   EXPECT_NE(header.find("static_assert"), std::string::npos);
   EXPECT_EQ(header.find("0x07230203"), std::string::npos) << "SPIR-V words belong in the source, not the header";
+  // One registry per uber-shader, and the companions by name.
+  EXPECT_NE(header.find("namespace raster {\nconst shadergen::Registry& registry();"), std::string::npos);
+  EXPECT_NE(header.find("namespace compute {\nconst shadergen::Registry& registry();"), std::string::npos);
+  EXPECT_NE(header.find("const shadergen::CompanionShader& tile_lists();"), std::string::npos);
   std::string source = sgtest::read_file(out() / "split_second.cpp");
   EXPECT_NE(source.find("0x07230203u"), std::string::npos);
 }

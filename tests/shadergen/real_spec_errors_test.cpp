@@ -192,8 +192,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "unread)"},
         EditCase{"unknown_top_level_key", "\"include_dirs\"", "\"include_dir\"", "", 15,
                  "spec: unknown key \"include_dir\" (expected one of: format, name, description, uber_shader, "
-                 "program, include_dirs, target_env, layout, strip_debug, defines, companions, raw, optimised, "
-                 "compile, variants_file, define_style, branch_block)"},
+                 "uber_shaders, program, include_dirs, target_env, layout, strip_debug, defines, companions, raw, "
+                 "optimised, compile, variants_file, define_style, branch_block)"},
         EditCase{"bit_out_of_range", "\"bit\": 6", "\"bit\": 7", "\"SUN_LIGHT\"", 7,
                  "raw.features[6].bit: bit must be an integer from 0 to 6, found 7"},
         EditCase{"negative_bit", "\"bit\": 0", "\"bit\": -1", "", 7,
@@ -209,7 +209,8 @@ INSTANTIATE_TEST_SUITE_P(
         EditCase{"define_not_an_identifier", "\"define\": \"SKY\"", "\"define\": \"SKY-BOX\"", "", 10,
                  "raw.features[5].define: \"SKY-BOX\" is not a GLSL identifier"},
         EditCase{"unknown_stage", "\"stage\": \"fragment\"", "\"stage\": \"pixel\"", "", 9,
-                 "uber_shader.stage: unknown stage \"pixel\" (expected one of vertex, tess_control, tess_evaluation, "
+                 "uber_shaders.raster.stage: unknown stage \"pixel\" (expected one of vertex, tess_control, "
+                 "tess_evaluation, "
                  "geometry, fragment, compute, task, mesh, ray_generation, any_hit, closest_hit, miss, intersection, "
                  "callable, or .vert .tesc .tese .geom .frag .comp .task .mesh .rgen .rahit .rchit .rmiss .rint .rcall "
                  "without the dot)"},

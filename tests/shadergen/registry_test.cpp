@@ -11,7 +11,7 @@
 namespace {
 
 TEST(GeneratedRegistry, TableAndPermutations) {
-  const shadergen::Registry& r = split_second::registry();
+  const shadergen::Registry& r = split_second::raster::registry();
   EXPECT_EQ(r.name, "split_second");
   ASSERT_EQ(r.raw.size(), 128u);
   ASSERT_EQ(r.optimised.size(), 32u);
@@ -50,14 +50,15 @@ TEST(GeneratedRegistry, LookupsByRawIdAreChecked) {
   static_assert((RawId(0) | split_second::raw_bit::SKY) == RawId(32));
   static_assert((split_second::OptimisedId(0) | split_second::optimised_bit::SKY) == split_second::OptimisedId(4));
   const registry_lookups::Counts counts = registry_lookups::expect_checked_lookups(
-      split_second::registry(), {split_second::kRawCount, split_second::kRawPruned, split_second::kRawToOptimised,
-                                 split_second::is_valid_raw_id, split_second::optimised_id});
+      split_second::raster::registry(),
+      {split_second::kRawCount, split_second::kRawPruned, split_second::kRawToOptimised, split_second::is_valid_raw_id,
+       split_second::optimised_id});
   EXPECT_EQ(counts.valid, 96u);
   EXPECT_EQ(counts.pruned, 32u);
 }
 
 TEST(GeneratedRegistry, CompanionAndLayout) {
-  const shadergen::Registry& r = split_second::registry();
+  const shadergen::Registry& r = split_second::raster::registry();
   const shadergen::CompanionShader* tile = r.companion("tile");
   ASSERT_NE(tile, nullptr);
   EXPECT_EQ(tile->stage, shadergen::Stage::vertex);
@@ -74,7 +75,7 @@ TEST(GeneratedRegistry, CompanionAndLayout) {
 }
 
 TEST(GeneratedRegistry, SharedBlobsAreOneArray) {
-  const shadergen::Registry& r = split_second::registry();
+  const shadergen::Registry& r = split_second::raster::registry();
   // Optimised permutations reuse their raw twin's words: same address, not a copy.
   std::set<const std::uint32_t*> raw_words;
   for (const auto& p : r.raw)
@@ -84,7 +85,7 @@ TEST(GeneratedRegistry, SharedBlobsAreOneArray) {
 
 // Every hash in the generated code is the SHA-256 of its words, by coreutils' implementation.
 TEST(GeneratedRegistry, HashesAreTheSha256OfTheirWords) {
-  EXPECT_GT(registry_digests::expect_hashes_are_sha256_of_words(split_second::registry()), 0u);
+  EXPECT_GT(registry_digests::expect_hashes_are_sha256_of_words(split_second::raster::registry()), 0u);
 }
 
 }  // namespace

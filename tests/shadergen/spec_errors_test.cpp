@@ -61,7 +61,8 @@ INSTANTIATE_TEST_SUITE_P(
         sgtest::SpecErrorCase{
             "unknown_key", sgtest::replace_once(kBase, "\"format\": 1", "\"formats\": 1"),
             "spec.json:2:14: error: spec: unknown key \"formats\" (expected one of: format, name, description, "
-            "uber_shader, program, include_dirs, target_env, layout, strip_debug, defines, companions, raw, "
+            "uber_shader, uber_shaders, program, include_dirs, target_env, layout, strip_debug, defines, companions, "
+            "raw, "
             "optimised, compile, variants_file, define_style, branch_block)"},
         sgtest::SpecErrorCase{
             "bit_out_of_range", sgtest::replace_once(kBase, "\"C\", \"bit\": 2", "\"C\", \"bit\": 3"),

@@ -133,12 +133,14 @@ ComputeLightingPasses::ComputeLightingPasses(const Context& context, const TileG
   if (registry.optimised.size() <= kNaiveOptimisedId) throw Error("the compute light registry has no optimised 31");
   naive_pipeline_ = create_light_pipeline(context, layout_.get(), registry.optimised[kNaiveOptimisedId].spirv, targets,
                                           tile, true, "compute lighting naive (optimised 31)");
-  dynamic_pipeline_ = create_light_pipeline(context, layout_.get(), companion_spirv(registry, "lighting_dynamic"),
-                                            targets, tile, true, "compute lighting dynamic (per-pixel branches)");
+  dynamic_pipeline_ =
+      create_light_pipeline(context, layout_.get(), light_companions(registry).compute_lighting_dynamic.shader.spirv,
+                            targets, tile, true, "compute lighting dynamic (per-pixel branches)");
   if (floor != nullptr) {
     floor_set_ = target_set(floor->image(), "compute light set 1 (floor)");
-    floor_pipeline_ = create_light_pipeline(context, layout_.get(), companion_spirv(registry, "lighting_floor"),
-                                            targets, tile, true, "compute lighting floor (G-buffer read, no lighting)");
+    floor_pipeline_ =
+        create_light_pipeline(context, layout_.get(), light_companions(registry).compute_lighting_floor.shader.spirv,
+                              targets, tile, true, "compute lighting floor (G-buffer read, no lighting)");
   }
 }
 

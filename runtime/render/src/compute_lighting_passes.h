@@ -1,7 +1,7 @@
 #pragma once
 // The global light pass in compute (--light-pass compute): the same permutations as the raster
-// pass (lighting_passes.h), compiled from uber/lighting.comp (permutations/
-// split_second_compute.json), dispatched instead of drawn. The tile pass is recorded ONCE,
+// pass (lighting_passes.h), compiled from uber/lighting.comp (the "compute" uber-shader of
+// permutations/split_second.json), dispatched instead of drawn. The tile pass is recorded ONCE,
 // before any classification has run: per draw class, one pipeline bind, one push constant (the
 // class) and one vkCmdDispatchIndirect whose VkDispatchIndirectCommand, and the class's tile list
 // it shades, are written later each frame (by the host, or by the GPU-driven build). The naive

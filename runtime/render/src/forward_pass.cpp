@@ -152,9 +152,9 @@ void ForwardPass::create_framebuffers(const Context& context, const RenderTarget
 
 void ForwardPass::create_pipelines(const Context& context) {
   const shadergen::Registry& registry = *shaders_;
-  const GraphicsPipelineDesc depth =
-      depth_from_gbuffer_desc(layout_.pipeline.get(), render_pass_.get(), companion_spirv(registry, "full_screen"),
-                              companion_spirv(registry, "depth"), "forward pass: depth from the G-buffer");
+  const GraphicsPipelineDesc depth = depth_from_gbuffer_desc(
+      layout_.pipeline.get(), render_pass_.get(), forward_companions(registry).full_screen.shader.spirv,
+      forward_companions(registry).depth.shader.spirv, "forward pass: depth from the G-buffer");
   depth_pipeline_ = create_graphics_pipeline(context, depth);
 
   for (const ForwardDraw& draw : draws_) {
@@ -165,7 +165,7 @@ void ForwardPass::create_pipelines(const Context& context) {
     GraphicsPipelineDesc desc;
     desc.layout = layout_.pipeline.get();
     desc.render_pass = render_pass_.get();
-    desc.vertex_spirv = companion_spirv(registry, "vertex");
+    desc.vertex_spirv = forward_companions(registry).vertex.shader.spirv;
     desc.fragment_spirv = registry.raw[raw_id].spirv;
     desc.vertex_bindings = scene_vertex_bindings();
     desc.vertex_attributes = scene_vertex_attributes();  // forward.vert reads every one

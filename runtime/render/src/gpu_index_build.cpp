@@ -32,7 +32,7 @@ GpuIndexBuild::GpuIndexBuild(const Context& context, const shadergen::Registry& 
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                             MemoryUse::DeviceLocal, "indirect draws (GPU-built)"});
 
-  const shadergen::Permutation& rects = companion_shader(shaders, "tile_rects");
+  const shadergen::Permutation& rects = light_companions(shaders).tile_rects.shader;
   const std::uint32_t points = primitive == TilePrimitive::points ? 1 : 0;
   const std::uint32_t coalescing = coalesce ? 1 : 0;
   ComputeBuildDesc desc{
@@ -40,7 +40,7 @@ GpuIndexBuild::GpuIndexBuild(const Context& context, const shadergen::Registry& 
       .counter_bytes = kCountersBytes,
       .outputs = {indices_.handle(), draws_.handle()},
       .count = {&rects, SpecConstants{}.set(kFillPass, 0).set(kCoalesce, coalescing).set(kPoints, points)},
-      .prefix = {&companion_shader(shaders, "tile_prefix"), SpecConstants{}.set(kPoints, points)},
+      .prefix = {&light_companions(shaders).tile_prefix.shader, SpecConstants{}.set(kPoints, points)},
       .fill = {&rects, SpecConstants{}.set(kFillPass, 1).set(kCoalesce, coalescing).set(kPoints, points)},
       .push = {grid.tiles_x, grid.tiles_y, grid.blocks_x, grid.blocks_y, class_count, 0, 0, 0},
       .groups = workgroups(grid.block_count(), rects),

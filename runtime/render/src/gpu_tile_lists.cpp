@@ -33,7 +33,7 @@ GpuTileLists::GpuTileLists(const Context& context, const shadergen::Registry& sh
                                  MemoryUse::DeviceLocal, "indirect dispatches (GPU-built)"});
 
   // One shader, three passes: its PASS constant picks the pass.
-  const shadergen::Permutation& lists = companion_shader(shaders, "tile_lists");
+  const shadergen::Permutation& lists = light_companions(shaders).tile_lists.shader;
   ComputeBuildDesc desc{
       .name = "GPU tile-list build",
       .counter_bytes = kCountersBytes,

@@ -23,7 +23,7 @@ constexpr std::uint32_t kStorageSet = 1;           // the compute passes' output
 
 // The compute pass that binds set 0 and one output buffer in set 1 through compute_layout().
 const shadergen::Reflection& classifier(const shadergen::Registry& registry) {
-  return companion_shader(registry, "classify_tiles").reflection;
+  return light_companions(registry).classify_tiles.shader.reflection;
 }
 
 // Set 0 of the light pass (the registry's merged layout) plus what the classifier alone reads

@@ -39,12 +39,12 @@ UniquePipeline create_light_pipeline(const Context& context, const RenderTargets
   desc.fragment_constants.add(shadergen::vulkan::specialization_info(specialization));
   if (primitive == TilePrimitive::points) {
     // tile_point.vert computes each point from its index; binding 1 holds the grid's shape.
-    desc.vertex_spirv = companion_spirv(lighting.shaders(), "tile_point");
+    desc.vertex_spirv = light_companions(lighting.shaders()).tile_point.shader.spirv;
     desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
     desc.vertex_bindings = {{kGridBinding, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_INSTANCE}};
     desc.vertex_attributes = {{0, kGridBinding, VK_FORMAT_R32G32_SFLOAT, 0}};
   } else {
-    desc.vertex_spirv = companion_spirv(lighting.shaders(), "tile");
+    desc.vertex_spirv = light_companions(lighting.shaders()).tile.shader.spirv;
     desc.vertex_bindings = {{kCornerBinding, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, kCornerBinding, VK_FORMAT_R32G32_SFLOAT, 0}};
   }
@@ -119,11 +119,11 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
                                           registry.optimised[kNaiveOptimisedId].spirv, none, TilePrimitive::triangles,
                                           false, "lighting naive (optimised 31)");
   dynamic_pipeline_ = create_light_pipeline(context, targets, lighting, lighting.lighting_layout(),
-                                            companion_spirv(registry, "lighting_dynamic"), none,
+                                            light_companions(registry).lighting_dynamic.shader.spirv, none,
                                             TilePrimitive::triangles, false, "lighting dynamic (per-pixel branches)");
   if (floor) {
     floor_pipeline_ = create_light_pipeline(context, targets, lighting, lighting.lighting_layout(),
-                                            companion_spirv(registry, "lighting_floor"), none, TilePrimitive::triangles,
+                                            light_companions(registry).lighting_floor.shader.spirv, none, TilePrimitive::triangles,
                                             false, "lighting floor (G-buffer read, no lighting)");
   }
 }

@@ -57,19 +57,19 @@ VkImageView set0_view(const RenderTargets& targets, std::uint32_t binding) {
 
 // What every local-light pipeline shares: the layout and render pass, the light's permutation
 // with or without the coverage flags (`tagged`), blended ONE + ONE into the light target.
-// `vertex`: the domain's companion drawing it ("full_screen" or "volume").
+// `vertex`: the domain's companion drawing it (full_screen or volume).
 GraphicsPipelineDesc light_pipeline_desc(const shadergen::Registry& registry, VkPipelineLayout layout,
-                                         VkRenderPass render_pass, const char* vertex, std::uint32_t raw_id,
-                                         bool tagged) {
+                                         VkRenderPass render_pass, const shadergen::CompanionShader& vertex,
+                                         std::uint32_t raw_id, bool tagged) {
   GraphicsPipelineDesc desc;
   desc.layout = layout;
   desc.render_pass = render_pass;
-  desc.vertex_spirv = companion_spirv(registry, vertex);
+  desc.vertex_spirv = vertex.shader.spirv;
   desc.fragment_spirv = registry.raw[raw_id].spirv;
   desc.fragment_constants.set(kTaggedConstant, tagged ? 1u : 0u);
   desc.additive_blend = true;
-  desc.name =
-      std::string("local light ") + vertex + " raw " + std::to_string(raw_id) + (tagged ? " (tagged G-buffer)" : "");
+  desc.name = "local light " + std::string(vertex.name) + " raw " + std::to_string(raw_id) +
+              (tagged ? " (tagged G-buffer)" : "");
   return desc;
 }
 
@@ -129,9 +129,9 @@ void LocalLightPasses::create_volume_meshes(const Context& context) {
 
 void LocalLightPasses::create_volume_pipelines(const Context& context, const RenderTargets& targets, bool depth_clamp) {
   const shadergen::Registry& registry = *shaders_;
-  GraphicsPipelineDesc resolve =
-      depth_from_gbuffer_desc(layout_.pipeline.get(), render_pass_.get(), companion_spirv(registry, "full_screen"),
-                              companion_spirv(registry, "resolve"), "local lights: resolve depth and stencil");
+  GraphicsPipelineDesc resolve = depth_from_gbuffer_desc(
+      layout_.pipeline.get(), render_pass_.get(), local_light_companions(registry).full_screen.shader.spirv,
+      local_light_companions(registry).resolve.shader.spirv, "local lights: resolve depth and stencil");
   resolve.stencil = gbuffer_stencil_marking();  // REPLACE with kStencilLit where not discarded
   resolve_ = create_graphics_pipeline(context, resolve);
 
@@ -142,8 +142,8 @@ void LocalLightPasses::create_volume_pipelines(const Context& context, const Ren
   lit.compareMask = 0xFF;
   lit.reference = kStencilLit;
   auto create = [&](std::uint32_t raw_id, bool tagged, bool depth_tested) {
-    GraphicsPipelineDesc desc =
-        light_pipeline_desc(registry, layout_.pipeline.get(), render_pass_.get(), "volume", raw_id, tagged);
+    GraphicsPipelineDesc desc = light_pipeline_desc(registry, layout_.pipeline.get(), render_pass_.get(),
+                                                    local_light_companions(registry).volume, raw_id, tagged);
     desc.vertex_bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}};
     desc.cull_mode = VK_CULL_MODE_FRONT_BIT;  // inverted winding: the camera may be inside
@@ -200,8 +200,9 @@ void LocalLightPasses::create_sets(const Context& context, const RenderTargets& 
 void LocalLightPasses::create_full_screen_pipelines(const Context& context, const RenderTargets& targets) {
   const shadergen::Registry& registry = *shaders_;
   auto create = [&](std::uint32_t raw_id, bool tagged) {
-    return create_graphics_pipeline(context, light_pipeline_desc(registry, layout_.pipeline.get(), render_pass_.get(),
-                                                                 "full_screen", raw_id, tagged));
+    return create_graphics_pipeline(context,
+                                    light_pipeline_desc(registry, layout_.pipeline.get(), render_pass_.get(),
+                                                        local_light_companions(registry).full_screen, raw_id, tagged));
   };
   for (const Draw& draw : draws_) {
     if (full_screen_.contains(draw.raw_id)) continue;

@@ -120,9 +120,9 @@ void LocalLightShadows::create_pipelines(const Context& context, VkDescriptorSet
   // Either build of the domain: the casters read no G-buffer.
   const shadergen::Registry& registry = local_light_shaders_for(VK_SAMPLE_COUNT_1_BIT);
   const std::array<const shadergen::Reflection*, 3> shaders{
-      &companion_shader(registry, "shadow_caster").reflection,
-      &companion_shader(registry, "shadow_caster_masked").reflection,
-      &companion_shader(registry, "shadow_caster_mask").reflection};
+      &local_light_companions(registry).shadow_caster.shader.reflection,
+      &local_light_companions(registry).shadow_caster_masked.shader.reflection,
+      &local_light_companions(registry).shadow_caster_mask.shader.reflection};
   const std::vector<VkDescriptorSetLayoutBinding> set0 = merged_set_bindings(shaders, 0, "local shadow casters' set 0");
   if (!set0.empty()) throw Error("the local shadow casters' shaders bind set 0, which the runtime leaves empty");
   const std::vector<VkDescriptorSetLayoutBinding> set1 =
@@ -142,8 +142,9 @@ void LocalLightShadows::create_pipelines(const Context& context, VkDescriptorSet
     GraphicsPipelineDesc desc;
     desc.layout = layout_.get();
     desc.render_pass = render_pass_.get();
-    desc.vertex_spirv = companion_spirv(registry, masked ? "shadow_caster_masked" : "shadow_caster");
-    if (masked) desc.fragment_spirv = companion_spirv(registry, "shadow_caster_mask");
+    const LocalLightCompanions& c = local_light_companions(registry);
+    desc.vertex_spirv = (masked ? c.shadow_caster_masked : c.shadow_caster).shader.spirv;
+    if (masked) desc.fragment_spirv = c.shadow_caster_mask.shader.spirv;
     desc.vertex_bindings = scene_vertex_bindings();  // ScenePasses' buffers
     desc.vertex_attributes = shadow_caster_attributes(masked);
     desc.color_attachments = 0;

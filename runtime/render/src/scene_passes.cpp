@@ -51,11 +51,12 @@ std::size_t batch_kind(const Mesh& mesh) { return (mesh.alpha_mask ? 2 : 0) + (m
 
 // Every shader drawn with the scene's pipeline layout: the shadow map's and both G-buffers'.
 std::array<const shadergen::Reflection*, 12> scene_shaders(const shadergen::Registry& shaders) {
-  const auto of = [&](std::string_view name) { return &companion_shader(shaders, name).reflection; };
+  const LightCompanions& c = light_companions(shaders);
+  const auto of = [](const shadergen::CompanionShader& shader) { return &shader.shader.reflection; };
   return {
-      of("scene"),         of("shadow"),      of("gbuffer"),      of("gbuffer_flagged"), of("sky_vertex"),
-      of("sky"),           of("sky_flagged"), of("scene_masked"), of("gbuffer_masked"),  of("gbuffer_masked_flagged"),
-      of("shadow_masked"), of("shadow_mask")};
+      of(c.scene),         of(c.shadow),      of(c.gbuffer),      of(c.gbuffer_flagged), of(c.sky_vertex),
+      of(c.sky),           of(c.sky_flagged), of(c.scene_masked), of(c.gbuffer_masked),  of(c.gbuffer_masked_flagged),
+      of(c.shadow_masked), of(c.shadow_mask)};
 }
 
 // Set `set` of the scene's pipeline layout, as the scene shaders' reflection declares it;
@@ -132,8 +133,9 @@ void ScenePasses::create_shadow_pipelines(const Context& context, const shaderge
     GraphicsPipelineDesc shadow;
     shadow.layout = layout_.get();
     shadow.render_pass = targets.shadow_pass();
-    shadow.vertex_spirv = companion_spirv(shaders, masked ? "shadow_masked" : "shadow");
-    if (masked) shadow.fragment_spirv = companion_spirv(shaders, "shadow_mask");
+    const LightCompanions& c = light_companions(shaders);
+    shadow.vertex_spirv = (masked ? c.shadow_masked : c.shadow).shader.spirv;
+    if (masked) shadow.fragment_spirv = c.shadow_mask.shader.spirv;
     shadow.vertex_bindings = scene_vertex_bindings();
     shadow.vertex_attributes = shadow_caster_attributes(masked);
     shadow.color_attachments = 0;
@@ -150,6 +152,7 @@ ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Contex
                                                                     const RenderTargets& targets,
                                                                     bool with_flags) const {
   const std::string pass = with_flags ? " (classified)" : " (plain)";
+  const LightCompanions& c = light_companions(shaders);
   GBufferPipelines pipelines;
   for (std::size_t kind = 0; kind < kBatchKinds; ++kind) {
     if (!kind_drawn_[kind]) continue;
@@ -157,10 +160,10 @@ ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Contex
     const std::string what = std::string(masked ? ", alpha-masked" : "") + (culled_kind(kind) ? ", single-sided" : "");
     GraphicsPipelineDesc materials =
         targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer materials" + what + pass, with_flags);
-    materials.vertex_spirv = companion_spirv(shaders, masked ? "scene_masked" : "scene");
-    const char* fragment = masked ? (with_flags ? "gbuffer_masked_flagged" : "gbuffer_masked")
-                                  : (with_flags ? "gbuffer_flagged" : "gbuffer");
-    materials.fragment_spirv = companion_spirv(shaders, fragment);
+    materials.vertex_spirv = (masked ? c.scene_masked : c.scene).shader.spirv;
+    const shadergen::CompanionShader& fragment = masked ? (with_flags ? c.gbuffer_masked_flagged : c.gbuffer_masked)
+                                                        : (with_flags ? c.gbuffer_flagged : c.gbuffer);
+    materials.fragment_spirv = fragment.shader.spirv;
     materials.vertex_bindings = scene_vertex_bindings();
     materials.vertex_attributes =
         scene_attributes_where([masked](std::uint32_t location) { return masked || location != 9; });
@@ -171,8 +174,8 @@ ScenePasses::GBufferPipelines ScenePasses::create_gbuffer_pipelines(const Contex
   }
 
   GraphicsPipelineDesc sky = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer sky" + pass, with_flags);
-  sky.vertex_spirv = companion_spirv(shaders, "sky_vertex");
-  sky.fragment_spirv = companion_spirv(shaders, with_flags ? "sky_flagged" : "sky");
+  sky.vertex_spirv = c.sky_vertex.shader.spirv;
+  sky.fragment_spirv = (with_flags ? c.sky_flagged : c.sky).shader.spirv;
   sky.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
   pipelines.sky = create_graphics_pipeline(context, sky);
   return pipelines;

@@ -43,7 +43,7 @@ TileClassification::TileClassification(const Context& context, const TileGrid& g
   ids_set_ = allocate_descriptor_set(context, pool, lighting.storage_set_layout(), "tile ID output set");
   write_buffer_descriptor(context, ids_set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ids_.handle());
   classify_ = create_compute_pipeline(
-      context, lighting.compute_layout(), companion_spirv(lighting.shaders(), "classify_tiles"),
+      context, lighting.compute_layout(), light_companions(lighting.shaders()).classify_tiles.shader.spirv,
       classification_constants(grid.tile_size, static_cast<std::uint32_t>(targets.samples())), "tile classification");
 }
 

@@ -33,6 +33,7 @@ inline constexpr std::uint32_t kMaxByteTableOptimisedBits = 8;
 // A variants file lists at most this many lines (combinations, comments and blank lines).
 inline constexpr std::size_t kMaxVariantsLines = std::size_t{1} << 22;
 inline constexpr std::size_t kMaxCompanions = 64;
+inline constexpr std::size_t kMaxUberShaders = 8;
 inline constexpr std::size_t kMaxIncludeDirs = 64;
 // Rule counts bound the cost of expansion: every impossible rule is evaluated for each of up to
 // raw ID expanded, every variant for each optimised ID.
@@ -165,6 +166,17 @@ struct CompanionSpec {
   // it takes part in the cross-permutation layout check and the merged layout. False: it
   // has a layout of its own (a compute pass), described only by its own reflection.
   bool shared_layout = true;
+  // With "uber_shaders": the entry it is compiled with ("uber_shader": "compute"; default the
+  // first): its registry holds the companion, and a shared-layout companion runs in its layout.
+  std::string uber_shader;
+};
+
+// One entry of "uber_shaders": {"raster": {...}, "compute": {...}}: an uber-shader compiled over
+// the domain's permutations. Every entry shares the features, the table and the typed API; each
+// has its own blobs, pipeline layout and registry (N::raster::registry()).
+struct UberShaderEntry {
+  std::string name;  // a C++ identifier: the generated namespace N::<name>
+  ShaderFile file;
 };
 
 // "branch_block": where the uniform block holding the branch features' values is bound. One
@@ -180,6 +192,12 @@ struct DomainSpec {
   std::string name;
   std::string description;
   ShaderFile uber;
+  // "uber_shaders", in spec order (then `uber` is the first entry's file); empty with
+  // "uber_shader" or "program". for_uber_shader() (spec/uber_shader_entries.h) makes the spec
+  // one entry compiles.
+  std::vector<UberShaderEntry> uber_shaders;
+  // Set in the spec for_uber_shader() makes: the entry it compiles (its companions only).
+  std::string entry;
   // The "program" form: the vertex half of a permuted vertex + fragment pair (then `uber` is
   // the fragment half). Each permutation compiles both with the same defines, and the
   // fragment inputs must be vertex outputs of the same width.

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "base/file_io.h"
 #include "base/phase_clock.h"
@@ -24,6 +25,7 @@
 #include "shadergen/permutations.h"
 #include "spec/defines.h"
 #include "spec/load_spec.h"
+#include "spec/uber_shader_entries.h"
 #include "spec/variants_file.h"
 
 namespace shadergen {
@@ -80,21 +82,22 @@ Status spill_output(BlobSpill& spill, StagedOutput& staged, const std::string& n
 }
 
 // Every output that grows with the domain is a file in the spill (the blobs since they were
-// made); only the header is held in memory.
-Result<StagedOutput> outputs_for(const BuildOptions& options, const CompiledDomain& domain, BlobSpill& spill,
+// made); only the header is held in memory. `entries`: one compiled domain per uber-shader.
+Result<StagedOutput> outputs_for(const BuildOptions& options, std::span<const CompiledDomain> entries, BlobSpill& spill,
                                  const std::string& cpp_name, const std::string& ns, double seconds) {
   StagedOutput staged(options.out_dir);
-  Status s = spill_output(spill, staged, "manifest.json", [&](std::ostream& out) { write_manifest(domain, out); });
+  Status s = spill_output(spill, staged, "manifest.json", [&](std::ostream& out) { write_manifest(entries, out); });
   if (!s) return std::move(s).take_errors();
-  for (const Blob& blob : domain.blobs) staged.add_file(blob_relative_path(blob), spill.path_of(blob.hash));
-  staged.add(cpp_name + ".h", generated_header(domain, ns));
+  for (const CompiledDomain& domain : entries)
+    for (const Blob& blob : domain.blobs) staged.add_file(blob_relative_path(blob), spill.path_of(blob.hash));
+  staged.add(cpp_name + ".h", generated_header(entries, ns));
   auto source = spill.scratch_file(cpp_name + ".cpp");
   if (!source) return std::move(source).take_errors();
-  if (Status written = write_generated_source(domain, spill, cpp_name + ".h", ns, *source); !written)
+  if (Status written = write_generated_source(entries, spill, cpp_name + ".h", ns, *source); !written)
     return std::move(written).take_errors();
   staged.add_file(cpp_name + ".cpp", *source);
   if (options.write_stats) {
-    s = spill_output(spill, staged, "stats.json", [&](std::ostream& out) { write_stats(domain, seconds, out); });
+    s = spill_output(spill, staged, "stats.json", [&](std::ostream& out) { write_stats(entries, seconds, out); });
     if (!s) return std::move(s).take_errors();
   }
   return staged;
@@ -147,26 +150,31 @@ void add_dependency(std::vector<std::filesystem::path>& dependencies, const std:
   if (at == dependencies.end() || *at != file) dependencies.insert(at, file);
 }
 
-BuildSummary summarise(const CompiledDomain& d) {
+// The plan's counts once, the compile counts summed over the entries (one per uber-shader).
+BuildSummary summarise(std::span<const CompiledDomain> entries) {
   BuildSummary s;
-  s.raw = static_cast<std::uint32_t>(d.plan.raw.size());
-  for (const RawPermutation& raw : d.plan.raw) s.pruned += raw.pruned;
-  s.optimised = static_cast<std::uint32_t>(d.plan.optimised.size());
-  s.companions = static_cast<std::uint32_t>(d.spec.companions.size());
-  s.unique_sources = static_cast<std::uint32_t>(d.sources.size());
-  for (const SourceRecord& source : d.sources) (source.cache_hit ? s.cache_hits : s.compiled)++;
-  s.permutations = static_cast<std::uint32_t>(d.jobs.size());
-  for (const CompileJob& job : d.jobs)
-    (d.sources[static_cast<std::size_t>(job.source)].cache_hit ? s.reused : s.recompiled)++;
-  s.inputs_reused = d.inputs_reused;
-  s.unique_blobs = static_cast<std::uint32_t>(d.blobs.size());
-  for (const Blob& b : d.blobs) s.optimiser_fallbacks += b.fell_back;
-  for (const BlobServes& serves : blob_serves(d)) {
-    s.most_pipelines_per_blob = std::max(s.most_pipelines_per_blob, static_cast<std::uint32_t>(serves.pipelines));
-    s.most_branch_values_per_blob =
-        std::max(s.most_branch_values_per_blob, static_cast<std::uint32_t>(serves.branch_values));
+  const CompiledDomain& first = entries.front();
+  s.raw = static_cast<std::uint32_t>(first.plan.raw.size());
+  for (const RawPermutation& raw : first.plan.raw) s.pruned += raw.pruned;
+  s.optimised = static_cast<std::uint32_t>(first.plan.optimised.size());
+  s.inputs_reused = true;
+  for (const CompiledDomain& d : entries) {
+    s.companions += static_cast<std::uint32_t>(d.spec.companions.size());
+    s.unique_sources += static_cast<std::uint32_t>(d.sources.size());
+    for (const SourceRecord& source : d.sources) (source.cache_hit ? s.cache_hits : s.compiled)++;
+    s.permutations += static_cast<std::uint32_t>(d.jobs.size());
+    for (const CompileJob& job : d.jobs)
+      (d.sources[static_cast<std::size_t>(job.source)].cache_hit ? s.reused : s.recompiled)++;
+    s.inputs_reused = s.inputs_reused && d.inputs_reused;
+    s.unique_blobs += static_cast<std::uint32_t>(d.blobs.size());
+    for (const Blob& b : d.blobs) s.optimiser_fallbacks += b.fell_back;
+    for (const BlobServes& serves : blob_serves(d)) {
+      s.most_pipelines_per_blob = std::max(s.most_pipelines_per_blob, static_cast<std::uint32_t>(serves.pipelines));
+      s.most_branch_values_per_blob =
+          std::max(s.most_branch_values_per_blob, static_cast<std::uint32_t>(serves.branch_values));
+    }
+    if (d.remote) s.remote = d.remote;
   }
-  s.remote = d.remote;
   return s;
 }
 
@@ -204,18 +212,42 @@ void warn_unreachable(const BuildOptions& options, const PermutationPlan& plan) 
               "fewer bits)");
 }
 
-// A shard writes nothing: its summary says what became of its sources.
-BuildSummary shard_summary(const CompiledDomain& domain, std::vector<PhaseTime> phases,
+// A shard writes nothing: its summary says what became of its sources (of every entry).
+BuildSummary shard_summary(std::span<const CompiledDomain> entries, std::vector<PhaseTime> phases,
                            std::chrono::steady_clock::time_point start) {
-  BuildSummary summary = summarise(domain);
-  const ShardOutcome& shard = *domain.shard;
+  BuildSummary summary = summarise(entries);
   summary.sharded = true;
-  summary.shard_index = shard.index, summary.shard_count = shard.count;
-  summary.shard_sources = shard.sources, summary.shard_on_server = shard.on_server;
-  summary.shard_uploaded = shard.uploaded;
+  for (const CompiledDomain& domain : entries) {
+    const ShardOutcome& shard = *domain.shard;
+    summary.shard_index = shard.index, summary.shard_count = shard.count;
+    summary.shard_sources += shard.sources, summary.shard_on_server += shard.on_server;
+    summary.shard_uploaded += shard.uploaded;
+  }
   summary.phases = std::move(phases);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
+}
+
+// Compiles the plan from each uber-shader of the spec ("uber_shaders"; else the one), in spec
+// order. Each entry has its own input set (its settings name it).
+Result<std::vector<CompiledDomain>> compile_entries(const DomainSpec& spec, PermutationPlan plan,
+                                                    CompileOptions options, const std::string& input_key_settings,
+                                                    const BuildOptions& build_options, const std::string& digest) {
+  std::vector<CompiledDomain> entries;
+  const std::size_t count = uber_shader_count(spec);
+  for (std::size_t i = 0; i < count; ++i) {
+    DomainSpec entry_spec = for_uber_shader(spec, i);
+    if (!options.input_key.empty()) {
+      std::string settings = input_key_settings;
+      if (!entry_spec.entry.empty()) settings += "\nuber_shader " + entry_spec.entry;
+      options.input_key = input_set_key(current_cache_key_parts(), build_options.spec_path, digest, settings);
+    }
+    // The last (usually only) entry takes the plan; the others a copy.
+    auto domain = compile_domain(std::move(entry_spec), i + 1 == count ? std::move(plan) : plan, options);
+    if (!domain) return std::move(domain).take_errors();
+    entries.push_back(std::move(domain).value());
+  }
+  return entries;
 }
 
 }  // namespace
@@ -268,22 +300,27 @@ Result<BuildSummary> build(const BuildOptions& given) {
     compile_options.input_key = input_set_key(current_cache_key_parts(), options.spec_path, loaded->digest,
                                               preprocessing_settings(*spec, *variants_digest));
   }
-  auto domain = compile_domain(std::move(spec).value(), std::move(plan).value(), compile_options);
-  if (!domain) return std::move(domain).take_errors();
-  add_dependency(domain->dependencies, domain->spec.variants_path);
-  phases.insert(phases.end(), domain->phases.begin(), domain->phases.end());
-  if (remote) domain->remote = remote->stats();
+  auto compiled = compile_entries(*spec, std::move(plan).value(), compile_options,
+                                  preprocessing_settings(*spec, *variants_digest), options, loaded->digest);
+  if (!compiled) return std::move(compiled).take_errors();
+  std::vector<CompiledDomain>& entries = *compiled;
+  for (CompiledDomain& domain : entries) {
+    add_dependency(domain.dependencies, domain.spec.variants_path);
+    phases.insert(phases.end(), domain.phases.begin(), domain.phases.end());
+  }
+  if (remote) entries.back().remote = remote->stats();
   clock.restart();
-  if (domain->shard) return shard_summary(*domain, std::move(phases), start);
+  if (entries.front().shard) return shard_summary(entries, std::move(phases), start);
 
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (const Blob& blob : domain->blobs)
-    if (blob.fell_back && options.log)
-      // The reason may come from a remote cache's entry: printed escaped and bounded.
-      options.log("warning: optimiser fallback for blob " + blob.hash.substr(0, 16) + ": " +
-                  printable(blob.fallback_reason));
+  for (const CompiledDomain& domain : entries)
+    for (const Blob& blob : domain.blobs)
+      if (blob.fell_back && options.log)
+        // The reason may come from a remote cache's entry: printed escaped and bounded.
+        options.log("warning: optimiser fallback for blob " + blob.hash.substr(0, 16) + ": " +
+                    printable(blob.fallback_reason));
   if (options.cancelled && options.cancelled()) return make_error("build interrupted");
-  auto staged = outputs_for(options, *domain, *spill, cpp_name, ns, seconds);
+  auto staged = outputs_for(options, entries, *spill, cpp_name, ns, seconds);
   if (!staged) return std::move(staged).take_errors();
   clock.lap("manifest and codegen");
   auto changed = staged->commit(options.cancelled);
@@ -291,12 +328,12 @@ Result<BuildSummary> build(const BuildOptions& given) {
   clock.lap("output compare or write");
   if (!options.depfile.empty()) {
     std::string target = (options.out_dir / (cpp_name + ".h")).string();
-    std::string text = write_depfile(target, *domain);
+    std::string text = write_depfile(target, entries);
     if (!file_has_bytes(options.depfile, text))
       if (Status written = write_file_atomic(options.depfile, text); !written) return std::move(written).take_errors();
   }
   clock.lap("depfile");
-  BuildSummary summary = summarise(*domain);
+  BuildSummary summary = summarise(entries);
   summary.output_changed = *changed;
   summary.phases = std::move(phases);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

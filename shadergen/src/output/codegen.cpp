@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <span>
 #include <sstream>
 #include <unordered_map>
 
@@ -322,7 +323,31 @@ void bit_constants(std::ostringstream& h, const DomainSpec& spec) {
   h << "}  // namespace optimised_bit\n\n";
 }
 
-std::string header_text(const CompiledDomain& d, const std::string& ns) {
+// registry() (or, with "uber_shaders", <entry>::registry() for each entry) and the typed
+// companion accessors companions::<name>().
+void registry_declarations(std::ostringstream& h, std::span<const CompiledDomain> entries) {
+  if (entries.front().spec.entry.empty()) {
+    h << "// The permutations, their SPIR-V and reflection. Defined in the generated source.\n"
+         "const shadergen::Registry& registry();\n\n";
+  } else {
+    for (const CompiledDomain& e : entries)
+      h << "// The permutations compiled from " << cpp_comment_text(e.spec.uber.path.filename().string()) << " ("
+        << stage_name(e.spec.uber.stage) << "), their SPIR-V and reflection:\n// one table and typed API above, "
+        << "a registry per uber-shader. Defined in the generated source.\nnamespace " << e.spec.entry
+        << " {\nconst shadergen::Registry& registry();\n}  // namespace " << e.spec.entry << "\n\n";
+  }
+  h << "// The companion shaders by name: a companion renamed or removed in the spec fails to compile\n"
+       "// here rather than at run time. Each is also in its registry's `companions`.\nnamespace companions {\n";
+  for (const CompiledDomain& e : entries)
+    for (const CompanionSpec& c : e.spec.companions)
+      h << "const shadergen::CompanionShader& " << c.name << "();  // " << stage_name(c.file.stage) << ", "
+        << cpp_comment_text(c.file.path.filename().string())
+        << (e.spec.entry.empty() ? std::string() : ", with " + e.spec.entry) << "\n";
+  h << "}  // namespace companions\n\n";
+}
+
+std::string header_text(std::span<const CompiledDomain> entries, const std::string& ns) {
+  const CompiledDomain& d = entries.front();
   std::ostringstream h;
   h << banner(d)
     << "#pragma once\n\n#include <array>\n#include <cstdint>\n#include <optional>\n#include <string>\n"
@@ -349,8 +374,8 @@ std::string header_text(const CompiledDomain& d, const std::string& ns) {
          "return false;\n    return true;\n}());\n\n";
   }
   pruning_agreement(h, d);
-  h << "// The permutations, their SPIR-V and reflection. Defined in the generated source.\n";
-  h << "const shadergen::Registry& registry();\n\n" << close_namespace(ns);
+  registry_declarations(h, entries);
+  h << close_namespace(ns);
   return h.str();
 }
 
@@ -363,25 +388,27 @@ std::string kind_enum(DescriptorKind kind) {
 // are read back from the spill one at a time.
 class SourceWriter {
  public:
-  SourceWriter(const CompiledDomain& d, const BlobSpill& spill) : d_(d), spill_(spill) {}
+  SourceWriter(std::span<const CompiledDomain> entries, const BlobSpill& spill)
+      : entries_(entries), d_(&entries.front()), spill_(spill) {}
 
   Status run(const std::string& header_name, const std::string& ns, const std::filesystem::path& file) {
     out_.rdbuf()->pubsetbuf(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
     out_.open(file, std::ios::binary | std::ios::trunc);
     if (!out_) return make_error(spill_.shown(file).string(), 0, std::string("cannot write: ") + std::strerror(errno));
     errno = 0;
-    out_ << banner(d_) << "#include " << literal(header_name) << "\n\n"
-         << (tables_in_header(d_) ? "" : "#include <algorithm>\n#include <cstddef>\n")
+    out_ << banner(*d_) << "#include " << literal(header_name) << "\n\n"
+         << (tables_in_header(*d_) ? "" : "#include <algorithm>\n#include <cstddef>\n")
          << "#include <span>\n#include <string_view>\n\n"
-         << open_namespace(ns) << "namespace {\n\n";
-    if (Status s = words(); !s) return s;
-    reflections();
-    names_and_defines();
-    source_tables();
-    permutations();
-    registry();
-    out_ << "}  // namespace\n\nconst shadergen::Registry& registry() { return kRegistry; }\n\n";
-    source_lookups();
+         << open_namespace(ns);
+    if (!tables_in_header(*d_)) {
+      out_ << "namespace {\n\n";
+      source_tables();
+      out_ << "}  // namespace\n\n";
+      source_lookups();
+    }
+    for (const CompiledDomain& entry : entries_)
+      if (Status s = entry_registry(entry); !s) return s;
+    companion_accessors();
     out_ << close_namespace(ns);
     out_.close();
     if (!out_) return make_error(spill_.shown(file).string(), 0, "write failed: " + BlobSpill::write_failure(errno));
@@ -389,15 +416,48 @@ class SourceWriter {
   }
 
  private:
+  // One registry: the domain's own, or with "uber_shaders" an entry's, in namespace <entry>.
+  Status entry_registry(const CompiledDomain& entry) {
+    d_ = &entry;
+    word_offset_.clear();
+    pool_text_.clear();
+    pool_ends_.clear();
+    define_slices_.clear();
+    const std::string& name = entry.spec.entry;
+    if (!name.empty()) out_ << "namespace " << name << " {\n";
+    out_ << "namespace {\n\n";
+    if (Status s = words(); !s) return s;
+    reflections();
+    names_and_defines();
+    permutations();
+    registry();
+    out_ << "}  // namespace\n\nconst shadergen::Registry& registry() { return kRegistry; }\n\n";
+    if (!name.empty()) out_ << "}  // namespace " << name << "\n\n";
+    return Ok{};
+  }
+
+  // companions::<name>(): the entry's kCompanions[i], declared in the header.
+  void companion_accessors() {
+    out_ << "namespace companions {\n";
+    for (const CompiledDomain& entry : entries_) {
+      const std::string scope = entry.spec.entry.empty() ? std::string() : entry.spec.entry + "::";
+      for (std::size_t i = 0; i < entry.spec.companions.size(); ++i)
+        out_ << "const shadergen::CompanionShader& " << entry.spec.companions[i].name << "() { return " << scope
+             << "kCompanions[" << i << "]; }\n";
+    }
+    out_ << "}  // namespace companions\n\n";
+  }
+
+ private:
   // The words are most of the bytes: formatted into a string a blob at a time, not through the
   // stream, and written out in blocks.
   Status words() {
     std::size_t total = 0;
-    for (const Blob& b : d_.blobs) total += b.word_count;
-    std::string text = "// " + std::to_string(d_.blobs.size()) + " distinct SPIR-V blobs, stored once each.\n";
+    for (const Blob& b : d_->blobs) total += b.word_count;
+    std::string text = "// " + std::to_string(d_->blobs.size()) + " distinct SPIR-V blobs, stored once each.\n";
     text += "constexpr std::uint32_t kWords[" + std::to_string(total) + "] = {";
     std::size_t offset = 0;
-    for (const Blob& b : d_.blobs) {
+    for (const Blob& b : d_->blobs) {
       word_offset_.push_back(offset);
       text += "\n    // " + b.hash;
       auto words = spill_.get(b.hash);
@@ -466,27 +526,27 @@ class SourceWriter {
   }
 
   void reflections() {
-    for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
-      const ReflectionInfo& r = d_.blobs[b].reflection;
+    for (std::size_t b = 0; b < d_->blobs.size(); ++b) {
+      const ReflectionInfo& r = d_->blobs[b].reflection;
       std::string i = std::to_string(b);
       bindings_array(("kBindings" + i).c_str(), r.bindings);
       variables_array("kInputs" + i, r.inputs);
       variables_array("kOutputs" + i, r.outputs);
       constants_array("kConstants" + i, r.specialization_constants);
     }
-    out_ << "\nconstexpr std::array<shadergen::Reflection, " << d_.blobs.size() << "> kReflections{{\n";
-    for (std::size_t b = 0; b < d_.blobs.size(); ++b) {
-      const ReflectionInfo& r = d_.blobs[b].reflection;
+    out_ << "\nconstexpr std::array<shadergen::Reflection, " << d_->blobs.size() << "> kReflections{{\n";
+    for (std::size_t b = 0; b < d_->blobs.size(); ++b) {
+      const ReflectionInfo& r = d_->blobs[b].reflection;
       out_ << "    {kBindings" << b << ", " << r.push_constant_size << ", kInputs" << b << ", kOutputs" << b << ", {"
            << r.local_size[0] << ", " << r.local_size[1] << ", " << r.local_size[2] << "}, kConstants" << b << ", {0x"
            << std::hex << r.local_size_ids[0] << "u, 0x" << r.local_size_ids[1] << "u, 0x" << r.local_size_ids[2]
            << std::dec << "u}},\n";
     }
     out_ << "}};\n\n";
-    bindings_array("kLayoutBindings", d_.layout.bindings);
-    out_ << "constexpr std::array<shadergen::PushConstantRange, " << d_.layout.push_constants.size()
+    bindings_array("kLayoutBindings", d_->layout.bindings);
+    out_ << "constexpr std::array<shadergen::PushConstantRange, " << d_->layout.push_constants.size()
          << "> kPushConstants{{\n";
-    for (const PushConstantInfo& p : d_.layout.push_constants)
+    for (const PushConstantInfo& p : d_->layout.push_constants)
       out_ << "    {" << p.size << ", 0x" << std::hex << p.stages << std::dec << "},\n";
     out_ << "}};\n\n";
   }
@@ -515,16 +575,18 @@ class SourceWriter {
   }
 
   void names_and_defines() {
-    for (const RawPermutation& raw : d_.plan.raw) pool_define_list(raw_defines(d_.spec, raw.id));
-    for (const OptimisedPermutation& o : d_.plan.optimised) pool_define_list(o.defines);
-    for (const CompanionSpec& c : d_.spec.companions) pool_define_list(c.defines);
+    for (const RawPermutation& raw : d_->plan.raw) pool_define_list(raw_defines(d_->spec, raw.id));
+    for (const OptimisedPermutation& o : d_->plan.optimised) pool_define_list(o.defines);
+    for (const CompanionSpec& c : d_->spec.companions) pool_define_list(c.defines);
     out_ << "constexpr std::array<std::string_view, " << pool_ends_.size() << "> kDefinePool{{";
     for (std::size_t i = 0; i < pool_ends_.size(); ++i)
       out_ << (i % 6 ? " " : "\n    ") << literal(pooled_define(i)) << ",";
-    out_ << "\n}};\n\nconstexpr std::array<std::string_view, " << d_.spec.raw_features.size() << "> kRawFeatureNames{{";
-    for (const RawFeature& f : d_.spec.raw_features) out_ << literal(f.name) << ", ";
-    out_ << "}};\nconstexpr std::array<std::string_view, " << d_.spec.optimised_bits.size() << "> kOptimisedBitNames{{";
-    for (const OptimisedBit& b : d_.spec.optimised_bits) out_ << literal(b.name) << ", ";
+    out_ << "\n}};\n\nconstexpr std::array<std::string_view, " << d_->spec.raw_features.size()
+         << "> kRawFeatureNames{{";
+    for (const RawFeature& f : d_->spec.raw_features) out_ << literal(f.name) << ", ";
+    out_ << "}};\nconstexpr std::array<std::string_view, " << d_->spec.optimised_bits.size()
+         << "> kOptimisedBitNames{{";
+    for (const OptimisedBit& b : d_->spec.optimised_bits) out_ << literal(b.name) << ", ";
     out_ << "}};\n\n";
   }
 
@@ -536,11 +598,11 @@ class SourceWriter {
     p << "{" << id << ", std::span<const std::string_view>(kDefinePool.data() + " << pool_define_list(defines) << ", "
       << defines.size() << "), ";
     if (!blob) return p.str() + (pruned ? "true" : "false") + ", {}, \"\", {}}";
-    std::size_t index = static_cast<std::size_t>(blob - d_.blobs.data());
+    std::size_t index = static_cast<std::size_t>(blob - d_->blobs.data());
     p << "false, std::span<const std::uint32_t>(kWords + " << word_offset_[index] << ", " << blob->word_count << "), "
       << literal(blob->hash) << ", kReflections[" << index << "]";
     if (vertex) {
-      std::size_t v = static_cast<std::size_t>(vertex - d_.blobs.data());
+      std::size_t v = static_cast<std::size_t>(vertex - d_->blobs.data());
       p << ", std::span<const std::uint32_t>(kWords + " << word_offset_[v] << ", " << vertex->word_count << "), "
         << literal(vertex->hash) << ", &kReflections[" << v << "]";
     }
@@ -550,32 +612,34 @@ class SourceWriter {
 
   void permutations() {
     out_ << "constexpr std::array<shadergen::Permutation, kRawCount> kRaw{{\n";
-    for (const RawPermutation& raw : d_.plan.raw)
+    for (const RawPermutation& raw : d_->plan.raw)
       out_ << "    "
-           << permutation(raw.id, raw_defines(d_.spec, raw.id), raw.pruned, raw.pruned ? nullptr : d_.raw_blob(raw.id),
-                          raw.pruned ? nullptr : d_.raw_vertex_blob(raw.id))
+           << permutation(raw.id, raw_defines(d_->spec, raw.id), raw.pruned,
+                          raw.pruned ? nullptr : d_->raw_blob(raw.id),
+                          raw.pruned ? nullptr : d_->raw_vertex_blob(raw.id))
            << ",\n";
     out_ << "}};\n\nconstexpr std::array<shadergen::Permutation, kOptimisedCount> kOptimised{{\n";
-    for (const OptimisedPermutation& o : d_.plan.optimised)
-      out_ << "    " << permutation(o.id, o.defines, false, d_.optimised_blob(o.id), d_.optimised_vertex_blob(o.id))
+    for (const OptimisedPermutation& o : d_->plan.optimised)
+      out_ << "    " << permutation(o.id, o.defines, false, d_->optimised_blob(o.id), d_->optimised_vertex_blob(o.id))
            << ",\n";
-    out_ << "}};\n\nconstexpr std::array<shadergen::CompanionShader, " << d_.spec.companions.size()
+    out_ << "}};\n\nconstexpr std::array<shadergen::CompanionShader, " << d_->spec.companions.size()
          << "> kCompanions{{\n";
-    for (std::size_t i = 0; i < d_.spec.companions.size(); ++i) {
-      const CompanionSpec& c = d_.spec.companions[i];
+    for (std::size_t i = 0; i < d_->spec.companions.size(); ++i) {
+      const CompanionSpec& c = d_->spec.companions[i];
       out_ << "    {" << literal(c.name) << ", " << stage_enum(c.file.stage) << ",\n     "
-           << permutation(static_cast<std::uint32_t>(i), c.defines, false, d_.companion_blob(i)) << "},\n";
+           << permutation(static_cast<std::uint32_t>(i), c.defines, false, d_->companion_blob(i)) << "},\n";
     }
     out_ << "}};\n\n";
   }
 
   void registry() {
-    const bool narrow = d_.spec.collapsed && !d_.spec.wide_table(), wide = d_.spec.collapsed && d_.spec.wide_table();
-    out_ << "constexpr shadergen::Registry kRegistry{\n    " << literal(d_.spec.name) << ",\n    "
-         << stage_enum(d_.spec.uber.stage) << ",\n    kRawFeatureNames,\n    kOptimisedBitNames,\n    "
+    const bool narrow = d_->spec.collapsed && !d_->spec.wide_table(),
+               wide = d_->spec.collapsed && d_->spec.wide_table();
+    out_ << "constexpr shadergen::Registry kRegistry{\n    " << literal(d_->spec.name) << ",\n    "
+         << stage_enum(d_->spec.uber.stage) << ",\n    kRawFeatureNames,\n    kOptimisedBitNames,\n    "
          << (narrow ? "kRawToOptimised" : "{}")
          << ",\n    kRaw,\n    kOptimised,\n    kCompanions,\n    kLayoutBindings,\n    kPushConstants,\n    "
-         << (d_.spec.layout == LayoutMode::per_permutation ? "true" : "false") << ",\n";
+         << (d_->spec.layout == LayoutMode::per_permutation ? "true" : "false") << ",\n";
     if (wide) out_ << "    kRawToOptimised,\n";
     out_ << "};\n\n";
   }
@@ -583,23 +647,23 @@ class SourceWriter {
   // A large or listed domain's table, pruned flags (or listed IDs) and their totality check:
   // here rather than in the header (see kHeaderTableLimit).
   void source_tables() {
-    if (tables_in_header(d_)) return;
-    const bool listed = d_.spec.listed();
-    if (d_.spec.collapsed) {
+    if (tables_in_header(*d_)) return;
+    const bool listed = d_->spec.listed();
+    if (d_->spec.collapsed) {
       out_ << "// The raw -> optimised lookup table: entry i belongs to kRaw[i].\n";
-      number_array(std::string("std::array<") + std::string(table_type(d_.spec)) + ", kRawCount> kRawToOptimised",
-                   d_.plan.raw, [](const RawPermutation& r) { return std::to_string(r.optimised); });
+      number_array(std::string("std::array<") + std::string(table_type(d_->spec)) + ", kRawCount> kRawToOptimised",
+                   d_->plan.raw, [](const RawPermutation& r) { return std::to_string(r.optimised); });
     }
     if (listed) {
       out_ << "// The raw IDs the variants file lists, ascending: entry i is kRaw[i]'s ID.\n";
-      number_array("std::array<std::uint32_t, kRawCount> kRawIds", d_.plan.raw,
+      number_array("std::array<std::uint32_t, kRawCount> kRawIds", d_->plan.raw,
                    [](const RawPermutation& r) { return std::to_string(r.id) + "u"; });
       out_ << "// The optimised IDs built, ascending: entry i is kOptimised[i]'s ID.\n";
-      number_array("std::array<std::uint32_t, kOptimisedCount> kOptimisedIds", d_.plan.optimised,
+      number_array("std::array<std::uint32_t, kOptimisedCount> kOptimisedIds", d_->plan.optimised,
                    [](const OptimisedPermutation& o) { return std::to_string(o.id) + "u"; });
     } else {
       out_ << "// Impossible raw IDs: never produced by a correct classifier, never compiled.\n";
-      number_array("std::array<bool, kRawCount> kRawPruned", d_.plan.raw,
+      number_array("std::array<bool, kRawCount> kRawPruned", d_->plan.raw,
                    [](const RawPermutation& r) { return std::string(r.pruned ? "true" : "false"); });
     }
     position_lookups(listed);
@@ -630,32 +694,33 @@ class SourceWriter {
   // One constant evaluation may run at most 262,144 iterations of a loop (GCC's
   // -fconstexpr-loop-limit), so the table is checked in slices of 2^17 entries.
   void totality_checks(bool listed) {
-    if (!d_.spec.collapsed && !listed) return;
+    if (!d_->spec.collapsed && !listed) return;
     out_ << "// The table is total: every entry names an optimised permutation that is built"
          << (listed ? ", and the listed IDs ascend" : "") << ".\n"
          << "constexpr bool table_is_total(std::size_t begin, std::size_t end) {\n"
          << "  for (std::size_t i = begin; i < end && i < kRawCount; ++i) {\n";
-    if (d_.spec.collapsed) out_ << "    if (!is_built_optimised(kRawToOptimised[i])) return false;\n";
+    if (d_->spec.collapsed) out_ << "    if (!is_built_optimised(kRawToOptimised[i])) return false;\n";
     if (listed) out_ << "    if (i > 0 && kRawIds[i - 1] >= kRawIds[i]) return false;\n";
     out_ << "  }\n  return true;\n}\n";
     constexpr std::size_t kSlice = std::size_t{1} << 17;
-    for (std::size_t begin = 0; begin < d_.plan.raw.size(); begin += kSlice)
+    for (std::size_t begin = 0; begin < d_->plan.raw.size(); begin += kSlice)
       out_ << "static_assert(table_is_total(" << begin << ", " << begin + kSlice << "));\n";
     out_ << "\n";
   }
 
   // The checked lookups the header declares for a large or listed domain.
   void source_lookups() {
-    if (tables_in_header(d_)) return;
+    if (tables_in_header(*d_)) return;
     out_ << "bool is_valid_raw_id(RawId raw_id) { return raw_position(raw_id.value()).has_value(); }\n\n"
             "std::optional<OptimisedId> optimised_id(RawId raw_id) {\n"
             "  const std::optional<std::size_t> at = raw_position(raw_id.value());\n"
             "  if (!at) return std::nullopt;\n"
-         << (d_.spec.collapsed ? "  return OptimisedId(kRawToOptimised[*at]);\n}\n\n"
-                               : "  return OptimisedId(raw_id.value());\n}\n\n");
+         << (d_->spec.collapsed ? "  return OptimisedId(kRawToOptimised[*at]);\n}\n\n"
+                                : "  return OptimisedId(raw_id.value());\n}\n\n");
   }
 
-  const CompiledDomain& d_;
+  std::span<const CompiledDomain> entries_;
+  const CompiledDomain* d_;  // the entry being written
   const BlobSpill& spill_;
   std::array<char, 1 << 16> buffer_{};
   std::ofstream out_;
@@ -678,11 +743,18 @@ bool is_valid_namespace(const std::string& name) {
   }
 }
 
-std::string generated_header(const CompiledDomain& domain, const std::string& ns) { return header_text(domain, ns); }
+std::string generated_header(std::span<const CompiledDomain> entries, const std::string& ns) {
+  return header_text(entries, ns);
+}
 
-Status write_generated_source(const CompiledDomain& domain, const BlobSpill& spill, const std::string& header_name,
-                              const std::string& ns, const std::filesystem::path& file) {
-  return SourceWriter(domain, spill).run(header_name, ns, file);
+std::string generated_header(const CompiledDomain& domain, const std::string& ns) {
+  return header_text(std::span(&domain, 1), ns);
+}
+
+Status write_generated_source(std::span<const CompiledDomain> entries, const BlobSpill& spill,
+                              const std::string& header_name, const std::string& ns,
+                              const std::filesystem::path& file) {
+  return SourceWriter(entries, spill).run(header_name, ns, file);
 }
 
 }  // namespace shadergen

@@ -121,26 +121,45 @@ Json kind_values(const std::vector<const RawFeature*>& features, std::uint32_t r
   return values;
 }
 
-Json raw_entry(const CompiledDomain& d, const RawPermutation& raw) {
+// `with_blobs` false: the domain's part only (a spec with "uber_shaders" lists each entry's
+// blobs in the entry: uber_shader_raw()).
+Json raw_entry(const CompiledDomain& d, const RawPermutation& raw, bool with_blobs = true) {
   Json entry{{"id", raw.id}, {"defines", raw_defines(d.spec, raw.id)}, {"pruned", raw.pruned}};
   if (std::vector<const RawFeature*> s = d.spec.specialization_features(); !s.empty() && !raw.pruned)
     entry["specialization"] = kind_values(s, raw.id);
   if (std::vector<const RawFeature*> b = d.spec.branch_features(); !b.empty() && !raw.pruned)
     entry["branch_values"] = kind_values(b, raw.id);
   if (d.spec.collapsed) entry["optimised"] = raw.optimised;
+  if (!with_blobs) return entry;
   add_blob_fields(entry, raw.pruned ? nullptr : d.raw_blob(raw.id), d.spec);
   add_vertex_half(entry, raw.pruned ? nullptr : d.raw_vertex_blob(raw.id));
   return entry;
 }
 
-Json optimised_entry(const CompiledDomain& d, const OptimisedPermutation& optimised) {
+Json optimised_entry(const CompiledDomain& d, const OptimisedPermutation& optimised, bool with_blobs = true) {
   Json entry{{"id", optimised.id},
              {"defines", optimised.defines},
              {"raw_equivalent", optimised.raw_equivalent},
              {"raw_mapped", optimised.raw_mapped}};
+  if (!with_blobs) return entry;
   add_blob_fields(entry, d.optimised_blob(optimised.id), d.spec);
   add_vertex_half(entry, d.optimised_vertex_blob(optimised.id));
   return entry;
+}
+
+// An entry's blob of each permutation that has one: {id, spirv, hash}.
+Json entry_blobs(const CompiledDomain& d, bool raw) {
+  Json list = Json::array();
+  auto add = [&](std::uint32_t id, const Blob* blob) {
+    if (!blob) return;
+    Json& entry = list.emplace_back(Json{{"id", id}});
+    add_blob_fields(entry, blob, d.spec);
+  };
+  if (raw)
+    for (const RawPermutation& r : d.plan.raw) add(r.id, r.pruned ? nullptr : d.raw_blob(r.id));
+  else
+    for (const OptimisedPermutation& o : d.plan.optimised) add(o.id, d.optimised_blob(o.id));
+  return list;
 }
 
 Json companions_json(const CompiledDomain& d) {
@@ -296,13 +315,18 @@ Json layout_json(const MergedLayout& layout) {
 
 }  // namespace
 
-void write_manifest(const CompiledDomain& d, std::ostream& out) {
+namespace {
+
+// The manifest's members about the domain as a whole (not its blobs).
+Json domain_members(const CompiledDomain& d) {
   Json m = Json::object();
   m["format"] = 1;
   m["generator"] = "shadergen " SHADERGEN_VERSION;
   m["domain"] = d.spec.name;
-  m["uber_shader"] = d.spec.uber.path.filename().string();
-  m["stage"] = stage_name(d.spec.uber.stage);
+  if (d.spec.entry.empty()) {
+    m["uber_shader"] = d.spec.uber.path.filename().string();
+    m["stage"] = stage_name(d.spec.uber.stage);
+  }
   if (d.spec.program_vertex) m["vertex_shader"] = d.spec.program_vertex->path.filename().string();
   m["target_env"] = target_env_name(d.spec.target_env);
   m["collapsed"] = d.spec.collapsed;
@@ -318,11 +342,41 @@ void write_manifest(const CompiledDomain& d, std::ostream& out) {
   // The fixed defines every shader was compiled with (spec, --define, CMake DEFINES), in order.
   m["defines"] = d.spec.defines;
   add_features(m, d.spec);
+  return m;
+}
+
+// One entry of "uber_shaders": its shader, blobs by permutation, companions, layout and blobs.
+Json uber_shader_entry(const CompiledDomain& d) {
+  Json entry{{"name", d.spec.entry},
+             {"uber_shader", d.spec.uber.path.filename().string()},
+             {"stage", stage_name(d.spec.uber.stage)},
+             {"raw", entry_blobs(d, true)},
+             {"optimised", entry_blobs(d, false)},
+             {"companions", companions_json(d)},
+             {"pipeline_layout", layout_json(d.layout)}};
+  const std::vector<Stage> stages = blob_stages(d);
+  const std::vector<BlobServes> serves = blob_serves(d);
+  Json& blobs = entry["blobs"] = Json::array();
+  for (std::size_t i = 0; i < d.blobs.size(); ++i) blobs.push_back(blob_entry(d.blobs[i], stages[i], &serves[i]));
+  return entry;
+}
+
+}  // namespace
+
+void write_manifest(std::span<const CompiledDomain> entries, std::ostream& out) {
+  const CompiledDomain& d = entries.front();
+  const bool several = !d.spec.entry.empty();
   ObjectWriter writer(out);
-  for (const auto& [key, value] : m.items()) writer.member(key, value);
-  writer.array("raw", d.plan.raw.size(), [&](std::size_t i) { return raw_entry(d, d.plan.raw[i]); });
+  const Json members = domain_members(d);
+  for (const auto& [key, value] : members.items()) writer.member(key, value);
+  writer.array("raw", d.plan.raw.size(), [&](std::size_t i) { return raw_entry(d, d.plan.raw[i], !several); });
   writer.array("optimised", d.plan.optimised.size(),
-               [&](std::size_t i) { return optimised_entry(d, d.plan.optimised[i]); });
+               [&](std::size_t i) { return optimised_entry(d, d.plan.optimised[i], !several); });
+  if (several) {
+    writer.array("uber_shaders", entries.size(), [&](std::size_t i) { return uber_shader_entry(entries[i]); });
+    writer.finish();
+    return;
+  }
   writer.member("companions", companions_json(d));
   writer.member("pipeline_layout", layout_json(d.layout));
   const std::vector<Stage> stages = blob_stages(d);
@@ -330,6 +384,8 @@ void write_manifest(const CompiledDomain& d, std::ostream& out) {
   writer.array("blobs", d.blobs.size(), [&](std::size_t i) { return blob_entry(d.blobs[i], stages[i], &serves[i]); });
   writer.finish();
 }
+
+void write_manifest(const CompiledDomain& d, std::ostream& out) { write_manifest(std::span(&d, 1), out); }
 
 std::string write_manifest(const CompiledDomain& d) {
   std::ostringstream out;
@@ -376,7 +432,9 @@ Json permutation_timing(const CompiledDomain& d, const CompileJob& job) {
 
 }  // namespace
 
-void write_stats(const CompiledDomain& d, double seconds, std::ostream& out) {
+namespace {
+
+Json stats_members(const CompiledDomain& d) {
   std::uint32_t recompiled = 0;
   for (const CompileJob& job : d.jobs) recompiled += !d.sources[static_cast<std::size_t>(job.source)].cache_hit;
   Json s = Json::object();
@@ -387,11 +445,37 @@ void write_stats(const CompiledDomain& d, double seconds, std::ostream& out) {
   if (d.remote) s["remote_cache"] = remote_counts(*d.remote);
   Json& phases = s["phases_ms"] = Json::object();
   for (const PhaseTime& phase : d.phases) phases[phase.name] = phase.ms;
-  s["seconds"] = seconds;
+  return s;
+}
+
+}  // namespace
+
+void write_stats(std::span<const CompiledDomain> entries, double seconds, std::ostream& out) {
   ObjectWriter writer(out);
+  if (!entries.front().spec.entry.empty()) {
+    // "uber_shaders": each entry's counts, phases and permutations, as one build gives them.
+    writer.member("seconds", seconds);
+    writer.array("uber_shaders", entries.size(), [&](std::size_t e) {
+      const CompiledDomain& d = entries[e];
+      Json entry = stats_members(d);
+      entry["name"] = d.spec.entry;
+      Json& list = entry["permutations"] = Json::array();
+      for (const CompileJob& job : d.jobs) list.push_back(permutation_timing(d, job));
+      return entry;
+    });
+    writer.finish();
+    return;
+  }
+  const CompiledDomain& d = entries.front();
+  Json s = stats_members(d);
+  s["seconds"] = seconds;
   for (const auto& [key, value] : s.items()) writer.member(key, value);
   writer.array("permutations", d.jobs.size(), [&](std::size_t i) { return permutation_timing(d, d.jobs[i]); });
   writer.finish();
+}
+
+void write_stats(const CompiledDomain& d, double seconds, std::ostream& out) {
+  write_stats(std::span(&d, 1), seconds, out);
 }
 
 std::string write_stats(const CompiledDomain& d, double seconds) {
@@ -412,14 +496,20 @@ std::string escape_make(const std::string& path) {
 }
 }  // namespace
 
-std::string write_depfile(const std::string& target, const CompiledDomain& d) {
+std::string write_depfile(const std::string& target, std::span<const CompiledDomain> entries) {
+  std::set<std::filesystem::path> dependencies;
+  for (const CompiledDomain& d : entries) dependencies.insert(d.dependencies.begin(), d.dependencies.end());
   std::string out = escape_make(target) + ":";
-  for (const auto& dep : d.dependencies) {
+  for (const auto& dep : dependencies) {
     std::error_code ec;
     auto absolute = std::filesystem::absolute(dep, ec);
     out += " \\\n  " + escape_make((ec ? dep : absolute).lexically_normal().string());
   }
   return out + "\n";
+}
+
+std::string write_depfile(const std::string& target, const CompiledDomain& d) {
+  return write_depfile(target, std::span(&d, 1));
 }
 
 }  // namespace shadergen

@@ -30,7 +30,7 @@ constexpr std::string_view kGeneratedNames[] = {
     "Features",        "RawId",           "OptimisedId", "RawBits",   "OptimisedBits", "kRawBits",    "kRawCount",
     "kOptimisedCount", "kRawToOptimised", "kRawPruned",  "kFeatures", "kDefines",      "raw_bit",     "optimised_bit",
     "is_valid_raw_id", "optimised_id",    "raw_id",      "features",  "is_possible",   "find_raw_id", "to_string",
-    "registry",        "detail",          "std",         "shadergen"};
+    "registry",        "detail",          "std",         "shadergen", "companions"};
 
 bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
 

@@ -209,9 +209,9 @@ class DomainBuilder {
       return std::move(spec_);
     }
     reader_.only_keys(root, "spec",
-                      {"format", "name", "description", "uber_shader", "program", "include_dirs", "target_env",
-                       "layout", "strip_debug", "defines", "companions", "raw", "optimised", "compile", "variants_file",
-                       "define_style", "branch_block"});
+                      {"format", "name", "description", "uber_shader", "uber_shaders", "program", "include_dirs",
+                       "target_env", "layout", "strip_debug", "defines", "companions", "raw", "optimised", "compile",
+                       "variants_file", "define_style", "branch_block"});
     read_header(root);
     read_permuted_shaders(root);
     read_include_dirs(root);
@@ -260,9 +260,18 @@ class DomainBuilder {
     return file;
   }
 
-  // "uber_shader", or "program": { "vertex": path, "fragment": path } (one of the two).
+  // "uber_shader", "uber_shaders" or "program": { "vertex": path, "fragment": path } (one of the three).
   void read_permuted_shaders(const Value& root) {
     const Value* program = root.find("program");
+    if (const Value* several = root.find("uber_shaders")) {
+      if (program || root.find("uber_shader"))
+        reader_.error(
+            *several, "uber_shaders",
+            std::string("a spec has \"uber_shaders\" or \"") + (program ? "program" : "uber_shader") + "\", not both");
+      else
+        read_uber_shaders(root);
+      return;
+    }
     if (!program) {
       if (const Value* uber = reader_.member(root, "spec", "uber_shader", Type::object))
         spec_.uber = read_shader_file(*uber, "uber_shader");
@@ -281,6 +290,32 @@ class DomainBuilder {
     spec_.uber = ShaderFile{(base_ / fragment).lexically_normal(), Stage::fragment, {}, 0, 0};
     located(*spec_.program_vertex, "program.vertex", *program->find("vertex"));
     located(spec_.uber, "program.fragment", *program->find("fragment"));
+  }
+
+  // "uber_shaders": {"raster": {"path", "stage"}, ...}: one domain, several uber-shaders.
+  void read_uber_shaders(const Value& root) {
+    const Value* entries = reader_.member(root, "spec", "uber_shaders", Type::object);
+    if (!entries) return;
+    if (entries->object.empty() || entries->object.size() > kMaxUberShaders) {
+      reader_.error(*entries, "uber_shaders",
+                    "expected 1 to " + std::to_string(kMaxUberShaders) + " uber-shaders, each {\"path\", \"stage\"}");
+      return;
+    }
+    for (const auto& [name, value] : entries->object) {
+      const std::string where = "uber_shaders." + name;
+      std::string problem = is_identifier(name) ? feature_name_problem(name) : "\"" + name + "\" is not an identifier";
+      if (!problem.empty()) {
+        reader_.error(value, where, problem + " (an entry's name is the namespace of its registry)");
+        continue;
+      }
+      if (value.type != Type::object) {
+        reader_.error(value, where, "expected an object {\"path\", \"stage\"}");
+        continue;
+      }
+      reader_.only_keys(value, where, {"path", "stage"});
+      spec_.uber_shaders.push_back({name, read_shader_file(value, where)});
+    }
+    if (!spec_.uber_shaders.empty()) spec_.uber = spec_.uber_shaders.front().file;
   }
 
   static void located(ShaderFile& file, std::string key, const Value& value) {
@@ -380,11 +415,13 @@ class DomainBuilder {
         reader_.error(item, where, "expected an object");
         continue;
       }
-      reader_.only_keys(item, where, {"name", "path", "stage", "defines", "shared_layout"});
+      reader_.only_keys(item, where, {"name", "path", "stage", "defines", "shared_layout", "uber_shader"});
       CompanionSpec companion;
       companion.name = reader_.string_member(item, where, "name");
       if (item.find("name") && !is_identifier(companion.name))
         reader_.error(*item.find("name"), where + ".name", "\"" + companion.name + "\" is not an identifier");
+      else if (std::string problem = cpp_identifier_problem(companion.name); item.find("name") && !problem.empty())
+        reader_.error(*item.find("name"), where + ".name", problem + " (a companion's name is its accessor's)");
       else if (!companion.name.empty() && !names.insert(companion.name).second)
         reader_.error(*item.find("name"), where + ".name", "companion \"" + companion.name + "\" is declared twice");
       companion.file = read_shader_file(
@@ -392,8 +429,25 @@ class DomainBuilder {
       if (const Value* defines = item.find("defines")) companion.defines = read_companion_defines(*defines, where);
       if (const Value* shared = reader_.member(item, where, "shared_layout", Type::boolean, false))
         companion.shared_layout = shared->boolean;
+      if (const Value* entry = reader_.member(item, where, "uber_shader", Type::string, false))
+        companion.uber_shader = companion_entry(*entry, where);
       spec_.companions.push_back(std::move(companion));
     }
+  }
+
+  // A companion's "uber_shader": the name of an entry of "uber_shaders" (read before it).
+  std::string companion_entry(const Value& entry, const std::string& where) {
+    std::string names;
+    for (const UberShaderEntry& e : spec_.uber_shaders) {
+      if (e.name == entry.string) return entry.string;
+      names += (names.empty() ? "" : ", ") + e.name;
+    }
+    if (spec_.uber_shaders.empty())
+      reader_.error(entry, where + ".uber_shader", "names an entry of \"uber_shaders\", and the spec has none");
+    else
+      reader_.error(entry, where + ".uber_shader",
+                    "no uber-shader \"" + entry.string + "\" (the spec has " + names + ")");
+    return {};
   }
 
   // {"NAME": "VALUE", ...} as "NAME=VALUE" strings, in the file's order.

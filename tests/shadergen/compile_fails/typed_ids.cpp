@@ -32,10 +32,14 @@ int main() {
   return (raw | toy::optimised_bit::SHADED) == raw;
 #elif defined(MIX_OPTIMISED_BIT_AS_RAW_BIT)
   return has(raw, toy::optimised_bit::SAMPLED);
+#elif defined(MISSPELT_COMPANION)
+  // The spec's companion is "sort": a typed accessor of another name does not exist.
+  return toy::companions::sorted().shader.spirv.empty();
 #else
   // The control: the same calls with the types each wants.
   const bool found = r.find_raw(raw) != nullptr && r.find_optimised(optimised) != nullptr;
   const bool bits = has(raw, toy::raw_bit::SOFT) && (optimised & toy::optimised_bit::SHADED);
-  return found && bits && toy::is_valid_raw_id(toy::RawId(5u)) && raw.value() == 5u ? 0 : 1;
+  const bool companion = &toy::companions::sort() == r.companion("sort");
+  return found && bits && companion && toy::is_valid_raw_id(toy::RawId(5u)) && raw.value() == 5u ? 0 : 1;
 #endif
 }

@@ -60,7 +60,7 @@ GBufferUpload::GBufferUpload(const Context& context, const RenderTargets& target
   write_buffer_descriptor(context, set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, samples_.handle());
 
   GraphicsPipelineDesc desc = targets.gbuffer_pipeline_desc(layout_.get(), "G-buffer upload");
-  desc.vertex_spirv = companion_spirv(shaders_for(targets.samples()), "sky_vertex");  // a full-screen triangle
+  desc.vertex_spirv = light_companions(targets.samples()).sky_vertex.shader.spirv;  // a full-screen triangle
   desc.fragment_spirv = shader.spirv;
   desc.depth_test = false;  // no shader reads the depth target; the surface depth is RT3
   pipeline_ = create_graphics_pipeline(context, desc);
