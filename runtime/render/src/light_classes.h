@@ -4,9 +4,9 @@
 // pipeline that permutation's. When some features are specialization constants or run-time
 // branches, raw IDs that differ only in those share a blob but not a frame: a class is then an
 // (optimised ID, specialization values, branch values) triple that some possible raw ID reaches.
-// Classes with equal blob and specialization share a pipeline (all of one optimised ID's, for
-// a build whose non-variant features are all branches); each class's draws carry its own
-// branch values (branch_set.h).
+// Classes with equal optimised ID and specialization values share a pipeline (all of one
+// optimised ID's, for a build whose non-variant features are all branches); each class's draws
+// carry its own branch values (branch_set.h).
 
 #include "lighting_passes.h"
 #include "shader_registry.h"

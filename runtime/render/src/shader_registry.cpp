@@ -43,8 +43,10 @@ namespace {
 
 // One build's uber-shader `FORM` (raster or compute) as LightShaders: one table and one set of
 // per-raw-ID values for both forms, each form its own registry of blobs.
+// NOLINTBEGIN(bugprone-macro-parentheses): N and FORM are namespaces, which parentheses cannot hold.
 #define TILELIGHT_LIGHT_SHADERS(N, FORM) \
   LightShaders { &N::FORM::registry(), &N::specialization, &N::branch_values, N::kBranchBlock }
+// NOLINTEND(bugprone-macro-parentheses)
 
 LightShaders raster_light_shaders(LightKinds kinds, bool single_sampled) {
   switch (kinds) {
