@@ -97,10 +97,13 @@ TEST_F(SplitSecondPlan, PrunedSetIsExactlySolidWithSoft) {
   EXPECT_EQ(pruned.size(), 32u);
 }
 
+// LIGHT_SCATTERING and SKY are value-style (light_pass.glsl reads them as expressions, so that
+// the kinds specs build the same text): always defined, as NAME=0 or NAME=1, in bit order.
 TEST_F(SplitSecondPlan, RawDefinesFollowTheBits) {
-  EXPECT_EQ(shadergen::raw_defines(*spec_, 0), std::vector<std::string>{});
-  EXPECT_EQ(shadergen::raw_defines(*spec_, 69), (std::vector<std::string>{"SOLID_SHADOW", "SHADOW_FADE", "SUN_LIGHT"}));
-  EXPECT_EQ(shadergen::raw_defines(*spec_, 40), (std::vector<std::string>{"LIGHT_SCATTERING", "SKY"}));
+  EXPECT_EQ(shadergen::raw_defines(*spec_, 0), (std::vector<std::string>{"LIGHT_SCATTERING=0", "SKY=0"}));
+  EXPECT_EQ(shadergen::raw_defines(*spec_, 69),
+            (std::vector<std::string>{"SOLID_SHADOW", "SHADOW_FADE", "LIGHT_SCATTERING=0", "SKY=0", "SUN_LIGHT"}));
+  EXPECT_EQ(shadergen::raw_defines(*spec_, 40), (std::vector<std::string>{"LIGHT_SCATTERING=1", "SKY=1"}));
 }
 
 TEST_F(SplitSecondPlan, EveryOptimisedPermutationIsACompilableRawOne) {
@@ -109,10 +112,10 @@ TEST_F(SplitSecondPlan, EveryOptimisedPermutationIsACompilableRawOne) {
     EXPECT_FALSE(twin.pruned) << "optimised " << o.id;
     EXPECT_EQ(o.defines, shadergen::raw_defines(*spec_, twin.id)) << "optimised " << o.id;
   }
-  EXPECT_EQ(plan_->optimised[31].defines, (std::vector<std::string>{"SOFT_SHADOW", "SHADOW_FADE", "LIGHT_SCATTERING",
-                                                                    "MSAA_EDGE", "SKY", "SUN_LIGHT"}));
-  EXPECT_EQ(plan_->optimised[0].defines, std::vector<std::string>{"SOLID_SHADOW"});
-  EXPECT_EQ(plan_->optimised[16].defines, std::vector<std::string>{"SUN_LIGHT"});
+  EXPECT_EQ(plan_->optimised[31].defines, (std::vector<std::string>{"SOFT_SHADOW", "SHADOW_FADE", "LIGHT_SCATTERING=1",
+                                                                    "MSAA_EDGE", "SKY=1", "SUN_LIGHT"}));
+  EXPECT_EQ(plan_->optimised[0].defines, (std::vector<std::string>{"SOLID_SHADOW", "LIGHT_SCATTERING=0", "SKY=0"}));
+  EXPECT_EQ(plan_->optimised[16].defines, (std::vector<std::string>{"LIGHT_SCATTERING=0", "SKY=0", "SUN_LIGHT"}));
 }
 
 TEST_F(SplitSecondPlan, EveryOptimisedIdIsReachedAndCountsAddUp) {
