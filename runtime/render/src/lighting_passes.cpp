@@ -122,9 +122,9 @@ LightingPasses::LightingPasses(const Context& context, const TileGrid& grid, con
                                             light_companions(registry).lighting_dynamic.shader.spirv, none,
                                             TilePrimitive::triangles, false, "lighting dynamic (per-pixel branches)");
   if (floor) {
-    floor_pipeline_ = create_light_pipeline(context, targets, lighting, lighting.lighting_layout(),
-                                            light_companions(registry).lighting_floor.shader.spirv, none, TilePrimitive::triangles,
-                                            false, "lighting floor (G-buffer read, no lighting)");
+    floor_pipeline_ = create_light_pipeline(
+        context, targets, lighting, lighting.lighting_layout(), light_companions(registry).lighting_floor.shader.spirv,
+        none, TilePrimitive::triangles, false, "lighting floor (G-buffer read, no lighting)");
   }
 }
 
