@@ -37,21 +37,7 @@ set(required_files
     material/shaders/material.frag
     material/shaders/include/material_common.glsl)
 
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "command failed (${rc}): ${ARGN}\n${out}\n${err}")
-  endif()
-  set(last_output "${out}${err}" PARENT_SCOPE)
-endfunction()
-
-string(TIMESTAMP step_start "%s")
-function(step_done what)
-  string(TIMESTAMP now "%s")
-  math(EXPR seconds "${now} - ${step_start}")
-  message(STATUS "${what}: ok (${seconds} s)")
-  set(step_start ${now} PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/script_steps.cmake)  # run(), step_done()
 
 if(NOT EXISTS "${doc}")
   message(FATAL_ERROR "${doc} does not exist")

@@ -20,22 +20,7 @@ foreach(var BUILD_DIR SOURCE_DIR WORK_DIR)
   endif()
 endforeach()
 
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "command failed (${rc}): ${ARGN}\n${out}\n${err}")
-  endif()
-  set(last_output "${out}${err}" PARENT_SCOPE)
-endfunction()
-
-# message(STATUS) with the seconds since the previous step.
-string(TIMESTAMP step_start "%s")
-function(step_done what)
-  string(TIMESTAMP now "%s")
-  math(EXPR seconds "${now} - ${step_start}")
-  message(STATUS "${what}: ok (${seconds} s)")
-  set(step_start ${now} PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake)  # run(), step_done()
 
 # Disabling find_package(Vulkan) leaves the headers in /usr/include: fail if any object of the
 # Ninja build in <dir> read one (`ninja -t deps`: every header each object read).
