@@ -2,8 +2,11 @@
 # The project's style checks, by hand, before a commit and in CI (.ci/run: scripts/run-tests.sh
 # --lint runs this after the test build; the suite runs the clang-format half on its own as the
 # test style.clang_format, so a plain ctest still checks the layout):
-#   scripts/lint.sh            clang-format, then clang-tidy (.clang-tidy) over every project
-#                              source in build/tests/compile_commands.json
+#   scripts/lint.sh            clang-format over every tracked C++ file, then clang-tidy
+#                              (.clang-tidy) over the product's sources (shadergen/, runtime/,
+#                              common/) in build/tests/compile_commands.json: what CI runs
+#   scripts/lint.sh --all      clang-tidy over the tests' and benchmarks' sources as well
+#                              (tests/.clang-tidy), by hand: about twice the time (docs/ci.md)
 #   scripts/lint.sh --format   clang-format only
 # BUILD_DIR=<folder> names another configured build (any build type; compile commands are
 # exported by every preset). Exit status: non-zero when either tool reports anything.
@@ -39,10 +42,12 @@ fi
 # source, headers, compile command and .clang-tidy files are unchanged since an earlier lint on
 # this machine is not linted again (scripts/clang-tidy-cached: the cache, where it lives,
 # LINT_CACHE_DIR=off).
-echo "lint: clang-tidy over the project's sources in $build_dir"
+scope="shadergen|runtime|common"
+[ "${1:-}" = "--all" ] && scope="shadergen|runtime|common|bench|tests"
+echo "lint: clang-tidy over the sources of $scope in $build_dir"
 tidy_status=0
 scripts/clang-tidy-cached -p "$build_dir" -j "$(nproc)" --extra-arg=-Wno-unknown-warning-option \
-  "^$(pwd)/(shadergen|runtime|common|bench|tests)/.*\.cpp$" >"$build_dir/clang-tidy.log" || tidy_status=$?
+  "^$(pwd)/($scope)/.*\.cpp$" >"$build_dir/clang-tidy.log" || tidy_status=$?
 # One line per finding, "file:line:col: warning: text [check]", colour codes removed.
 sed 's/\x1b\[[0-9;]*m//g' "$build_dir/clang-tidy.log" |
   grep -E '^/.*:[0-9]+:[0-9]+: (warning|error): .*\]$' | sort -u >"$build_dir/clang-tidy.findings" || true

@@ -2,7 +2,7 @@
 # The test suite by tiers (ctest labels, tests/tiers.cmake; docs/ci.md has the counts and times):
 #   scripts/run-tests.sh           install what is missing, build with tests, run the default
 #                                  tier and the GPU benchmark's smoke run on lavapipe (what the
-#                                  README asks for: one build, about 15 minutes cold on 2 cores)
+#                                  README asks for: one build; docs/ci.md has its cold time)
 #   scripts/run-tests.sh --all     and the long tier, then the sanitizer build (ASan + UBSan)
 #                                  and its tier
 #   scripts/run-tests.sh --lint    and scripts/lint.sh (clang-format, clang-tidy) on the test
@@ -83,8 +83,8 @@ suite() {
   stage "$name" ctest_tier "$preset" "$log" "$@" || status=$?
   {
     echo "$name: the ten slowest tests (seconds, ctest's timings)"
-    sed -n 's/^ *[0-9]*\/[0-9]* *Test *#[0-9]*: \([^ ]*\) \.*[^0-9]* \([0-9.]*\) sec$/\2 \1/p' "$log" |
-      sort -rn | head -n 10 | awk '{ printf "  %8.1f  %s\n", $1, $2 }'
+    sed -nE 's/^ *[0-9]+\/[0-9]+ +Test +#[0-9]+: (.*[^ ]) \.{3,} .*[^0-9.]([0-9]+\.[0-9]+) sec$/\2 \1/p' "$log" |
+      sed 's/  # GetParam() = .*//' | sort -rn | head -n 10 | awk '{ printf "  %8.1f  %s\n", $1, substr($0, index($0, " ") + 1) }'
     grep -E '^[0-9]+% tests passed' "$log" | sed 's/^/  /' || true
   } >>"$slowest"
   return "$status"
@@ -115,6 +115,20 @@ stage install ./scripts/install-deps.sh --tests
 # shellcheck disable=SC2086 # $launcher is empty or one word
 stage configure cmake --preset tests $launcher
 stage build cmake --build --preset tests
+
+# Every test is in exactly one of the tiers default and long (tests/tiers.cmake): one that is in
+# neither would run nowhere, silently.
+tier_check() {
+  all_tests=$(ctest --preset tests -N | sed -n 's/^Total Tests: //p')
+  tiered=$(ctest --preset tests -N -L '^(default|long)$' | sed -n 's/^Total Tests: //p')
+  if [ "$all_tests" != "$tiered" ]; then
+    echo "run-tests: $((all_tests - tiered)) of $all_tests tests have no tier (tests/tiers.cmake):" >&2
+    ctest --preset tests -N -LE '^(default|long)$' | grep 'Test *#' >&2
+    return 1
+  fi
+  echo "run-tests: $all_tests tests: $(ctest --preset tests -N -L '^default$' | sed -n 's/^Total Tests: //p') default, $(ctest --preset tests -N -L '^long$' | sed -n 's/^Total Tests: //p') long"
+}
+stage "tier check" tier_check
 
 # clang-tidy needs the compile commands and the generated headers of this build, so the lint
 # runs here, before the suites; its findings do not stop them.

@@ -14,15 +14,66 @@
 # Sweeps and repeated frame configurations: the same frame again at another camera, MSAA mode,
 # path or light pass, where one configuration of each kind stays in the default tier.
 set(TESTS_LONG_PATTERNS
+  # A second configure, build and install of shadergen without Vulkan (177 s cold); the default
+  # tier keeps shadergen.outside_consumer, the same install with Vulkan.
+  "^shadergen\\.outside_consumer_without_vulkan$"
+  # A one-node Slurm cluster, 4 shards and a merge on two domains (44 s).
+  "^shadergen\\.slurm_shards$"
+  # 500 validated frames against 100 (65 s).
+  "^Soak\\."
+  # Every design choice of the sweep side by side, and the same for a glTF scene (29 s + 5 s);
+  # the other benchmarks' smoke runs stay in the default tier.
+  "^tilelight\\.sweep(_scene)?_smoke$"
+  # Classified == naive per pixel: the default tier keeps the default camera, 1x, raw IDs,
+  # triangle pairs and an odd size, each on both paths and both light passes; the other
+  # cameras, tile sizes and the uncoalesced index build are the sweep.
+  "^Frames/Equivalence\\.ClassifiedEqualsNaivePerPixel/(cpu|gpu)_(low|shadow|sky|street|telephoto|closeup|tile8|tile16_[a-z_]+|uncoalesced|1x_low|1x_raw|1x_triangles|triangles_odd_size)_(compute|raster)$"
+  # The three light kinds on every camera; KindsFramesUnderValidation keeps the default camera.
+  "^EveryCamera/"
+  # Compute == raster bit for bit on further configurations; the equivalence cases above
+  # compare both passes with naive already.
+  "^Frames/ComputeMatchesRaster\\."
 )
 
 # Default-tier cases the sanitizer build leaves out: each adds little coverage of product code
 # over the cases kept (docs/ci.md lists them with their times).
 set(TESTS_NOT_SANITIZER_PATTERNS
+  # Build-system tests: a second CMake project built against an install, and docs/adopting.md's
+  # example project. They test CMake files, and under the sanitizers they would build their
+  # projects again with ASan for no new coverage of product code.
+  "^shadergen\\.outside_consumer$"
+  "^docs\\.adopting$"
+  # The style checks: clang-format and the lint cache's own test run no product code.
+  "^style\\."
+  # The benchmarks and their tests: the sanitize preset builds no benchmarks
+  # (SHADERGEN_BUILD_BENCH=OFF); what they run is product code the other cases reach.
+  "^bench\\."
+  "_bench_smoke$"
+  "^shadergen\\.scale_chart_smoke$"
+  "^tilelight\\.make_hall_smoke$"
 )
 
 # Default-tier cases the quick loop leaves out: the slowest.
 set(TESTS_NOT_QUICK_PATTERNS
+  # Each of these takes 3 s or more (the slowest list of scripts/run-tests.sh).
+  "^shadergen\\.outside_consumer$"
+  "^docs\\.adopting$"
+  "^SplitSecondBuild\\."
+  "^Frames/Equivalence\\."
+  "^KindsFramesUnderValidation\\."
+  "^TilelightLightKinds\\."
+  "^TilelightCli\\."
+  "^FrameFailure\\."
+  "^ShardedBuild\\."
+  "^Scaling\\."
+  "^RemoteCacheHostile\\."
+  "^IndexPaths\\.Gpu"
+  "^Classification\\."
+  "^WholeFrameReportFiles\\."
+  "^Lights/"
+  "^LocalLightCli\\."
+  "^TypedApi\\.AVulkanDriver"
+  "_bench_smoke$"
 )
 
 # tests_tier_labels(<name> <out>): the tier labels of the test called <name>.
