@@ -27,7 +27,7 @@ set(TESTS_LONG_PATTERNS
   # Classified == naive per pixel: the default tier keeps the default camera, 1x, raw IDs,
   # triangle pairs and an odd size, each on both paths and both light passes; the other
   # cameras, tile sizes and the uncoalesced index build are the sweep.
-  "^Frames/Equivalence\\.ClassifiedEqualsNaivePerPixel/(cpu|gpu)_(low|shadow|sky|street|telephoto|closeup|tile8|tile16_[a-z_]+|uncoalesced|1x_low|1x_raw|1x_triangles|triangles_odd_size)_(compute|raster)$"
+  "^Frames/Equivalence\\.ClassifiedEqualsNaivePerPixel/(cpu|gpu)_(low|shadow|sky|street|telephoto|closeup|tile8|tile16_[a-z_]+|uncoalesced|1x_low|1x_raw|1x_triangles|triangles_odd_size)_(compute|raster)( |$)"
   # The three light kinds on every camera; KindsFramesUnderValidation keeps the default camera.
   "^EveryCamera/"
   # Compute == raster bit for bit on further configurations; the equivalence cases above
