@@ -16,7 +16,7 @@
 // one object is an error. It is bounded: at most kMaxJsonDepth nested containers,
 // kMaxJsonValues values and kMaxJsonBytes of input, so hostile input cannot exhaust the stack
 // or memory (a value takes ~100 bytes, so without the count a 1 MiB array of zeros would take
-// ~100 MiB). tests/shadergen/json_reader_agreement_test.cpp reads the fuzz corpus and a table
+// ~100 MiB). tests/shadergen/spec/json_reader_agreement_test.cpp reads the fuzz corpus and a table
 // of edge cases with this reader and with nlohmann: both accept the same documents and read
 // the same values, except where our limits or a duplicate key reject a document nlohmann takes.
 #pragma once

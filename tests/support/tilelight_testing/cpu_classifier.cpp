@@ -1,7 +1,7 @@
 // The exact per-sample classification that uber/classify/classify_tiles.comp bounds per tile:
 // the same include functions (the comments name each GLSL function), evaluated for every
 // sample the lighting shades, with every shadow tap counted. It is the answer the GPU's IDs
-// must admit (tests/frame/frame_support.h compare_with_reference).
+// must admit (tests/runtime/app/frame_support.h compare_with_reference).
 #include "tilelight_testing/cpu_classifier.h"
 
 #include "tilelight/base/error.h"

@@ -4,7 +4,7 @@
 // and counts every shadow tap; uber/classify/classify_tiles.comp decides position-dependent bits
 // from per-tile bounds instead, so the GPU may set MSAA_EDGE, SHADOW_FADE and LIGHT_SCATTERING
 // where no sample needs them and call a tile SOFT where the taps say SOLID or lit; it must never
-// miss a bit or pick a shadow type a sample rules out (tests/frame/frame_support.h
+// miss a bit or pick a shadow type a sample rules out (tests/runtime/app/frame_support.h
 // compare_with_reference).
 //
 // The GPU decides every threshold with `precise` arithmetic, but the driver's normalize(),

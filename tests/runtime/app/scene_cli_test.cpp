@@ -1,6 +1,6 @@
 // tilelight --scene: a glTF file rendered end to end, and bad files and flags answered with an
 // exit status and a message naming the file, writing nothing.
-#include "../fixtures/gltf/ignored_features_warnings.h"
+#include "../../fixtures/gltf/ignored_features_warnings.h"
 #include "frame_support.h"
 #include "tilelight/app/cli.h"
 #include "tilelight/gltf/load_gltf.h"

@@ -1,4 +1,4 @@
-// glTF materials through the whole frame, on files the tests build (tests/gltf/gltf_builder.h):
+// glTF materials through the whole frame, on files the tests build (tests/runtime/gltf/gltf_builder.h):
 // an alpha-masked quad in front of a green wall, whose masked half shows the wall in the G-buffer
 // and lets the sun through in the shadow map, and single- and double-sided quads seen from
 // behind. Every frame: classified == naive and dynamic == naive per pixel, bit-exact, under the

@@ -30,7 +30,7 @@ static_assert(!toy::kRawPruned[(toy::raw_bit::DISTORT | toy::raw_bit::TEXTURED).
 static_assert(toy::raw_bit::LIT.value() == 1u && toy::raw_bit::TEXTURED.value() == 2u &&
               toy::raw_bit::SOFT.value() == 4u && toy::raw_bit::DISTORT.value() == 8u);
 // The bits compose with IDs of their own kind only: a raw ID with raw bits, an optimised ID with
-// optimised bits (tests/shadergen/compile_fails checks that the mixes do not compile).
+// optimised bits (tests/shadergen/registry/compile_fails checks that the mixes do not compile).
 static_assert((toy::RawId(0) | toy::raw_bit::LIT | toy::raw_bit::SOFT) == toy::RawId(5));
 static_assert((toy::RawId(5) & toy::raw_bit::SOFT) && !(toy::RawId(5) & toy::raw_bit::TEXTURED));
 static_assert((toy::OptimisedId(0) | toy::optimised_bit::SAMPLED) ==

@@ -1,7 +1,7 @@
 // Nothing a file holds is dropped silently: every feature the renderer does not draw is one
 // warning line naming the file, glTF 1.0 is named as such, and a missing external file is
 // named by the path the loader looked at.
-#include "../fixtures/gltf/ignored_features_warnings.h"
+#include "../../fixtures/gltf/ignored_features_warnings.h"
 #include "tilelight/base/error.h"
 #include "tilelight/gltf/load_gltf.h"
 
