@@ -7,16 +7,15 @@
 # tests_discover(<target> [LABELS <area>...] [TIMEOUT <s>] [PREFIX <p>]): gtest_discover_tests()
 #   with the tiers. The cases exist only once the executable is built, so the tiers are applied
 #   by a file ctest reads right after the discovered cases (it lists <target>'s cases in
-#   <target>_cases). It also gives the executable the tests' precompiled headers
-#   (tests/cmake/precompiled_headers.cmake).
+#   <target>_cases).
 # tests_assign_tiers(): at the end of the calling folder's CMakeLists.txt, the tiers of the
 #   tests added there with add_test().
 # scripts/run-tests.sh fails a run in which some test has no tier.
 include_guard(GLOBAL)
 include(GoogleTest)
-include(${CMAKE_CURRENT_LIST_DIR}/precompiled_headers.cmake)
-include(${CMAKE_CURRENT_LIST_DIR}/../tiers.cmake)
-set(TESTS_TIERS_FILE ${CMAKE_CURRENT_LIST_DIR}/../tiers.cmake)
+# A cache entry, not a variable: bench/ calls tests_assign_tiers() too, and it is no folder below
+# tests/, so it sees none of this folder's variables.
+set(TESTS_TIERS_FILE ${CMAKE_CURRENT_LIST_DIR}/../tiers.cmake CACHE INTERNAL "tests/tiers.cmake")
 
 function(tests_discover target)
   cmake_parse_arguments(PARSE_ARGV 1 TD "" "TIMEOUT;PREFIX" "LABELS")
@@ -27,7 +26,6 @@ function(tests_discover target)
   if(TD_TIMEOUT)
     list(APPEND extra PROPERTIES TIMEOUT ${TD_TIMEOUT})
   endif()
-  tests_precompile_headers(${target})
   gtest_discover_tests(${target} TEST_LIST ${target}_cases DISCOVERY_TIMEOUT 60 ${extra})
   set(file ${CMAKE_CURRENT_BINARY_DIR}/${target}_tiers.cmake)
   file(WRITE ${file}
@@ -41,6 +39,7 @@ function(tests_discover target)
 endfunction()
 
 function(tests_assign_tiers)
+  include("${TESTS_TIERS_FILE}")
   get_property(tests DIRECTORY PROPERTY TESTS)
   foreach(test IN LISTS tests)
     get_test_property(${test} LABELS labels)
