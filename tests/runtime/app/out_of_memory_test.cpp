@@ -38,9 +38,9 @@ bool names_a_stage(const std::string& message) {
 }
 
 TEST(TilelightOutOfMemory, AllocationFailuresEndWithOneLineNamingTheStage) {
-#ifdef TEST_UNDER_ASAN
-  GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space, so RLIMIT_AS cannot be applied";
-#endif
+  if (testsupport::under_asan()) {
+    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space, so RLIMIT_AS cannot be applied";
+  }
   constexpr rlim_t kGiB = rlim_t{1} << 30;
   // On lavapipe this fails allocating the G-buffer (VK_ERROR_OUT_OF_DEVICE_MEMORY) within half a
   // second. Sizes that fail later (4096x4096 in 2.5 GiB: std::bad_alloc in a frame, or in the

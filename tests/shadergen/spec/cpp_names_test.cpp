@@ -118,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "spec.json:13:25: error: optimised.bits[0].name: \"__X\" is reserved in C++ (it holds a double "
                  "underscore); " +
                      kReserved}),
-    [](const ::testing::TestParamInfo<NameCase>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<NameCase>& param_info) { return std::string(param_info.param.name); });
 
 // Every keyword of C++20 and every alternative token is refused, and only those (with the
 // reserved forms): one list in the test, written from the standard, against the rule's own.

@@ -129,7 +129,9 @@ INSTANTIATE_TEST_SUITE_P(
                               "spec.json:9:15: error: companions[0].name: \"default\" is a C++ keyword or reserved "
                               "name; the generated registry cannot declare it (a companion's name is its "
                               "accessor's)"}),
-    [](const ::testing::TestParamInfo<sgtest::SpecErrorCase>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<sgtest::SpecErrorCase>& param_info) {
+      return std::string(param_info.param.name);
+    });
 
 // A companion naming an entry in a spec without "uber_shaders".
 TEST(UberShaders, ACompanionsUberShaderNeedsUberShaders) {

@@ -30,9 +30,9 @@ fs::path toy_spec();
 fs::path glsl_error_spec();
 fs::path split_second_spec();
 
-#ifdef SHADERGEN_EXE
-inline fs::path shadergen_exe() { return fs::path(SHADERGEN_EXE); }
-#endif
+// The shadergen executable of this build (support/shadergen_exe.cpp; executables that run it
+// compile that file, with the path as its one compile definition).
+fs::path shadergen_exe();
 
 // What a test's build starts from: `spec` built into `out` with the test's own cache folder
 // `cache` (never the user's) and two jobs. A test sets whatever else it checks, then calls

@@ -63,10 +63,10 @@ SoakRun run_frames(unsigned frames) {
 }
 
 TEST(Soak, FiveHundredValidatedFramesUseNoMoreMemoryThanAHundred) {
-#ifdef TEST_UNDER_ASAN
-  GTEST_SKIP() << "under AddressSanitizer freed memory sits in its quarantine, so RSS grows with the frame count "
-                  "by design; the sanitizer build checks leaks with LeakSanitizer instead";
-#endif
+  if (testsupport::under_asan()) {
+    GTEST_SKIP() << "under AddressSanitizer freed memory sits in its quarantine, so RSS grows with the frame count "
+                    "by design; the sanitizer build checks leaks with LeakSanitizer instead";
+  }
   const SoakRun short_run = run_frames(100);
   const SoakRun long_run = run_frames(500);
   ASSERT_TRUE(short_run.ok && long_run.ok);
