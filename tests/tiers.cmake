@@ -55,6 +55,23 @@ set(TESTS_NOT_SANITIZER_PATTERNS
   # suite's test time in the cold run of ccc5169 (docs/ci.md). One case keeps the whole real
   # build under the sanitizers; the others check properties of the same output.
   "^SplitSecondBuild\\.(Deterministic|EveryBlob|WarmRebuild|GeneratedCpp|RawEntries|AllPermutations|IdenticalBlobs)"
+  # A 16-feature domain built to check its dedupe (23 s under ASan): the same build code as
+  # every other shadergen case, at a larger scale.
+  "^Scaling\\.SixteenFeaturesBuildToFourDistinctSources$"
+  # The same frame again at another MSAA mode, light shape, baseline or camera: each family
+  # keeps the cases whose host code differs (one MSAA mode of each light shape, the camera
+  # inside a volume and beyond the far plane, raw IDs, triangle pairs, an odd size, 1x), and
+  # the default tier runs them all. Under ASan a frame costs 2 to 3 times what it does in the
+  # test build: these cases were about 230 s of the sanitizer suite's 848 s of test time.
+  "^Lights/LocalLight(Volumes\\.EqualTheFullScreenReferencePerPixel|Frame\\.LightsItsRangeOnlyAndEveryTargetAlike)/(point_msaa1|point_globe_msaa[14]|point_around_camera_msaa4|spot_msaa[14]|spot_globe_msaa4|box_msaa[14]|box_back_colour_msaa[14]|box_back_colour_globe_msaa4|point_beyond_far_plane_msaa4)( |$)"
+  "^Lights/LocalLightShadowVolumes\\.EqualTheFullScreenReferencePerPixel/(point_msaa1|spot_msaa4|box_msaa4|point_camera_inside_msaa4)( |$)"
+  "^Frames/Equivalence\\.ClassifiedEqualsNaivePerPixel/(cpu_default_compute|gpu_default_raster|cpu_odd_size_raster|gpu_odd_size_(raster|compute)|cpu_raw_(raster|compute)|gpu_raw_compute|cpu_triangles_compute|cpu_1x_raster|gpu_1x_odd_size_compute)( |$)"
+  "^Baselines/WholeFrame\\.ClassifiedEqualsEveryBaselineOnThePlainGBuffer/(naive|dynamic)_"
+  "^Baselines/FrameTimingsAddUp\\.PerFrame/(naive_gpu|dynamic_cpu)( |$)"
+  "^Modes/ForwardPassFrame\\.[A-Za-z]+/msaa4_compute( |$)"
+  "^Cameras/PlainGBuffer\\.[A-Za-z]+/(closeup_msaa|street_msaa|low_1x)( |$)"
+  "^Scenes/GltfFrames\\.ClassifiedEqualsNaivePerPixel/engine_glb_gpu_no_msaa( |$)"
+  "^Views/EyeViews\\.[A-Za-z]+/procedural_(low_wide|street)( |$)"
 )
 
 # Default-tier cases the quick loop leaves out: the slowest.

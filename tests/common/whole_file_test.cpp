@@ -11,6 +11,8 @@
 
 #include <testsupport/scratch_dir.h>
 
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace whole_file_test {
 namespace {
 namespace fs = std::filesystem;
 using Step = whole_file::Failure::Step;
@@ -100,3 +102,4 @@ TEST(WholeFile, TheLimitHoldsForAFileWithoutAKnownSize) {
 }
 
 }  // namespace
+}  // namespace whole_file_test

@@ -12,6 +12,8 @@
 #include <vector>
 
 namespace tilelight::test {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace camera_cli_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -147,4 +149,5 @@ TEST(TilelightCameraCli, HelpNamesTheCameraAndLightingFlags) {
 }
 
 }  // namespace
+}  // namespace camera_cli_test
 }  // namespace tilelight::test

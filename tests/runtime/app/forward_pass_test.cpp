@@ -48,6 +48,8 @@
 #include <vector>
 
 namespace tilelight::test {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace forward_pass_test {
 namespace {
 
 constexpr std::uint32_t kWidth = 128, kHeight = 96;
@@ -260,4 +262,5 @@ INSTANTIATE_TEST_SUITE_P(Modes, ForwardPassFrame,
                          case_name);
 
 }  // namespace
+}  // namespace forward_pass_test
 }  // namespace tilelight::test

@@ -13,6 +13,8 @@
 #include <vector>
 
 namespace tilelight::test {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace lights_cli_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -79,4 +81,5 @@ TEST(TilelightLightsCli, HelpNamesTheLightsFlag) {
 }
 
 }  // namespace
+}  // namespace lights_cli_test
 }  // namespace tilelight::test

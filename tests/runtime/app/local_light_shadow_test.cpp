@@ -22,6 +22,8 @@
 #include <vector>
 
 namespace tilelight::test {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace local_light_shadow_test {
 namespace {
 
 constexpr std::uint32_t kWidth = 96, kHeight = 64;
@@ -414,4 +416,5 @@ TEST_F(LocalLightShadowSettings, LightsBeyondTheCapAreDrawnUnshadowed) {
 }
 
 }  // namespace
+}  // namespace local_light_shadow_test
 }  // namespace tilelight::test

@@ -19,6 +19,8 @@
 #include <tuple>
 
 namespace tilelight::test {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace plain_gbuffer_test {
 namespace {
 
 // GBufferSamples: rt0[4], rt1[4], rt2[4], rt3, then the tag's bits.
@@ -107,4 +109,5 @@ TEST(SceneShaders, NoGBufferShaderWritesFragDepth) {
 }
 
 }  // namespace
+}  // namespace plain_gbuffer_test
 }  // namespace tilelight::test

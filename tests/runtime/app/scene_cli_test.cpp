@@ -17,6 +17,8 @@
 #include <vector>
 
 namespace tilelight::test {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace scene_cli_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -168,4 +170,5 @@ TEST(TilelightScene, AnUnknownCameraOrSceneIndexIsAnErrorAndBadFlagsAUsageError)
 }
 
 }  // namespace
+}  // namespace scene_cli_test
 }  // namespace tilelight::test

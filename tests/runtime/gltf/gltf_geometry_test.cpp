@@ -10,6 +10,8 @@
 #include <string>
 
 namespace tilelight {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace gltf_geometry_test {
 namespace {
 
 const std::filesystem::path kFixtures = TILELIGHT_GLTF_FIXTURES;
@@ -127,4 +129,5 @@ INSTANTIATE_TEST_SUITE_P(
     name_of);
 
 }  // namespace
+}  // namespace gltf_geometry_test
 }  // namespace tilelight

@@ -18,6 +18,8 @@
 #include <vector>
 
 namespace tilelight {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace gltf_lights_test {
 namespace {
 
 const std::filesystem::path kFixtures = TILELIGHT_GLTF_FIXTURES;
@@ -235,4 +237,5 @@ INSTANTIATE_TEST_SUITE_P(
     name_of);
 
 }  // namespace
+}  // namespace gltf_lights_test
 }  // namespace tilelight

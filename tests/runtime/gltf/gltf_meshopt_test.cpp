@@ -19,6 +19,8 @@
 #include <vector>
 
 namespace tilelight {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace gltf_meshopt_test {
 namespace {
 
 using Json = nlohmann::json;
@@ -198,4 +200,5 @@ INSTANTIATE_TEST_SUITE_P(
     view_name);
 
 }  // namespace
+}  // namespace gltf_meshopt_test
 }  // namespace tilelight

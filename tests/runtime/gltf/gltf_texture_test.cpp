@@ -13,6 +13,8 @@
 #include <vector>
 
 namespace tilelight {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace gltf_texture_test {
 namespace {
 
 const std::filesystem::path kFixtures = TILELIGHT_GLTF_FIXTURES;
@@ -114,4 +116,5 @@ TEST(TextureMips, ColourIsAveragedInLinearLightAndAlphaDirectly) {
 }
 
 }  // namespace
+}  // namespace gltf_texture_test
 }  // namespace tilelight

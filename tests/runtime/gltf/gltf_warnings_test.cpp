@@ -13,6 +13,8 @@
 #include <vector>
 
 namespace tilelight {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace gltf_warnings_test {
 namespace {
 
 const std::filesystem::path kFixtures = TILELIGHT_GLTF_FIXTURES;
@@ -67,4 +69,5 @@ TEST(GltfWarnings, AMissingExternalFileIsNamedByItsResolvedPath) {
 }
 
 }  // namespace
+}  // namespace gltf_warnings_test
 }  // namespace tilelight

@@ -14,6 +14,8 @@
 #include <vector>
 
 namespace tilelight {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace tile_list_builder_test {
 namespace {
 
 // The tests' own LUT: optimised = raw & 31; raw IDs with bits 0 and 1 both set are pruned.
@@ -170,4 +172,5 @@ TEST(TileListBuilder, PreconditionsAreChecked) {
 }
 
 }  // namespace
+}  // namespace tile_list_builder_test
 }  // namespace tilelight

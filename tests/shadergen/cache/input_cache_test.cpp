@@ -18,6 +18,8 @@
 #include "shadergen/build.h"
 #include "test_helpers.h"
 
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace input_cache_test {
 namespace {
 
 namespace fs = sgtest::fs;
@@ -260,3 +262,4 @@ TEST(InputCache, StatsLinesSayRecompiledReusedAndThePhases) {
 }
 
 }  // namespace
+}  // namespace input_cache_test

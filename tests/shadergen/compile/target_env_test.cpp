@@ -12,6 +12,8 @@
 #include "shadergen/domain.h"
 #include "test_helpers.h"
 
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace target_env_test {
 namespace {
 
 using nlohmann::json;
@@ -138,3 +140,4 @@ TEST(TargetEnv, AnUnknownTargetIsRefusedAndLeavesTheOutput) {
 }
 
 }  // namespace
+}  // namespace target_env_test

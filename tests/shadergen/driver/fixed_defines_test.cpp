@@ -15,6 +15,8 @@
 #include "shadergen/domain.h"
 #include "test_helpers.h"
 
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace fixed_defines_test {
 namespace {
 
 using nlohmann::json;
@@ -174,3 +176,4 @@ TEST(FixedDefines, TheCliTakesRepeatedDefineOptions) {
 }
 
 }  // namespace
+}  // namespace fixed_defines_test

@@ -14,6 +14,8 @@
 #include "shadergen/build.h"
 #include "test_helpers.h"
 
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace spill_test {
 namespace {
 
 namespace fs = sgtest::fs;
@@ -188,3 +190,4 @@ TEST(Spill, FileBackedEntriesCompareByContent) {
 }
 
 }  // namespace
+}  // namespace spill_test

@@ -14,6 +14,8 @@
 #include "test_helpers.h"
 
 namespace shadergen {
+// A namespace of this file's own: the test executables are unity builds (tests/CMakeLists.txt).
+namespace uber_shaders_test {
 namespace {
 
 // Line numbers in the expectations below refer to this text.
@@ -191,4 +193,5 @@ TEST(UberShaders, TheFixtureBuildsOneManifestWithEveryEntrysBlobs) {
 }
 
 }  // namespace
+}  // namespace uber_shaders_test
 }  // namespace shadergen
