@@ -10,10 +10,12 @@
 #   c. a signing secret (--remote-cache-secret-file), without --wait: the entries on the
 #      server are signed and the merge, once the jobs are done, matches the local build.
 #   d. no Slurm: shards 0, 1 and 3 of 4 run by hand; the merge with --require-remote-hits
-#      --shards 4 exits 1 naming shard 2 and writes nothing.
+#      --shards 4 exits 1 naming shard 2 (no record of it: before fetching any entry) and writes
+#      nothing.
 #   e. argument checks: usage errors exit 2, more shards than MaxArraySize exit 1 naming it.
-# Every shadergen run gets a local cache of its own (the merge must find everything on the
-# server, not in a cache a shard filled), through the wrapper bin/sg.
+# The jobs run with the script's shipped defaults: every run shares the one default cache folder,
+# as on a shared $HOME, and scenario a checks that none of them used it (the script passes
+# --no-cache to every shard and the merge).
 #   usage: slurm_test.sh <shadergen executable | stand-in> <repository root> <scratch folder>
 # "stand-in" runs the Slurm plumbing against a small sh imitation of `shadergen build --shard`
 # (no compiling) for work on this test while shadergen itself is elsewhere.
@@ -244,7 +246,7 @@ if [ "$shadergen" = stand-in ]; then
 #!/bin/sh
 [ "$1" = build ] || exit 2
 shift
-case " $* " in *" --help "*) echo "stand-in: --shard I/N --shards N --require-remote-hits"; exit 0 ;; esac
+case " $* " in *" --help "*) echo "stand-in: --shard I/N --require-remote-hits"; echo "  --shards UINT:UINT in [1 - 4096]"; exit 0 ;; esac
 spec="" out="" shard="" shards="" url="" secret="" require=0
 while [ $# -gt 0 ]; do
     case $1 in
@@ -255,7 +257,7 @@ while [ $# -gt 0 ]; do
         --remote-cache-secret-file) secret=$(cat "$2"); shift 2 ;;
         --require-remote-hits) require=1; shift ;;
         --cache-dir | -j | --remote-cache-budget) shift 2 ;;
-        --remote-cache-budget=*) shift ;;
+        --remote-cache-budget=* | --verbose) shift ;;
         --no-cache) shift ;;
         -*) echo "stand-in: unknown option $1" >&2; exit 2 ;;
         *) spec=$1; shift ;;
@@ -302,13 +304,12 @@ else
         skip "$shadergen has no 'build --shard' option yet"
 fi
 
-# bin/sg: shadergen with a local cache of its own per run (SLURM_JOB_ID differs per array
-# task), logging its arguments. bin/sg-fail: the same, but shard 2 of 4 fails and shard 1 of 4
-# hangs (until the test cancels it).
+# bin/sg: shadergen as the script runs it, logging its arguments. bin/sg-fail: the same, but
+# shard 2 of 4 fails and shard 1 of 4 hangs (until the test cancels it).
 cat >"$work/bin/sg" <<EOF
 #!/bin/sh
 printf '%s\n' "\$*" >>"$work/argv.log"
-exec "$shadergen" "\$@" --cache-dir "$work/caches/run-\${SLURM_JOB_ID:-\$\$}"
+exec "$shadergen" "\$@"
 EOF
 cat >"$work/bin/sg-fail" <<EOF
 #!/bin/sh
@@ -413,8 +414,10 @@ expect_rc() { # $1 expected exit, $2 text the error must contain, $3... argument
 }
 "$script" --help | grep -q '^Usage: shadergen-slurm SPEC' || fail "--help prints no usage"
 expect_rc 2 "--remote-cache URL is required" "$split_second" --out "$work/out/x" --shards 4 --shadergen "$work/bin/sg"
-expect_rc 2 "--shards must be an integer from 1 to 4096" "$split_second" --out "$work/out/x" --shards 0 --remote-cache "$url/x"
-expect_rc 2 "--shards must be an integer from 1 to 4096" "$split_second" --out "$work/out/x" --shards 4097 --remote-cache "$url/x"
+expect_rc 2 "--shards must be an integer from 1 to 4096" "$split_second" --out "$work/out/x" --shards 0 --remote-cache "$url/x" \
+    --shadergen "$work/bin/sg"
+expect_rc 2 "--shards must be an integer from 1 to 4096" "$split_second" --out "$work/out/x" --shards 4097 --remote-cache "$url/x" \
+    --shadergen "$work/bin/sg"
 expect_rc 2 "is not a readable file" "$work/no-such.json" --out "$work/out/x" --shards 4 --remote-cache "$url/x"
 expect_rc 2 "--out DIR is required" "$split_second" --shards 4 --remote-cache "$url/x"
 expect_rc 2 "http:// or https://" "$split_second" --out "$work/out/x" --shards 4 --remote-cache "ftp://x/y"
@@ -432,21 +435,25 @@ local_build split_second "$split_second"
 local_build gen14 "$gen/gen14.json"
 # gen14 also passes a build argument through to every job (it does not change the output).
 for domain in split_second gen14; do
-    if [ "$domain" = split_second ]; then spec=$split_second budget=""; else spec=$gen/gen14.json budget=120; fi
+    if [ "$domain" = split_second ]; then spec=$split_second extra=""; else spec=$gen/gen14.json extra=--verbose; fi
     run_script "a-$domain" "$spec" --out "$work/out/a-$domain" --shards 4 --remote-cache "$url/a" \
-        --shadergen "$work/bin/sg" ${budget:+--build-arg=--remote-cache-budget=$budget} --wait
+        --shadergen "$work/bin/sg" ${extra:+--build-arg=$extra} --wait
     [ "$(cat "$work/logs/a-$domain.rc")" -eq 0 ] || fail "a: shadergen-slurm on $domain failed: $(show "a-$domain")"
     same_output "$work/out/a-$domain" "$domain"
     for i in 0 1 2 3; do
-        grep -qF -- "build $spec --shard $i/4 --remote-cache $url/a${budget:+ --remote-cache-budget=$budget}" \
+        grep -qF -- "build $spec --shard $i/4 --remote-cache $url/a --no-cache${extra:+ $extra}" \
             "$work/argv.log" || fail "a: no shard $i/4 of $domain ran: $(cat "$work/argv.log")"
     done
-    grep -qF -- "build $spec --out $work/out/a-$domain --remote-cache $url/a --require-remote-hits --shards 4${budget:+ --remote-cache-budget=$budget}" \
+    grep -qF -- "build $spec --out $work/out/a-$domain --remote-cache $url/a --no-cache --require-remote-hits --shards 4${extra:+ $extra}" \
         "$work/argv.log" || fail "a: the merge of $domain did not run as expected: $(cat "$work/argv.log")"
     set -- "$work/out/a-$domain.slurm/logs/"shard-*_3.log
     [ -f "$1" ] || fail "a: no log of task 3 in $work/out/a-$domain.slurm/logs"
 done
-say "a. 4 shards + merge of split_second and gen14 match the local builds"
+# Every job shared the default cache folder (SHADERGEN_CACHE_DIR, as a shared $HOME would give
+# them) and none used it.
+[ -z "$(find "$work/caches/default" "$work/caches/xdg" -type f 2>/dev/null | head -n 1)" ] ||
+    fail "a: the jobs wrote the shared default cache: $(find "$work/caches/default" "$work/caches/xdg" -type f | head -n 5)"
+say "a. 4 shards + merge of split_second and gen14 match the local builds; no job used the shared local cache"
 
 # --- b. Shard task 2 fails, task 1 is cancelled while it runs (so it writes no status): exit 1
 # naming both and their logs, the merge never runs.
@@ -484,7 +491,7 @@ queue_empty() { [ -z "$(squeue -h 2>/dev/null)" ]; }
 wait_for 150 queue_empty || fail "c: the jobs did not finish: $(squeue)"
 same_output "$c_out" split_second
 grep -qF -- "--require-remote-hits --shards 4" "$work/argv.log" &&
-    grep -qF -- "--out $c_out --remote-cache $url/c --remote-cache-secret-file $work/secret --require-remote-hits" \
+    grep -qF -- "--out $c_out --remote-cache $url/c --remote-cache-secret-file $work/secret --no-cache --require-remote-hits" \
         "$work/argv.log" || fail "c: the merge did not get the secret file: $(cat "$work/argv.log")"
 [ "$(grep -cF -- "--remote-cache $url/c --remote-cache-secret-file $work/secret" "$work/argv.log")" -eq 5 ] ||
     fail "c: not all 4 shards and the merge got the secret file: $(cat "$work/argv.log")"
@@ -507,7 +514,7 @@ rc=0
 "$shadergen" build "$split_second" --out "$work/out/d" --remote-cache "$url/d" --require-remote-hits --shards 4 \
     -j 2 --cache-dir "$work/caches/d-merge" >"$work/logs/d-merge.log" 2>&1 || rc=$?
 [ "$rc" -eq 1 ] || fail "d: the merge without shard 2 exited $rc, expected 1: $(cat "$work/logs/d-merge.log")"
-grep -q "shard 2/4: [1-9][0-9]* sources\{0,1\} missing" "$work/logs/d-merge.log" ||
+grep -qE "shard 2/4: (no record of it on the server|[1-9][0-9]* sources? missing)" "$work/logs/d-merge.log" ||
     fail "d: the merge's error does not name shard 2: $(cat "$work/logs/d-merge.log")"
 if grep -q "shard [013]/4" "$work/logs/d-merge.log"; then fail "d: the merge names a shard that ran: $(cat "$work/logs/d-merge.log")"; fi
 [ ! -e "$work/out/d" ] || fail "d: the refused merge wrote $work/out/d"

@@ -67,9 +67,14 @@ struct BuildOptions {
   // The build fails, naming how many, unless every source of the shard is on the server.
   // Preconditions: a remote cache that is not read-only; index < count <= kMaxShards.
   std::optional<Shard> shard;
-  // The merge of a sharded build: compile nothing. A distinct source found in neither the local
-  // nor the remote cache (or failing verification) is missing, and the build then fails naming
-  // how many, per shard when `shards` is not 0, and writes nothing. Needs a remote cache.
+  // The merge of a sharded build: compile nothing, and take every distinct source from the
+  // server alone, checked as remote entries are (key, checksum, signature), never from the local
+  // cache, which it neither reads nor writes. It uploads nothing (no HEAD, PUT or MKCOL),
+  // whatever remote_cache_read_only says. A source missing from the server, or failing the
+  // checks, fails the build, counted by kind ("2 sources missing, 1 corrupt"), per shard with the
+  // command that reruns it when `shards` is not 0, and nothing is written. With `shards`, every
+  // shard's record (cache/shard_record.h) is checked first: a shard that has not finished or ran
+  // another shadergen fails the merge before any entry is fetched. Needs a remote cache.
   bool require_remote_hits = false;
   std::uint32_t shards = 0;  // how many shards filled the cache (for the merge's message); 0: unknown
   // Receives progress lines (the CLI prints them on stderr). May be empty.
@@ -104,8 +109,9 @@ struct BuildSummary {
   bool sharded = false;
   std::uint32_t shard_index = 0, shard_count = 0;
   std::uint32_t shard_sources = 0;    // distinct sources this shard owns
-  std::uint32_t shard_on_server = 0;  // of which the server held already (verified, or offered from the local cache)
+  std::uint32_t shard_on_server = 0;  // of which the server held already (fetched and verified)
   std::uint32_t shard_uploaded = 0;   // of which compiled (or taken from the local cache) and uploaded now
+  std::uint32_t shard_replaced = 0;   // of those, sources whose copy on the server failed the checks
   double seconds = 0.0;
   std::vector<PhaseTime> phases;  // in order; their sum is close to `seconds`
 };

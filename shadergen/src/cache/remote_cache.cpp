@@ -52,36 +52,39 @@ RemoteCache::RemoteCache(std::string url, bool read_only, std::unique_ptr<HttpCl
 
 std::string RemoteCache::entry_url(std::string_view key) const { return url_ + "/" + relative_entry(key); }
 
-std::optional<CachedBlob> RemoteCache::load(std::string_view key, const Check& check) {
+RemoteCache::Lookup RemoteCache::lookup(std::string_view key, const Check& check) {
   const std::string relative = relative_entry(key);
-  auto body = fetch(relative);
-  if (!body) return std::nullopt;
+  bool not_found = false;
+  auto body = fetch(relative, &not_found);
+  if (!body) return Lookup{not_found ? Found::none : Found::no_answer, std::nullopt};
   auto entry = body_entry(*body);
   if (!entry) {
     reject(relative,
            "is not signed with this build's secret (SHADERGEN_REMOTE_CACHE_SECRET or "
            "--remote-cache-secret-file)");
-    return std::nullopt;
+    return Lookup{Found::rejected, std::nullopt};
   }
   // The one verification local entries get too: magic, key, sizes and checksum.
   auto blob = decode_cache_entry(key, *entry);
   if (!blob) {
     reject(relative, "is not a valid entry (truncated, corrupted, foreign or from another version)");
-    return std::nullopt;
+    return Lookup{Found::rejected, std::nullopt};
   }
   if (std::string unfit = check ? check(*blob) : std::string(); !unfit.empty()) {
     reject(relative, "holds SPIR-V unfit for this build (" + printable(unfit) + ")");
-    return std::nullopt;
+    return Lookup{Found::rejected, std::nullopt};
   }
   ++fetched_;
-  return blob;
+  return Lookup{Found::entry, std::move(blob)};
 }
 
-// The body of a 200, or nullopt: a 404 (counted as a miss) or a failure (the cache turns off).
-std::optional<std::string> RemoteCache::fetch(const std::string& relative) {
+// The body of a 200, or nullopt: a 404 (counted as a miss, and *not_found set) or a failure
+// (the cache turns off).
+std::optional<std::string> RemoteCache::fetch(const std::string& relative, bool* not_found) {
   auto response = send("GET", relative);
   if (!response) return std::nullopt;
   if (response->status == 404) {
+    if (not_found) *not_found = true;
     ++missed_;
     return std::nullopt;
   }
@@ -112,6 +115,20 @@ std::optional<std::string> RemoteCache::body_entry(std::string_view body) const 
   auto entry = verified_entry(body, settings_.secret);
   if (!entry) return std::nullopt;
   return std::string(*entry);
+}
+
+bool RemoteCache::store_text(const std::string& relative, std::string_view text) {
+  if (settings_.read_only || off_.load()) return false;
+  return put(relative, signs() ? signed_entry(text, settings_.secret) : std::string(text));
+}
+
+std::optional<std::string> RemoteCache::load_text(const std::string& relative, Found* found) {
+  bool not_found = false;
+  auto body = fetch(relative, &not_found);
+  std::optional<std::string> text;
+  if (body) text = body_entry(*body);
+  if (found) *found = text ? Found::entry : body ? Found::rejected : not_found ? Found::none : Found::no_answer;
+  return text;
 }
 
 bool RemoteCache::store(std::string_view key, const CachedBlob& blob) {
@@ -260,7 +277,11 @@ void RemoteCache::distrust(const std::string& why) {
 void RemoteCache::reject(std::string_view relative, const std::string& why) {
   ++failed_;
   if (rejected_once_.exchange(true)) return;
-  warn("warning: remote cache " + shown_url_ + ": " + std::string(relative) + " " + why + "; compiled here instead");
+  const char* fate = settings_.role == RemoteRole::merge   ? "; the merge counts it corrupt (the first such entry only "
+                                                             "is named here)"
+                     : settings_.role == RemoteRole::shard ? "; this shard uploads its own copy in its place"
+                                                           : "; compiled here instead";
+  warn("warning: remote cache " + shown_url_ + ": " + std::string(relative) + " " + why + fate);
 }
 
 }  // namespace shadergen

@@ -44,6 +44,8 @@
 
 namespace shadergen {
 
+enum class RemoteRole { build, shard, merge };
+
 struct RemoteCacheSettings {
   std::string url;  // is_remote_cache_url(); a trailing '/' is dropped
   bool read_only = false;
@@ -56,6 +58,9 @@ struct RemoteCacheSettings {
   // and a request that gets no answer or a 5xx is sent again, up to kNetworkedRetries more
   // times, after 1, 2 and 4 s. Each attempt still waits at most request_limit.
   bool networked = false;
+  // Who reads the entries, for what its warnings say becomes of a rejected one: a build
+  // compiles it here, a shard uploads its own copy in its place, a merge counts it corrupt.
+  RemoteRole role = RemoteRole::build;
 };
 
 inline constexpr int kNetworkedRetries = 3;
@@ -71,9 +76,17 @@ class RemoteCache {
   RemoteCache(RemoteCacheSettings settings, std::unique_ptr<HttpClient> http, Warn warn);
   RemoteCache(std::string url, bool read_only, std::unique_ptr<HttpClient> http, Warn warn);
 
+  // What a lookup found: the entry (verified as load() says), none (404), an entry that failed
+  // the checks (rejected: unsigned, corrupt, foreign or unfit), or no answer (the cache is off).
+  enum class Found { entry, none, rejected, no_answer };
+  struct Lookup {
+    Found found = Found::no_answer;
+    std::optional<CachedBlob> blob;  // only with Found::entry
+  };
+  Lookup lookup(std::string_view key, const Check& check = {});
   // The verified entry of `key` that passes `check` (when given), or nullopt (a miss, a
   // rejected entry, a failure, or off).
-  std::optional<CachedBlob> load(std::string_view key, const Check& check = {});
+  std::optional<CachedBlob> load(std::string_view key, const Check& check = {}) { return lookup(key, check).blob; }
   // Uploads the entry unless read-only or off; true when it was uploaded. Never fails: failures
   // only warn and count.
   bool store(std::string_view key, const CachedBlob& blob);
@@ -87,6 +100,11 @@ class RemoteCache {
   std::optional<std::string> load_input_set(std::string_view key);
   // Uploads an input-set entry's bytes, signed; only with a secret and unless read-only or off.
   void store_input_set(std::string_view key, std::string_view bytes);
+  // A small signed text at <url>/<relative> (a shard's record, shard_record.h): signed when there
+  // is a secret, and read only when its signature holds. store_text() returns true when stored;
+  // load_text() nullopt for a 404, a failure or a bad signature, and `found` says which.
+  bool store_text(const std::string& relative, std::string_view text);
+  std::optional<std::string> load_text(const std::string& relative, Found* found = nullptr);
   // Turns the remote cache off with one warning: the build found its entries unusable as a
   // whole (`why`, untrusted text allowed) and compiles them here.
   void distrust(const std::string& why);
@@ -103,7 +121,7 @@ class RemoteCache {
   std::optional<HttpResponse> send(std::string_view method, const std::string& relative, std::string_view body = {});
   std::optional<HttpResponse> send_once(std::string_view method, const std::string& relative, std::string_view body,
                                         bool quiet = false);
-  std::optional<std::string> fetch(const std::string& relative);
+  std::optional<std::string> fetch(const std::string& relative, bool* not_found = nullptr);
   std::optional<std::string> body_entry(std::string_view body) const;
   bool put(const std::string& relative, std::string_view body);
   bool create_collections(const std::string& relative);

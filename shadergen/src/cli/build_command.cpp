@@ -116,13 +116,15 @@ std::optional<std::string> usage_problem(const BuildArgs& a, BuildOptions& optio
   return std::nullopt;
 }
 
-// "shadergen: shard 2/8: 1234 distinct sources (1200 uploaded, 34 already on the server) in 9.81 s".
+// "shadergen: shard 2/8: 1234 distinct sources (1200 uploaded, 34 already on the server) in 9.81 s";
+// uploads that replaced a copy on the server that failed the checks are counted among them.
 void print_shard_summary(const BuildArgs& a, const BuildSummary& s, std::ostream& out) {
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, " in %.2f s\n", s.seconds);
   out << "shadergen: shard " << s.shard_index << "/" << s.shard_count << ": " << s.shard_sources << " of "
-      << s.unique_sources << " distinct sources (" << s.shard_uploaded << " uploaded, " << s.shard_on_server
-      << " already on the server)" << seconds;
+      << s.unique_sources << " distinct sources (" << s.shard_uploaded << " uploaded"
+      << (s.shard_replaced ? ", of which " + std::to_string(s.shard_replaced) + " replaced a corrupt copy" : "") << ", "
+      << s.shard_on_server << " already on the server)" << seconds;
   if (a.stats) out << format_build_stats(s);
 }
 
@@ -203,12 +205,12 @@ CLI::App* add_build_command(CLI::App& app, BuildArgs& args) {
                         "--remote-cache; writes no output folder; exits 1 unless all of them are on the server "
                         "(docs/distributed.md)");
   build_cmd->add_flag("--require-remote-hits", args.require_remote_hits,
-                      "The merge of a sharded build: compile nothing, take every source from the caches, and fail "
-                      "(writing nothing) if any is missing");
+                      "The merge of a sharded build: compile nothing, take every source from the server alone "
+                      "(never the local cache; no uploads), and fail (writing nothing) if any is missing or corrupt");
   build_cmd
       ->add_option("--shards", args.shards,
-                   "With --require-remote-hits: how many shards filled the cache, so that missing sources are "
-                   "counted per shard")
+                   "With --require-remote-hits: how many shards filled the cache; each shard's record is "
+                   "checked first (finished, same shadergen), and missing sources are counted per shard")
       ->check(CLI::Range(1u, kMaxShards));
   return build_cmd;
 }

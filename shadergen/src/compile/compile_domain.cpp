@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <deque>
@@ -104,7 +105,8 @@ class DomainCompiler {
     if (Status s = compile_sources(); !s) return s;
     clock.lap("compile or load");
     Status checked = check_blobs(clock);
-    if (!checked && remote_hits() > 0) checked = recompile_remote_hits(checked, clock);
+    // A merge compiles nothing: the blobs it checked are the server's, and its error stands.
+    if (!checked && remote_hits() > 0 && !options_.require_remote_hits) checked = recompile_remote_hits(checked, clock);
     if (!checked) return checked;
     keep_remote_hits();
     if (d_.spec.strip_debug) {
@@ -364,6 +366,18 @@ class DomainCompiler {
     };
   }
 
+  // The merge's lookup: the server alone (the driver gives a merge no local cache), every entry
+  // checked as remote entries are. `why` becomes what the merge reports for a source it lacks.
+  std::optional<CachedBlob> load_from_server(SourceRecord& record, char& why) {
+    auto found = options_.remote->lookup(record.key, fit_check(d_.jobs[record.first_job].stage));
+    record.remote_hit = record.cache_hit = found.blob.has_value();
+    why = found.found == RemoteCache::Found::none       ? kMissing
+          : found.found == RemoteCache::Found::rejected ? kCorrupt
+          : found.found == RemoteCache::Found::entry    ? kFound
+                                                        : kUnanswered;
+    return std::move(found.blob);
+  }
+
   void store_local(const std::string& key, const CachedBlob& blob) {
     if (!options_.cache) return;
     // A cache that cannot be written only costs time later; the build itself is fine.
@@ -421,10 +435,8 @@ class DomainCompiler {
           if (!options_.require_remote_hits) {
             auto blob = compile_one(d_.sources[i]);
             results[i] = blob ? spill(i, std::move(blob).value()) : Result<SourceBlob>(std::move(blob).take_errors());
-          } else if (auto hit = load_cached(d_.sources[i])) {
+          } else if (auto hit = load_from_server(d_.sources[i], missing[i])) {
             results[i] = spill(i, std::move(*hit));
-          } else {
-            missing[i] = 1;
           }
           std::size_t finished = ++done;
           report_progress(finished, total, i, log_mutex);
@@ -509,43 +521,75 @@ class DomainCompiler {
     if (spill_errors_.empty()) spill_errors_ = std::move(status).take_errors();
   }
 
-  // The merge (require_remote_hits): every distinct source must have come from a cache.
-  Status refuse_missing(const std::vector<char>& missing) const {
-    std::size_t count = static_cast<std::size_t>(std::count(missing.begin(), missing.end(), 1));
-    if (count == 0) return Ok{};
-    const std::size_t total = missing.size();
-    Diagnostics errors{
-        make_error(std::to_string(count) + " of " + std::to_string(total) +
-                   " distinct sources missing from the remote cache " + options_.remote->shown_url() +
-                   " (or failing verification); --require-remote-hits compiles nothing, so nothing was written")};
-    if (options_.shards == 0) return errors;
-    std::map<std::uint32_t, std::size_t> per_shard;
+  // The merge (require_remote_hits): every distinct source must have come from the server.
+  // What it lacks is counted by kind, and per shard when the shards are known, each with the
+  // command that puts the shard's entries on the server again.
+  Status refuse_missing(const std::vector<char>& why) const {
+    const std::size_t total = why.size();
+    std::array<std::size_t, 4> counts{};
+    for (char w : why) ++counts[static_cast<std::size_t>(w)];
+    if (counts[kMissing] + counts[kCorrupt] + counts[kUnanswered] == 0) return Ok{};
+    const std::string url = options_.remote->shown_url();
+    Diagnostics errors{make_error(std::to_string(total - counts[kFound]) + " of " + std::to_string(total) +
+                                  " distinct sources are not on the remote cache " + url + " (" +
+                                  lacking_text(counts[kMissing], counts[kCorrupt], counts[kUnanswered]) +
+                                  "); --require-remote-hits compiles nothing, so nothing was written")};
+    if (options_.shards == 0) {
+      errors.push_back(make_error("rerun the shards that filled " + url +
+                                  " (with --shards N the merge names each shard that lacks sources)"));
+      return errors;
+    }
+    std::map<std::uint32_t, std::array<std::size_t, 4>> per_shard;
     for (std::size_t s = 0; s < total; ++s)
-      if (missing[s]) ++per_shard[shard_of(s, total, options_.shards)];
-    for (const auto& [shard, n] : per_shard)
-      errors.push_back(make_error("shard " + std::to_string(shard) + "/" + std::to_string(options_.shards) + ": " +
-                                  std::to_string(n) + " source" + (n == 1 ? "" : "s") + " missing"));
+      if (why[s] != kFound) ++per_shard[shard_of(s, total, options_.shards)][static_cast<std::size_t>(why[s])];
+    for (const auto& [shard, n] : per_shard) {
+      const std::string place = std::to_string(shard) + "/" + std::to_string(options_.shards);
+      errors.push_back(make_error("shard " + place + ": " + lacking_text(n[kMissing], n[kCorrupt], n[kUnanswered]) +
+                                  "; rerun it: shadergen build " + d_.spec.spec_path.string() + " --shard " + place +
+                                  " --remote-cache " + url + " (with the shards' other options)"));
+    }
     return errors;
+  }
+
+  // "2 sources missing, 1 corrupt": the kinds that occur.
+  static std::string lacking_text(std::size_t missing, std::size_t corrupt, std::size_t unanswered) {
+    std::string text;
+    auto add = [&](std::size_t n, const std::string& what) {
+      if (n == 0) return;
+      if (!text.empty()) text += ", ";
+      text += std::to_string(n) + (text.empty() ? (n == 1 ? " source " : " sources ") : " ") + what;
+    };
+    add(missing, "missing");
+    add(corrupt, "corrupt");
+    add(unanswered, "not fetched (the server stopped answering; the warning above says why)");
+    return text;
   }
 
   // One source of a shard: on_server when the server had it (verified, or offered from the
   // local cache), uploaded when it was compiled here and stored, missing when an upload failed.
   // A compile error is returned as such.
-  enum class ShardFate { on_server, uploaded, missing };
+  // The server's copy is read and verified even when the local cache holds the entry: a HEAD
+  // would trust a corrupt copy, and the merge would then fail until someone deleted it. A
+  // missing or rejected copy is replaced (PUT over it) by the local entry or a fresh compile.
+  enum class ShardFate { on_server, uploaded, replaced, missing };
   Result<ShardFate> make_sure_on_server(SourceRecord& record) {
-    if (options_.cache)
-      if (auto local = options_.cache->load(record.key)) {
-        record.cache_hit = true;
-        if (options_.remote->offer(record.key, *local)) return ShardFate::on_server;
-        return ShardFate::missing;
-      }
-    if (options_.remote->load(record.key, fit_check(d_.jobs[record.first_job].stage))) {
+    auto served = options_.remote->lookup(record.key, fit_check(d_.jobs[record.first_job].stage));
+    if (served.found == RemoteCache::Found::entry) {
       record.cache_hit = record.remote_hit = true;
       return ShardFate::on_server;
     }
-    auto blob = compile_fresh(record);
-    if (!blob) return std::move(blob).take_errors();
-    return options_.remote->store(record.key, *blob) ? ShardFate::uploaded : ShardFate::missing;
+    if (served.found == RemoteCache::Found::no_answer) return ShardFate::missing;
+    const bool replacing = served.found == RemoteCache::Found::rejected;
+    std::optional<CachedBlob> blob;
+    if (options_.cache) blob = options_.cache->load(record.key);
+    record.cache_hit = blob.has_value();
+    if (!blob) {
+      auto fresh = compile_fresh(record);
+      if (!fresh) return std::move(fresh).take_errors();
+      blob = std::move(fresh).value();
+    }
+    if (!options_.remote->store(record.key, *blob)) return ShardFate::missing;
+    return replacing ? ShardFate::replaced : ShardFate::uploaded;
   }
 
   // build --shard: this shard's sources, each made sure of on the server. GLSL errors are
@@ -571,10 +615,11 @@ class DomainCompiler {
         failures.push_back({j, fates[source - range.first].errors(), {}});
     }
     if (!failures.empty()) return group_failures(d_, with_lines(std::move(failures)), options_.verbose);
-    ShardOutcome outcome{shard.index, shard.count, static_cast<std::uint32_t>(total), 0, 0};
+    ShardOutcome outcome{shard.index, shard.count, static_cast<std::uint32_t>(total), 0, 0, 0};
     for (const auto& fate : fates) {
       outcome.on_server += *fate == ShardFate::on_server;
-      outcome.uploaded += *fate == ShardFate::uploaded;
+      outcome.uploaded += *fate == ShardFate::uploaded || *fate == ShardFate::replaced;
+      outcome.replaced += *fate == ShardFate::replaced;
     }
     d_.shard = outcome;
     std::uint32_t missing = outcome.sources - outcome.on_server - outcome.uploaded;
@@ -728,6 +773,9 @@ class DomainCompiler {
     if (!errors.empty()) return errors;
     return Ok{};
   }
+
+  // What the merge found of each distinct source (refuse_missing).
+  static constexpr char kFound = 0, kMissing = 1, kCorrupt = 2, kUnanswered = 3;
 
   CompiledDomain& d_;
   const CompileOptions& options_;

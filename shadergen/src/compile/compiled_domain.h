@@ -59,6 +59,7 @@ struct ShardOutcome {
   std::uint32_t sources = 0;    // distinct sources the shard owns
   std::uint32_t on_server = 0;  // the server had them already
   std::uint32_t uploaded = 0;   // stored on the server now
+  std::uint32_t replaced = 0;   // of which the server held a copy that failed the checks
 };
 
 struct CompiledDomain {

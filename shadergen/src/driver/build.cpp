@@ -15,9 +15,11 @@
 #include "cache/cache.h"
 #include "cache/input_cache.h"
 #include "cache/remote_cache.h"
+#include "cache/shard_record.h"
 #include "compile/blob_spill.h"
 #include "compile/compile_domain.h"
 #include "compile/toolchain.h"
+#include "driver/shard_check.h"
 #include "output/codegen.h"
 #include "output/manifest.h"
 #include "output/output_dir.h"
@@ -192,9 +194,17 @@ BuildOptions normalised(BuildOptions options) {
 std::unique_ptr<RemoteCache> remote_cache_for(const BuildOptions& options) {
   const bool networked = options.shard || options.require_remote_hits;
   if ((!options.use_cache && !networked) || options.remote_cache_url.empty()) return nullptr;
-  RemoteCacheSettings settings{options.remote_cache_url,           options.remote_cache_read_only,
-                               options.remote_cache_secret,        options.remote_cache_budget,
-                               options.remote_cache_request_limit, networked};
+  // A merge uploads nothing, whatever --remote-cache-readonly says: its success must prove that
+  // the shards put everything there.
+  RemoteCacheSettings settings{options.remote_cache_url,
+                               options.remote_cache_read_only || options.require_remote_hits,
+                               options.remote_cache_secret,
+                               options.remote_cache_budget,
+                               options.remote_cache_request_limit,
+                               networked,
+                               options.shard                 ? RemoteRole::shard
+                               : options.require_remote_hits ? RemoteRole::merge
+                                                             : RemoteRole::build};
   return std::make_unique<RemoteCache>(std::move(settings), make_curl_http_client(), options.log);
 }
 
@@ -221,7 +231,7 @@ BuildSummary shard_summary(std::span<const CompiledDomain> entries, std::vector<
     const ShardOutcome& shard = *domain.shard;
     summary.shard_index = shard.index, summary.shard_count = shard.count;
     summary.shard_sources += shard.sources, summary.shard_on_server += shard.on_server;
-    summary.shard_uploaded += shard.uploaded;
+    summary.shard_uploaded += shard.uploaded, summary.shard_replaced += shard.replaced;
   }
   summary.phases = std::move(phases);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -277,7 +287,9 @@ Result<BuildSummary> build(const BuildOptions& given) {
 
   ContentCache cache;
   InputCache inputs;
-  if (options.use_cache) {
+  // A merge reads the server alone and writes no local cache: a warm local cache must not stand
+  // in for entries the shards failed to upload.
+  if (options.use_cache && !options.require_remote_hits) {
     std::filesystem::path dir = options.cache_dir.empty() ? default_cache_directory() : options.cache_dir;
     if (!dir.empty()) cache = ContentCache(dir), inputs = InputCache(dir);
   }
@@ -302,9 +314,21 @@ Result<BuildSummary> build(const BuildOptions& given) {
     compile_options.input_key = input_set_key(current_cache_key_parts(), options.spec_path, loaded->digest,
                                               preprocessing_settings(*spec, *variants_digest));
   }
+  const std::string shard_key =
+      shard_build_key(options.spec_path, loaded->digest, preprocessing_settings(*spec, *variants_digest));
+  if (options.require_remote_hits && options.shards > 0) {
+    const std::string repair = "shadergen build " + options.spec_path.string() + " --shard I/N --remote-cache " +
+                               remote->shown_url() + " (with the shards' other options)";
+    if (Status ready = check_shard_records(*remote, shard_key, options.shards, options.jobs, repair); !ready)
+      return std::move(ready).take_errors();
+    clock.lap("shard records");
+  }
   auto compiled = compile_entries(*spec, std::move(plan).value(), compile_options,
                                   preprocessing_settings(*spec, *variants_digest), options, loaded->digest);
   if (!compiled) return std::move(compiled).take_errors();
+  if (options.shard)
+    if (Status recorded = record_shard(*remote, shard_key, options.shard->index, options.shard->count); !recorded)
+      return std::move(recorded).take_errors();
   std::vector<CompiledDomain>& entries = *compiled;
   for (CompiledDomain& domain : entries) {
     add_dependency(domain.dependencies, domain.spec.variants_path);

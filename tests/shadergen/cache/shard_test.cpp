@@ -11,6 +11,9 @@
 
 #include <testsupport/local_port.h>
 #include <testsupport/nginx_server.h>
+#include "cache/cache.h"
+#include "compile/entry_check.h"
+#include "compile/glsl_compiler.h"
 #include "compile/shard_partition.h"
 #include "remote_builds.h"
 #include "shadergen/build.h"
@@ -77,6 +80,40 @@ std::string joined(const std::vector<std::string>& lines) {
   return text;
 }
 
+// The content entries on the server (<key[0:2]>/<key>), without the shards' records (shards/).
+std::vector<fs::path> entries_on(const NginxServer& server) {
+  std::vector<fs::path> entries;
+  for (const fs::path& file : sgtest::files_under(server.data_dir()))
+    if (file.parent_path().filename() != "shards") entries.push_back(file);
+  return entries;
+}
+
+// The requests that change the server (PUT, MKCOL) or ask before one (HEAD), so far.
+std::size_t writes_to(const NginxServer& server) {
+  const std::string log = sgtest::read_file(server.access_log());
+  return sgtest::count_of(log, "\"PUT ") + sgtest::count_of(log, "\"MKCOL ") + sgtest::count_of(log, "\"HEAD ");
+}
+
+// "shard 2/3" out of the merge's line for the one shard that lacks something; empty if not one.
+std::string the_named_shard(const std::vector<std::string>& errors) {
+  std::string named;
+  for (const std::string& error : errors)
+    if (error.rfind("error: shard ", 0) == 0) {
+      if (!named.empty()) return {};
+      named = error.substr(13, error.find(':', 13) - 13);
+    }
+  return named;
+}
+
+// A toy domain on the server from 3 shards, each with its own warm local cache, and the merge's
+// machine with a warm local cache of its own (a one-machine build there first): before the
+// merge read the server alone, that cache answered for whatever the server lacked.
+void three_shards_and_a_warm_merge_machine(const fs::path& dir, const NginxServer& server) {
+  for (std::uint32_t i = 0; i < 3; ++i) ASSERT_TRUE(shard(dir, server.url(), i, 3).summary);
+  ASSERT_TRUE(run(dir, "merge", "", [](BuildOptions&) {}).summary);
+  ASSERT_EQ(entries_on(server).size(), kToySources);
+}
+
 #define START_SERVER(server, ...)  \
   NginxServer server(__VA_ARGS__); \
   ASSERT_TRUE(server.running()) << server.error()
@@ -115,7 +152,8 @@ TEST(ShardedBuild, ShardsThenMergeWriteTheBytesOfALocalBuild) {
     EXPECT_FALSE(fs::exists(dir / ("shard" + std::to_string(i) + ".out"))) << "a shard writes no output";
   }
   EXPECT_EQ(owned, kToySources);
-  EXPECT_EQ(sgtest::files_under(server.data_dir()).size(), kToySources);
+  EXPECT_EQ(entries_on(server).size(), kToySources);
+  EXPECT_EQ(sgtest::files_under(server.data_dir() / "shards").size(), 3u) << "one record per shard";
 
   ShardRun merged = merge(dir, server.url(), 3);
   ASSERT_TRUE(merged.summary) << joined(merged.errors);
@@ -131,7 +169,7 @@ TEST(ShardedBuild, ShardsThenMergeWriteTheBytesOfALocalBuild) {
   EXPECT_EQ(again.summary->shard_on_server, again.summary->shard_sources);
 }
 
-TEST(ShardedBuild, MergeRefusesAMissingShardAndLeavesTheOutput) {
+TEST(ShardedBuild, MergeRefusesAShardThatDidNotFinishBeforeFetchingAnything) {
   sgtest::TempDir run_dir("missing");
   const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
@@ -140,23 +178,170 @@ TEST(ShardedBuild, MergeRefusesAMissingShardAndLeavesTheOutput) {
   fs::create_directories(dir / "merge.out");
   std::ofstream(dir / "merge.out" / "earlier.txt") << "earlier";
   const auto before = sgtest::snapshot(dir / "merge.out");
+  const std::size_t gets_before = sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET ");
 
   ShardRun merged = merge(dir, server.url(), 3);
   ASSERT_FALSE(merged.summary);
+  ASSERT_EQ(merged.errors.size(), 2u) << joined(merged.errors);
+  EXPECT_EQ(merged.errors[0], "error: 1 of 3 shards are not ready on the remote cache " + server.url() +
+                                  "; the merge fetched no entry and wrote nothing");
+  EXPECT_EQ(merged.errors[1],
+            "error: shard 1/3: no record of it on the server: it has not finished, or ran with "
+            "another spec, working folder or build options; rerun it: shadergen build " +
+                sgtest::toy_spec().string() + " --shard 1/3 --remote-cache " + server.url() +
+                " (with the shards' other options)");
+  EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), before);
+  EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET "), gets_before + 3)
+      << "the three records, and no entry";
+
+  // Without --shards the merge cannot name the shard, but still counts what the server lacks.
+  ShardRun unnamed = merge(dir, server.url(), 0);
+  ASSERT_FALSE(unnamed.summary);
   SourceRange missing = shard_range(kToySources, 1, 3);
   const std::size_t n = missing.last - missing.first;
-  ASSERT_EQ(merged.errors.size(), 2u) << joined(merged.errors);
-  EXPECT_EQ(merged.errors[0], "error: " + std::to_string(n) + " of 13 distinct sources missing from the remote cache " +
-                                  server.url() +
-                                  " (or failing verification); --require-remote-hits compiles nothing, so nothing "
-                                  "was written");
-  EXPECT_EQ(merged.errors[1], "error: shard 1/3: " + std::to_string(n) + " sources missing");
+  ASSERT_EQ(unnamed.errors.size(), 2u) << joined(unnamed.errors);
+  EXPECT_EQ(unnamed.errors[0], "error: " + std::to_string(n) + " of 13 distinct sources are not on the remote cache " +
+                                   server.url() + " (" + std::to_string(n) +
+                                   " sources missing); --require-remote-hits compiles nothing, so nothing was written");
   EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), before);
 
   // Without --require-remote-hits the merge compiles what is missing, as any build does.
   ShardRun completed = run(dir, "merge", server.url(), [](BuildOptions&) {});
   ASSERT_TRUE(completed.summary) << joined(completed.errors);
   EXPECT_EQ(completed.summary->compiled, n);
+}
+
+// The merge proves the server holds everything: a warm local cache on its machine stands in for
+// nothing, it uploads nothing, and it names the shard whose rerun repairs the server.
+TEST(ShardedBuild, MergeWithAWarmLocalCacheRefusesAServerMissingAnEntry) {
+  sgtest::TempDir run_dir("warm_missing");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  three_shards_and_a_warm_merge_machine(dir, server);
+  fs::remove(entries_on(server).front());
+  const auto merge_cache = sgtest::snapshot(dir / "merge.cache");
+  const std::size_t writes = writes_to(server);
+
+  ShardRun merged = merge(dir, server.url(), 3);
+  ASSERT_FALSE(merged.summary) << "the local cache must not answer for the server";
+  EXPECT_EQ(merged.errors.front(), "error: 1 of 13 distinct sources are not on the remote cache " + server.url() +
+                                       " (1 source missing); --require-remote-hits compiles nothing, so nothing "
+                                       "was written");
+  const std::string named = the_named_shard(merged.errors);
+  ASSERT_FALSE(named.empty()) << joined(merged.errors);
+  EXPECT_NE(joined(merged.errors).find("error: shard " + named + ": 1 source missing; rerun it: shadergen build "),
+            std::string::npos)
+      << joined(merged.errors);
+  EXPECT_EQ(writes_to(server), writes) << "the merge made no upload";
+  EXPECT_EQ(sgtest::snapshot(dir / "merge.cache"), merge_cache) << "nor wrote its local cache";
+
+  // Rerunning the named shard, on its machine, puts the entry back; the merge then passes.
+  const std::uint32_t index = static_cast<std::uint32_t>(std::stoul(named));
+  ShardRun repaired = shard(dir, server.url(), index, 3);
+  ASSERT_TRUE(repaired.summary) << joined(repaired.errors);
+  EXPECT_EQ(repaired.summary->shard_uploaded, 1u);
+  ShardRun again = merge(dir, server.url(), 3);
+  ASSERT_TRUE(again.summary) << joined(again.errors);
+  EXPECT_EQ(again.summary->remote->fetched, kToySources);
+  EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
+}
+
+TEST(ShardedBuild, MergeWithAWarmLocalCacheRefusesACorruptEntryAndTheShardReplacesIt) {
+  sgtest::TempDir run_dir("warm_corrupt");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  three_shards_and_a_warm_merge_machine(dir, server);
+  // One flipped byte in the middle of an entry: its checksum no longer holds.
+  const fs::path victim = entries_on(server).front();
+  std::string bytes = sgtest::read_file(victim);
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x20);
+  sgtest::write_file(victim, bytes);
+  const std::size_t writes = writes_to(server);
+
+  ShardRun merged = merge(dir, server.url(), 3);
+  ASSERT_FALSE(merged.summary);
+  EXPECT_EQ(merged.errors.front(), "error: 1 of 13 distinct sources are not on the remote cache " + server.url() +
+                                       " (1 source corrupt); --require-remote-hits compiles nothing, so nothing "
+                                       "was written");
+  const std::string named = the_named_shard(merged.errors);
+  ASSERT_FALSE(named.empty()) << joined(merged.errors);
+  EXPECT_NE(joined(merged.errors).find("error: shard " + named + ": 1 source corrupt; rerun it: "), std::string::npos);
+  EXPECT_EQ(writes_to(server), writes) << "the merge made no upload";
+  ASSERT_EQ(merged.warnings.size(), 1u) << joined(merged.warnings);
+  EXPECT_NE(merged.warnings[0].find("the merge counts it corrupt"), std::string::npos) << merged.warnings[0];
+  EXPECT_EQ(merged.warnings[0].find("compiled here instead"), std::string::npos) << merged.warnings[0];
+
+  // The shard holds the entry locally, but reads the server's copy, finds it corrupt and puts
+  // its own in its place (it used to trust a HEAD 200, so the merge failed for ever).
+  ShardRun repaired = shard(dir, server.url(), static_cast<std::uint32_t>(std::stoul(named)), 3);
+  ASSERT_TRUE(repaired.summary) << joined(repaired.errors);
+  EXPECT_EQ(repaired.summary->shard_replaced, 1u);
+  EXPECT_EQ(repaired.summary->shard_uploaded, 1u);
+  ShardRun again = merge(dir, server.url(), 3);
+  ASSERT_TRUE(again.summary) << joined(again.errors);
+  EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
+}
+
+// Every machine must run the same shadergen: a shard that ran another version is named before
+// the merge fetches an entry, where it used to show as every one of its sources missing.
+TEST(ShardedBuild, MergeRefusesAShardOfAnotherShadergenUpFront) {
+  sgtest::TempDir run_dir("versions");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  for (std::uint32_t i = 0; i < 3; ++i) ASSERT_TRUE(shard(dir, server.url(), i, 3).summary);
+  fs::path record;
+  for (const fs::path& file : sgtest::files_under(server.data_dir() / "shards"))
+    if (file.filename().string().ends_with("-2-of-3")) record = file;
+  ASSERT_FALSE(record.empty());
+  std::string text = sgtest::read_file(record);
+  const std::size_t tool = text.find("\ntool ");
+  ASSERT_NE(tool, std::string::npos) << text;
+  text.replace(tool + 6, text.find('\n', tool + 1) - tool - 6, "0.0.1");
+  sgtest::write_file(record, text);
+
+  ShardRun merged = merge(dir, server.url(), 3);
+  ASSERT_FALSE(merged.summary);
+  ASSERT_EQ(merged.errors.size(), 2u) << joined(merged.errors);
+  EXPECT_EQ(merged.errors[1].rfind("error: shard 2/3: it ran shadergen 0.0.1 (glslang ", 0), 0u) << merged.errors[1];
+  EXPECT_NE(merged.errors[1].find("(the shadergen version differs), so their cache keys differ: every machine must "
+                                  "run the same shadergen; rerun it: shadergen build "),
+            std::string::npos)
+      << merged.errors[1];
+}
+
+// A merge takes its blobs from the server alone, so an error of the domain's checks (here a
+// foreign shader whose layout conflicts with the rest) is reported as itself: it used to be
+// retried without the server and reported as every source missing.
+TEST(ShardedBuild, MergeKeepsALayoutErrorOfTheServersEntries) {
+  sgtest::TempDir run_dir("layout");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  for (std::uint32_t i = 0; i < 3; ++i) ASSERT_TRUE(shard(dir, server.url(), i, 3).summary);
+  // A valid fragment shader binding a texture where the toy domain has its uniform block.
+  sgtest::write_file(dir / "foreign.frag",
+                     "#version 450\nlayout(set = 0, binding = 0) uniform sampler2D stolen;\n"
+                     "layout(location = 0) in vec2 in_uv;\nlayout(location = 0) out vec4 out_color;\n"
+                     "void main() { out_color = texture(stolen, in_uv); }\n");
+  auto foreign = compile(GlslSource{dir / "foreign.frag", Stage::fragment, {}, {}, {}, TargetEnv::vulkan1_2});
+  ASSERT_TRUE(foreign.ok());
+  bool replaced = false;
+  for (const fs::path& entry : entries_on(server)) {
+    const std::string key = entry.filename().string();
+    auto blob = decode_cache_entry(key, sgtest::read_file(entry));
+    ASSERT_TRUE(blob) << entry;
+    if (wrong_stage_reason(blob->words, Stage::fragment).empty()) {
+      sgtest::write_file(entry, encode_cache_entry(key, CachedBlob{*foreign, false, {}}));
+      replaced = true;
+      break;
+    }
+  }
+  ASSERT_TRUE(replaced);
+
+  ShardRun merged = merge(dir, server.url(), 3);
+  ASSERT_FALSE(merged.summary);
+  EXPECT_EQ(joined(merged.errors).find("not on the remote cache"), std::string::npos) << joined(merged.errors);
+  EXPECT_NE(joined(merged.errors).find("set 0"), std::string::npos) << joined(merged.errors);
+  EXPECT_EQ(joined(merged.warnings).find("compiled here instead"), std::string::npos) << joined(merged.warnings);
 }
 
 TEST(ShardedBuild, SignedShardsAndMerge) {
@@ -166,7 +351,15 @@ TEST(ShardedBuild, SignedShardsAndMerge) {
   for (std::uint32_t i = 0; i < 2; ++i) ASSERT_TRUE(shard(dir, server.url(), i, 2, "farm secret").summary);
   ShardRun wrong = merge(dir, server.url(), 2, "another secret");
   ASSERT_FALSE(wrong.summary) << "entries signed with another secret are not there for this merge";
-  EXPECT_NE(wrong.errors.front().find("13 of 13 distinct sources missing"), std::string::npos) << wrong.errors.front();
+  EXPECT_NE(joined(wrong.errors).find("shard 1/2: its record is not signed with this merge's secret"),
+            std::string::npos)
+      << joined(wrong.errors);
+  ShardRun unnamed = merge(dir, server.url(), 0, "another secret");
+  ASSERT_FALSE(unnamed.summary);
+  EXPECT_NE(unnamed.errors.front().find("13 of 13 distinct sources are not on the remote cache " + server.url() +
+                                        " (13 sources corrupt)"),
+            std::string::npos)
+      << unnamed.errors.front();
   ShardRun merged = merge(dir, server.url(), 2, "farm secret");
   ASSERT_TRUE(merged.summary) << joined(merged.errors);
   EXPECT_EQ(merged.summary->compiled, 0u);
