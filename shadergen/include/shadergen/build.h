@@ -11,77 +11,11 @@
 #include <vector>
 
 #include "base/phase_clock.h"
-#include "cache/remote_defaults.h"
 #include "cache/remote_stats.h"
+#include "shadergen/build_options.h"
 #include "shadergen/diagnostic.h"
 
 namespace shadergen {
-
-// `--shard I/N`: part I (0-based) of N of a domain's distinct sources.
-struct Shard {
-  std::uint32_t index = 0;
-  std::uint32_t count = 1;
-};
-inline constexpr std::uint32_t kMaxShards = 4096;
-
-struct BuildOptions {
-  std::filesystem::path spec_path;
-  std::filesystem::path out_dir;
-  // `--variants`: the raw combinations to build, one per line; replaces the spec's
-  // "variants_file". Empty: the spec's, or every raw ID (docs/spec-format.md).
-  std::filesystem::path variants;
-  unsigned jobs = 0;                // 0 = one per hardware thread
-  bool use_cache = true;            // false: compile everything (a cold build)
-  std::filesystem::path cache_dir;  // empty: default_cache_directory()
-  std::filesystem::path depfile;    // empty: none. Make syntax, target = the generated header
-  std::string cpp_name;             // base name of the generated .h/.cpp; empty: the domain name
-  std::string cpp_namespace;        // C++ namespace of the generated code; empty: the domain name
-  // `--define` arguments, "NAME=VALUE" or "NAME" (= 1): they add to and replace the spec's
-  // top-level "defines", so they reach every shader of the domain. They change the outputs
-  // only through the preprocessed text, which is what the content cache is keyed on.
-  std::vector<std::string> defines;
-  // `--target-env`: "vulkan1.0" ... "vulkan1.3"; empty: the spec's "target_env" (default vulkan1.2).
-  std::string target_env;
-  // `--strip-debug`: as the spec's "strip_debug": true (either one strips). The blobs lose
-  // OpName, OpMemberName, OpSource, OpString, OpLine and OpModuleProcessed; the manifest and
-  // the registry keep the names (reflection runs first). The cache keeps unstripped blobs.
-  bool strip_debug = false;
-  bool write_stats = false;  // also write <out>/stats.json (timings: not deterministic)
-  bool verbose = false;      // one progress line per compiled source
-  // A content cache shared over HTTP: GET/PUT <url>/<key[0:2]>/<key>, asked after a local miss,
-  // given every entry compiled here unless read-only. Empty: none; unused without use_cache,
-  // except by a shard or a merge, which then skip only the local cache.
-  // Precondition: empty or an http:// or https:// URL (else build() fails naming it).
-  // Credentials in it ("user:password@") are never printed; ~/.netrc can hold them instead.
-  std::string remote_cache_url;
-  bool remote_cache_read_only = false;
-  // Not empty: every upload is signed with HMAC-SHA256 under this secret, and only entries so
-  // signed are used (docs/cli.md, "trust model"). Never printed.
-  std::string remote_cache_secret;
-  // The waiting time the remote cache's requests may cost this build together; once spent, the
-  // rest of the build does not use it. Each request also waits at most remote_cache_request_limit.
-  std::chrono::milliseconds remote_cache_budget = kDefaultRemoteCacheBudget;
-  std::chrono::milliseconds remote_cache_request_limit = kDefaultRemoteCacheRequestLimit;
-  // Set: compile only this shard's distinct sources (after pruning, collapse and dedup) and
-  // store each on the remote cache; nothing is written under out_dir (which may be empty).
-  // The build fails, naming how many, unless every source of the shard is on the server.
-  // Preconditions: a remote cache that is not read-only; index < count <= kMaxShards.
-  std::optional<Shard> shard;
-  // The merge of a sharded build: compile nothing, and take every distinct source from the
-  // server alone, checked as remote entries are (key, checksum, signature), never from the local
-  // cache, which it neither reads nor writes. It uploads nothing (no HEAD, PUT or MKCOL),
-  // whatever remote_cache_read_only says. A source missing from the server, or failing the
-  // checks, fails the build, counted by kind ("2 sources missing, 1 corrupt"), per shard with the
-  // command that reruns it when `shards` is not 0, and nothing is written. With `shards`, every
-  // shard's record (cache/shard_record.h) is checked first: a shard that has not finished or ran
-  // another shadergen fails the merge before any entry is fetched. Needs a remote cache.
-  bool require_remote_hits = false;
-  std::uint32_t shards = 0;  // how many shards filled the cache (for the merge's message); 0: unknown
-  // Receives progress lines (the CLI prints them on stderr). May be empty.
-  std::function<void(const std::string&)> log;
-  // Polled between jobs; when it returns true the build stops and fails, output untouched.
-  std::function<bool()> cancelled;
-};
 
 // What a build did and how long each phase took. The CLI prints it (`--stats` too: cli/build_stats.h).
 struct BuildSummary {
@@ -116,7 +50,8 @@ struct BuildSummary {
   std::vector<PhaseTime> phases;  // in order; their sum is close to `seconds`
 };
 
-// Runs the whole build. On failure nothing under out_dir (or the depfile) has changed.
+// Runs the whole build (validate(options) first). On failure nothing under out_dir (or the
+// depfile) has changed.
 Result<BuildSummary> build(const BuildOptions& options);
 
 }  // namespace shadergen

@@ -28,8 +28,8 @@ int run_command(const std::vector<std::string>& args, std::ostream& out, std::os
                "shadergen"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text());
-  BuildArgs build_args;
-  CLI::App* build_command = add_build_command(app, build_args);
+  BuildCommandLine build_line;
+  CLI::App* build_command = add_build_command(app, build_line);
   ViewArgs view_args;
   const ViewCommands view_commands = add_view_commands(app, view_args);
 
@@ -38,7 +38,7 @@ int run_command(const std::vector<std::string>& args, std::ostream& out, std::os
     return command_line::kExitUsage;
   }
   if (auto exit_code = command_line::parse(app, args, out, err)) return *exit_code;
-  if (*build_command) return run_build(build_args, g_interrupted, out, err);
+  if (*build_command) return run_build(build_line, g_interrupted, out, err);
   return run_view(view_commands, view_args, out, err);
 }
 

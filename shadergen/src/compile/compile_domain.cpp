@@ -96,8 +96,8 @@ class DomainCompiler {
       if (Status s = preprocess_all(); !s) return s;
       clock.lap("preprocess");
     }
-    if (options_.shard) {
-      Status s = compile_shard(*options_.shard);
+    if (build_.role.is_shard()) {
+      Status s = compile_shard(build_.role.place());
       clock.lap("shard compile or find");
       if (s) remember_inputs();
       return s;
@@ -106,7 +106,7 @@ class DomainCompiler {
     clock.lap("compile or load");
     Status checked = check_blobs(clock);
     // A merge compiles nothing: the blobs it checked are the server's, and its error stands.
-    if (!checked && remote_hits() > 0 && !options_.require_remote_hits) checked = recompile_remote_hits(checked, clock);
+    if (!checked && remote_hits() > 0 && !build_.role.is_merge()) checked = recompile_remote_hits(checked, clock);
     if (!checked) return checked;
     keep_remote_hits();
     if (d_.spec.strip_debug) {
@@ -162,7 +162,7 @@ class DomainCompiler {
     return Ok{};
   }
 
-  bool cancelled() const { return options_.cancelled && options_.cancelled(); }
+  bool cancelled() const { return build_.cancelled && build_.cancelled(); }
 
   Status check_blobs(PhaseClock& clock) {
     if (Status s = reflect_blobs(); !s) return s;
@@ -205,7 +205,7 @@ class DomainCompiler {
   // A remote entry reaches the local cache only once the whole build has used it: the local
   // cache never holds what the checks would reject.
   void keep_remote_hits() {
-    parallel_for(d_.sources.size(), options_.jobs, [&](std::size_t s) {
+    parallel_for(d_.sources.size(), build_.jobs, [&](std::size_t s) {
       const SourceRecord& record = d_.sources[s];
       if (!record.remote_hit) return;
       const Blob& blob = d_.blobs[static_cast<std::size_t>(record.blob)];
@@ -224,7 +224,7 @@ class DomainCompiler {
   Status cancelled_error() const { return make_error("build interrupted"); }
 
   void log(const std::string& line) const {
-    if (options_.log) options_.log(line);
+    if (build_.log) build_.log(line);
   }
 
   // Gives job `i` the distinct source with this cache key, adding it if new.
@@ -294,7 +294,7 @@ class DomainCompiler {
     std::map<std::filesystem::path, InputRead> reads;
     bool consistent = true;
     parallel_for(
-        d_.jobs.size(), options_.jobs,
+        d_.jobs.size(), build_.jobs,
         [&](std::size_t i) {
           auto start = Clock::now();
           auto preprocessed = preprocess(source_of(d_, d_.jobs[i], kinds_));
@@ -311,7 +311,7 @@ class DomainCompiler {
           }
           d_.jobs[i].preprocess_ms = milliseconds_since(start);
         },
-        options_.cancelled);
+        build_.cancelled);
     if (cancelled()) return cancelled_error();
     std::vector<JobFailure> failures;
     std::map<std::string, int> by_key;
@@ -326,7 +326,7 @@ class DomainCompiler {
       assign_source(i, *keys[i], by_key);
     }
     d_.dependencies.assign(dependencies.begin(), dependencies.end());
-    if (!failures.empty()) return group_failures(d_, failures, options_.verbose);
+    if (!failures.empty()) return group_failures(d_, failures, build_.verbose);
     reads_.reset();
     if (consistent) {
       reads_.emplace();
@@ -390,13 +390,13 @@ class DomainCompiler {
   // builds pay for this second preprocessing.
   std::vector<JobFailure> with_lines(std::vector<JobFailure> failures) {
     parallel_for(
-        failures.size(), options_.jobs,
+        failures.size(), build_.jobs,
         [&](std::size_t i) {
           const CompileJob& job = d_.jobs[failures[i].job];
           if (auto text = preprocess(source_of(d_, job, kinds_)))
             failures[i].lines = live_lines(text->text, d_.path_of(job).lexically_normal().string());
         },
-        options_.cancelled);
+        build_.cancelled);
     return failures;
   }
 
@@ -430,9 +430,9 @@ class DomainCompiler {
     std::mutex log_mutex;
     std::size_t total = d_.sources.size();
     parallel_for(
-        total, options_.jobs,
+        total, build_.jobs,
         [&](std::size_t i) {
-          if (!options_.require_remote_hits) {
+          if (!build_.role.is_merge()) {
             auto blob = compile_one(d_.sources[i]);
             results[i] = blob ? spill(i, std::move(blob).value()) : Result<SourceBlob>(std::move(blob).take_errors());
           } else if (auto hit = load_from_server(d_.sources[i], missing[i])) {
@@ -441,7 +441,7 @@ class DomainCompiler {
           std::size_t finished = ++done;
           report_progress(finished, total, i, log_mutex);
         },
-        options_.cancelled);
+        build_.cancelled);
     if (cancelled()) return cancelled_error();
     if (Status s = refuse_missing(missing); !s) return s;
     std::vector<JobFailure> failures;
@@ -450,7 +450,7 @@ class DomainCompiler {
       const auto& result = results[static_cast<std::size_t>(d_.jobs[j].source)];
       if (!result) failures.push_back({j, result.errors(), {}});
     }
-    if (!failures.empty()) return group_failures(d_, with_lines(std::move(failures)), options_.verbose);
+    if (!failures.empty()) return group_failures(d_, with_lines(std::move(failures)), build_.verbose);
     if (!spill_errors_.empty()) return spill_errors_;
     store_blobs(results);
     distinct_index_.clear();
@@ -534,16 +534,16 @@ class DomainCompiler {
                                   " distinct sources are not on the remote cache " + url + " (" +
                                   lacking_text(counts[kMissing], counts[kCorrupt], counts[kUnanswered]) +
                                   "); --require-remote-hits compiles nothing, so nothing was written")};
-    if (options_.shards == 0) {
+    if (build_.role.shards() == 0) {
       errors.push_back(make_error("rerun the shards that filled " + url +
                                   " (with --shards N the merge names each shard that lacks sources)"));
       return errors;
     }
     std::map<std::uint32_t, std::array<std::size_t, 4>> per_shard;
     for (std::size_t s = 0; s < total; ++s)
-      if (why[s] != kFound) ++per_shard[shard_of(s, total, options_.shards)][static_cast<std::size_t>(why[s])];
+      if (why[s] != kFound) ++per_shard[shard_of(s, total, build_.role.shards())][static_cast<std::size_t>(why[s])];
     for (const auto& [shard, n] : per_shard) {
-      const std::string place = std::to_string(shard) + "/" + std::to_string(options_.shards);
+      const std::string place = std::to_string(shard) + "/" + std::to_string(build_.role.shards());
       errors.push_back(make_error("shard " + place + ": " + lacking_text(n[kMissing], n[kCorrupt], n[kUnanswered]) +
                                   "; rerun it: shadergen build " + d_.spec.spec_path.string() + " --shard " + place +
                                   " --remote-cache " + url + " (with the shards' other options)"));
@@ -594,19 +594,19 @@ class DomainCompiler {
 
   // build --shard: this shard's sources, each made sure of on the server. GLSL errors are
   // grouped over the permutations of the shard's sources, as in a whole build.
-  Status compile_shard(ShardPlace shard) {
+  Status compile_shard(const Shard& shard) {
     const SourceRange range = shard_range(d_.sources.size(), shard.index, shard.count);
     const std::size_t total = range.last - range.first;
     std::vector<Result<ShardFate>> fates(total, Result<ShardFate>(ShardFate::missing));
     std::atomic<std::size_t> done{0};
     std::mutex log_mutex;
     parallel_for(
-        total, options_.jobs,
+        total, build_.jobs,
         [&](std::size_t k) {
           fates[k] = make_sure_on_server(d_.sources[range.first + k]);
           report_progress(++done, total, range.first + k, log_mutex);
         },
-        options_.cancelled);
+        build_.cancelled);
     if (cancelled()) return cancelled_error();
     std::vector<JobFailure> failures;
     for (std::size_t j = 0; j < d_.jobs.size(); ++j) {
@@ -614,7 +614,7 @@ class DomainCompiler {
       if (source >= range.first && source < range.last && !fates[source - range.first])
         failures.push_back({j, fates[source - range.first].errors(), {}});
     }
-    if (!failures.empty()) return group_failures(d_, with_lines(std::move(failures)), options_.verbose);
+    if (!failures.empty()) return group_failures(d_, with_lines(std::move(failures)), build_.verbose);
     ShardOutcome outcome{shard.index, shard.count, static_cast<std::uint32_t>(total), 0, 0, 0};
     for (const auto& fate : fates) {
       outcome.on_server += *fate == ShardFate::on_server;
@@ -633,7 +633,7 @@ class DomainCompiler {
   void report_progress(std::size_t finished, std::size_t total, std::size_t source, std::mutex& mutex) {
     std::lock_guard lock(mutex);
     const SourceRecord& record = d_.sources[source];
-    if (options_.verbose) {
+    if (build_.verbose) {
       const CompileJob& job = d_.jobs[record.first_job];
       std::string defines;
       for (const std::string& d : d_.defines_of(job)) {
@@ -763,7 +763,7 @@ class DomainCompiler {
     }
     Diagnostics errors;
     for (const std::string& problem : order) {
-      Diagnostic error = make_error(problem + " (" + where_it_occurs(d_, problems[problem], options_.verbose) + ")");
+      Diagnostic error = make_error(problem + " (" + where_it_occurs(d_, problems[problem], build_.verbose) + ")");
       // At the input's declaration in the fragment shader, else at the spec.
       std::optional<SourceLocation> at = input_declaration(inputs[problem], {d_.spec.uber.path}, d_.spec.include_dirs);
       error.file = at ? at->file.string() : d_.spec.spec_path.string();
@@ -779,6 +779,7 @@ class DomainCompiler {
 
   CompiledDomain& d_;
   const CompileOptions& options_;
+  const BuildOptions& build_ = *options_.build;
   CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
   KindDeclarations kinds_ = kind_declarations(d_.spec);
   std::optional<std::vector<InputRead>> reads_;         // what preprocessing read; nullopt: inconsistent

@@ -10,6 +10,7 @@
 
 #include "compile/compiled_domain.h"
 #include "compile/shard_partition.h"
+#include "shadergen/build_options.h"
 #include "shadergen/diagnostic.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
@@ -21,23 +22,19 @@ class ContentCache;
 class InputCache;
 class RemoteCache;
 
+// What compile_domain() works with: the build's options (the one options object: jobs, verbose,
+// log, cancellation and role come from there) and the caches and spill the driver opened.
 struct CompileOptions {
-  unsigned jobs = 0;
+  const BuildOptions* build = nullptr;  // not null; the role decides shard and merge:
+  // a shard makes sure each of its sources is on the remote cache (needs `remote`), and the
+  // domain is then not reflected or checked and has no blobs; a merge compiles nothing and
+  // takes every source from the server (needs `remote`).
   const ContentCache* cache = nullptr;  // nullptr: no cache
   const InputCache* inputs = nullptr;   // nullptr: no local input sets (the remote cache may share one)
   std::string input_key;                // input_set_key() of this build; empty: always preprocess
-  bool verbose = false;
-  std::function<void(const std::string&)> log;
-  std::function<bool()> cancelled;
-  RemoteCache* remote = nullptr;  // nullptr: no remote cache; else asked after a local miss
-  // build --shard: only this shard's sources, each made sure of on the remote cache (needs
-  // `remote`); the domain is not reflected or checked, and has no blobs.
-  std::optional<ShardPlace> shard;
-  // The merge: nothing is compiled; a source in neither cache fails the build (needs `remote`).
-  bool require_remote_hits = false;
-  std::uint32_t shards = 0;  // the merge names the shards that owned missing sources; 0: not
+  RemoteCache* remote = nullptr;        // nullptr: no remote cache; else asked after a local miss
   // Where each distinct blob's words are written as soon as they are made (and, with strip_debug,
-  // stripped); the domain's Blobs keep only their hash, size and reflection. Needed unless `shard`.
+  // stripped); the domain's Blobs keep only their hash, size and reflection. Needed unless a shard.
   BlobSpill* spill = nullptr;
 };
 

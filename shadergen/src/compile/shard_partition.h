@@ -11,12 +11,6 @@
 
 namespace shadergen {
 
-// Shard `index` (0-based) of `count`.
-struct ShardPlace {
-  std::uint32_t index = 0;
-  std::uint32_t count = 1;
-};
-
 struct SourceRange {
   std::size_t first = 0;
   std::size_t last = 0;  // one past the end

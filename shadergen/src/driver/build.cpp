@@ -33,38 +33,12 @@
 namespace shadergen {
 namespace {
 
-// A shard and a merge need a remote cache, and a shard one it may write to.
-Status check_network_roles(const BuildOptions& options) {
-  if (options.shard) {
-    const Shard& shard = *options.shard;
-    if (shard.count == 0 || shard.count > kMaxShards || shard.index >= shard.count)
-      return make_error("--shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
-                        ": expected I/N with 0 <= I < N <= " + std::to_string(kMaxShards));
-    if (options.remote_cache_url.empty())
-      return make_error("--shard needs --remote-cache: a shard's results reach the merge only through it");
-    if (options.remote_cache_read_only)
-      return make_error("--shard cannot use --remote-cache-readonly: a shard uploads what it compiles");
-    if (options.require_remote_hits) return make_error("--shard and --require-remote-hits exclude each other");
-  }
-  if (options.require_remote_hits && options.remote_cache_url.empty())
-    return make_error("--require-remote-hits needs --remote-cache: it takes every source from there");
-  if (options.shards > kMaxShards)
-    return make_error("--shards " + std::to_string(options.shards) + ": at most " + std::to_string(kMaxShards));
-  return Ok{};
-}
-
-Status check_names(const BuildOptions& options, const std::string& cpp_name, const std::string& ns) {
+Status check_names(const std::string& cpp_name, const std::string& ns) {
   if (!is_valid_namespace(ns))
     return make_error("--namespace: \"" + ns + "\" is not a C++ namespace (identifiers joined by ::)");
   if (cpp_name.empty() || cpp_name.find('/') != std::string::npos || cpp_name.find('\\') != std::string::npos ||
       cpp_name.front() == '.')
     return make_error("--cpp-name: \"" + cpp_name + "\" is not a plain file name");
-  if (options.out_dir.empty() && !options.shard) return make_error("--out: no output folder given");
-  if (Status ok = check_network_roles(options); !ok) return ok;
-  if (!options.remote_cache_url.empty())
-    if (std::string problem = remote_cache_url_problem(options.remote_cache_url); !problem.empty())
-      return make_error("--remote-cache: \"" + printable(redacted_url(options.remote_cache_url)) + "\" " + problem +
-                        " (set by the option or SHADERGEN_REMOTE_CACHE)");
   return Ok{};
 }
 
@@ -192,19 +166,19 @@ BuildOptions normalised(BuildOptions options) {
 // A shard and a merge live on the network: they use the remote cache even with --no-cache
 // (which then only skips the local one), with no budget and with retries.
 std::unique_ptr<RemoteCache> remote_cache_for(const BuildOptions& options) {
-  const bool networked = options.shard || options.require_remote_hits;
-  if ((!options.use_cache && !networked) || options.remote_cache_url.empty()) return nullptr;
+  const BuildRole& role = options.role;
+  if ((!options.use_cache && !role.networked()) || options.remote_cache_url.empty()) return nullptr;
   // A merge uploads nothing, whatever --remote-cache-readonly says: its success must prove that
   // the shards put everything there.
   RemoteCacheSettings settings{options.remote_cache_url,
-                               options.remote_cache_read_only || options.require_remote_hits,
+                               options.remote_cache_read_only || role.is_merge(),
                                options.remote_cache_secret,
                                options.remote_cache_budget,
                                options.remote_cache_request_limit,
-                               networked,
-                               options.shard                 ? RemoteRole::shard
-                               : options.require_remote_hits ? RemoteRole::merge
-                                                             : RemoteRole::build};
+                               role.networked(),
+                               role.is_shard()   ? RemoteRole::shard
+                               : role.is_merge() ? RemoteRole::merge
+                                                 : RemoteRole::build};
   return std::make_unique<RemoteCache>(std::move(settings), make_curl_http_client(), options.log);
 }
 
@@ -265,6 +239,7 @@ Result<std::vector<CompiledDomain>> compile_entries(const DomainSpec& spec, Perm
 }  // namespace
 
 Result<BuildSummary> build(const BuildOptions& given) {
+  if (Status valid = validate(given); !valid) return std::move(valid).take_errors();
   const BuildOptions options = normalised(given);
   auto start = std::chrono::steady_clock::now();
   std::vector<PhaseTime> phases;
@@ -274,7 +249,7 @@ Result<BuildSummary> build(const BuildOptions& given) {
   Result<DomainSpec> spec(std::move(loaded->spec));
   std::string cpp_name = options.cpp_name.empty() ? spec->name : options.cpp_name;
   std::string ns = options.cpp_namespace.empty() ? spec->name : options.cpp_namespace;
-  if (Status ok = check_names(options, cpp_name, ns); !ok) return std::move(ok).take_errors();
+  if (Status ok = check_names(cpp_name, ns); !ok) return std::move(ok).take_errors();
   if (Status ok = apply_command_line_defines(*spec, options.defines); !ok) return std::move(ok).take_errors();
   if (Status ok = apply_target_env(*spec, options.target_env); !ok) return std::move(ok).take_errors();
   spec->strip_debug = spec->strip_debug || options.strip_debug;
@@ -289,24 +264,19 @@ Result<BuildSummary> build(const BuildOptions& given) {
   InputCache inputs;
   // A merge reads the server alone and writes no local cache: a warm local cache must not stand
   // in for entries the shards failed to upload.
-  if (options.use_cache && !options.require_remote_hits) {
+  if (options.use_cache && !options.role.is_merge()) {
     std::filesystem::path dir = options.cache_dir.empty() ? default_cache_directory() : options.cache_dir;
     if (!dir.empty()) cache = ContentCache(dir), inputs = InputCache(dir);
   }
   CompileOptions compile_options;
-  compile_options.jobs = options.jobs;
+  compile_options.build = &options;
   compile_options.cache = cache.enabled() ? &cache : nullptr;
-  compile_options.verbose = options.verbose;
-  compile_options.log = options.log;
-  compile_options.cancelled = options.cancelled;
   std::unique_ptr<RemoteCache> remote = remote_cache_for(options);
   compile_options.remote = remote.get();
-  if (options.shard) compile_options.shard = ShardPlace{options.shard->index, options.shard->count};
-  compile_options.require_remote_hits = options.require_remote_hits;
-  compile_options.shards = options.shards;
   // Every blob's words go here as they are made, beside the output; removed on every return.
   std::optional<BlobSpill> spill;
-  if (!options.shard) compile_options.spill = &spill.emplace(spill_folder_beside(options.out_dir), options.out_dir);
+  if (!options.role.is_shard())
+    compile_options.spill = &spill.emplace(spill_folder_beside(options.out_dir), options.out_dir);
   // The input set is also shared through the remote cache, so a shard or a merge run with
   // --no-cache (no local cache on a farm's fresh node) still takes it from the server.
   if (inputs.enabled() || remote) {
@@ -316,18 +286,19 @@ Result<BuildSummary> build(const BuildOptions& given) {
   }
   const std::string shard_key =
       shard_build_key(options.spec_path, loaded->digest, preprocessing_settings(*spec, *variants_digest));
-  if (options.require_remote_hits && options.shards > 0) {
+  if (options.role.is_merge() && options.role.shards() > 0) {
     const std::string repair = "shadergen build " + options.spec_path.string() + " --shard I/N --remote-cache " +
                                remote->shown_url() + " (with the shards' other options)";
-    if (Status ready = check_shard_records(*remote, shard_key, options.shards, options.jobs, repair); !ready)
+    if (Status ready = check_shard_records(*remote, shard_key, options.role.shards(), options.jobs, repair); !ready)
       return std::move(ready).take_errors();
     clock.lap("shard records");
   }
   auto compiled = compile_entries(*spec, std::move(plan).value(), compile_options,
                                   preprocessing_settings(*spec, *variants_digest), options, loaded->digest);
   if (!compiled) return std::move(compiled).take_errors();
-  if (options.shard)
-    if (Status recorded = record_shard(*remote, shard_key, options.shard->index, options.shard->count); !recorded)
+  if (options.role.is_shard())
+    if (Status recorded = record_shard(*remote, shard_key, options.role.place().index, options.role.place().count);
+        !recorded)
       return std::move(recorded).take_errors();
   std::vector<CompiledDomain>& entries = *compiled;
   for (CompiledDomain& domain : entries) {

@@ -57,7 +57,7 @@ ShardRun run(const fs::path& dir, const std::string& name, const std::string& ur
 ShardRun shard(const fs::path& dir, const std::string& url, std::uint32_t index, std::uint32_t count,
                const std::string& secret = {}, bool local_cache = true) {
   return run(dir, "shard" + std::to_string(index), url, [&](BuildOptions& o) {
-    o.shard = Shard{index, count};
+    o.role = *BuildRole::shard(index, count);
     o.out_dir.clear();
     o.remote_cache_secret = secret;
     o.use_cache = local_cache;
@@ -67,8 +67,7 @@ ShardRun shard(const fs::path& dir, const std::string& url, std::uint32_t index,
 ShardRun merge(const fs::path& dir, const std::string& url, std::uint32_t shards, const std::string& secret = {},
                bool local_cache = true) {
   return run(dir, "merge", url, [&](BuildOptions& o) {
-    o.require_remote_hits = true;
-    o.shards = shards;
+    o.role = *BuildRole::merge(shards);
     o.remote_cache_secret = secret;
     o.use_cache = local_cache;
   });
@@ -163,7 +162,8 @@ TEST(ShardedBuild, ShardsThenMergeWriteTheBytesOfALocalBuild) {
   EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
 
   // A shard run again elsewhere finds its sources on the server and uploads nothing.
-  ShardRun again = run(dir, "again", server.url(), [](BuildOptions& o) { o.shard = Shard{1, 3}, o.out_dir.clear(); });
+  ShardRun again =
+      run(dir, "again", server.url(), [](BuildOptions& o) { o.role = *BuildRole::shard(1, 3), o.out_dir.clear(); });
   ASSERT_TRUE(again.summary) << joined(again.errors);
   EXPECT_EQ(again.summary->shard_uploaded, 0u);
   EXPECT_EQ(again.summary->shard_on_server, again.summary->shard_sources);
@@ -413,7 +413,7 @@ TEST(ShardedBuildCli, UsageErrorsExitTwo) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"build", spec, "--shard", "0/2"}, "shadergen: error: --shard needs --remote-cache"},
       {{"build", spec, "--shard", "0/2", "--remote-cache", url, "--remote-cache-readonly"},
-       "shadergen: error: --shard cannot use --remote-cache-readonly: a shard uploads\n"},
+       "shadergen: error: --shard cannot use --remote-cache-readonly: a shard uploads what it compiles\n"},
       {{"build", spec, "--shard", "2/2", "--remote-cache", url},
        "shadergen: error: --shard 2/2: expected I/N with 0 <= I < N <= 4096\n"},
       {{"build", spec, "--shard", "1/4097", "--remote-cache", url},
@@ -422,7 +422,8 @@ TEST(ShardedBuildCli, UsageErrorsExitTwo) {
        "shadergen: error: --shard x/2: expected I/N with 0 <= I < N <= 4096\n"},
       {{"build", spec}, "shadergen: error: --out is required (except with --shard)\n"},
       {{"build", spec, "--out", "o", "--require-remote-hits"},
-       "shadergen: error: --require-remote-hits needs --remote-cache (or SHADERGEN_REMOTE_CACHE)\n"},
+       "shadergen: error: --require-remote-hits needs --remote-cache (or SHADERGEN_REMOTE_CACHE): it takes every "
+       "source from there\n"},
       {{"build", spec, "--out", "o", "--shards", "4", "--remote-cache", url},
        "shadergen: error: --shards only goes with --require-remote-hits\n"},
   };

@@ -24,6 +24,7 @@ set(public_area_vulkan base)
 set(public_area_expression spec)
 set(public_area_domain spec)
 set(public_area_permutations spec)
+set(public_area_build_options compile)
 set(public_area_build driver)
 set(public_area_cli cli)
 
