@@ -9,12 +9,15 @@
 namespace tilelight {
 namespace {
 
+// A pruned raw ID has no values (and no pipeline): empty ones, as a build without such features.
 shadergen::Specialization specialization_of(const LightShaders& s, shadergen::RawId raw) {
-  return s.specialization != nullptr ? s.specialization(raw) : shadergen::Specialization{};
+  return s.specialization != nullptr ? s.specialization(raw).value_or(shadergen::Specialization{})
+                                     : shadergen::Specialization{};
 }
 
 shadergen::BranchValues branch_of(const LightShaders& s, shadergen::RawId raw) {
-  return s.branch_values != nullptr ? s.branch_values(raw) : shadergen::BranchValues{};
+  return s.branch_values != nullptr ? s.branch_values(raw).value_or(shadergen::BranchValues{})
+                                    : shadergen::BranchValues{};
 }
 
 std::uint32_t add_pipeline(LightClasses& out, std::span<const std::uint32_t> spirv,

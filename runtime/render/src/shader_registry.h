@@ -15,6 +15,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <optional>
 
 namespace tilelight {
 
@@ -31,9 +32,10 @@ const shadergen::Registry& compute_shaders_for(VkSampleCountFlagBits gbuffer_sam
 // its non-variant features take per raw ID. A variant build's functions return empty data.
 struct LightShaders {
   const shadergen::Registry* registry = nullptr;
-  // N::specialization() and N::branch_values() of the build's namespace.
-  shadergen::Specialization (*specialization)(shadergen::RawId) = nullptr;
-  shadergen::BranchValues (*branch_values)(shadergen::RawId) = nullptr;
+  // N::specialization() and N::branch_values() of the build's namespace: nullopt for a raw ID
+  // that is out of range or pruned.
+  std::optional<shadergen::Specialization> (*specialization)(shadergen::RawId) = nullptr;
+  std::optional<shadergen::BranchValues> (*branch_values)(shadergen::RawId) = nullptr;
   shadergen::BranchBlock branch_block{};  // N::kBranchBlock: size 0 without branch features
 };
 

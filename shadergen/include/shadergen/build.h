@@ -37,6 +37,12 @@ struct BuildSummary {
   std::uint32_t reused = 0;        // of which taken from the cache
   bool inputs_reused = false;      // every input unchanged: preprocessing was skipped
   bool output_changed = false;     // false when every output file already had these bytes
+  // Against the manifest this build replaced: how many raw IDs now have another optimised ID
+  // (anything keyed by optimised ID, a pipeline cache, is then stale), and the features that
+  // moved between variant and another kind, "FOG (variant -> specialization)". 0 and empty for a
+  // first build, one that renumbers nothing, or a domain that is not collapsed.
+  std::uint32_t renumbered_raw_ids = 0;
+  std::vector<std::string> kind_changes;
   // With a remote cache only: what it did (its `fetched` entries are among cache_hits).
   std::optional<RemoteCacheStats> remote;
   // A shard (`--shard I/N`): its place and what became of its sources.

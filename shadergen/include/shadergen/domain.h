@@ -232,6 +232,11 @@ struct DomainSpec {
   // The raw IDs the variants file lists, ascending, each once (read_variants_file() fills it).
   std::vector<std::uint32_t> listed_raw_ids;
   std::optional<BranchBlockSpec> branch_block;  // present when a feature is a branch
+  // What the spec reader found questionable but not wrong (a "branch_block" with no branch
+  // feature: then the block is not declared, so that turning the last branch into a variant
+  // stays an edit of its "kind"). Severity::warning, each naming the spec's file and line;
+  // `shadergen build`, `lut`, `list` and `explain` print them.
+  Diagnostics warnings;
 
   // Every raw feature in spec order (the generated API's order; raw_features is by bit).
   std::vector<const RawFeature*> features_in_spec_order() const;

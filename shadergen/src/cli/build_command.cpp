@@ -103,6 +103,14 @@ void print_summary(const BuildOptions& a, const BuildSummary& s, std::ostream& o
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, " in %.2f s\n", s.seconds);
   out << seconds;
+  if (s.renumbered_raw_ids > 0) {
+    std::string features;
+    for (const std::string& change : s.kind_changes) features += (features.empty() ? "" : ", ") + change;
+    out << "shadergen: " << a.out_dir.string() << ": note: " << s.renumbered_raw_ids
+        << " raw IDs map to other optimised IDs than in the previous output"
+        << (features.empty() ? std::string() : " (feature kinds changed: " + features + ")")
+        << "; anything keyed by optimised ID (a pipeline cache) is stale\n";
+  }
   if (a.write_stats) out << format_build_stats(s);
 }
 

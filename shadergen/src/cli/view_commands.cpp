@@ -59,6 +59,7 @@ template <class Show>
 int load_and_show(const ViewArgs& args, std::ostream& out, std::ostream& err, Show show) {
   auto spec = load_domain(args.spec_path);
   if (!spec) return print_errors(spec.errors(), err);
+  for (const Diagnostic& warning : spec->warnings) err << warning.to_string() << '\n';
   if (auto listed = read_variants_file(*spec, args.variants_path); !listed) return print_errors(listed.errors(), err);
   auto plan = expand(*spec);
   if (!plan) return print_errors(plan.errors(), err);

@@ -44,6 +44,31 @@ void conditionals_on_constants(const DomainSpec& spec, const SourceScan& scan, D
   }
 }
 
+// A value-style boolean is defined in every permutation, as (1 == 1) or (0 == 1): `#ifdef`,
+// `#ifndef` and `defined()` are then always true (or false), and the feature silently does
+// nothing. A valued feature is always defined too, but it is never "off": guarding one with
+// `#ifndef` for a default (uber/local_light.frag's LIGHT_TYPE) stays allowed.
+bool tests_presence(const ConditionalTest& test) {
+  return test.directive == "#ifdef" || test.directive == "#ifndef" || test.directive == "defined()";
+}
+
+void presence_tests_on_value_booleans(const DomainSpec& spec, const SourceScan& scan, Diagnostics& errors) {
+  std::set<std::string> reported;
+  for (const ConditionalTest& test : scan.tests) {
+    if (!tests_presence(test)) continue;
+    for (const RawFeature& f : spec.raw_features) {
+      if (!f.is_variant() || f.valued() || f.define_style != DefineStyle::value) continue;
+      if (f.define != test.name || !reported.insert(f.name).second) continue;
+      errors.push_back(make_error(test.at.file.string(), test.at.line,
+                                  "feature " + f.name + " (define " + f.define +
+                                      ") is a value-style boolean, defined in every permutation as (1 == 1) or "
+                                      "(0 == 1); " +
+                                      test.directive + " is " + (test.directive == "#ifndef" ? "never" : "always") +
+                                      " true: test its value, e.g. #if " + f.define + " or if (" + f.define + ")"));
+    }
+  }
+}
+
 }  // namespace
 
 Status check_feature_reads(const DomainSpec& spec) {
@@ -53,6 +78,7 @@ Status check_feature_reads(const DomainSpec& spec) {
   Diagnostics errors;
   unread_defines(spec, scan, errors);
   conditionals_on_constants(spec, scan, errors);
+  presence_tests_on_value_booleans(spec, scan, errors);
   if (!errors.empty()) return errors;
   return Ok{};
 }

@@ -23,6 +23,7 @@
 #include "output/codegen.h"
 #include "output/manifest.h"
 #include "output/output_dir.h"
+#include "output/renumbering.h"
 #include "shadergen/domain.h"
 #include "shadergen/permutations.h"
 #include "spec/defines.h"
@@ -247,6 +248,8 @@ Result<BuildSummary> build(const BuildOptions& given) {
   auto loaded = load_spec(options.spec_path);
   if (!loaded) return std::move(loaded).take_errors();
   Result<DomainSpec> spec(std::move(loaded->spec));
+  if (options.log)
+    for (const Diagnostic& warning : spec->warnings) options.log(warning.to_string());
   std::string cpp_name = options.cpp_name.empty() ? spec->name : options.cpp_name;
   std::string ns = options.cpp_namespace.empty() ? spec->name : options.cpp_namespace;
   if (Status ok = check_names(cpp_name, ns); !ok) return std::move(ok).take_errors();
@@ -317,6 +320,9 @@ Result<BuildSummary> build(const BuildOptions& given) {
         options.log("warning: optimiser fallback for blob " + blob.hash.substr(0, 16) + ": " +
                     printable(blob.fallback_reason));
   if (options.cancelled && options.cancelled()) return make_error("build interrupted");
+  // Read before the commit replaces it: the numbering of the previous output.
+  const Renumbering renumbered =
+      renumbering(previous_numbering(options.out_dir / "manifest.json"), *spec, entries.front().plan);
   auto staged = outputs_for(options, entries, *spill, cpp_name, ns, seconds);
   if (!staged) return std::move(staged).take_errors();
   clock.lap("manifest and codegen");
@@ -332,6 +338,8 @@ Result<BuildSummary> build(const BuildOptions& given) {
   clock.lap("depfile");
   BuildSummary summary = summarise(entries);
   summary.output_changed = *changed;
+  summary.renumbered_raw_ids = renumbered.raw_ids;
+  summary.kind_changes = renumbered.features;
   summary.phases = std::move(phases);
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

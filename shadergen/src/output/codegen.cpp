@@ -110,8 +110,12 @@ void feature_tables(std::ostringstream& h, const CompiledDomain& d, const std::v
     << "  if (!id || !is_possible(features(RawId(*id)))) return std::nullopt;\n"
     << "  return RawId(*id);\n}\n\n"
     << "// `raw_id` as text, as `shadergen explain` prints it (\"(none)\" for 0): find_raw_id() reads it back.\n"
-    << "inline std::string to_string(RawId raw_id) { return shadergen::combination_text(kFeatures, raw_id.value()); "
-       "}\n\n";
+       "// An ID with a bit at kRawBits or above names no combination: \"RawId(4000): out of range\".\n"
+    << "inline std::string to_string(RawId raw_id) {\n";
+  if (d.spec.raw_bits() < 32)
+    h << "  if (raw_id.value() >> kRawBits != 0) return \"RawId(\" + std::to_string(raw_id.value()) + \"): out of "
+         "range\";\n";
+  h << "  return shadergen::combination_text(kFeatures, raw_id.value());\n}\n\n";
 }
 
 // Up to this many raw IDs the lookup table and the pruned flags sit in the header, constexpr for
@@ -235,7 +239,7 @@ std::string value_word(const RawFeature& f) {
 }
 
 // kSpecializationMap and specialization(raw_id): the data a raw ID's pipeline is created with.
-void specialization_api(std::ostringstream& h, const DomainSpec& spec) {
+void specialization_api(std::ostringstream& h, const DomainSpec& spec, bool inline_tables) {
   std::vector<const RawFeature*> features = spec.specialization_features();
   h << "// The specialization features' constants, in spec order: {constant_id, offset, size}.\n"
     << "inline constexpr std::array<shadergen::SpecializationMapEntry, " << features.size()
@@ -243,8 +247,11 @@ void specialization_api(std::ostringstream& h, const DomainSpec& spec) {
   for (std::size_t i = 0; i < features.size(); ++i)
     h << "    {" << features[i]->constant_id << ", " << 4 * i << ", 4},  // " << features[i]->name << "\n";
   h << "}};\n\n// The specialization data of `raw`'s pipeline (shadergen::vulkan::specialization_info() makes\n"
-       "// the VkSpecializationInfo). Precondition: is_valid_raw_id(raw).\n"
-    << "constexpr shadergen::Specialization specialization([[maybe_unused]] RawId raw) {\n"
+       "// the VkSpecializationInfo); nullopt when is_valid_raw_id(raw) is false (out of range, pruned\n"
+       "// or not built), so that no such ID gets data that looks like a real pipeline's.\n"
+    << (inline_tables ? "constexpr" : "inline")
+    << " std::optional<shadergen::Specialization> specialization(RawId raw) {\n"
+    << "  if (!is_valid_raw_id(raw)) return std::nullopt;\n"
     << "  [[maybe_unused]] const std::uint32_t raw_id = raw.value();\n"
     << "  shadergen::Specialization s{kSpecializationMap, {}, " << 4 * features.size() << "};\n";
   for (std::size_t i = 0; i < features.size(); ++i)
@@ -253,7 +260,7 @@ void specialization_api(std::ostringstream& h, const DomainSpec& spec) {
 }
 
 // kBranchBlock and branch_values(raw_id): the branch block's layout and a raw ID's contents.
-void branch_api(std::ostringstream& h, const DomainSpec& spec) {
+void branch_api(std::ostringstream& h, const DomainSpec& spec, bool inline_tables) {
   std::vector<const RawFeature*> features = spec.branch_features();
   const std::size_t size = features.empty() ? 0 : (4 * features.size() + 15) / 16 * 16;
   h << "// The branch features' uniform block (std140, one uint each, in spec order); size 0: none.\n"
@@ -261,8 +268,10 @@ void branch_api(std::ostringstream& h, const DomainSpec& spec) {
   for (std::size_t i = 0; i < features.size(); ++i) h << (i ? ", " : "") << 4 * i;
   h << "}};\ninline constexpr shadergen::BranchBlock kBranchBlock{" << (spec.branch_block ? spec.branch_block->set : 0)
     << ", " << (spec.branch_block ? spec.branch_block->binding : 0) << ", " << size << ", kBranchOffsets};\n\n"
-    << "// The bytes to upload to the branch block for `raw`. Precondition: is_valid_raw_id(raw).\n"
-    << "constexpr shadergen::BranchValues branch_values([[maybe_unused]] RawId raw) {\n"
+    << "// The bytes to upload to the branch block for `raw`; nullopt when is_valid_raw_id(raw) is false.\n"
+    << (inline_tables ? "constexpr" : "inline")
+    << " std::optional<shadergen::BranchValues> branch_values(RawId raw) {\n"
+    << "  if (!is_valid_raw_id(raw)) return std::nullopt;\n"
     << "  [[maybe_unused]] const std::uint32_t raw_id = raw.value();\n"
     << "  shadergen::BranchValues v{{}, " << size << "};\n";
   for (std::size_t i = 0; i < features.size(); ++i)
@@ -278,8 +287,8 @@ std::string typed_features(const CompiledDomain& d) {
   features_struct(h, features, tables_in_header(d));
   decoding(h, d, features);
   feature_tables(h, d, features);
-  specialization_api(h, d.spec);
-  branch_api(h, d.spec);
+  specialization_api(h, d.spec, tables_in_header(d));
+  branch_api(h, d.spec, tables_in_header(d));
   return h.str();
 }
 

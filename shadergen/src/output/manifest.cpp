@@ -122,9 +122,12 @@ Json kind_values(const std::vector<const RawFeature*>& features, std::uint32_t r
 }
 
 // `with_blobs` false: the domain's part only (a spec with "uber_shaders" lists each entry's
-// blobs in the entry: uber_shader_raw()).
-Json raw_entry(const CompiledDomain& d, const RawPermutation& raw, bool with_blobs = true) {
-  Json entry{{"id", raw.id}, {"defines", raw_defines(d.spec, raw.id)}, {"pruned", raw.pruned}};
+// blobs in the entry: uber_shader_raw()). "defines" are as the compiler saw them: a value-style
+// boolean as SKY=(0 == 1), not SKY=0, so that a script can rebuild the permutation from them.
+Json raw_entry(const CompiledDomain& d, const KindDeclarations& kinds, const RawPermutation& raw,
+               bool with_blobs = true) {
+  Json entry{
+      {"id", raw.id}, {"defines", boolean_value_defines(raw_defines(d.spec, raw.id), kinds)}, {"pruned", raw.pruned}};
   if (std::vector<const RawFeature*> s = d.spec.specialization_features(); !s.empty() && !raw.pruned)
     entry["specialization"] = kind_values(s, raw.id);
   if (std::vector<const RawFeature*> b = d.spec.branch_features(); !b.empty() && !raw.pruned)
@@ -136,9 +139,10 @@ Json raw_entry(const CompiledDomain& d, const RawPermutation& raw, bool with_blo
   return entry;
 }
 
-Json optimised_entry(const CompiledDomain& d, const OptimisedPermutation& optimised, bool with_blobs = true) {
+Json optimised_entry(const CompiledDomain& d, const KindDeclarations& kinds, const OptimisedPermutation& optimised,
+                     bool with_blobs = true) {
   Json entry{{"id", optimised.id},
-             {"defines", optimised.defines},
+             {"defines", boolean_value_defines(optimised.defines, kinds)},
              {"raw_equivalent", optimised.raw_equivalent},
              {"raw_mapped", optimised.raw_mapped}};
   if (!with_blobs) return entry;
@@ -369,9 +373,10 @@ void write_manifest(std::span<const CompiledDomain> entries, std::ostream& out) 
   ObjectWriter writer(out);
   const Json members = domain_members(d);
   for (const auto& [key, value] : members.items()) writer.member(key, value);
-  writer.array("raw", d.plan.raw.size(), [&](std::size_t i) { return raw_entry(d, d.plan.raw[i], !several); });
+  const KindDeclarations kinds = kind_declarations(d.spec);
+  writer.array("raw", d.plan.raw.size(), [&](std::size_t i) { return raw_entry(d, kinds, d.plan.raw[i], !several); });
   writer.array("optimised", d.plan.optimised.size(),
-               [&](std::size_t i) { return optimised_entry(d, d.plan.optimised[i], !several); });
+               [&](std::size_t i) { return optimised_entry(d, kinds, d.plan.optimised[i], !several); });
   if (several) {
     writer.array("uber_shaders", entries.size(), [&](std::size_t i) { return uber_shader_entry(entries[i]); });
     writer.finish();

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "base/closest_name.h"
 #include "base/untrusted_text.h"
+#include "spec/defines.h"
 
 namespace shadergen {
 namespace {
@@ -31,7 +33,13 @@ std::string empty_word(const ParsedCombination& parsed) {
 
 std::string unknown_name(const ParsedCombination& parsed, std::span<const Feature> features) {
   if (parsed.word == "(none)") return "\"(none)\" stands alone: it means every feature off";
-  return "unknown feature " + quoted(parsed.word) + " (known: " + feature_names(features) + ")";
+  // Only a word that could be a name is a misspelt one: "SKY+SUN_LIGHT" is a wrong separator (and
+  // would "extend" SKY), and a word past 64 characters would cost its length times every name's.
+  std::vector<std::string> known;
+  for (const Feature& f : features) known.emplace_back(f.name);
+  const std::optional<std::string> meant = is_identifier(parsed.word) ? closest_name(parsed.word, known) : std::nullopt;
+  return "unknown feature " + quoted(parsed.word) + " (known: " + feature_names(features) + ")" +
+         (meant ? "; did you mean " + *meant + "?" : std::string());
 }
 
 std::string about_feature(const ParsedCombination& parsed, const Feature& f) {

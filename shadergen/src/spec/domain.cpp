@@ -11,6 +11,7 @@
 #include "spec/cpp_names.h"
 #include "spec/defines.h"
 #include "spec/json.h"
+#include "spec/spec_keys.h"
 #include "spec/stages.h"
 
 namespace shadergen {
@@ -125,7 +126,7 @@ class SpecReader {
   }
 
   // Rejects keys the format does not know: a misspelt key would otherwise be ignored silently.
-  void only_keys(const Value& object, std::string_view where, std::initializer_list<std::string_view> known) {
+  void only_keys(const Value& object, std::string_view where, std::span<const std::string_view> known) {
     for (const json::Member& m : object.object) {
       if (std::find(known.begin(), known.end(), m.first) != known.end()) continue;
       std::string list;
@@ -208,10 +209,7 @@ class DomainBuilder {
       reader_.error(root, "spec", "the spec must be a JSON object");
       return std::move(spec_);
     }
-    reader_.only_keys(root, "spec",
-                      {"format", "name", "description", "uber_shader", "uber_shaders", "program", "include_dirs",
-                       "target_env", "layout", "strip_debug", "defines", "companions", "raw", "optimised", "compile",
-                       "variants_file", "define_style", "branch_block"});
+    reader_.only_keys(root, "spec", spec_keys::kTop);
     read_header(root);
     read_permuted_shaders(root);
     read_include_dirs(root);
@@ -273,8 +271,10 @@ class DomainBuilder {
       return;
     }
     if (!program) {
-      if (const Value* uber = reader_.member(root, "spec", "uber_shader", Type::object))
+      if (const Value* uber = reader_.member(root, "spec", "uber_shader", Type::object)) {
+        reader_.only_keys(*uber, "uber_shader", spec_keys::kShaderFile);
         spec_.uber = read_shader_file(*uber, "uber_shader");
+      }
       return;
     }
     if (root.find("uber_shader")) {
@@ -282,7 +282,7 @@ class DomainBuilder {
       return;
     }
     if (!(program = reader_.member(root, "spec", "program", Type::object))) return;
-    reader_.only_keys(*program, "program", {"vertex", "fragment"});
+    reader_.only_keys(*program, "program", spec_keys::kProgram);
     std::string vertex = reader_.string_member(*program, "program", "vertex");
     std::string fragment = reader_.string_member(*program, "program", "fragment");
     if (vertex.empty() || fragment.empty()) return;
@@ -312,7 +312,7 @@ class DomainBuilder {
         reader_.error(value, where, "expected an object {\"path\", \"stage\"}");
         continue;
       }
-      reader_.only_keys(value, where, {"path", "stage"});
+      reader_.only_keys(value, where, spec_keys::kShaderFile);
       spec_.uber_shaders.push_back({name, read_shader_file(value, where)});
     }
     if (!spec_.uber_shaders.empty()) spec_.uber = spec_.uber_shaders.front().file;
@@ -415,7 +415,7 @@ class DomainBuilder {
         reader_.error(item, where, "expected an object");
         continue;
       }
-      reader_.only_keys(item, where, {"name", "path", "stage", "defines", "shared_layout", "uber_shader"});
+      reader_.only_keys(item, where, spec_keys::kCompanion);
       CompanionSpec companion;
       companion.name = reader_.string_member(item, where, "name");
       if (item.find("name") && !is_identifier(companion.name))
@@ -562,7 +562,7 @@ class DomainBuilder {
   }
 
   void read_raw(const Value& raw) {
-    reader_.only_keys(raw, "raw", {"features", "impossible"});
+    reader_.only_keys(raw, "raw", spec_keys::kRaw);
     const Value* features = reader_.member(raw, "raw", "features", Type::array);
     if (!features) return;
     if (features->array.empty() || features->array.size() > kMaxRawFeatures) {
@@ -602,9 +602,7 @@ class DomainBuilder {
         reader_.error(item, where, "expected an object");
         continue;
       }
-      reader_.only_keys(
-          item, where,
-          {"name", "bit", "define", "values", "description", "kind", "constant_id", "define_style", "unread"});
+      reader_.only_keys(item, where, spec_keys::kFeature);
       RawFeature feature;
       feature.name = reader_.string_member(item, where, "name");
       feature.define = reader_.string_member(item, where, "define");
@@ -705,7 +703,7 @@ class DomainBuilder {
         reader_.error(item, where, "expected an object with \"when\" and \"why\"");
         continue;
       }
-      reader_.only_keys(item, where, {"when", "why"});
+      reader_.only_keys(item, where, spec_keys::kImpossible);
       auto rule = reader_.rule_member(item, where, "when", symbols, "raw features");
       std::string why = reader_.string_member(item, where, "why", false);
       if (rule) spec_.impossible.push_back(ImpossibleSet{std::move(*rule), std::move(why)});
@@ -713,7 +711,7 @@ class DomainBuilder {
   }
 
   void read_optimised(const Value& optimised) {
-    reader_.only_keys(optimised, "optimised", {"bits", "variants", "ignore"});
+    reader_.only_keys(optimised, "optimised", spec_keys::kOptimised);
     if (spec_.raw_features.empty()) return;  // raw section already reported
     if (const Value* ignore = optimised.find("ignore")) {
       if (optimised.find("bits") || optimised.find("variants"))
@@ -742,7 +740,7 @@ class DomainBuilder {
         reader_.error(item, where, "expected an object");
         continue;
       }
-      reader_.only_keys(item, where, {"name", "bit", "when", "description"});
+      reader_.only_keys(item, where, spec_keys::kOptimisedBit);
       OptimisedBit bit;
       bit.name = reader_.string_member(item, where, "name");
       bit.description = reader_.string_member(item, where, "description", false);
@@ -794,7 +792,7 @@ class DomainBuilder {
         reader_.error(item, where, "expected an object with \"feature\" and \"when\"");
         continue;
       }
-      reader_.only_keys(item, where, {"feature", "when", "description"});
+      reader_.only_keys(item, where, spec_keys::kIgnore);
       std::string name = reader_.string_member(item, where, "feature");
       auto found = std::find_if(spec_.raw_features.begin(), spec_.raw_features.end(),
                                 [&](const RawFeature& f) { return f.name == name; });
@@ -817,6 +815,15 @@ class DomainBuilder {
                           ": it is never compiled in, so an optimised shader has nothing to leave out");
         continue;
       }
+      // The optimised ID is fixed by the lookup table: a rule reading a value set only when the
+      // pipeline is created, or at draw time, would choose the program from a run-time value.
+      if (const RawFeature* other = first_non_variant(rule.when.expression.symbol_mask())) {
+        reader_.error(*item.find("when"), where + ".when",
+                      "the rule names feature " + other->name + ", a " + kind_phrase(other->kind) +
+                          ": which optimised shader a raw ID draws cannot depend on a value set at run time "
+                          "(the collapse is over variant features only)");
+        continue;
+      }
       rule.feature = static_cast<std::size_t>(found - spec_.raw_features.begin());
       spec_.ignored.push_back(std::move(rule));
     }
@@ -834,7 +841,7 @@ class DomainBuilder {
         reader_.error(item, where, "expected an object with \"when\" and \"raw_features\"");
         continue;
       }
-      reader_.only_keys(item, where, {"when", "raw_features", "description"});
+      reader_.only_keys(item, where, spec_keys::kVariant);
       auto rule = reader_.rule_member(item, where, "when", symbols, "optimised bits");
       const Value* features = reader_.member(item, where, "raw_features", Type::array);
       if (!rule || !features) continue;
@@ -1004,12 +1011,22 @@ class DomainBuilder {
       return;
     }
     if (!(block = reader_.member(root, "spec", "branch_block", Type::object))) return;
-    reader_.only_keys(*block, "branch_block", {"set", "binding"});
+    reader_.only_keys(*block, "branch_block", spec_keys::kBranchBlock);
     BranchBlockSpec spec{0, 0, block->line};
     bool ok = small_index(*block, "set", spec.set) && small_index(*block, "binding", spec.binding);
-    if (ok && branches.empty())
-      reader_.error(*block, "branch_block", "no feature is of kind branch; remove the block or make one a branch");
-    if (ok) spec_.branch_block = spec;
+    if (!ok) return;
+    if (branches.empty()) {
+      // A warning, not an error: switching the last branch to a variant stays an edit of its
+      // "kind". Said only when the features were read: after an error in them (a misspelt
+      // "kind" or key) whether a feature is a branch is not known.
+      if (reader_.errors().empty())
+        spec_.warnings.push_back(Diagnostic{
+            Severity::warning, spec_.spec_path.string(), block->line, block->column,
+            "branch_block: no feature is of kind branch, so no block is declared; remove it, or make a feature a "
+            "branch"});
+      return;
+    }
+    spec_.branch_block = spec;
   }
 
   bool small_index(const Value& block, std::string_view key, std::uint32_t& out) {

@@ -43,7 +43,9 @@ class VariantsReader {
     if (content.empty()) return;
     ParsedCombination parsed = parse_combination(table_.features(), content);
     if (!parsed) {
-      error(number, first + parsed.position, describe_combination_error(parsed, table_.features()));
+      // Past the reported lines the message (its "did you mean" search) is not even worded.
+      if (errors_.size() < kMaxSpecErrors)
+        error(number, first + parsed.position, describe_combination_error(parsed, table_.features()));
       return;
     }
     if (int rule = first_impossible_rule(spec_, parsed.raw_id); rule >= 0) {

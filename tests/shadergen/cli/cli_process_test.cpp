@@ -189,4 +189,40 @@ TEST(CliProcess, BuildPrintsASummaryOnStdoutAndWritesTheOutput) {
       << second.out;
 }
 
+// What a new user hit (issue 51): a one-word kind change renumbers the optimised IDs, and the
+// summary says so; a branch_block left without a branch is a warning on stderr, not an error.
+TEST(CliProcess, BuildNotesRenumberedOptimisedIdsAndWarnsOfAnUnusedBranchBlock) {
+  sgtest::TempDir dir("cli-renumbered");
+  const std::string shader = (sgtest::fixtures_dir() / "kinds" / "kinds.frag").string();
+  auto spec = [&](const std::string& soft_kind) {
+    return R"({"format": 1, "name": "m", "uber_shader": {"path": ")" + shader + R"("}, "define_style": "value",
+  "raw": {"features": [{"name": "FOG", "bit": 0, "define": "FOG"},
+    {"name": "SOFT", "bit": 1, "define": "SOFT", "kind": ")" +
+           soft_kind + R"("}, {"name": "TAPS", "bit": 2, "define": "TAPS", "values": [1, 4, 8]},
+    {"name": "SHADING", "bit": 4, "define": "SHADING", "values": ["UNLIT", "PBR"]}],
+    "impossible": [{"when": "SHADING == UNLIT && SOFT"}]},
+  "branch_block": {"set": 1, "binding": 0},
+  "optimised": {"ignore": [{"feature": "TAPS"}]}})";
+  };
+  const std::vector<std::string> args = {"build",       (dir / "m.json").string(), "--out", (dir / "out").string(),
+                                         "--cache-dir", (dir / "cache").string()};
+  sgtest::write_file(dir / "m.json", spec("variant"));
+  ProcessResult first = shadergen_run(args);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_TRUE(sgtest::contains(first.err, (dir / "m.json").string() +
+                                              ":6:19: warning: branch_block: no feature is of kind branch, so no "
+                                              "block is declared; remove it, or make a feature a branch\n"))
+      << first.err;
+  EXPECT_FALSE(sgtest::contains(first.out, "note:")) << first.out;
+
+  sgtest::write_file(dir / "m.json", spec("specialization"));
+  ProcessResult second = shadergen_run(args);
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_TRUE(sgtest::contains(second.out, (dir / "out").string() +
+                                               ": note: 6 raw IDs map to other optimised IDs than in the previous "
+                                               "output (feature kinds changed: SOFT (variant -> specialization)); "
+                                               "anything keyed by optimised ID (a pipeline cache) is stale\n"))
+      << second.out;
+}
+
 }  // namespace

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "output/manifest.h"
+#include "shadergen/domain.h"
+#include "shadergen/permutations.h"
 #include "test_helpers.h"
 
 namespace shadergen {
@@ -68,6 +70,28 @@ TEST(ManifestJson, NumbersKeepTheirTypesAndTheLayoutIsTheDocumentedOne) {
   EXPECT_EQ(constants[4]["default"].dump(), "1.0") << "a float constant's default is a JSON float";
   EXPECT_EQ(constants[0]["id"].dump(), "1");
   EXPECT_TRUE(sgtest::contains(text, "\"default\": 4000000000\n")) << text;
+}
+
+// A permutation's "defines" are the text the compiler saw: a value-style boolean is compiled as
+// (0 == 1), and SKY=0 handed back to glslang fails "boolean expression expected" (issue 51).
+TEST(ManifestJson, DefinesAreTheTextTheCompilerSaw) {
+  auto spec = parse_domain(R"({"name": "v", "uber_shader": {"path": "v.frag"}, "define_style": "value",
+    "raw": {"features": [{"name": "SKY", "bit": 0, "define": "SKY"},
+                         {"name": "FOG", "bit": 1, "define": "HAS_FOG", "define_style": "presence"},
+                         {"name": "TAPS", "bit": 2, "define": "TAPS", "values": [1, 4]}]},
+    "optimised": {"bits": [{"name": "LIT", "bit": 0, "when": "SKY"}],
+                  "variants": [{"when": "LIT", "raw_features": ["SKY"]}]}})",
+                           "v.json");
+  ASSERT_TRUE(spec.ok()) << spec.errors().front().to_string();
+  auto plan = expand(*spec);
+  ASSERT_TRUE(plan.ok()) << plan.errors().front().to_string();
+  CompiledDomain d;
+  d.spec = *spec;
+  d.plan = *plan;
+  const ordered_json m = ordered_json::parse(write_manifest(d));
+  EXPECT_EQ(m["raw"][0]["defines"], ordered_json::array({"SKY=(0 == 1)", "TAPS=1"}));
+  EXPECT_EQ(m["raw"][7]["defines"], ordered_json::array({"SKY=(1 == 1)", "HAS_FOG", "TAPS=4"}));
+  EXPECT_EQ(m["optimised"][1]["defines"], ordered_json::array({"SKY=(1 == 1)", "TAPS=1"}));
 }
 
 }  // namespace

@@ -424,9 +424,9 @@ TEST(KindsRegistries, TheThreeDomainsShareRawIdsAndTheKindsShareBlobs) {
   EXPECT_EQ(kinds_specialization::kBranchBlock.size, 0u);
   EXPECT_EQ(kinds_branch::kBranchBlock.size, 16u);
   EXPECT_EQ(kinds_branch::kBranchBlock.set, 1u);
-  EXPECT_EQ(kinds_variant::specialization(shadergen::RawId(0)).data_size, 0u);
-  EXPECT_EQ(kinds_specialization::specialization(shadergen::RawId(0)).data_size, 8u);
-  EXPECT_EQ(kinds_branch::specialization(shadergen::RawId(0)).data_size, 0u);
+  EXPECT_EQ(kinds_variant::specialization(shadergen::RawId(0)).value().data_size, 0u);
+  EXPECT_EQ(kinds_specialization::specialization(shadergen::RawId(0)).value().data_size, 8u);
+  EXPECT_EQ(kinds_branch::specialization(shadergen::RawId(0)).value().data_size, 0u);
 }
 
 using KindsPixels = VulkanTest;
@@ -449,12 +449,12 @@ TEST_F(KindsPixels, EveryRawIdDrawsTheSameImageInAllThreeKinds) {
 
     const std::vector<std::byte> from_variant = variant.draw(id, nullptr);
 
-    const shadergen::Specialization constants = kinds_specialization::specialization(shadergen::RawId(id));
+    const shadergen::Specialization constants = kinds_specialization::specialization(shadergen::RawId(id)).value();
     const VkSpecializationInfo info = shadergen::vulkan::specialization_info(constants);
     ASSERT_EQ(info.mapEntryCount, 2u);
     const std::vector<std::byte> from_specialization = specialized.draw(id, &info);
 
-    branched.set_branch_values(kinds_branch::branch_values(shadergen::RawId(id)));
+    branched.set_branch_values(kinds_branch::branch_values(shadergen::RawId(id)).value());
     const std::vector<std::byte> from_branch = branched.draw(id, nullptr);
 
     EXPECT_EQ(from_specialization, from_variant) << "specialization and variant images differ";

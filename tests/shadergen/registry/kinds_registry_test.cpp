@@ -36,15 +36,36 @@ TEST(KindsRegistry, SpecializationAndBranchValuesMatchTheManifestForEveryRawId) 
     if (raw["pruned"].get<bool>()) continue;
     const auto id = raw["id"].get<std::uint32_t>();
     ASSERT_TRUE(kinds::is_valid_raw_id(kinds::RawId(id))) << id;
-    const shadergen::Specialization s = kinds::specialization(kinds::RawId(id));
+    const shadergen::Specialization s = kinds::specialization(kinds::RawId(id)).value();
     EXPECT_EQ(s.data_size, 4u);
     EXPECT_EQ(s.data[0], raw["specialization"]["SOFT"].get<bool>() ? 1u : 0u) << id;
-    const shadergen::BranchValues b = kinds::branch_values(kinds::RawId(id));
+    const shadergen::BranchValues b = kinds::branch_values(kinds::RawId(id)).value();
     EXPECT_EQ(b.size, kinds::kBranchBlock.size);
     EXPECT_EQ(static_cast<std::int32_t>(b.words[0]), raw["branch_values"]["TAPS"].get<std::int32_t>()) << id;
     ++checked;
   }
   EXPECT_EQ(checked, 18u);  // 32 raw IDs less the 14 pruned (TAPS index 3, unlit with SOFT)
+}
+
+// A pruned or out-of-range raw ID gets no data that looks like a real pipeline's (issue 51).
+TEST(KindsRegistry, PrunedAndOutOfRangeIdsHaveNoValuesAndSaySo) {
+  const json m = manifest();
+  std::size_t pruned = 0;
+  for (const json& raw : m["raw"]) {
+    if (!raw["pruned"].get<bool>()) continue;
+    const kinds::RawId id(raw["id"].get<std::uint32_t>());
+    EXPECT_FALSE(kinds::specialization(id).has_value()) << id.value();
+    EXPECT_FALSE(kinds::branch_values(id).has_value()) << id.value();
+    ++pruned;
+  }
+  EXPECT_EQ(pruned, 14u);
+  const kinds::RawId past(kinds::kRawCount);
+  EXPECT_FALSE(kinds::specialization(past).has_value());
+  EXPECT_FALSE(kinds::branch_values(past).has_value());
+  EXPECT_EQ(kinds::to_string(kinds::RawId(4000)), "RawId(4000): out of range");
+  EXPECT_EQ(kinds::to_string(past), "RawId(" + std::to_string(kinds::kRawCount) + "): out of range");
+  EXPECT_NE(kinds::to_string(kinds::RawId(kinds::kRawCount - 1)).find("SHADING"), std::string::npos)
+      << "the last raw ID is in range";
 }
 
 TEST(KindsRegistry, TheBranchBlockIsTheManifestsAndEveryBlobsBinding) {
@@ -73,7 +94,7 @@ TEST(KindsRegistry, OneBlobServesEverySpecializationAndBranchValue) {
 }
 
 TEST(KindsRegistry, SpecializationInfoPointsAtTheData) {
-  const shadergen::Specialization s = kinds::specialization(*kinds::find_raw_id("FOG|SOFT|TAPS=8|SHADING=PBR"));
+  const shadergen::Specialization s = kinds::specialization(*kinds::find_raw_id("FOG|SOFT|TAPS=8|SHADING=PBR")).value();
   const VkSpecializationInfo info = shadergen::vulkan::specialization_info(s);
   ASSERT_EQ(info.mapEntryCount, 1u);
   EXPECT_EQ(info.pMapEntries[0].constantID, kinds::kSpecializationMap[0].constant_id);

@@ -76,6 +76,9 @@ const Case kRefused[] = {
     {"SKY| =2", 0, CombinationError::empty_word, "=2", 5, 0, "\"=2\" names no feature before its '='"},
     {"SKY|FOO", 0, CombinationError::unknown_name, "FOO", 4, 0,
      "unknown feature \"FOO\" (known: SHADOW_SOFT, MSAA_EDGE, TAA_QUALITY, SKY, HORIZON, TONEMAP)"},
+    {"SHADOW_SOTF", 0, CombinationError::unknown_name, "SHADOW_SOTF", 0, 0,
+     "unknown feature \"SHADOW_SOTF\" (known: SHADOW_SOFT, MSAA_EDGE, TAA_QUALITY, SKY, HORIZON, TONEMAP); did you "
+     "mean SHADOW_SOFT?"},
     {"sky", 0, CombinationError::unknown_name, "sky", 0, 0,
      "unknown feature \"sky\" (known: SHADOW_SOFT, MSAA_EDGE, TAA_QUALITY, SKY, HORIZON, TONEMAP)"},
     {"SHADOW SOFT", 0, CombinationError::unknown_name, "SHADOW SOFT", 0, 0,

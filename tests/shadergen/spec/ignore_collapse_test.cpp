@@ -86,7 +86,15 @@ INSTANTIATE_TEST_SUITE_P(
         sgtest::SpecErrorCase{
             "bad_rule", sgtest::replace_once(kMaterial, "\"SHADING == UNLIT\"", "\"SHADING == MATTE\""),
             "spec.json:13:66: error: optimised.ignore[0].when: 'SHADING' has no value MATTE (values: UNLIT, "
-            "PBR) in \"SHADING == MATTE\" at column 12 (rules here name raw features)"}));
+            "PBR) in \"SHADING == MATTE\" at column 12 (rules here name raw features)"},
+        // The optimised ID comes from the table: a rule on a pipeline-time value would make the
+        // program drawn depend on it (issue 51).
+        sgtest::SpecErrorCase{
+            "a_rule_on_a_constant",
+            sgtest::replace_once(kMaterial, "\"SHADING == UNLIT\"", "\"SHADING == UNLIT || FOG\""),
+            "spec.json:13:66: error: optimised.ignore[0].when: the rule names feature FOG, a specialization "
+            "constant: which optimised shader a raw ID draws cannot depend on a value set at run time (the "
+            "collapse is over variant features only)"}));
 
 }  // namespace
 }  // namespace shadergen

@@ -76,6 +76,35 @@ TEST(Kinds, OnlyVariantsMakeDefines) {
   EXPECT_EQ(raw_defines(valued, 0b10u), (std::vector<std::string>{"SOFT=1"}));
 }
 
+// Turning the last branch into a variant is an edit of its "kind": the block left in the spec
+// is a warning, and it is not declared (issue 51).
+TEST(Kinds, ABlockWithoutABranchIsAWarningAndNotDeclared) {
+  auto spec = parse_domain(
+      sgtest::replace_once(kBase, "[\"UNLIT\", \"PBR\"], \"kind\": \"branch\"", "[\"UNLIT\", \"PBR\"]"), "spec.json");
+  ASSERT_TRUE(spec.ok()) << spec.errors().front().to_string();
+  EXPECT_FALSE(spec->branch_block.has_value());
+  ASSERT_EQ(spec->warnings.size(), 1u);
+  EXPECT_EQ(spec->warnings.front().to_string(),
+            "spec.json:14:19: warning: branch_block: no feature is of kind branch, so no block is declared; remove "
+            "it, or make a feature a branch");
+  EXPECT_TRUE(parsed(kBase).warnings.empty());
+}
+
+// After a first error only the errors that still hold are reported: a misspelt kind or key
+// leaves the features unread, and the block then says nothing about them (issue 51).
+TEST(Kinds, AMisspeltKindOrKeyGivesOneErrorAndNoneAboutTheBlock) {
+  for (const std::string& text : {sgtest::replace_once(kBase, "\"kind\": \"variant\"", "\"kind\": \"specialisation\""),
+                                  sgtest::replace_once(kBase, "\"format\": 1", "\"formt\": 1"),
+                                  sgtest::replace_once(kBase, "\"raw\": {", "\"raw\": { \"impossibel\": [],")}) {
+    auto spec = parse_domain(text, "spec.json");
+    ASSERT_FALSE(spec.ok());
+    std::string all;
+    for (const Diagnostic& d : spec.errors()) all += d.to_string() + "\n";
+    EXPECT_EQ(spec.errors().size(), 1u) << all;
+    EXPECT_FALSE(sgtest::contains(all, "no feature is of kind branch")) << all;
+  }
+}
+
 class KindErrorTable : public ::testing::TestWithParam<sgtest::SpecErrorCase> {};
 
 TEST_P(KindErrorTable, ExactDiagnostic) { EXPECT_EQ(sgtest::first_spec_error(GetParam().text), GetParam().expected); }
@@ -105,11 +134,6 @@ INSTANTIATE_TEST_SUITE_P(
             sgtest::replace_once(kBase, "\"branch_block\": { \"set\": 1, \"binding\": 2 },", ""),
             "spec.json:1:1: error: spec: feature SHADING is a run-time branch: its value is read from a "
             "uniform block, so the spec needs \"branch_block\": {\"set\": S, \"binding\": B}"},
-        sgtest::SpecErrorCase{
-            "block_without_a_branch",
-            sgtest::replace_once(kBase, "[\"UNLIT\", \"PBR\"], \"kind\": \"branch\"", "[\"UNLIT\", \"PBR\"]"),
-            "spec.json:14:19: error: branch_block: no feature is of kind branch; remove the block or make one "
-            "a branch"},
         sgtest::SpecErrorCase{"optimised_bit_on_a_constant",
                               sgtest::replace_once(kBase, "\"when\": \"SOFT\"", "\"when\": \"SOFT || FOG\""),
                               "spec.json:16:48: error: optimised.bits[0].when: optimised bit X names feature FOG, a "
@@ -235,6 +259,32 @@ TEST_F(FeatureReads, IfOrDefinedOnABranchInAnIncludeIsAnErrorThere) {
 
 TEST_F(FeatureReads, AVariantMayBeTestedByThePreprocessor) {
   EXPECT_EQ(first(check(kBase, kReadsAll + "#ifdef SOFT\n#endif\n")), "(none)");
+}
+
+// A value-style boolean is defined in every permutation ((1 == 1) or (0 == 1)): a presence test
+// on it never changes, so the feature silently did nothing (issue 51: 14 of 19 features gone).
+TEST_F(FeatureReads, PresenceTestsOnAValueStyleBooleanAreAnErrorAtTheirLine) {
+  const std::string spec = sgtest::replace_once(kBase, "\"kind\": \"variant\"", "\"define_style\": \"value\"");
+  const std::string at = (dir_ / "kinds.frag").string() + ":7: error: feature SOFT (define SOFT) is a value-style ";
+  EXPECT_EQ(first(check(spec, kReadsAll + "#ifdef SOFT\n#endif\n")),
+            at + "boolean, defined in every permutation as (1 == 1) or (0 == 1); #ifdef is always true: test its "
+                 "value, e.g. #if SOFT or if (SOFT)");
+  EXPECT_EQ(first(check(spec, kReadsAll + "#ifndef SOFT\n#endif\n")),
+            at + "boolean, defined in every permutation as (1 == 1) or (0 == 1); #ifndef is never true: test its "
+                 "value, e.g. #if SOFT or if (SOFT)");
+  EXPECT_EQ(first(check(spec, kReadsAll + "#if 1 && defined(SOFT)\n#endif\n")),
+            at + "boolean, defined in every permutation as (1 == 1) or (0 == 1); defined() is always true: test its "
+                 "value, e.g. #if SOFT or if (SOFT)");
+  EXPECT_EQ(first(check(spec, kReadsAll + "#if SOFT\n#endif\n")), "(none)") << "#if reads the value";
+}
+
+// A valued feature is never "off", so a guard that gives it a default stays allowed (as
+// uber/local_light.frag guards LIGHT_TYPE).
+TEST_F(FeatureReads, AValuedValueStyleVariantMayBeGuarded) {
+  const std::string spec =
+      sgtest::replace_once(sgtest::replace_once(kBase, "\"format\": 1,", "\"format\": 1, \"define_style\": \"value\","),
+                           "\"values\": [1, 4, 8], \"kind\": \"specialization\"", "\"values\": [1, 4, 8]");
+  EXPECT_EQ(first(check(spec, kReadsAll + "#ifndef TAPS\n#define TAPS 1\n#endif\n")), "(none)");
 }
 
 }  // namespace

@@ -38,6 +38,8 @@ struct BadLine {
 TEST(VariantsFile, EachBadLineIsAnErrorAtItsFileLineAndWord) {
   const BadLine cases[] = {
       {"LIT | FOO", 7, "unknown feature \"FOO\" (known: SOFT, LIT, TEXTURED, DISTORT)"},
+      // A misspelt name is answered with the closest feature (issue 51).
+      {"LIT | TEXTRED", 7, "unknown feature \"TEXTRED\" (known: SOFT, LIT, TEXTURED, DISTORT); did you mean TEXTURED?"},
       {"LIT=1", 1, "feature LIT is a boolean: write LIT alone, or leave it out (LIT=1 is not accepted)"},
       {"LIT=0", 1, "feature LIT is a boolean: write LIT alone, or leave it out (LIT=0 is not accepted)"},
       {"  USE_TEXTURE", 3, "\"USE_TEXTURE\" is the define of feature TEXTURED; name the feature"},
