@@ -154,7 +154,7 @@ TEST(RemoteCacheHostile, CredentialsAreNeverPrintedOrWritten) {
   EXPECT_EQ(run_cli({"build", sgtest::toy_spec().string(), "--out", (dir / "bad").string(), "--remote-cache",
                      "ftp://alice:s3cret@host/cache"},
                     out, err),
-            1);
+            2);
   EXPECT_EQ(err.str(),
             "shadergen: error: --remote-cache: \"ftp://***@host/cache\" is not an http:// or https:// URL "
             "(set by the option or SHADERGEN_REMOTE_CACHE)\n");
@@ -226,7 +226,7 @@ TEST(RemoteCacheHostile, UrlWithQueryOrFragmentIsRefused) {
     EXPECT_EQ(run_cli({"build", sgtest::toy_spec().string(), "--out", (run_dir.path() / "out").string(),
                        "--remote-cache", url},
                       out, err),
-              1);
+              2);
     EXPECT_EQ(err.str(), "shadergen: error: --remote-cache: \"" + std::string(url) +
                              "\" has a query or fragment ('?' or '#'), which the entry URLs "
                              "<url>/<key-prefix>/<key> cannot carry; give the URL of the collection alone "

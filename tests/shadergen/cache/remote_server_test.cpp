@@ -230,7 +230,7 @@ TEST(RemoteCacheServer, CliReadsTheEnvironmentAndReportsCounts) {
   EXPECT_EQ(run_cli({"build", sgtest::toy_spec().string(), "--out", (dir / "bad").string(), "--remote-cache",
                      "ftp://host/cache"},
                     out, err),
-            1);
+            2);
   EXPECT_EQ(err.str(),
             "shadergen: error: --remote-cache: \"ftp://host/cache\" is not an http:// or https:// URL "
             "(set by the option or SHADERGEN_REMOTE_CACHE)\n");
