@@ -527,7 +527,7 @@ class DomainCompiler {
   Status refuse_missing(const std::vector<char>& why) const {
     const std::size_t total = why.size();
     std::array<std::size_t, 4> counts{};
-    for (char w : why) ++counts[static_cast<std::size_t>(w)];
+    for (char w : why) ++counts[static_cast<unsigned char>(w)];
     if (counts[kMissing] + counts[kCorrupt] + counts[kUnanswered] == 0) return Ok{};
     const std::string url = options_.remote->shown_url();
     Diagnostics errors{make_error(std::to_string(total - counts[kFound]) + " of " + std::to_string(total) +
@@ -541,7 +541,7 @@ class DomainCompiler {
     }
     std::map<std::uint32_t, std::array<std::size_t, 4>> per_shard;
     for (std::size_t s = 0; s < total; ++s)
-      if (why[s] != kFound) ++per_shard[shard_of(s, total, build_.role.shards())][static_cast<std::size_t>(why[s])];
+      if (why[s] != kFound) ++per_shard[shard_of(s, total, build_.role.shards())][static_cast<unsigned char>(why[s])];
     for (const auto& [shard, n] : per_shard) {
       const std::string place = std::to_string(shard) + "/" + std::to_string(build_.role.shards());
       errors.push_back(make_error("shard " + place + ": " + lacking_text(n[kMissing], n[kCorrupt], n[kUnanswered]) +
