@@ -164,7 +164,8 @@ Step measured(const std::vector<std::string>& args) {
   s.ok = r.ok, s.seconds = r.seconds, s.cpu_seconds = r.cpu_seconds;
   s.rss_mib = static_cast<double>(r.peak_rss_kib) / 1024.0;
   std::smatch m;
-  if (std::regex_search(r.out, m, std::regex(R"(of (\d+) distinct sources)")) ||
+  if (std::regex_search(r.out, m, std::regex(R"(compile jobs, (\d+) distinct sources)")) ||
+      std::regex_search(r.out, m, std::regex(R"(of (\d+) distinct sources)")) ||
       std::regex_search(r.out, m, std::regex(R"(-> (\d+) distinct sources)")))
     s.sources = std::stol(m[1]);
   if (std::regex_search(r.out, m, std::regex(R"(preprocess ([0-9.]+))"))) s.preprocess_s = std::stod(m[1]) / 1000.0;

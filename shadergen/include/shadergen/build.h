@@ -48,7 +48,10 @@ struct BuildSummary {
   // A shard (`--shard I/N`): its place and what became of its sources.
   bool sharded = false;
   std::uint32_t shard_index = 0, shard_count = 0;
-  std::uint32_t shard_sources = 0;    // distinct sources this shard owns
+  // A shard preprocesses and compiles its range of the domain's compile jobs (`permutations`
+  // counts those; `domain_permutations` all of the domain's), and their distinct sources.
+  std::uint32_t domain_permutations = 0;
+  std::uint32_t shard_sources = 0;    // distinct sources of this shard's jobs
   std::uint32_t shard_on_server = 0;  // of which the server held already (fetched and verified)
   std::uint32_t shard_uploaded = 0;   // of which compiled (or taken from the local cache) and uploaded now
   std::uint32_t shard_replaced = 0;   // of those, sources whose copy on the server failed the checks

@@ -67,6 +67,34 @@ std::string input_set_key(const CacheKeyParts& tools, const std::filesystem::pat
       .finish_hex();
 }
 
+std::string input_set_part_key(std::string_view input_key, std::uint32_t index, std::uint32_t count) {
+  return Sha256()
+      .field("shadergen-input-set-part")
+      .field(input_key)
+      .field(std::to_string(index))
+      .field(std::to_string(count))
+      .finish_hex();
+}
+
+Result<InputSet> join_input_parts(std::vector<InputSet> parts) {
+  const std::string count = std::to_string(parts.size());
+  std::map<std::filesystem::path, std::pair<InputRead, std::size_t>> by_path;  // -> the read, its first part
+  InputSet joined;
+  for (std::size_t part = 0; part < parts.size(); ++part) {
+    for (InputRead& read : parts[part].files) {
+      auto [it, fresh] = by_path.try_emplace(read.path, read, part);
+      if (!fresh && (it->second.first.found != read.found || it->second.first.digest != read.digest))
+        return make_error("shards " + std::to_string(it->second.second) + "/" + count + " and " +
+                          std::to_string(part) + "/" + count + " read different bytes of " + read.path.string() +
+                          ": it changed while the shards ran; rerun the shards");
+    }
+    for (std::string& key : parts[part].source_keys) joined.source_keys.push_back(std::move(key));
+  }
+  joined.files.reserve(by_path.size());
+  for (auto& [path, read] : by_path) joined.files.push_back(std::move(read.first));
+  return joined;
+}
+
 std::optional<std::vector<InputRead>> merge_reads(const std::vector<std::vector<InputRead>>& per_job) {
   std::map<std::filesystem::path, InputRead> by_path;
   for (const auto& reads : per_job)

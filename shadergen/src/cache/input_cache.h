@@ -13,6 +13,7 @@
 // over the whole text. A truncated, corrupted or foreign entry reads as a miss.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -37,6 +38,16 @@ struct InputSet {
 // spec's bytes (the `--define`s), so that a build with other options never reuses the keys.
 std::string input_set_key(const CacheKeyParts& tools, const std::filesystem::path& spec_path,
                           std::string_view spec_digest, std::string_view settings);
+
+// The key of shard `index` of `count`'s part of the input set `input_key`: the reads of the
+// shard's own compile jobs and their content keys (shard_partition.h), which a shard uploads so
+// that the merge joins the parts instead of preprocessing the domain again.
+std::string input_set_part_key(std::string_view input_key, std::uint32_t index, std::uint32_t count);
+
+// The parts of shards 0..N-1 (`parts`, in shard order) as one input set: each path once, the
+// source keys one part after another. An error names the path two shards read different bytes
+// of (a file changed while the shards ran).
+Result<InputSet> join_input_parts(std::vector<InputSet> parts);
 
 // Merges the reads of every preprocessed job into one sorted list. Fails (nullopt) when two
 // jobs saw different bytes for one path: a file changed during the build, so nothing may be

@@ -95,18 +95,24 @@ std::optional<std::string> RemoteCache::fetch(const std::string& relative, bool*
   return std::move(response->body);
 }
 
-std::optional<std::string> RemoteCache::load_input_set(std::string_view key) {
+std::optional<std::string> RemoteCache::load_input_set(std::string_view key, Found* found) {
+  if (found) *found = Found::no_answer;
   if (!signs()) return std::nullopt;
-  auto body = fetch("inputs/" + std::string(key));
-  if (!body) return std::nullopt;
+  bool not_found = false;
+  auto body = fetch("inputs/" + std::string(key), &not_found);
+  if (!body) {
+    if (found && not_found) *found = Found::none;
+    return std::nullopt;
+  }
   auto entry = verified_entry(*body, settings_.secret);
+  if (found) *found = entry ? Found::entry : Found::rejected;
   if (!entry) return std::nullopt;  // unsigned: preprocess as without it
   return std::string(*entry);
 }
 
-void RemoteCache::store_input_set(std::string_view key, std::string_view bytes) {
-  if (!signs() || settings_.read_only || off_.load()) return;
-  (void)put("inputs/" + std::string(key), signed_entry(bytes, settings_.secret));
+bool RemoteCache::store_input_set(std::string_view key, std::string_view bytes) {
+  if (!signs() || settings_.read_only || off_.load()) return false;
+  return put("inputs/" + std::string(key), signed_entry(bytes, settings_.secret));
 }
 
 // The entry inside a response body: it must carry a valid signature when there is a secret.

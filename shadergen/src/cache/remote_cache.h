@@ -97,9 +97,12 @@ class RemoteCache {
   // only with a secret (nullopt without one, and for unsigned or wrongly signed bodies). An
   // input set maps the bytes of every file a build reads to the content keys, so a server
   // writer could redirect a build to other (valid) entries with it: unsigned ones are not used.
-  std::optional<std::string> load_input_set(std::string_view key);
+  // `found` (when given) says why there is none: a 404, a body that failed the signature, or no
+  // answer (also: no secret).
+  std::optional<std::string> load_input_set(std::string_view key, Found* found = nullptr);
   // Uploads an input-set entry's bytes, signed; only with a secret and unless read-only or off.
-  void store_input_set(std::string_view key, std::string_view bytes);
+  // True when stored.
+  bool store_input_set(std::string_view key, std::string_view bytes);
   // A small signed text at <url>/<relative> (a shard's record, shard_record.h): signed when there
   // is a secret, and read only when its signature holds. store_text() returns true when stored;
   // load_text() nullopt for a 404, a failure or a bad signature, and `found` says which.

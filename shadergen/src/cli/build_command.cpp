@@ -72,13 +72,15 @@ Result<BuildRole> role_of(const BuildCommandLine& line) {
   return BuildRole();
 }
 
-// "shadergen: shard 2/8: 1234 distinct sources (1200 uploaded, 34 already on the server) in 9.81 s";
-// uploads that replaced a copy on the server that failed the checks are counted among them.
+// "shadergen: shard 2/8: 1234 of 9872 compile jobs, 1234 distinct sources (1200 uploaded, 34
+// already on the server) in 9.81 s"; uploads that replaced a copy on the server that failed the
+// checks are counted among them.
 void print_shard_summary(const BuildOptions& a, const BuildSummary& s, std::ostream& out) {
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, " in %.2f s\n", s.seconds);
-  out << "shadergen: shard " << s.shard_index << "/" << s.shard_count << ": " << s.shard_sources << " of "
-      << s.unique_sources << " distinct sources (" << s.shard_uploaded << " uploaded"
+  out << "shadergen: shard " << s.shard_index << "/" << s.shard_count << ": " << s.permutations << " of "
+      << s.domain_permutations << " compile jobs, " << s.shard_sources << " distinct sources (" << s.shard_uploaded
+      << " uploaded"
       << (s.shard_replaced ? ", of which " + std::to_string(s.shard_replaced) + " replaced a corrupt copy" : "") << ", "
       << s.shard_on_server << " already on the server)" << seconds;
   if (a.write_stats) out << format_build_stats(s);

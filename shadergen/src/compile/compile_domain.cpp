@@ -89,8 +89,12 @@ class DomainCompiler {
     if (Status s = check_feature_reads(d_.spec); !s) return s;
     d_.jobs = make_jobs(d_.spec, d_.plan);
     index_jobs();
+    if (build_.role.is_shard()) range_ = shard_range(d_.jobs.size(), build_.role.place().index, build_.role.place().count);
+    else range_ = {0, d_.jobs.size()};
     PhaseClock clock(d_.phases);
-    d_.inputs_reused = reuse_inputs();
+    auto reused = reuse_inputs();
+    if (!reused) return std::move(reused).take_errors();
+    d_.inputs_reused = *reused;
     clock.lap("input check");
     if (!d_.inputs_reused) {
       if (Status s = preprocess_all(); !s) return s;
@@ -99,7 +103,7 @@ class DomainCompiler {
     if (build_.role.is_shard()) {
       Status s = compile_shard(build_.role.place());
       clock.lap("shard compile or find");
-      if (s) remember_inputs();
+      if (s) s = remember_part(build_.role.place());
       return s;
     }
     if (Status s = compile_sources(); !s) return s;
@@ -235,31 +239,125 @@ class DomainCompiler {
   }
 
   // With an input-set entry whose every file is unchanged, the preprocessed texts (and so
-  // their keys) are what they were: take the keys and skip glslang altogether.
-  bool reuse_inputs() {
+  // their keys) are what they were: take the keys and skip glslang altogether. A shard looks
+  // for its own part first (a rerun), then for a whole set; a merge of known shards joins their
+  // parts (with a secret), and fails naming each shard whose part is not on the server.
+  Result<bool> reuse_inputs() {
     if (options_.input_key.empty()) return false;
+    if (build_.role.is_shard()) {
+      const std::string part = input_set_part_key(options_.input_key, build_.role.place().index,
+                                                  build_.role.place().count);
+      if (options_.inputs)
+        if (auto set = options_.inputs->load(part); set && take_keys(*set, range_)) return (taken_from_ = kLocal, true);
+      if (auto set = server_input_set(part); set && take_keys(*set, range_)) return (taken_from_ = kServer, true);
+    } else if (build_.role.is_merge() && build_.role.shards() > 0 && options_.remote && options_.remote->signs()) {
+      auto joined = joined_parts();
+      if (!joined) return std::move(joined).take_errors();
+      // Files changed since the shards ran: the merge preprocesses, and names what is missing.
+      return take_keys(*joined, {0, d_.jobs.size()});
+    }
     std::optional<InputSet> set;
     if (options_.inputs) set = options_.inputs->load(options_.input_key);
-    if (!set) set = remote_input_set();
-    if (!set || set->source_keys.size() != d_.jobs.size() || !inputs_unchanged(set->files)) return false;
-    std::map<std::string, int> by_key;
-    for (std::size_t i = 0; i < d_.jobs.size(); ++i) assign_source(i, set->source_keys[i], by_key);
-    std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
-    for (const InputRead& file : set->files)
-      if (file.found) dependencies.insert(file.path);
-    d_.dependencies.assign(dependencies.begin(), dependencies.end());
+    bool remote = false;
+    if (!set) {
+      set = server_input_set(options_.input_key);
+      remote = set.has_value();
+      if (remote && !build_.role.is_shard()) remote_input_set_ = encode_input_set(options_.input_key, *set);
+    }
+    if (!set || !take_keys(*set, {0, d_.jobs.size()})) return false;
+    taken_from_ = remote ? kServer : kLocal;
     return true;
   }
 
-  // The signed input set another machine of the team remembered (RemoteCache::load_input_set):
-  // a served build then skips preprocessing too. Checked like a local one before use.
-  std::optional<InputSet> remote_input_set() {
-    if (!options_.remote || options_.input_key.empty()) return std::nullopt;
-    auto bytes = options_.remote->load_input_set(options_.input_key);
+  // Takes the keys of this build's jobs (range_) from `set`, which holds those of the jobs in
+  // `covered`, when it covers them and every file it records is unchanged.
+  bool take_keys(const InputSet& set, JobRange covered) {
+    if (set.source_keys.size() != covered.size() || covered.first > range_.first || covered.last < range_.last)
+      return false;
+    if (!inputs_unchanged(set.files)) return false;
+    std::map<std::string, int> by_key;
+    for (std::size_t i = range_.first; i < range_.last; ++i) assign_source(i, set.source_keys[i - covered.first], by_key);
+    std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
+    for (const InputRead& file : set.files)
+      if (file.found) dependencies.insert(file.path);
+    d_.dependencies.assign(dependencies.begin(), dependencies.end());
+    taken_files_ = set.files;
+    return true;
+  }
+
+  // The signed input set (or part) another machine of the team remembered
+  // (RemoteCache::load_input_set): a served build then skips preprocessing too. Checked like a
+  // local one before use.
+  std::optional<InputSet> server_input_set(const std::string& key) {
+    if (!options_.remote) return std::nullopt;
+    auto bytes = options_.remote->load_input_set(key);
     if (!bytes) return std::nullopt;
-    auto set = decode_input_set(options_.input_key, *bytes);
-    if (set) remote_input_set_ = *bytes;
-    return set;
+    return decode_input_set(key, *bytes);
+  }
+
+  // The merge of N known shards: their N parts of the input set from the server, joined. A part
+  // that is not there (or fails its signature or checksum) fails the merge before it fetches an
+  // entry, naming the shard to rerun.
+  Result<InputSet> joined_parts() {
+    const std::uint32_t count = build_.role.shards();
+    std::vector<InputSet> parts;
+    Diagnostics lacking;
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const std::string key = input_set_part_key(options_.input_key, i, count);
+      RemoteCache::Found found = RemoteCache::Found::no_answer;
+      auto bytes = options_.remote->load_input_set(key, &found);
+      std::optional<InputSet> part;
+      if (bytes) part = decode_input_set(key, *bytes);
+      if (part && part->source_keys.size() == shard_range(d_.jobs.size(), i, count).size()) {
+        parts.push_back(std::move(*part));
+        continue;
+      }
+      const std::string place = std::to_string(i) + "/" + std::to_string(count);
+      const char* what = found == RemoteCache::Found::none        ? "is not on the server"
+                         : found == RemoteCache::Found::no_answer ? "was not fetched (the server stopped answering)"
+                                                                  : "fails its checks (corrupt, or signed with another "
+                                                                    "secret)";
+      lacking.push_back(make_error("shard " + place + ": its part of the input set " + what +
+                                   "; rerun it: shadergen build " + d_.spec.spec_path.string() + " --shard " + place +
+                                   " --remote-cache " + options_.remote->shown_url() +
+                                   " (with the shards' other options)"));
+    }
+    if (!lacking.empty()) {
+      Diagnostics errors{make_error(std::to_string(lacking.size()) + " of " + std::to_string(count) +
+                                    " shards' parts of the input set are not on the remote cache " +
+                                    options_.remote->shown_url() + "; the merge fetched no entry and wrote nothing")};
+      errors.insert(errors.end(), lacking.begin(), lacking.end());
+      return errors;
+    }
+    auto joined = join_input_parts(std::move(parts));
+    if (!joined) {
+      Diagnostics errors = std::move(joined).take_errors();
+      for (Diagnostic& e : errors) e.file = d_.spec.spec_path.string();
+      return errors;
+    }
+    return joined;
+  }
+
+  // A shard's part of the input set: the files its jobs read and their keys, uploaded (signed;
+  // only with a secret) for the merge, and kept in the local cache. A shard that took its part
+  // from the server uploads nothing; one whose upload fails fails, since the merge would.
+  Status remember_part(const Shard& shard) {
+    if (options_.input_key.empty()) return Ok{};
+    InputSet part;
+    if (d_.inputs_reused) part.files = taken_files_;
+    else if (reads_) part.files = std::move(*reads_);
+    else return Ok{};  // a file changed during the build: nothing is remembered (the merge says so)
+    for (std::size_t j = range_.first; j < range_.last; ++j)
+      part.source_keys.push_back(d_.sources[static_cast<std::size_t>(d_.jobs[j].source)].key);
+    const std::string key = input_set_part_key(options_.input_key, shard.index, shard.count);
+    if (options_.inputs && !(d_.inputs_reused && taken_from_ == kLocal))
+      if (Status stored = options_.inputs->store(key, part); !stored)
+        log("warning: " + stored.errors().front().to_string());
+    if (!options_.remote || !options_.remote->signs() || (d_.inputs_reused && taken_from_ == kServer)) return Ok{};
+    if (options_.remote->store_input_set(key, encode_input_set(key, part))) return Ok{};
+    return make_error("shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
+                      ": its part of the input set was not stored on the remote cache " +
+                      options_.remote->shown_url() + " (the warnings above say why); the merge needs it");
   }
 
   void remember_inputs() {
@@ -287,19 +385,22 @@ class DomainCompiler {
   // preprocesses again); the includes and the files read go straight into sets shared by all
   // jobs (merge_reads()' rule: a file read differently by two jobs makes the reads
   // inconsistent). Memory then grows by a key per permutation, not by its text and reads.
+  // A shard preprocesses its own jobs only (range_).
   Status preprocess_all() {
-    std::vector<Result<std::string>> keys(d_.jobs.size(), Result<std::string>(std::string()));
+    const std::size_t first = range_.first;
+    std::vector<Result<std::string>> keys(range_.size(), Result<std::string>(std::string()));
     std::mutex shared_mutex;
     std::set<std::filesystem::path> includes;
     std::map<std::filesystem::path, InputRead> reads;
     bool consistent = true;
     parallel_for(
-        d_.jobs.size(), build_.jobs,
-        [&](std::size_t i) {
+        range_.size(), build_.jobs,
+        [&](std::size_t k) {
           auto start = Clock::now();
+          const std::size_t i = first + k;
           auto preprocessed = preprocess(source_of(d_, d_.jobs[i], kinds_));
           if (preprocessed) {
-            keys[i] = cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(preprocessed->text));
+            keys[k] = cache_key(key_parts_, stage_name(d_.jobs[i].stage), key_text(preprocessed->text));
             std::lock_guard lock(shared_mutex);
             includes.insert(preprocessed->includes.begin(), preprocessed->includes.end());
             for (InputRead& read : preprocessed->reads) {
@@ -307,7 +408,7 @@ class DomainCompiler {
               if (!fresh && (it->second.found != read.found || it->second.digest != read.digest)) consistent = false;
             }
           } else {
-            keys[i] = std::move(preprocessed).take_errors();
+            keys[k] = std::move(preprocessed).take_errors();
           }
           d_.jobs[i].preprocess_ms = milliseconds_since(start);
         },
@@ -317,13 +418,13 @@ class DomainCompiler {
     std::map<std::string, int> by_key;
     std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
     dependencies.insert(includes.begin(), includes.end());
-    for (std::size_t i = 0; i < d_.jobs.size(); ++i) {
+    for (std::size_t i = range_.first; i < range_.last; ++i) {
       dependencies.insert(d_.path_of(d_.jobs[i]).lexically_normal());
-      if (!keys[i]) {
-        failures.push_back({i, keys[i].errors(), {}});
+      if (!keys[i - first]) {
+        failures.push_back({i, keys[i - first].errors(), {}});
         continue;
       }
-      assign_source(i, *keys[i], by_key);
+      assign_source(i, *keys[i - first], by_key);
     }
     d_.dependencies.assign(dependencies.begin(), dependencies.end());
     if (!failures.empty()) return group_failures(d_, failures, build_.verbose);
@@ -539,9 +640,13 @@ class DomainCompiler {
                                   " (with --shards N the merge names each shard that lacks sources)"));
       return errors;
     }
+    // A source is named under the shard of its first job: that shard compiled it (others whose
+    // jobs share it may have too), so rerunning it puts the entry back.
     std::map<std::uint32_t, std::array<std::size_t, 4>> per_shard;
     for (std::size_t s = 0; s < total; ++s)
-      if (why[s] != kFound) ++per_shard[shard_of(s, total, build_.role.shards())][static_cast<unsigned char>(why[s])];
+      if (why[s] != kFound)
+        ++per_shard[shard_of(d_.sources[s].first_job, d_.jobs.size(), build_.role.shards())]
+                   [static_cast<unsigned char>(why[s])];
     for (const auto& [shard, n] : per_shard) {
       const std::string place = std::to_string(shard) + "/" + std::to_string(build_.role.shards());
       errors.push_back(make_error("shard " + place + ": " + lacking_text(n[kMissing], n[kCorrupt], n[kUnanswered]) +
@@ -592,27 +697,25 @@ class DomainCompiler {
     return replacing ? ShardFate::replaced : ShardFate::uploaded;
   }
 
-  // build --shard: this shard's sources, each made sure of on the server. GLSL errors are
-  // grouped over the permutations of the shard's sources, as in a whole build.
+  // build --shard: the distinct sources of this shard's jobs, each made sure of on the server.
+  // GLSL errors are grouped over the shard's permutations, as in a whole build.
   Status compile_shard(const Shard& shard) {
-    const SourceRange range = shard_range(d_.sources.size(), shard.index, shard.count);
-    const std::size_t total = range.last - range.first;
+    const std::size_t total = d_.sources.size();
     std::vector<Result<ShardFate>> fates(total, Result<ShardFate>(ShardFate::missing));
     std::atomic<std::size_t> done{0};
     std::mutex log_mutex;
     parallel_for(
         total, build_.jobs,
         [&](std::size_t k) {
-          fates[k] = make_sure_on_server(d_.sources[range.first + k]);
-          report_progress(++done, total, range.first + k, log_mutex);
+          fates[k] = make_sure_on_server(d_.sources[k]);
+          report_progress(++done, total, k, log_mutex);
         },
         build_.cancelled);
     if (cancelled()) return cancelled_error();
     std::vector<JobFailure> failures;
-    for (std::size_t j = 0; j < d_.jobs.size(); ++j) {
-      std::size_t source = static_cast<std::size_t>(d_.jobs[j].source);
-      if (source >= range.first && source < range.last && !fates[source - range.first])
-        failures.push_back({j, fates[source - range.first].errors(), {}});
+    for (std::size_t j = range_.first; j < range_.last; ++j) {
+      const auto& fate = fates[static_cast<std::size_t>(d_.jobs[j].source)];
+      if (!fate) failures.push_back({j, fate.errors(), {}});
     }
     if (!failures.empty()) return group_failures(d_, with_lines(std::move(failures)), build_.verbose);
     ShardOutcome outcome{shard.index, shard.count, static_cast<std::uint32_t>(total), 0, 0, 0};
@@ -780,6 +883,11 @@ class DomainCompiler {
   CompiledDomain& d_;
   const CompileOptions& options_;
   const BuildOptions& build_ = *options_.build;
+  JobRange range_;  // the jobs this build preprocesses and compiles: a shard's, else all
+  // Where the input set whose keys the build took came from, and its files.
+  static constexpr int kLocal = 0, kServer = 1;
+  int taken_from_ = kLocal;
+  std::vector<InputRead> taken_files_;
   CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
   KindDeclarations kinds_ = kind_declarations(d_.spec);
   std::optional<std::vector<InputRead>> reads_;         // what preprocessing read; nullopt: inconsistent

@@ -1,9 +1,11 @@
-// shard_partition.h - which distinct sources a shard of a domain owns (`build --shard I/N`).
+// shard_partition.h - which compile jobs a shard of a domain owns (`build --shard I/N`).
 //
-// The distinct sources are numbered in the order of their first compile job, which depends on
-// the spec and the files it reads only, so every machine numbers them alike. Shard I of N owns
-// the contiguous range [floor(I*S/N), floor((I+1)*S/N)) of the S sources: the N ranges are
-// disjoint, cover every source, and differ in size by at most one.
+// The compile jobs are in the order make_jobs() gives them, which depends on the spec (and the
+// variants file) only, so every machine numbers them alike before preprocessing anything.
+// Shard I of N owns the contiguous range [floor(I*J/N), floor((I+1)*J/N)) of the J jobs: the N
+// ranges are disjoint, cover every job, and differ in size by at most one. A shard preprocesses
+// and compiles its own jobs only, so a distinct source that jobs of two shards share is
+// compiled by both (its cache key, and so its entry, is the same).
 #pragma once
 
 #include <cstddef>
@@ -11,20 +13,23 @@
 
 namespace shadergen {
 
-struct SourceRange {
+struct JobRange {
   std::size_t first = 0;
   std::size_t last = 0;  // one past the end
+
+  std::size_t size() const { return last - first; }
+  bool contains(std::size_t job) const { return job >= first && job < last; }
 };
 
 // Precondition: index < count.
-constexpr SourceRange shard_range(std::size_t sources, std::uint32_t index, std::uint32_t count) {
-  auto bound = [&](std::uint64_t i) { return static_cast<std::size_t>(i * sources / count); };
+constexpr JobRange shard_range(std::size_t jobs, std::uint32_t index, std::uint32_t count) {
+  auto bound = [&](std::uint64_t i) { return static_cast<std::size_t>(i * jobs / count); };
   return {bound(index), bound(std::uint64_t{index} + 1)};
 }
 
-// The shard that owns source `source`. Preconditions: source < sources, count >= 1.
-constexpr std::uint32_t shard_of(std::size_t source, std::size_t sources, std::uint32_t count) {
-  return static_cast<std::uint32_t>(((std::uint64_t{source} + 1) * count + sources - 1) / sources - 1);
+// The shard that owns job `job`. Preconditions: job < jobs, count >= 1.
+constexpr std::uint32_t shard_of(std::size_t job, std::size_t jobs, std::uint32_t count) {
+  return static_cast<std::uint32_t>(((std::uint64_t{job} + 1) * count + jobs - 1) / jobs - 1);
 }
 
 }  // namespace shadergen

@@ -139,9 +139,12 @@ BuildSummary summarise(std::span<const CompiledDomain> entries) {
     s.companions += static_cast<std::uint32_t>(d.spec.companions.size());
     s.unique_sources += static_cast<std::uint32_t>(d.sources.size());
     for (const SourceRecord& source : d.sources) (source.cache_hit ? s.cache_hits : s.compiled)++;
-    s.permutations += static_cast<std::uint32_t>(d.jobs.size());
-    for (const CompileJob& job : d.jobs)
+    // A shard's jobs only: the others have no source there.
+    for (const CompileJob& job : d.jobs) {
+      if (job.source < 0) continue;
+      ++s.permutations;
       (d.sources[static_cast<std::size_t>(job.source)].cache_hit ? s.reused : s.recompiled)++;
+    }
     s.inputs_reused = s.inputs_reused && d.inputs_reused;
     s.unique_blobs += static_cast<std::uint32_t>(d.blobs.size());
     for (const Blob& b : d.blobs) s.optimiser_fallbacks += b.fell_back;
@@ -205,6 +208,7 @@ BuildSummary shard_summary(std::span<const CompiledDomain> entries, std::vector<
   for (const CompiledDomain& domain : entries) {
     const ShardOutcome& shard = *domain.shard;
     summary.shard_index = shard.index, summary.shard_count = shard.count;
+    summary.domain_permutations += static_cast<std::uint32_t>(domain.jobs.size());
     summary.shard_sources += shard.sources, summary.shard_on_server += shard.on_server;
     summary.shard_uploaded += shard.uploaded, summary.shard_replaced += shard.replaced;
   }

@@ -79,12 +79,20 @@ std::string joined(const std::vector<std::string>& lines) {
   return text;
 }
 
-// The content entries on the server (<key[0:2]>/<key>), without the shards' records (shards/).
+// The content entries on the server (<key[0:2]>/<key>), without the shards' records (shards/)
+// and the input sets and their parts (inputs/).
 std::vector<fs::path> entries_on(const NginxServer& server) {
   std::vector<fs::path> entries;
   for (const fs::path& file : sgtest::files_under(server.data_dir()))
-    if (file.parent_path().filename() != "shards") entries.push_back(file);
+    if (file.parent_path().filename() != "shards" && file.parent_path().filename() != "inputs")
+      entries.push_back(file);
   return entries;
+}
+
+// The input-set parts on the server (inputs/), signed shards only.
+std::vector<fs::path> input_sets_on(const NginxServer& server) {
+  const fs::path folder = server.data_dir() / "inputs";
+  return fs::exists(folder) ? sgtest::files_under(folder) : std::vector<fs::path>{};
 }
 
 // The requests that change the server (PUT, MKCOL) or ask before one (HEAD), so far.
@@ -118,19 +126,19 @@ void three_shards_and_a_warm_merge_machine(const fs::path& dir, const NginxServe
   ASSERT_TRUE(server.running()) << server.error()
 
 TEST(ShardPartition, DisjointCoveringAndBalanced) {
-  for (std::size_t sources : {0u, 1u, 2u, 7u, 13u, 100u, 4097u})
+  for (std::size_t jobs : {0u, 1u, 2u, 7u, 13u, 100u, 4097u})
     for (std::uint32_t count : {1u, 2u, 3u, 8u, 13u, 64u, 4096u}) {
-      std::size_t next = 0, smallest = sources, largest = 0;
+      std::size_t next = 0, smallest = jobs, largest = 0;
       for (std::uint32_t i = 0; i < count; ++i) {
-        SourceRange r = shard_range(sources, i, count);
-        ASSERT_EQ(r.first, next) << sources << " sources, shard " << i << "/" << count;
+        JobRange r = shard_range(jobs, i, count);
+        ASSERT_EQ(r.first, next) << jobs << " jobs, shard " << i << "/" << count;
         ASSERT_LE(r.first, r.last);
-        for (std::size_t s = r.first; s < r.last; ++s) ASSERT_EQ(shard_of(s, sources, count), i);
-        smallest = std::min(smallest, r.last - r.first), largest = std::max(largest, r.last - r.first);
+        for (std::size_t j = r.first; j < r.last; ++j) ASSERT_EQ(shard_of(j, jobs, count), i);
+        smallest = std::min(smallest, r.size()), largest = std::max(largest, r.size());
         next = r.last;
       }
-      EXPECT_EQ(next, sources) << "the shards cover every source";
-      EXPECT_LE(largest - smallest, 1u) << sources << " sources in " << count << " shards";
+      EXPECT_EQ(next, jobs) << "the shards cover every job";
+      EXPECT_LE(largest - smallest, 1u) << jobs << " jobs in " << count << " shards";
     }
 }
 
@@ -138,24 +146,28 @@ TEST(ShardedBuild, ShardsThenMergeWriteTheBytesOfALocalBuild) {
   sgtest::TempDir run_dir("shards");
   const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
-  std::uint32_t owned = 0;
+  std::uint32_t jobs = 0;
   for (std::uint32_t i = 0; i < 3; ++i) {
     ShardRun s = shard(dir, server.url(), i, 3);
     ASSERT_TRUE(s.summary) << joined(s.errors);
     EXPECT_TRUE(s.summary->sharded);
     EXPECT_EQ(s.summary->shard_index, i);
-    EXPECT_EQ(s.summary->shard_uploaded, s.summary->shard_sources);
-    EXPECT_EQ(s.summary->shard_on_server, 0u);
-    EXPECT_EQ(s.summary->unique_sources, kToySources);
-    owned += s.summary->shard_sources;
+    // Each shard preprocessed and compiled its third of the jobs only (shard_partition.h).
+    EXPECT_EQ(s.summary->permutations, shard_range(s.summary->domain_permutations, i, 3).size());
+    EXPECT_EQ(s.summary->shard_sources, s.summary->unique_sources);
+    EXPECT_LT(s.summary->shard_sources, kToySources);
+    EXPECT_EQ(s.summary->shard_uploaded + s.summary->shard_on_server, s.summary->shard_sources);
+    jobs += s.summary->permutations;
     EXPECT_FALSE(fs::exists(dir / ("shard" + std::to_string(i) + ".out"))) << "a shard writes no output";
   }
-  EXPECT_EQ(owned, kToySources);
+  EXPECT_EQ(jobs, 17u) << "the toy domain's 12 unpruned raw, 4 optimised and 1 companion jobs, each in one shard";
   EXPECT_EQ(entries_on(server).size(), kToySources);
   EXPECT_EQ(sgtest::files_under(server.data_dir() / "shards").size(), 3u) << "one record per shard";
+  EXPECT_TRUE(input_sets_on(server).empty()) << "no input set is shared without a secret";
 
   ShardRun merged = merge(dir, server.url(), 3);
   ASSERT_TRUE(merged.summary) << joined(merged.errors);
+  EXPECT_FALSE(merged.summary->inputs_reused) << "without a secret the merge preprocesses the domain itself";
   EXPECT_EQ(merged.summary->compiled, 0u);
   EXPECT_EQ(merged.summary->remote->fetched, kToySources);
   EXPECT_TRUE(merged.warnings.empty()) << joined(merged.warnings);
@@ -197,8 +209,8 @@ TEST(ShardedBuild, MergeRefusesAShardThatDidNotFinishBeforeFetchingAnything) {
   // Without --shards the merge cannot name the shard, but still counts what the server lacks.
   ShardRun unnamed = merge(dir, server.url(), 0);
   ASSERT_FALSE(unnamed.summary);
-  SourceRange missing = shard_range(kToySources, 1, 3);
-  const std::size_t n = missing.last - missing.first;
+  const std::size_t n = kToySources - entries_on(server).size();
+  ASSERT_GT(n, 0u);
   ASSERT_EQ(unnamed.errors.size(), 2u) << joined(unnamed.errors);
   EXPECT_EQ(unnamed.errors[0], "error: " + std::to_string(n) + " of 13 distinct sources are not on the remote cache " +
                                    server.url() + " (" + std::to_string(n) +
@@ -366,21 +378,81 @@ TEST(ShardedBuild, SignedShardsAndMerge) {
   EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
 }
 
-// A farm's fresh nodes run with --no-cache: the input set still comes from the server, so only
-// the first shard preprocesses and the merge does not.
-TEST(ShardedBuild, WithoutLocalCachesTheInputSetComesFromTheServer) {
+// A farm's fresh nodes run with --no-cache. With a secret each shard preprocesses its own jobs
+// and uploads its part of the input set; the merge joins the parts and preprocesses nothing.
+TEST(ShardedBuild, SignedShardsUploadTheirPartsAndTheMergeJoinsThem) {
   sgtest::TempDir run_dir("no_local_cache");
   const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
   for (std::uint32_t i = 0; i < 2; ++i) {
     ShardRun s = shard(dir, server.url(), i, 2, "farm secret", /*local_cache=*/false);
     ASSERT_TRUE(s.summary) << joined(s.errors);
-    EXPECT_EQ(s.summary->inputs_reused, i == 1) << "shard " << i;
+    EXPECT_FALSE(s.summary->inputs_reused) << "shard " << i << " preprocesses its own jobs";
+    EXPECT_EQ(input_sets_on(server).size(), i + 1) << "shard " << i << " uploaded its part";
   }
   ShardRun merged = merge(dir, server.url(), 2, "farm secret", /*local_cache=*/false);
   ASSERT_TRUE(merged.summary) << joined(merged.errors);
-  EXPECT_TRUE(merged.summary->inputs_reused);
+  EXPECT_TRUE(merged.summary->inputs_reused) << "the merge joined the parts";
   EXPECT_FALSE(fs::exists(dir / "merge.cache")) << "--no-cache writes no local cache";
+  EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
+
+  // A shard run again finds its part on the server and preprocesses nothing.
+  ShardRun again = shard(dir, server.url(), 1, 2, "farm secret", /*local_cache=*/false);
+  ASSERT_TRUE(again.summary) << joined(again.errors);
+  EXPECT_TRUE(again.summary->inputs_reused);
+  EXPECT_EQ(again.summary->shard_uploaded, 0u);
+}
+
+// A part that is not on the server fails the merge before it fetches an entry, naming the shard
+// whose rerun puts it back; a corrupt part likewise.
+TEST(ShardedBuild, MergeRefusesAMissingOrCorruptPartOfTheInputSet) {
+  sgtest::TempDir run_dir("parts");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  const std::string secret = "farm secret";
+  ASSERT_TRUE(shard(dir, server.url(), 0, 2, secret, false).summary);
+  const std::vector<fs::path> first = input_sets_on(server);
+  ASSERT_EQ(first.size(), 1u);
+  ASSERT_TRUE(shard(dir, server.url(), 1, 2, secret, false).summary);
+  fs::path second;
+  for (const fs::path& part : input_sets_on(server))
+    if (part != first.front()) second = part;
+  ASSERT_FALSE(second.empty());
+  fs::remove(second);
+  fs::create_directories(dir / "merge.out");
+  std::ofstream(dir / "merge.out" / "earlier.txt") << "earlier";
+  const auto before = sgtest::snapshot(dir / "merge.out");
+  const std::size_t writes = writes_to(server);
+  const std::size_t gets_before = sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET ");
+
+  ShardRun merged = merge(dir, server.url(), 2, secret, false);
+  ASSERT_FALSE(merged.summary);
+  ASSERT_EQ(merged.errors.size(), 2u) << joined(merged.errors);
+  EXPECT_EQ(merged.errors[0], "error: 1 of 2 shards' parts of the input set are not on the remote cache " +
+                                  server.url() + "; the merge fetched no entry and wrote nothing");
+  EXPECT_EQ(merged.errors[1], "error: shard 1/2: its part of the input set is not on the server; rerun it: "
+                              "shadergen build " +
+                                  sgtest::toy_spec().string() + " --shard 1/2 --remote-cache " + server.url() +
+                                  " (with the shards' other options)");
+  EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), before);
+  EXPECT_EQ(writes_to(server), writes) << "the merge made no upload";
+  EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET "), gets_before + 4)
+      << "the two records and the two parts, and no entry";
+
+  // One flipped byte in shard 0's part: its signature no longer holds.
+  std::string bytes = sgtest::read_file(first.front());
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x20);
+  sgtest::write_file(first.front(), bytes);
+  ShardRun both = merge(dir, server.url(), 2, secret, false);
+  ASSERT_FALSE(both.summary);
+  EXPECT_NE(joined(both.errors).find("error: shard 0/2: its part of the input set fails its checks"), std::string::npos)
+      << joined(both.errors);
+
+  // Rerunning the named shards puts their parts back; the merge then passes.
+  for (std::uint32_t i = 0; i < 2; ++i) ASSERT_TRUE(shard(dir, server.url(), i, 2, secret, false).summary);
+  ShardRun repaired = merge(dir, server.url(), 2, secret, false);
+  ASSERT_TRUE(repaired.summary) << joined(repaired.errors);
+  EXPECT_TRUE(repaired.summary->inputs_reused);
   EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
 }
 
@@ -390,7 +462,7 @@ TEST(ShardedBuild, AShardWithoutAServerFailsNamingWhatIsMissing) {
   std::string url = "http://127.0.0.1:" + std::to_string(testsupport::unused_local_port()) + "/cache";
   ShardRun s = shard(run_dir.path(), url, 0, 2);
   ASSERT_FALSE(s.summary);
-  EXPECT_NE(joined(s.errors).find("shard 0/2: 6 of its 6 distinct sources are not on the remote cache"),
+  EXPECT_NE(joined(s.errors).find("shard 0/2: 8 of its 8 distinct sources are not on the remote cache"),
             std::string::npos)
       << joined(s.errors);
   ASSERT_EQ(s.warnings.size(), 1u);
