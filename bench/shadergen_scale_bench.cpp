@@ -45,6 +45,7 @@ struct Options {
   fs::path work;                    // empty: a fresh folder under the system temporary folder, removed at the end
   fs::path json;                    // empty: none
   std::vector<int> variants_lines;  // 32-bit domains built from variants files of these many lines
+  std::vector<bool> signed_runs = {true, false};  // shard rounds: with a secret, without one
 };
 
 std::vector<int> int_list(const std::string& text) {
@@ -58,10 +59,12 @@ std::vector<int> int_list(const std::string& text) {
 const char* kUsage =
     "usage: shadergen_scale_bench [--quick] [--features 14,16,18,20] [--shard-features 16] [--shards 8]\n"
     "                             [--jobs 2] [--shadergen EXE] [--work DIR] [--json FILE]\n"
-    "                             [--variants-lines 2500,10000]\n"
+    "                             [--variants-lines 2500,10000] [--secret both|signed|unsigned]\n"
     "  --quick: --features 8,10 --shard-features 10 --shards 2 --variants-lines 50 (a smoke run of a few\n"
     "           seconds)\n"
-    "  --variants-lines: also build a 32-feature domain from variants files of that many lines\n";
+    "  --variants-lines: also build a 32-feature domain from variants files of that many lines\n"
+    "  --secret: the shard rounds to run (default both): signed shards share the input set in parts,\n"
+    "            unsigned ones do not, so their merge preprocesses the domain itself\n";
 
 std::optional<Options> parse_args(int argc, char** argv) {
   Options o;
@@ -89,6 +92,8 @@ std::optional<Options> parse_args(int argc, char** argv) {
       o.json = value;
     else if (arg == "--variants-lines")
       o.variants_lines = int_list(value);
+    else if (arg == "--secret" && (value == "both" || value == "signed" || value == "unsigned"))
+      o.signed_runs = value == "both" ? std::vector<bool>{true, false} : std::vector<bool>{value == "signed"};
     else
       return std::nullopt;
   }
@@ -233,7 +238,11 @@ struct ShardRun {
   bool identical = false;
 };
 
-ShardRun run_shards(const Options& o, const fs::path& spec, const fs::path& work, const fs::path& reference) {
+// `signed_run`: with a secret, as a farm should be (docs/distributed.md): each shard then uploads
+// its part of the input set and the merge joins the parts instead of preprocessing. Without one
+// the merge preprocesses the domain itself.
+ShardRun run_shards(const Options& o, const fs::path& spec, const fs::path& work, const fs::path& reference,
+                    bool signed_run) {
   ShardRun result;
   testsupport::NginxServer server(work / "nginx");
   if (!server.running()) {
@@ -241,24 +250,29 @@ ShardRun run_shards(const Options& o, const fs::path& spec, const fs::path& work
     return result;
   }
   const std::string count = std::to_string(o.shards);
-  // Signed, as a farm should be (docs/distributed.md): the shards then also share the input
-  // set, and the merge skips preprocessing. --no-cache, like the one-machine build it is
-  // compared with: a farm's fresh nodes have no local cache worth reading or filling.
-  const fs::path secret = work / "secret";
-  std::ofstream(secret) << "shadergen_scale_bench secret\n";
+  // --no-cache, like the one-machine build it is compared with: a farm's fresh nodes have no
+  // local cache worth reading or filling.
+  std::vector<std::string> common = {"--remote-cache",       server.url(), "--no-cache", "-j",
+                                     std::to_string(o.jobs), "--stats"};
+  if (signed_run) {
+    const fs::path secret = work / "secret";
+    std::ofstream(secret) << "shadergen_scale_bench secret\n";
+    common.insert(common.end(), {"--remote-cache-secret-file", secret.string()});
+  }
+  auto with_common = [&](std::vector<std::string> args) {
+    args.insert(args.end(), common.begin(), common.end());
+    return args;
+  };
+  const char* kind = signed_run ? "signed" : "unsigned";
   for (int i = 0; i < o.shards; ++i) {
-    std::cerr << "shadergen_scale_bench: shard " << i << "/" << o.shards << "\n";
-    result.shards.push_back(
-        measured({o.shadergen.string(), "build", spec.string(), "--shard", std::to_string(i) + "/" + count,
-                  "--remote-cache", server.url(), "--remote-cache-secret-file", secret.string(), "--no-cache", "-j",
-                  std::to_string(o.jobs), "--stats"}));
+    std::cerr << "shadergen_scale_bench: " << kind << " shard " << i << "/" << o.shards << "\n";
+    result.shards.push_back(measured(
+        with_common({o.shadergen.string(), "build", spec.string(), "--shard", std::to_string(i) + "/" + count})));
     if (!result.shards.back().ok) return result;
   }
-  std::cerr << "shadergen_scale_bench: merge\n";
-  result.merge =
-      measured({o.shadergen.string(), "build", spec.string(), "--out", (work / "merged").string(), "--remote-cache",
-                server.url(), "--remote-cache-secret-file", secret.string(), "--require-remote-hits", "--shards", count,
-                "--no-cache", "-j", std::to_string(o.jobs), "--stats"});
+  std::cerr << "shadergen_scale_bench: " << kind << " merge\n";
+  result.merge = measured(with_common({o.shadergen.string(), "build", spec.string(), "--out",
+                                       (work / "merged").string(), "--require-remote-hits", "--shards", count}));
   result.identical = result.merge.ok && bench::same_output_files(work / "merged", reference);
   return result;
 }
@@ -297,16 +311,25 @@ std::string json_step(const Step& s) {
          ", \"sources\": " + std::to_string(s.sources) + ", \"preprocess_s\": " + fixed(s.preprocess_s, 3) + "}";
 }
 
-void write_json(const fs::path& path, const std::vector<DomainRow>& rows, const ShardRun& run, int shard_features) {
+std::string json_shard_run(const ShardRun& run, int shard_features) {
+  std::string text = "{\"features\": " + std::to_string(shard_features) + ", \"shards\": [";
+  for (std::size_t i = 0; i < run.shards.size(); ++i) text += (i ? ", " : "") + json_step(run.shards[i]);
+  return text + "], \"merge\": " + json_step(run.merge) + ", \"identical\": " + (run.identical ? "true" : "false") +
+         "}";
+}
+
+// "sharded": the signed round, "sharded_unsigned": the unsigned one; each only when it ran.
+void write_json(const fs::path& path, const std::vector<DomainRow>& rows,
+                const std::vector<std::pair<bool, ShardRun>>& runs, int shard_features) {
   std::ofstream out(path);
   out << "{\n  \"domains\": [\n";
   for (std::size_t i = 0; i < rows.size(); ++i)
     out << "    {\"features\": " << rows[i].features << ", \"build\": " << json_step(rows[i].build) << "}"
         << (i + 1 < rows.size() ? ",\n" : "\n");
-  out << "  ],\n  \"sharded\": {\"features\": " << shard_features << ", \"shards\": [";
-  for (std::size_t i = 0; i < run.shards.size(); ++i) out << (i ? ", " : "") << json_step(run.shards[i]);
-  out << "], \"merge\": " << json_step(run.merge) << ", \"identical\": " << (run.identical ? "true" : "false")
-      << "}\n}\n";
+  out << "  ]";
+  for (const auto& [signed_run, run] : runs)
+    out << ",\n  \"" << (signed_run ? "sharded" : "sharded_unsigned") << "\": " << json_shard_run(run, shard_features);
+  out << "\n}\n";
 }
 
 }  // namespace
@@ -344,17 +367,23 @@ int main(int argc, char** argv) {
   std::cout << "shadergen_scale_bench: " << o.shadergen.string() << ", -j " << o.jobs
             << ", cold builds (--no-cache)\n\n";
   print_domains(rows, std::cout);
-  ShardRun shards;
+  std::vector<std::pair<bool, ShardRun>> shard_runs;
   if (shard_spec) {
-    shards = run_shards(o, *shard_spec, work / "shards", *shard_reference);
-    std::cout << "\n"
-              << o.shard_features << "-feature domain in " << o.shards
-              << " shards, one after another on this machine, then the merge:\n";
-    print_shards(o, shards, shard_baseline, std::cout);
-    failed = failed || !shards.identical;
-    for (const Step& s : shards.shards)
-      if (!s.ok) std::cerr << "shadergen_scale_bench: a shard failed:\n" << s.failure;
-    if (!shards.merge.ok) std::cerr << "shadergen_scale_bench: the merge failed:\n" << shards.merge.failure;
+    for (bool signed_run : o.signed_runs) {
+      ShardRun shards =
+          run_shards(o, *shard_spec, work / (signed_run ? "shards" : "shards-unsigned"), *shard_reference, signed_run);
+      std::cout << "\n"
+                << o.shard_features << "-feature domain in " << o.shards << " shards "
+                << (signed_run ? "with a secret (the merge joins the shards' parts of the input set)"
+                               : "without a secret (the merge preprocesses the domain itself)")
+                << ", one after another on this machine, then the merge:\n";
+      print_shards(o, shards, shard_baseline, std::cout);
+      failed = failed || !shards.identical;
+      for (const Step& s : shards.shards)
+        if (!s.ok) std::cerr << "shadergen_scale_bench: a shard failed:\n" << s.failure;
+      if (!shards.merge.ok) std::cerr << "shadergen_scale_bench: the merge failed:\n" << shards.merge.failure;
+      shard_runs.emplace_back(signed_run, std::move(shards));
+    }
   } else {
     std::cout << "\nno shard run: the " << o.shard_features << "-feature domain did not build\n";
     failed = true;
@@ -373,7 +402,7 @@ int main(int argc, char** argv) {
     }
     print_listed(listed, std::cout);
   }
-  if (!o.json.empty()) write_json(o.json, rows, shards, o.shard_features);
+  if (!o.json.empty()) write_json(o.json, rows, shard_runs, o.shard_features);
   if (own_work) fs::remove_all(work);
   return failed ? 1 : 0;
 }

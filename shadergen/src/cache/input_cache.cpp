@@ -84,8 +84,8 @@ Result<InputSet> join_input_parts(std::vector<InputSet> parts) {
     for (InputRead& read : parts[part].files) {
       auto [it, fresh] = by_path.try_emplace(read.path, read, part);
       if (!fresh && (it->second.first.found != read.found || it->second.first.digest != read.digest))
-        return make_error("shards " + std::to_string(it->second.second) + "/" + count + " and " +
-                          std::to_string(part) + "/" + count + " read different bytes of " + read.path.string() +
+        return make_error("shards " + std::to_string(it->second.second) + "/" + count + " and " + std::to_string(part) +
+                          "/" + count + " read different bytes of " + read.path.string() +
                           ": it changed while the shards ran; rerun the shards");
     }
     for (std::string& key : parts[part].source_keys) joined.source_keys.push_back(std::move(key));

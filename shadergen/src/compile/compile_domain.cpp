@@ -89,8 +89,10 @@ class DomainCompiler {
     if (Status s = check_feature_reads(d_.spec); !s) return s;
     d_.jobs = make_jobs(d_.spec, d_.plan);
     index_jobs();
-    if (build_.role.is_shard()) range_ = shard_range(d_.jobs.size(), build_.role.place().index, build_.role.place().count);
-    else range_ = {0, d_.jobs.size()};
+    if (build_.role.is_shard())
+      range_ = shard_range(d_.jobs.size(), build_.role.place().index, build_.role.place().count);
+    else
+      range_ = {0, d_.jobs.size()};
     PhaseClock clock(d_.phases);
     auto reused = reuse_inputs();
     if (!reused) return std::move(reused).take_errors();
@@ -245,8 +247,8 @@ class DomainCompiler {
   Result<bool> reuse_inputs() {
     if (options_.input_key.empty()) return false;
     if (build_.role.is_shard()) {
-      const std::string part = input_set_part_key(options_.input_key, build_.role.place().index,
-                                                  build_.role.place().count);
+      const std::string part =
+          input_set_part_key(options_.input_key, build_.role.place().index, build_.role.place().count);
       if (options_.inputs)
         if (auto set = options_.inputs->load(part); set && take_keys(*set, range_)) return (taken_from_ = kLocal, true);
       if (auto set = server_input_set(part); set && take_keys(*set, range_)) return (taken_from_ = kServer, true);
@@ -276,7 +278,8 @@ class DomainCompiler {
       return false;
     if (!inputs_unchanged(set.files)) return false;
     std::map<std::string, int> by_key;
-    for (std::size_t i = range_.first; i < range_.last; ++i) assign_source(i, set.source_keys[i - covered.first], by_key);
+    for (std::size_t i = range_.first; i < range_.last; ++i)
+      assign_source(i, set.source_keys[i - covered.first], by_key);
     std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
     for (const InputRead& file : set.files)
       if (file.found) dependencies.insert(file.path);
@@ -344,9 +347,12 @@ class DomainCompiler {
   Status remember_part(const Shard& shard) {
     if (options_.input_key.empty()) return Ok{};
     InputSet part;
-    if (d_.inputs_reused) part.files = taken_files_;
-    else if (reads_) part.files = std::move(*reads_);
-    else return Ok{};  // a file changed during the build: nothing is remembered (the merge says so)
+    if (d_.inputs_reused)
+      part.files = taken_files_;
+    else if (reads_)
+      part.files = std::move(*reads_);
+    else
+      return Ok{};  // a file changed during the build: nothing is remembered (the merge says so)
     for (std::size_t j = range_.first; j < range_.last; ++j)
       part.source_keys.push_back(d_.sources[static_cast<std::size_t>(d_.jobs[j].source)].key);
     const std::string key = input_set_part_key(options_.input_key, shard.index, shard.count);
@@ -356,8 +362,8 @@ class DomainCompiler {
     if (!options_.remote || !options_.remote->signs() || (d_.inputs_reused && taken_from_ == kServer)) return Ok{};
     if (options_.remote->store_input_set(key, encode_input_set(key, part))) return Ok{};
     return make_error("shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
-                      ": its part of the input set was not stored on the remote cache " +
-                      options_.remote->shown_url() + " (the warnings above say why); the merge needs it");
+                      ": its part of the input set was not stored on the remote cache " + options_.remote->shown_url() +
+                      " (the warnings above say why); the merge needs it");
   }
 
   void remember_inputs() {

@@ -84,8 +84,7 @@ std::string joined(const std::vector<std::string>& lines) {
 std::vector<fs::path> entries_on(const NginxServer& server) {
   std::vector<fs::path> entries;
   for (const fs::path& file : sgtest::files_under(server.data_dir()))
-    if (file.parent_path().filename() != "shards" && file.parent_path().filename() != "inputs")
-      entries.push_back(file);
+    if (file.parent_path().filename() != "shards" && file.parent_path().filename() != "inputs") entries.push_back(file);
   return entries;
 }
 
@@ -430,10 +429,11 @@ TEST(ShardedBuild, MergeRefusesAMissingOrCorruptPartOfTheInputSet) {
   ASSERT_EQ(merged.errors.size(), 2u) << joined(merged.errors);
   EXPECT_EQ(merged.errors[0], "error: 1 of 2 shards' parts of the input set are not on the remote cache " +
                                   server.url() + "; the merge fetched no entry and wrote nothing");
-  EXPECT_EQ(merged.errors[1], "error: shard 1/2: its part of the input set is not on the server; rerun it: "
-                              "shadergen build " +
-                                  sgtest::toy_spec().string() + " --shard 1/2 --remote-cache " + server.url() +
-                                  " (with the shards' other options)");
+  EXPECT_EQ(merged.errors[1],
+            "error: shard 1/2: its part of the input set is not on the server; rerun it: "
+            "shadergen build " +
+                sgtest::toy_spec().string() + " --shard 1/2 --remote-cache " + server.url() +
+                " (with the shards' other options)");
   EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), before);
   EXPECT_EQ(writes_to(server), writes) << "the merge made no upload";
   EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET "), gets_before + 4)
