@@ -46,6 +46,8 @@ struct Options {
   fs::path json;                    // empty: none
   std::vector<int> variants_lines;  // 32-bit domains built from variants files of these many lines
   std::vector<bool> signed_runs = {true, false};  // shard rounds: with a secret, without one
+  int tasks = 0;                                  // machines the shards are projected onto (0: one per shard)
+  double straggler = 3.0;  // how much slower one of those machines is, in the straggler projection
 };
 
 std::vector<int> int_list(const std::string& text) {
@@ -60,11 +62,15 @@ const char* kUsage =
     "usage: shadergen_scale_bench [--quick] [--features 14,16,18,20] [--shard-features 16] [--shards 8]\n"
     "                             [--jobs 2] [--shadergen EXE] [--work DIR] [--json FILE]\n"
     "                             [--variants-lines 2500,10000] [--secret both|signed|unsigned]\n"
+    "                             [--tasks K] [--straggler F]\n"
     "  --quick: --features 8,10 --shard-features 10 --shards 2 --variants-lines 50 (a smoke run of a few\n"
     "           seconds)\n"
     "  --variants-lines: also build a 32-feature domain from variants files of that many lines\n"
     "  --secret: the shard rounds to run (default both): signed shards share the input set in parts,\n"
-    "            unsigned ones do not, so their merge preprocesses the domain itself\n";
+    "            unsigned ones do not, so their merge preprocesses the domain itself\n"
+    "  --tasks, --straggler: project the measured shard times onto K machines that take the shards in\n"
+    "            index order as they free (a Slurm array throttled with %K), once with every machine\n"
+    "            alike and once with one F times slower (default: K = shards, F = 3)\n";
 
 std::optional<Options> parse_args(int argc, char** argv) {
   Options o;
@@ -92,12 +98,17 @@ std::optional<Options> parse_args(int argc, char** argv) {
       o.json = value;
     else if (arg == "--variants-lines")
       o.variants_lines = int_list(value);
+    else if (arg == "--tasks")
+      o.tasks = std::atoi(value.c_str());
+    else if (arg == "--straggler")
+      o.straggler = std::atof(value.c_str());
     else if (arg == "--secret" && (value == "both" || value == "signed" || value == "unsigned"))
       o.signed_runs = value == "both" ? std::vector<bool>{true, false} : std::vector<bool>{value == "signed"};
     else
       return std::nullopt;
   }
-  bool sane = o.shards >= 1 && o.jobs >= 1 && o.shard_features >= 2 && !o.features.empty();
+  bool sane = o.tasks >= 0 && o.tasks <= o.shards && o.straggler >= 1.0 && o.shards >= 1 && o.jobs >= 1 &&
+              o.shard_features >= 2 && !o.features.empty();
   for (int n : o.features) sane = sane && n >= 2 && n <= 32;
   for (int lines : o.variants_lines) sane = sane && lines >= 1;
   if (!sane) return std::nullopt;
@@ -279,6 +290,18 @@ ShardRun run_shards(const Options& o, const fs::path& spec, const fs::path& work
 
 const char* verdict(bool met) { return met ? "met" : "MISSED"; }
 
+// When the last of the shards (measured `seconds`, in index order) finishes on `tasks` machines
+// that each take the next shard as they free (how Slurm runs `--array=0-(N-1)%K`), machine 0
+// taking `slow` times as long as measured. The shards' own start-up is in their times.
+double makespan(const std::vector<Step>& shards, int tasks, double slow) {
+  std::vector<double> free_at(static_cast<std::size_t>(tasks), 0.0);
+  for (const Step& shard : shards) {
+    auto next = std::min_element(free_at.begin(), free_at.end());  // the first to free; ties: lowest
+    *next += shard.seconds * (next == free_at.begin() ? slow : 1.0);
+  }
+  return *std::max_element(free_at.begin(), free_at.end());
+}
+
 void print_shards(const Options& o, const ShardRun& run, const Step& one_machine, std::ostream& out) {
   out << "\n| shard | wall (s) | CPU (s) | peak RSS (MiB) | preprocess (s) | preprocess share |\n"
          "|---|---|---|---|---|---|\n";
@@ -303,6 +326,15 @@ void print_shards(const Options& o, const ShardRun& run, const Step& one_machine
   out << "- largest shard RSS: " << fixed(largest_rss, 0) << " MiB (target <= 1024: " << verdict(largest_rss <= 1024.0)
       << ")\n";
   out << "- merged output byte-identical to the one-machine build: " << (run.identical ? "yes" : "NO") << "\n";
+  const int tasks = o.tasks > 0 ? o.tasks : o.shards;
+  if (static_cast<int>(run.shards.size()) != o.shards) return;
+  const double even = makespan(run.shards, tasks, 1.0), slowed = makespan(run.shards, tasks, o.straggler);
+  out << "- on " << tasks << " machines taking the " << o.shards
+      << " shards as they free, with the measured times: " << fixed(even)
+      << " s + merge = " << fixed((even + run.merge.seconds) / whole, 3) << " of one machine; with one machine "
+      << fixed(o.straggler, 1) << "x slower: " << fixed(slowed)
+      << " s + merge = " << fixed((slowed + run.merge.seconds) / whole, 3) << " (the straggler costs "
+      << fixed(slowed / even, 2) << "x the shards' time)\n";
 }
 
 std::string json_step(const Step& s) {

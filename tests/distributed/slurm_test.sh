@@ -424,6 +424,8 @@ expect_rc 2 "http:// or https://" "$split_second" --out "$work/out/x" --shards 4
 expect_rc 2 "sets the output, the shard and the remote cache itself" "$split_second" --out "$work/out/x" --shards 4 \
     --remote-cache "$url/x" --build-arg=--remote-cache-readonly
 expect_rc 2 "is not on PATH" "$split_second" --out "$work/out/x" --shards 4 --remote-cache "$url/x" --shadergen no-such-shadergen
+expect_rc 2 "--tasks must be an integer from 1 to --shards (4)" "$split_second" --out "$work/out/x" --shards 4 --tasks 5 \
+    --remote-cache "$url/x" --shadergen "$work/bin/sg"
 expect_rc 1 "MaxArraySize is 100" "$split_second" --out "$work/out/x" --shards 101 --remote-cache "$url/x" --shadergen "$work/bin/sg"
 grep -qF "slurm.conf" "$work/logs/args.err" || fail "the MaxArraySize error does not say where to raise it"
 [ -z "$(squeue -h)" ] || fail "an argument check submitted jobs: $(squeue)"
@@ -483,9 +485,13 @@ say "b. a failed and a cancelled shard: exit 1 naming tasks 2 and 1, merge cance
 c_out="$work/out/c d'x"
 printf 'slurm-test-secret-%s\n' "$(od -An -N8 -tx8 /dev/urandom | tr -d ' ')" >"$work/secret"
 chmod 600 "$work/secret"
-run_script c "$split_second" --out "$c_out" --shards 4 --remote-cache "$url/c" \
+run_script c "$split_second" --out "$c_out" --shards 4 --tasks 2 --remote-cache "$url/c" \
     --remote-cache-secret-file "$work/secret" --shadergen "$work/bin/sg"
 [ "$(cat "$work/logs/c.rc")" -eq 0 ] || fail "c: shadergen-slurm without --wait failed: $(show c)"
+# --tasks 2: Slurm runs at most 2 of the 4 shard tasks at once (the array's throttle).
+c_array=$(sed -n 's/^array=//p' "$c_out.slurm/jobs")
+scontrol show job "$c_array" | grep -q "ArrayTaskThrottle=2" ||
+    fail "c: --tasks 2 did not throttle the array: $(scontrol show job "$c_array" | head -n 5)"
 grep -q "squeue -j [0-9]*,[0-9]*" "$work/logs/c.out" || fail "c: no way to watch the jobs printed: $(show c)"
 queue_empty() { [ -z "$(squeue -h 2>/dev/null)" ]; }
 wait_for 150 queue_empty || fail "c: the jobs did not finish: $(squeue)"
