@@ -174,8 +174,11 @@ struct Step {
   double preprocess_s = 0.0;  // the "preprocess" phase of --stats (0 when skipped)
 };
 
-Step measured(const std::vector<std::string>& args) {
+// `log`, when given: where the step's output (its summary and --stats lines) is kept, beside
+// the figures, for whoever reads the run later (--work keeps the folder).
+Step measured(const std::vector<std::string>& args, const fs::path& log = {}) {
   bench::Run r = bench::run(args);
+  if (!log.empty()) std::ofstream(log) << r.out;
   Step s;
   s.ok = r.ok, s.seconds = r.seconds, s.cpu_seconds = r.cpu_seconds;
   s.rss_mib = static_cast<double>(r.peak_rss_kib) / 1024.0;
@@ -278,12 +281,14 @@ ShardRun run_shards(const Options& o, const fs::path& spec, const fs::path& work
   for (int i = 0; i < o.shards; ++i) {
     std::cerr << "shadergen_scale_bench: " << kind << " shard " << i << "/" << o.shards << "\n";
     result.shards.push_back(measured(
-        with_common({o.shadergen.string(), "build", spec.string(), "--shard", std::to_string(i) + "/" + count})));
+        with_common({o.shadergen.string(), "build", spec.string(), "--shard", std::to_string(i) + "/" + count}),
+        work / ("shard-" + std::to_string(i) + ".txt")));
     if (!result.shards.back().ok) return result;
   }
   std::cerr << "shadergen_scale_bench: " << kind << " merge\n";
   result.merge = measured(with_common({o.shadergen.string(), "build", spec.string(), "--out",
-                                       (work / "merged").string(), "--require-remote-hits", "--shards", count}));
+                                       (work / "merged").string(), "--require-remote-hits", "--shards", count}),
+                          work / "merge.txt");
   result.identical = result.merge.ok && bench::same_output_files(work / "merged", reference);
   return result;
 }
@@ -388,7 +393,8 @@ int main(int argc, char** argv) {
     const fs::path spec = write_domain(dir, n);
     std::cerr << "shadergen_scale_bench: " << n << " features, one machine\n";
     DomainRow row{n, measured({o.shadergen.string(), "build", spec.string(), "--out", (dir / "out").string(),
-                               "--no-cache", "-j", std::to_string(o.jobs), "--stats"})};
+                               "--no-cache", "-j", std::to_string(o.jobs), "--stats"},
+                              dir / "build.txt")};
     // A domain over the tool's limits is refused at the spec: that is a figure, not a failure.
     const bool refused = row.build.failure.find("error: raw.features:") != std::string::npos;
     if (!row.build.ok && !refused) failed = true;
