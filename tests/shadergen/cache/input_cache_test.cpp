@@ -6,6 +6,8 @@
 // recompiles exactly the permutations that define that feature.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -126,6 +128,37 @@ TEST(InputCache, EntryRoundTripsAndEveryCorruptionReadsAsAMiss) {
     flipped[at] = static_cast<char>(flipped[at] ^ 0x01);
     EXPECT_FALSE(shadergen::decode_input_set(key, flipped)) << "byte " << at << " flipped";
   }
+}
+
+// The shards' parts (build --shard with a secret): a key per (build, I, N), and the merge's
+// join keeps each path once and the keys in shard order, refusing two parts that read a file
+// differently.
+TEST(InputSetParts, KeysDifferPerShardAndJoinedPartsAreTheWholeSet) {
+  const std::string whole = shadergen::sha256_hex("some build");
+  std::set<std::string> keys{whole};
+  for (std::uint32_t count : {1u, 2u, 3u})
+    for (std::uint32_t i = 0; i < count; ++i)
+      EXPECT_TRUE(keys.insert(shadergen::input_set_part_key(whole, i, count)).second) << i << "/" << count;
+  EXPECT_EQ(shadergen::input_set_part_key(whole, 1, 3), shadergen::input_set_part_key(whole, 1, 3));
+  EXPECT_NE(shadergen::input_set_part_key(whole, 1, 3), shadergen::input_set_part_key(whole, 1, 4));
+
+  const std::string a = shadergen::sha256_hex("a"), b = shadergen::sha256_hex("b");
+  shadergen::InputSet first{{{"shared.glsl", true, a}, {"only0.glsl", false, {}}}, {a, b}};
+  shadergen::InputSet second{{{"shared.glsl", true, a}, {"only1.glsl", true, b}}, {b}};
+  auto joined = shadergen::join_input_parts({first, second});
+  ASSERT_TRUE(joined.ok());
+  EXPECT_EQ(joined->source_keys, (std::vector<std::string>{a, b, b}));
+  ASSERT_EQ(joined->files.size(), 3u);
+  EXPECT_EQ(joined->files[0].path, fs::path("only0.glsl"));
+  EXPECT_EQ(joined->files[1].path, fs::path("only1.glsl"));
+  EXPECT_EQ(joined->files[2].path, fs::path("shared.glsl"));
+
+  second.files[0].digest = b;  // shard 1 read other bytes of shared.glsl
+  auto refused = shadergen::join_input_parts({first, second});
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.errors().front().message,
+            "shards 0/2 and 1/2 read different bytes of shared.glsl: it changed while the shards ran; rerun the "
+            "shards");
 }
 
 TEST(InputCache, CorruptedEntryOnDiskIsAMissAndTheBuildIsStillRight) {
