@@ -5,6 +5,7 @@
 #include <openssl/evp.h>
 #include <openssl/params.h>
 
+#include <algorithm>
 #include <bit>
 #include <stdexcept>
 #include <utility>
@@ -79,6 +80,21 @@ Sha256& Sha256::update(std::span<const std::uint8_t> bytes) {
 
 Sha256& Sha256::update(std::string_view text) { return update(std::span(bytes_of(text), text.size())); }
 
+Sha256& Sha256::update_words(std::span<const std::uint32_t> words) {
+  // On a little-endian host, the words' own bytes.
+  if constexpr (std::endian::native == std::endian::little)
+    return update(std::span(reinterpret_cast<const std::uint8_t*>(words.data()), words.size_bytes()));
+  std::array<std::uint8_t, 1024> bytes{};
+  while (!words.empty()) {
+    const std::size_t count = std::min(words.size(), bytes.size() / 4);
+    for (std::size_t i = 0; i < count; ++i)
+      for (std::size_t b = 0; b < 4; ++b) bytes[4 * i + b] = static_cast<std::uint8_t>(words[i] >> (8 * b));
+    update(std::span(bytes.data(), 4 * count));
+    words = words.subspan(count);
+  }
+  return *this;
+}
+
 Sha256& Sha256::field(std::string_view text) {
   std::array<std::uint8_t, 8> length{};
   const std::uint64_t n = text.size();
@@ -115,22 +131,7 @@ std::string to_hex(std::span<const std::uint8_t> bytes) {
 
 std::string sha256_hex(std::string_view text) { return Sha256().update(text).finish_hex(); }
 
-std::string sha256_hex(std::span<const std::uint32_t> words) {
-  // Little-endian byte order, the order SPIR-V files use on disk: on a little-endian host,
-  // the words' own bytes.
-  if constexpr (std::endian::native == std::endian::little)
-    return Sha256()
-        .update(std::span(reinterpret_cast<const std::uint8_t*>(words.data()), words.size_bytes()))
-        .finish_hex();
-  Sha256 hasher;
-  for (std::uint32_t word : words) {
-    const std::array<std::uint8_t, 4> bytes = {static_cast<std::uint8_t>(word), static_cast<std::uint8_t>(word >> 8),
-                                               static_cast<std::uint8_t>(word >> 16),
-                                               static_cast<std::uint8_t>(word >> 24)};
-    hasher.update(bytes);
-  }
-  return hasher.finish_hex();
-}
+std::string sha256_hex(std::span<const std::uint32_t> words) { return Sha256().update_words(words).finish_hex(); }
 
 std::array<std::uint8_t, 32> hmac_sha256(std::string_view key, std::string_view message) {
   const std::unique_ptr<EVP_MAC_CTX, MacContextDeleter> context(EVP_MAC_CTX_new(hmac()));

@@ -32,6 +32,9 @@ class Sha256 {
 
   Sha256& update(std::span<const std::uint8_t> bytes);
   Sha256& update(std::string_view text);
+  // SPIR-V words, as the little-endian bytes a .spv file holds, whatever the host's byte order:
+  // one call into libcrypto for a whole blob, not one per word (each call has a cost of its own).
+  Sha256& update_words(std::span<const std::uint32_t> words);
   // A length-prefixed field, so ("ab","c") and ("a","bc") hash differently: the length as 8
   // little-endian bytes, then the text.
   Sha256& field(std::string_view text);

@@ -232,6 +232,14 @@ TEST(Sha256GoldenWords, LittleEndianBytes) {
   EXPECT_EQ(shadergen::sha256_hex(std::span<const std::uint32_t>(words.data(), 1)),
             "b263db113857145cd1ec390021310f185f50bd5e3027f4111c1c5d9b7c0890a4");
   EXPECT_EQ(shadergen::sha256_hex(words), "c16796751e9b17a991d00ab955a59613b3702729f6f4f3163d6dd6c32bb0a5ff");
+  // The same bytes through update_words() in two pieces, and as bytes through update().
+  const std::span<const std::uint32_t> all(words);
+  EXPECT_EQ(shadergen::Sha256().update_words(all.first(257)).update_words(all.subspan(257)).finish_hex(),
+            "c16796751e9b17a991d00ab955a59613b3702729f6f4f3163d6dd6c32bb0a5ff");
+  std::string bytes;
+  for (std::uint32_t word : words)
+    for (int b = 0; b < 4; ++b) bytes += static_cast<char>((word >> (8 * b)) & 0xffu);
+  EXPECT_EQ(shadergen::sha256_hex(bytes), "c16796751e9b17a991d00ab955a59613b3702729f6f4f3163d6dd6c32bb0a5ff");
 }
 
 // HMAC-SHA-256 under keys shorter than the block, exactly a block, one byte over and over two
