@@ -14,7 +14,7 @@ glslang-dev glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev
 libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
 libglm-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
 libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libmeshoptimizer-dev libdraco-dev
-libcurl4-openssl-dev libmimalloc-dev nginx"
+libcurl4-openssl-dev libssl-dev libmimalloc-dev nginx"
 if [ "${1:-}" = "--tests" ]; then
     PACKAGES="$PACKAGES clang-format clang-tidy assimp-testmodels apache2 ccache slurm-wlm munge"
 fi

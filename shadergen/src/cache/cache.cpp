@@ -63,12 +63,7 @@ std::filesystem::path default_cache_directory() {
 std::string entry_checksum(std::string_view key, const CachedBlob& blob) {
   Sha256 hash;
   hash.field(key).field(blob.fell_back ? "1" : "0").field(blob.fallback_reason);
-  for (std::uint32_t word : blob.words) {
-    const std::uint8_t bytes[4] = {static_cast<std::uint8_t>(word), static_cast<std::uint8_t>(word >> 8),
-                                   static_cast<std::uint8_t>(word >> 16), static_cast<std::uint8_t>(word >> 24)};
-    hash.update(std::span<const std::uint8_t>(bytes, 4));
-  }
-  return hash.finish_hex();
+  return hash.update_words(blob.words).finish_hex();
 }
 
 std::string encode_cache_entry(std::string_view key, const CachedBlob& blob) {
