@@ -5,9 +5,11 @@
 // on its own, and the CLI's usage errors by their exit code.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include <testsupport/local_port.h>
 #include <testsupport/nginx_server.h>
@@ -94,9 +96,23 @@ std::vector<fs::path> input_sets_on(const NginxServer& server) {
   return fs::exists(folder) ? sgtest::files_under(folder) : std::vector<fs::path>{};
 }
 
+// The access log once nginx has written it: it logs a request after sending the answer, so a
+// build can return before the line of its last request is there. Settled when unchanged for
+// 100 ms.
+std::string settled_log(const NginxServer& server) {
+  std::string log = sgtest::read_file(server.access_log());
+  for (int quiet = 0; quiet < 5;) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::string now = sgtest::read_file(server.access_log());
+    quiet = now == log ? quiet + 1 : 0;
+    log = std::move(now);
+  }
+  return log;
+}
+
 // The requests that change the server (PUT, MKCOL) or ask before one (HEAD), so far.
 std::size_t writes_to(const NginxServer& server) {
-  const std::string log = sgtest::read_file(server.access_log());
+  const std::string log = settled_log(server);
   return sgtest::count_of(log, "\"PUT ") + sgtest::count_of(log, "\"MKCOL ") + sgtest::count_of(log, "\"HEAD ");
 }
 
@@ -189,7 +205,7 @@ TEST(ShardedBuild, MergeRefusesAShardThatDidNotFinishBeforeFetchingAnything) {
   fs::create_directories(dir / "merge.out");
   std::ofstream(dir / "merge.out" / "earlier.txt") << "earlier";
   const auto before = sgtest::snapshot(dir / "merge.out");
-  const std::size_t gets_before = sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET ");
+  const std::size_t gets_before = sgtest::count_of(settled_log(server), "\"GET ");
 
   ShardRun merged = merge(dir, server.url(), 3);
   ASSERT_FALSE(merged.summary);
@@ -202,8 +218,7 @@ TEST(ShardedBuild, MergeRefusesAShardThatDidNotFinishBeforeFetchingAnything) {
                 sgtest::toy_spec().string() + " --shard 1/3 --remote-cache " + server.url() +
                 " (with the shards' other options)");
   EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), before);
-  EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET "), gets_before + 3)
-      << "the three records, and no entry";
+  EXPECT_EQ(sgtest::count_of(settled_log(server), "\"GET "), gets_before + 3) << "the three records, and no entry";
 
   // Without --shards the merge cannot name the shard, but still counts what the server lacks.
   ShardRun unnamed = merge(dir, server.url(), 0);
@@ -422,7 +437,7 @@ TEST(ShardedBuild, MergeRefusesAMissingOrCorruptPartOfTheInputSet) {
   std::ofstream(dir / "merge.out" / "earlier.txt") << "earlier";
   const auto before = sgtest::snapshot(dir / "merge.out");
   const std::size_t writes = writes_to(server);
-  const std::size_t gets_before = sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET ");
+  const std::size_t gets_before = sgtest::count_of(settled_log(server), "\"GET ");
 
   ShardRun merged = merge(dir, server.url(), 2, secret, false);
   ASSERT_FALSE(merged.summary);
@@ -436,7 +451,7 @@ TEST(ShardedBuild, MergeRefusesAMissingOrCorruptPartOfTheInputSet) {
                 " (with the shards' other options)");
   EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), before);
   EXPECT_EQ(writes_to(server), writes) << "the merge made no upload";
-  EXPECT_EQ(sgtest::count_of(sgtest::read_file(server.access_log()), "\"GET "), gets_before + 4)
+  EXPECT_EQ(sgtest::count_of(settled_log(server), "\"GET "), gets_before + 4)
       << "the two records and the two parts, and no entry";
 
   // One flipped byte in shard 0's part: its signature no longer holds.
