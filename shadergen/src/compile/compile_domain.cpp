@@ -250,13 +250,16 @@ class DomainCompiler {
       const std::string part =
           input_set_part_key(options_.input_key, build_.role.place().index, build_.role.place().count);
       if (options_.inputs)
-        if (auto set = options_.inputs->load(part); set && take_keys(*set, range_)) return (taken_from_ = kLocal, true);
-      if (auto set = server_input_set(part); set && take_keys(*set, range_)) return (taken_from_ = kServer, true);
+        if (auto set = options_.inputs->load(part); set && take_keys(*set, range_))
+          return (taken_ = Taken::local_part, true);
+      if (auto set = server_input_set(part); set && take_keys(*set, range_)) return (taken_ = Taken::server_part, true);
     } else if (build_.role.is_merge() && build_.role.shards() > 0 && options_.remote && options_.remote->signs()) {
       auto joined = joined_parts();
       if (!joined) return std::move(joined).take_errors();
       // Files changed since the shards ran: the merge preprocesses, and names what is missing.
-      return take_keys(*joined, {0, d_.jobs.size()});
+      if (!take_keys(*joined, {0, d_.jobs.size()})) return false;
+      taken_ = Taken::server_whole;
+      return true;
     }
     std::optional<InputSet> set;
     if (options_.inputs) set = options_.inputs->load(options_.input_key);
@@ -267,7 +270,7 @@ class DomainCompiler {
       if (remote && !build_.role.is_shard()) remote_input_set_ = encode_input_set(options_.input_key, *set);
     }
     if (!set || !take_keys(*set, {0, d_.jobs.size()})) return false;
-    taken_from_ = remote ? kServer : kLocal;
+    taken_ = remote ? Taken::server_whole : Taken::local_whole;
     return true;
   }
 
@@ -356,10 +359,10 @@ class DomainCompiler {
     for (std::size_t j = range_.first; j < range_.last; ++j)
       part.source_keys.push_back(d_.sources[static_cast<std::size_t>(d_.jobs[j].source)].key);
     const std::string key = input_set_part_key(options_.input_key, shard.index, shard.count);
-    if (options_.inputs && !(d_.inputs_reused && taken_from_ == kLocal))
+    if (options_.inputs && taken_ != Taken::local_part)
       if (Status stored = options_.inputs->store(key, part); !stored)
         log("warning: " + stored.errors().front().to_string());
-    if (!options_.remote || !options_.remote->signs() || (d_.inputs_reused && taken_from_ == kServer)) return Ok{};
+    if (!options_.remote || !options_.remote->signs() || taken_ == Taken::server_part) return Ok{};
     if (options_.remote->store_input_set(key, encode_input_set(key, part))) return Ok{};
     return make_error("shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
                       ": its part of the input set was not stored on the remote cache " + options_.remote->shown_url() +
@@ -890,9 +893,11 @@ class DomainCompiler {
   const CompileOptions& options_;
   const BuildOptions& build_ = *options_.build;
   JobRange range_;  // the jobs this build preprocesses and compiles: a shard's, else all
-  // Where the input set whose keys the build took came from, and its files.
-  static constexpr int kLocal = 0, kServer = 1;
-  int taken_from_ = kLocal;
+  // Where the input set whose keys the build took came from (none: it preprocessed), and its
+  // files. A shard that took a whole set still uploads its part; one that took its own part
+  // from the server does not.
+  enum class Taken { none, local_part, server_part, local_whole, server_whole };
+  Taken taken_ = Taken::none;
   std::vector<InputRead> taken_files_;
   CacheKeyParts key_parts_ = current_cache_key_parts();  // with this domain's target
   KindDeclarations kinds_ = kind_declarations(d_.spec);

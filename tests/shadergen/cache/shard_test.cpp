@@ -417,6 +417,29 @@ TEST(ShardedBuild, SignedShardsUploadTheirPartsAndTheMergeJoinsThem) {
   EXPECT_EQ(again.summary->shard_uploaded, 0u);
 }
 
+// A shard that finds a whole input set on the server (a signed build of the same spec ran
+// against it) takes its jobs' keys from it, preprocessing nothing, and still uploads its part.
+TEST(ShardedBuild, AShardTakingAWholeInputSetStillUploadsItsPart) {
+  sgtest::TempDir run_dir("whole_set");
+  const fs::path& dir = run_dir.path();
+  START_SERVER(server, dir / "nginx");
+  const std::string secret = "farm secret";
+  ShardRun whole = run(dir, "whole", server.url(), [&](BuildOptions& o) { o.remote_cache_secret = secret; });
+  ASSERT_TRUE(whole.summary) << joined(whole.errors);
+  ASSERT_EQ(input_sets_on(server).size(), 1u) << "the whole build's input set";
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    ShardRun s = shard(dir, server.url(), i, 2, secret, /*local_cache=*/false);
+    ASSERT_TRUE(s.summary) << joined(s.errors);
+    EXPECT_TRUE(s.summary->inputs_reused) << "shard " << i;
+    EXPECT_EQ(s.summary->shard_uploaded, 0u);
+  }
+  EXPECT_EQ(input_sets_on(server).size(), 3u) << "the whole set and the two parts";
+  ShardRun merged = merge(dir, server.url(), 2, secret, /*local_cache=*/false);
+  ASSERT_TRUE(merged.summary) << joined(merged.errors);
+  EXPECT_TRUE(merged.summary->inputs_reused);
+  EXPECT_EQ(sgtest::snapshot(dir / "merge.out"), sgtest::reference_output(dir));
+}
+
 // A part that is not on the server fails the merge before it fetches an entry, naming the shard
 // whose rerun puts it back; a corrupt part likewise.
 TEST(ShardedBuild, MergeRefusesAMissingOrCorruptPartOfTheInputSet) {
