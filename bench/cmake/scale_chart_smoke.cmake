@@ -4,7 +4,7 @@
 # Arguments: -DBENCH=<shadergen_scale_bench> -DCHART=<shadergen_scale_chart> -DOUT=<scratch folder>.
 file(REMOVE_RECURSE "${OUT}")
 file(MAKE_DIRECTORY "${OUT}")
-execute_process(COMMAND "${BENCH}" --features 8,10 --shard-features 8 --shards 2 --json "${OUT}/scale.json"
+execute_process(COMMAND "${BENCH}" --features 8,10 --shard-features 8 --shards 2 --secret signed --json "${OUT}/scale.json"
                         --work "${OUT}/work"
   RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
 if(NOT rc EQUAL 0)
