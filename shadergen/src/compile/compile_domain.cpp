@@ -209,8 +209,10 @@ class DomainCompiler {
   }
 
   // A remote entry reaches the local cache only once the whole build has used it: the local
-  // cache never holds what the checks would reject.
+  // cache never holds what the checks would reject. Without a local cache (a merge, --no-cache)
+  // there is nothing to keep, and the words are not read back.
   void keep_remote_hits() {
+    if (!options_.cache) return;
     parallel_for(d_.sources.size(), build_.jobs, [&](std::size_t s) {
       const SourceRecord& record = d_.sources[s];
       if (!record.remote_hit) return;
@@ -539,8 +541,12 @@ class DomainCompiler {
     std::atomic<std::size_t> done{0};
     std::mutex log_mutex;
     std::size_t total = d_.sources.size();
+    // A merge's threads wait on the server most of the time (measured at 18 features: three
+    // fetches in flight per job took the fetching from 20-27 s to 13-17 s on 2 cores).
+    const unsigned threads =
+        build_.role.is_merge() ? kMergeFetchesPerJob * resolve_thread_count(build_.jobs) : build_.jobs;
     parallel_for(
-        total, build_.jobs,
+        total, threads,
         [&](std::size_t i) {
           if (!build_.role.is_merge()) {
             auto blob = compile_one(d_.sources[i]);
@@ -888,6 +894,7 @@ class DomainCompiler {
 
   // What the merge found of each distinct source (refuse_missing).
   static constexpr char kFound = 0, kMissing = 1, kCorrupt = 2, kUnanswered = 3;
+  static constexpr unsigned kMergeFetchesPerJob = 3;
 
   CompiledDomain& d_;
   const CompileOptions& options_;
