@@ -29,10 +29,26 @@ Status BlobSpill::create_folder() {
   return Ok{};
 }
 
+bool BlobSpill::first_put(const std::string& hash) {
+  auto nibble = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    return -1;  // upper case too: "AB" and "ab" name different files
+  };
+  std::array<unsigned char, 32> digest{};
+  bool hex = hash.size() == 2 * digest.size();
+  for (std::size_t i = 0; hex && i < digest.size(); ++i) {
+    int high = nibble(hash[2 * i]), low = nibble(hash[2 * i + 1]);
+    hex = high >= 0 && low >= 0;
+    digest[i] = static_cast<unsigned char>(high * 16 + low);
+  }
+  return hex ? stored_digests_.insert(digest).second : stored_.insert(hash).second;
+}
+
 Status BlobSpill::put(const std::string& hash, std::span<const std::uint32_t> words) {
   {
     std::lock_guard lock(mutex_);
-    if (!stored_.insert(hash).second) return Ok{};
+    if (!first_put(hash)) return Ok{};
     if (Status s = create_folder(); !s) return s;
   }
   // Written in place, not through a temporary: no one else reads this folder, and a failed write

@@ -8,6 +8,7 @@
 // in it, when the BlobSpill is destroyed: on success, failure and cancellation alike.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <mutex>
@@ -55,7 +56,12 @@ class BlobSpill {
   std::filesystem::path output_;
   mutable std::mutex mutex_;
   bool created_ = false;
-  std::set<std::string> stored_;  // hashes put() has written or is writing
+  // Hashes put() has written or is writing: a SHA-256 in hex as its 32 bytes (one per blob of
+  // the build, so half the memory of the hex text and no allocation of its own), anything else
+  // as given.
+  bool first_put(const std::string& hash);  // callers hold mutex_
+  std::set<std::array<unsigned char, 32>> stored_digests_;
+  std::set<std::string> stored_;
 };
 
 }  // namespace shadergen

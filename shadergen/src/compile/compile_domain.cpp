@@ -45,6 +45,12 @@ double milliseconds_since(Clock::time_point start) {
 std::vector<CompileJob> make_jobs(const DomainSpec& spec, const PermutationPlan& plan) {
   std::vector<CompileJob> jobs;
   const bool raw_too = spec.compile == CompileSet::all;
+  // Sized once: grown by doubling, the list would hold up to twice its jobs' room.
+  std::size_t raw_count = 0;
+  if (raw_too)
+    raw_count = static_cast<std::size_t>(
+        std::count_if(plan.raw.begin(), plan.raw.end(), [](const RawPermutation& raw) { return !raw.pruned; }));
+  jobs.reserve((raw_count + plan.optimised.size()) * (spec.program_vertex ? 2 : 1) + spec.companions.size());
   for (const RawPermutation& raw : plan.raw)
     if (raw_too && !raw.pruned) jobs.push_back({JobKind::raw, raw.id, spec.uber.stage});
   for (const OptimisedPermutation& optimised : plan.optimised)
@@ -242,6 +248,15 @@ class DomainCompiler {
     d_.jobs[i].source = it->second;
   }
 
+  // There are at most as many distinct sources as jobs, and as many in a domain without two
+  // equal texts (the generated ones of the scale bench): room for all at once instead of
+  // growth by doubling, which holds the old and the new list together. trim_sources() gives
+  // back the room of a domain whose jobs share sources.
+  void reserve_sources() { d_.sources.reserve(range_.size()); }
+  void trim_sources() {
+    if (d_.sources.size() < d_.sources.capacity() - d_.sources.capacity() / 4) d_.sources.shrink_to_fit();
+  }
+
   // With an input-set entry whose every file is unchanged, the preprocessed texts (and so
   // their keys) are what they were: take the keys and skip glslang altogether. A shard looks
   // for its own part first (a rerun), then for a whole set; a merge of known shards joins their
@@ -283,8 +298,10 @@ class DomainCompiler {
       return false;
     if (!inputs_unchanged(set.files)) return false;
     std::map<std::string, int> by_key;
+    reserve_sources();
     for (std::size_t i = range_.first; i < range_.last; ++i)
       assign_source(i, set.source_keys[i - covered.first], by_key);
+    trim_sources();
     std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
     for (const InputRead& file : set.files)
       if (file.found) dependencies.insert(file.path);
@@ -429,6 +446,7 @@ class DomainCompiler {
     std::map<std::string, int> by_key;
     std::set<std::filesystem::path> dependencies{d_.spec.spec_path.lexically_normal()};
     dependencies.insert(includes.begin(), includes.end());
+    reserve_sources();
     for (std::size_t i = range_.first; i < range_.last; ++i) {
       dependencies.insert(d_.path_of(d_.jobs[i]).lexically_normal());
       if (!keys[i - first]) {
@@ -437,6 +455,7 @@ class DomainCompiler {
       }
       assign_source(i, *keys[i - first], by_key);
     }
+    trim_sources();
     d_.dependencies.assign(dependencies.begin(), dependencies.end());
     if (!failures.empty()) return group_failures(d_, failures, build_.verbose);
     reads_.reset();
@@ -568,8 +587,9 @@ class DomainCompiler {
     }
     if (!failures.empty()) return group_failures(d_, with_lines(std::move(failures)), build_.verbose);
     if (!spill_errors_.empty()) return spill_errors_;
+    // Not needed past this point: freed before store_blobs() adds the blobs.
+    distinct_index_ = {};
     store_blobs(results);
-    distinct_index_.clear();
     return Ok{};
   }
 
@@ -774,6 +794,10 @@ class DomainCompiler {
   void store_blobs(std::vector<Result<SourceBlob>>& results) {
     std::vector<int> blob_of(distinct_.size(), -1);
     blob_distinct_.clear();
+    // Every distinct blob becomes one blob. Reserved, not grown by doubling: the blobs are the
+    // biggest record per permutation, and a doubling holds the old and the new list at once.
+    d_.blobs.reserve(d_.blobs.size() + distinct_.size());
+    blob_distinct_.reserve(distinct_.size());
     for (std::size_t s = 0; s < d_.sources.size(); ++s) {
       SourceBlob& compiled = results[s].value();
       int& blob = blob_of[compiled.distinct];

@@ -26,8 +26,8 @@ class StagedOutput {
   // another file system, copied) into the staging folder, so they are never held in memory.
   // `file` should be on the output's file system (a folder beside it: spill_folder_beside())
   // and must stay unchanged until commit() returns.
-  void add_file(const std::string& relative, std::filesystem::path file) {
-    files_[relative] = Entry{{}, std::move(file)};
+  void add_file(const std::string& relative, const std::filesystem::path& file) {
+    files_[relative] = Entry{{}, file.native()};
   }
 
   // True when the folder already holds exactly these files with exactly these bytes.
@@ -52,7 +52,9 @@ class StagedOutput {
 
   struct Entry {
     std::string bytes;
-    std::filesystem::path file;  // when not empty, holds the bytes instead
+    // When not empty, the file that holds the bytes instead. A string, not a path: a build adds
+    // one per blob, and a path also keeps a list of its components (a few hundred bytes more).
+    std::string file;
   };
   bool holds(const std::filesystem::path& path, const Entry& entry) const;
 
