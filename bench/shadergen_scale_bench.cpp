@@ -289,6 +289,12 @@ ShardRun run_shards(const Options& o, const fs::path& spec, const fs::path& work
   result.merge = measured(with_common({o.shadergen.string(), "build", spec.string(), "--out",
                                        (work / "merged").string(), "--require-remote-hits", "--shards", count}),
                           work / "merge.txt");
+  // Said before the comparison, which reads gigabytes at 20 features: the figures outlive it.
+  std::cerr << "shadergen_scale_bench: merge: " << (result.merge.ok ? "ok" : "FAILED") << ", " << result.merge.seconds
+            << " s wall, " << result.merge.cpu_seconds << " s CPU, " << result.merge.rss_mib
+            << " MiB; shards (s, MiB):";
+  for (const Step& s : result.shards) std::cerr << " " << s.seconds << " " << s.rss_mib;
+  std::cerr << "\n";
   result.identical = result.merge.ok && bench::same_output_files(work / "merged", reference);
   return result;
 }
