@@ -173,9 +173,9 @@ CLI::App* add_build_command(CLI::App& app, BuildCommandLine& line) {
               seconds_number(kDefaultRemoteCacheRequestLimit) + ")")
       ->check(CLI::Range(0.0, 3600.0));
   build_cmd->add_option("--shard", line.shard,
-                        "I/N: compile only shard I (0-based) of N of the domain's distinct sources and store them on "
-                        "--remote-cache; writes no output folder; exits 1 unless all of them are on the server "
-                        "(docs/distributed.md)");
+                        "I/N: preprocess and compile only shard I (0-based) of N of the domain's compile jobs and "
+                        "store their sources on --remote-cache; writes no output folder; exits 1 unless all of them "
+                        "are on the server (docs/distributed.md)");
   build_cmd->add_flag("--require-remote-hits", line.require_remote_hits,
                       "The merge of a sharded build: compile nothing, take every source from the server alone "
                       "(never the local cache; no uploads), and fail (writing nothing) if any is missing or corrupt");
