@@ -284,7 +284,6 @@ class DomainCompiler {
     if (!set) {
       set = server_input_set(options_.input_key);
       remote = set.has_value();
-      if (remote && !build_.role.is_shard()) remote_input_set_ = encode_input_set(options_.input_key, *set);
     }
     if (!set || !take_keys(*set, {0, d_.jobs.size()})) return false;
     taken_ = remote ? Taken::server_whole : Taken::local_whole;
@@ -342,10 +341,9 @@ class DomainCompiler {
                          : found == RemoteCache::Found::no_answer ? "was not fetched (the server stopped answering)"
                                                                   : "fails its checks (corrupt, or signed with another "
                                                                     "secret)";
-      lacking.push_back(make_error("shard " + place + ": its part of the input set " + what +
-                                   "; rerun it: shadergen build " + d_.spec.spec_path.string() + " --shard " + place +
-                                   " --remote-cache " + options_.remote->shown_url() +
-                                   " (with the shards' other options)"));
+      lacking.push_back(make_error(
+          "shard " + place + ": its part of the input set " + what +
+          "; rerun it: " + shard_rerun_command(d_.spec.spec_path.string(), place, options_.remote->shown_url())));
     }
     if (!lacking.empty()) {
       Diagnostics errors{make_error(std::to_string(lacking.size()) + " of " + std::to_string(count) +
@@ -368,15 +366,9 @@ class DomainCompiler {
   // from the server uploads nothing; one whose upload fails fails, since the merge would.
   Status remember_part(const Shard& shard) {
     if (options_.input_key.empty()) return Ok{};
-    InputSet part;
-    if (d_.inputs_reused)
-      part.files = taken_files_;
-    else if (reads_)
-      part.files = std::move(*reads_);
-    else
-      return Ok{};  // a file changed during the build: nothing is remembered (the merge says so)
-    for (std::size_t j = range_.first; j < range_.last; ++j)
-      part.source_keys.push_back(d_.sources[static_cast<std::size_t>(d_.jobs[j].source)].key);
+    auto part_set = input_set_of_range();
+    if (!part_set) return Ok{};  // a file changed during the build: nothing is remembered (the merge says so)
+    const InputSet& part = *part_set;
     const std::string key = input_set_part_key(options_.input_key, shard.index, shard.count);
     if (options_.inputs && taken_ != Taken::local_part)
       if (Status stored = options_.inputs->store(key, part); !stored)
@@ -388,25 +380,40 @@ class DomainCompiler {
                       " (the warnings above say why); the merge needs it");
   }
 
+  // The input set of this build's jobs (range_): the files read (those of the set it took, or
+  // what preprocessing read) and each job's key. nullopt when preprocessing read a file
+  // differently in two jobs: nothing may then be remembered.
+  std::optional<InputSet> input_set_of_range() {
+    InputSet set;
+    if (d_.inputs_reused)
+      set.files = taken_files_;
+    else if (reads_)
+      set.files = std::move(*reads_);
+    else
+      return std::nullopt;
+    set.source_keys.reserve(range_.size());
+    for (std::size_t j = range_.first; j < range_.last; ++j)
+      set.source_keys.push_back(d_.sources[static_cast<std::size_t>(d_.jobs[j].source)].key);
+    return set;
+  }
+
   void remember_inputs() {
     if (options_.input_key.empty()) return;
-    // An input set from the server is kept here once the build has used it successfully.
-    if (d_.inputs_reused && remote_input_set_) {
-      if (!options_.inputs) return;
-      if (auto set = decode_input_set(options_.input_key, *remote_input_set_))
-        (void)options_.inputs->store(options_.input_key, *set);
+    // An input set from the server is kept here once the build has used it successfully; one
+    // from the local cache (or joined from a merge's parts, which has no local cache) is there.
+    if (d_.inputs_reused && taken_ != Taken::server_whole) return;
+    auto set = input_set_of_range();
+    if (!set) return;
+    if (d_.inputs_reused) {
+      if (options_.inputs) (void)options_.inputs->store(options_.input_key, *set);
       return;
     }
-    if (d_.inputs_reused || !reads_) return;
-    InputSet set{std::move(*reads_), {}};
-    for (const CompileJob& job : d_.jobs)
-      set.source_keys.push_back(d_.sources[static_cast<std::size_t>(job.source)].key);
     // Like the content cache: failing to remember only costs time later.
     if (options_.inputs)
-      if (Status stored = options_.inputs->store(options_.input_key, set); !stored)
+      if (Status stored = options_.inputs->store(options_.input_key, *set); !stored)
         log("warning: " + stored.errors().front().to_string());
     if (tiers_.remote_in_use())
-      options_.remote->store_input_set(options_.input_key, encode_input_set(options_.input_key, set));
+      options_.remote->store_input_set(options_.input_key, encode_input_set(options_.input_key, *set));
   }
 
   // What is kept of each job's preprocessing is the text's cache key, not the text (a compile
@@ -685,8 +692,7 @@ class DomainCompiler {
     for (const auto& [shard, n] : per_shard) {
       const std::string place = std::to_string(shard) + "/" + std::to_string(build_.role.shards());
       errors.push_back(make_error("shard " + place + ": " + lacking_text(n[kMissing], n[kCorrupt], n[kUnanswered]) +
-                                  "; rerun it: shadergen build " + d_.spec.spec_path.string() + " --shard " + place +
-                                  " --remote-cache " + url + " (with the shards' other options)"));
+                                  "; rerun it: " + shard_rerun_command(d_.spec.spec_path.string(), place, url)));
     }
     return errors;
   }
@@ -934,7 +940,6 @@ class DomainCompiler {
   KindDeclarations kinds_ = kind_declarations(d_.spec);
   std::optional<std::vector<InputRead>> reads_;         // what preprocessing read; nullopt: inconsistent
   TieredCache tiers_{options_.cache, options_.remote};  // the local and remote caches' policy
-  std::optional<std::string> remote_input_set_;         // the bytes of the input set the server gave
   std::mutex checked_mutex_;                            // guards checked_
   std::map<std::string, std::string> checked_;          // blob hash + stage -> unfit_reason()
   std::mutex distinct_mutex_;                           // guards the three below

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace shadergen {
 
@@ -30,6 +31,13 @@ constexpr JobRange shard_range(std::size_t jobs, std::uint32_t index, std::uint3
 // The shard that owns job `job`. Preconditions: job < jobs, count >= 1.
 constexpr std::uint32_t shard_of(std::size_t job, std::size_t jobs, std::uint32_t count) {
   return static_cast<std::uint32_t>(((std::uint64_t{job} + 1) * count + jobs - 1) / jobs - 1);
+}
+
+// The command that puts shard `place` ("3/8"; "I/N" as a template) of the build of `spec` on
+// the server `url` again, as the merge's errors name it.
+inline std::string shard_rerun_command(const std::string& spec, const std::string& place, const std::string& url) {
+  return "shadergen build " + spec + " --shard " + place + " --remote-cache " + url +
+         " (with the shards' other options)";
 }
 
 }  // namespace shadergen

@@ -18,6 +18,7 @@
 #include "cache/shard_record.h"
 #include "compile/blob_spill.h"
 #include "compile/compile_domain.h"
+#include "compile/shard_partition.h"
 #include "compile/toolchain.h"
 #include "driver/shard_check.h"
 #include "output/codegen.h"
@@ -294,8 +295,7 @@ Result<BuildSummary> build(const BuildOptions& given) {
   const std::string shard_key =
       shard_build_key(options.spec_path, loaded->digest, preprocessing_settings(*spec, *variants_digest));
   if (options.role.is_merge() && options.role.shards() > 0) {
-    const std::string repair = "shadergen build " + options.spec_path.string() + " --shard I/N --remote-cache " +
-                               remote->shown_url() + " (with the shards' other options)";
+    const std::string repair = shard_rerun_command(options.spec_path.string(), "I/N", remote->shown_url());
     if (Status ready = check_shard_records(*remote, shard_key, options.role.shards(), options.jobs, repair); !ready)
       return std::move(ready).take_errors();
     clock.lap("shard records");

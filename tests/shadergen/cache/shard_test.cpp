@@ -116,6 +116,13 @@ std::size_t writes_to(const NginxServer& server) {
   return sgtest::count_of(log, "\"PUT ") + sgtest::count_of(log, "\"MKCOL ") + sgtest::count_of(log, "\"HEAD ");
 }
 
+// An earlier output of the merge, which a failed merge must leave as it is; its snapshot.
+auto earlier_merge_output(const fs::path& dir) {
+  fs::create_directories(dir / "merge.out");
+  std::ofstream(dir / "merge.out" / "earlier.txt") << "earlier";
+  return sgtest::snapshot(dir / "merge.out");
+}
+
 // "shard 2/3" out of the merge's line for the one shard that lacks something; empty if not one.
 std::string the_named_shard(const std::vector<std::string>& errors) {
   std::string named;
@@ -201,10 +208,7 @@ TEST(ShardedBuild, MergeRefusesAShardThatDidNotFinishBeforeFetchingAnything) {
   const fs::path& dir = run_dir.path();
   START_SERVER(server, dir / "nginx");
   for (std::uint32_t i : {0u, 2u}) ASSERT_TRUE(shard(dir, server.url(), i, 3).summary);
-  // An earlier output stays as it was.
-  fs::create_directories(dir / "merge.out");
-  std::ofstream(dir / "merge.out" / "earlier.txt") << "earlier";
-  const auto before = sgtest::snapshot(dir / "merge.out");
+  const auto before = earlier_merge_output(dir);  // must stay as it is
   const std::size_t gets_before = sgtest::count_of(settled_log(server), "\"GET ");
 
   ShardRun merged = merge(dir, server.url(), 3);
@@ -456,9 +460,7 @@ TEST(ShardedBuild, MergeRefusesAMissingOrCorruptPartOfTheInputSet) {
     if (part != first.front()) second = part;
   ASSERT_FALSE(second.empty());
   fs::remove(second);
-  fs::create_directories(dir / "merge.out");
-  std::ofstream(dir / "merge.out" / "earlier.txt") << "earlier";
-  const auto before = sgtest::snapshot(dir / "merge.out");
+  const auto before = earlier_merge_output(dir);
   const std::size_t writes = writes_to(server);
   const std::size_t gets_before = sgtest::count_of(settled_log(server), "\"GET ");
 
